@@ -1,0 +1,6 @@
+option(FLEXROCK_BUILD_TESTS "Build the test suite" ${FLEXROCK_MASTER_PROJECT})
+option(FLEXROCK_BUILD_EXAMPLES "Build the example programs" ${FLEXROCK_MASTER_PROJECT})
+option(FLEXROCK_BUILD_BENCH "Build the benchmarks (Google Benchmark)" OFF)
+option(FLEXROCK_BUILD_PYTHON "Build the Python module (pybind11)" OFF)
+option(FLEXROCK_WERROR "Treat compiler warnings as errors" OFF)
+set(FLEXROCK_SANITIZE "" CACHE STRING "Sanitizers for flexrock targets, e.g. address;undefined")

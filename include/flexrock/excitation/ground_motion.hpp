@@ -1,0 +1,74 @@
+// Base accelerations Xddot(t), Yddot(t): sampled records (piecewise linear) or analytic functions.
+#pragma once
+
+#include <cstddef>
+#include <functional>
+#include <limits>
+#include <vector>
+
+#include "flexrock/core/types.hpp"
+
+namespace flexrock {
+
+/// Horizontal and vertical base accelerations [m/s^2] (Xddot along I, from edge 1 to edge 2;
+/// Yddot along J, up). Outside the record both are zero.
+struct BaseAcceleration {
+  double x = 0.0;  // Xddot [m/s^2]
+  double y = 0.0;  // Yddot [m/s^2]
+};
+
+/// A ground motion, in memory. Sampled records are linear between samples; their sample times
+/// are breakpoints where the simulation ends a step, so kinks cost no accuracy.
+class GroundMotion {
+ public:
+  using Function = std::function<BaseAcceleration(double t)>;
+
+  /// Samples at strictly increasing times [s]; vertical is empty (zero) or of the same length.
+  static GroundMotion sampled(std::vector<double> time, std::vector<double> horizontal,
+                              std::vector<double> vertical = {});
+  /// Samples every dt [s] from `start` [s].
+  static GroundMotion uniform(double dt, std::vector<double> horizontal,
+                              std::vector<double> vertical = {}, double start = 0.0);
+  /// An analytic motion on [0, duration]; `breakpoints` are times of kinks or jumps (the ends of
+  /// a pulse), where steps end. Zero outside [0, duration].
+  static GroundMotion analytic(Function f, double duration, std::vector<double> breakpoints = {});
+  /// No motion at all (free rocking), lasting `duration` [s].
+  static GroundMotion none(double duration);
+
+  /// Walks forward through the samples so that a sequence of calls at increasing times costs O(1).
+  struct Cursor {
+    std::size_t index = 0;
+  };
+
+  BaseAcceleration at(double t, Cursor& cursor) const;
+  BaseAcceleration at(double t) const {
+    Cursor c;
+    return at(t, c);
+  }
+  /// First breakpoint strictly after t, or +infinity.
+  double next_breakpoint(double t, Cursor& cursor) const;
+  /// End of the record (last sample, or the analytic duration) [s].
+  double duration() const { return duration_; }
+  /// Sample count (0 for analytic motions).
+  std::size_t samples() const { return time_.size(); }
+  bool is_sampled() const { return !time_.empty(); }
+  bool has_vertical() const { return has_vertical_; }
+  const std::vector<double>& times() const { return time_; }
+  const std::vector<double>& horizontal() const { return ax_; }
+  const std::vector<double>& vertical() const { return ay_; }
+
+  /// The same motion with both components multiplied by `factor`.
+  GroundMotion scaled(double factor) const;
+
+ private:
+  std::vector<double> time_, ax_, ay_;  // sampled record
+  Function f_;                          // analytic motion
+  std::vector<double> breaks_;          // analytic breakpoints, sorted
+  double duration_ = 0.0;
+  double scale_ = 1.0;
+  bool has_vertical_ = false;
+  bool uniform_ = false;
+  double dt_ = 0.0, t0_ = 0.0;
+};
+
+}  // namespace flexrock

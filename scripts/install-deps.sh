@@ -1,0 +1,29 @@
+#!/usr/bin/env bash
+# Installs the Debian packages flexrock builds and tests with, only those missing.
+# Usage: scripts/install-deps.sh [--python] [--bench]
+set -euo pipefail
+
+pkgs=(build-essential cmake ninja-build pkg-config
+      libeigen3-dev libboost-dev libboost-math-dev
+      libtomlplusplus-dev nlohmann-json3-dev libcli11-dev libfmt-dev
+      libgtest-dev libgmock-dev python3 python3-sympy)
+for arg in "$@"; do
+  case "$arg" in
+    --python) pkgs+=(pybind11-dev python3-dev python3-numpy python3-matplotlib python3-pytest) ;;
+    --bench) pkgs+=(libbenchmark-dev python3-scipy python3-numpy) ;;
+    *) echo "install-deps.sh: unknown option '$arg' (expected --python or --bench)" >&2; exit 2 ;;
+  esac
+done
+
+missing=()
+for p in "${pkgs[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+[ ${#missing[@]} -eq 0 ] && exit 0
+
+echo "install-deps.sh: installing ${missing[*]}"
+sudo_cmd=()
+[ "$(id -u)" -ne 0 ] && sudo_cmd=(sudo)
+export DEBIAN_FRONTEND=noninteractive
+"${sudo_cmd[@]}" apt-get update -qq
+"${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null

@@ -1,0 +1,132 @@
+#include "flexrock/excitation/ground_motion.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "flexrock/core/error.hpp"
+
+namespace flexrock {
+
+namespace {
+void require_finite(const std::vector<double>& v, const char* what) {
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    FLEXROCK_THROW_UNLESS(std::isfinite(v[i]), std::string("ground motion: ") + what + " sample " +
+                                                   std::to_string(i) + " is not finite");
+  }
+}
+}  // namespace
+
+GroundMotion GroundMotion::sampled(std::vector<double> time, std::vector<double> horizontal,
+                                   std::vector<double> vertical) {
+  FLEXROCK_THROW_UNLESS(time.size() >= 2, "ground motion: need at least 2 samples, got " +
+                                              std::to_string(time.size()));
+  FLEXROCK_THROW_UNLESS(horizontal.size() == time.size(),
+                        "ground motion: " + std::to_string(time.size()) + " times but " +
+                            std::to_string(horizontal.size()) + " horizontal values");
+  FLEXROCK_THROW_UNLESS(vertical.empty() || vertical.size() == time.size(),
+                        "ground motion: " + std::to_string(time.size()) + " times but " +
+                            std::to_string(vertical.size()) + " vertical values");
+  require_finite(time, "time");
+  require_finite(horizontal, "horizontal acceleration");
+  require_finite(vertical, "vertical acceleration");
+  for (std::size_t i = 1; i < time.size(); ++i) {
+    FLEXROCK_THROW_UNLESS(time[i] > time[i - 1],
+                          "ground motion: times must increase strictly, but sample " +
+                              std::to_string(i) + " (t = " + std::to_string(time[i]) +
+                              " s) is not after sample " + std::to_string(i - 1));
+  }
+  GroundMotion m;
+  m.has_vertical_ = !vertical.empty();
+  if (vertical.empty()) vertical.assign(time.size(), 0.0);
+  m.duration_ = time.back();
+  m.time_ = std::move(time);
+  m.ax_ = std::move(horizontal);
+  m.ay_ = std::move(vertical);
+  return m;
+}
+
+GroundMotion GroundMotion::uniform(double dt, std::vector<double> horizontal,
+                                   std::vector<double> vertical, double start) {
+  FLEXROCK_THROW_UNLESS(std::isfinite(dt) && dt > 0.0,
+                        "ground motion: time step dt must be positive, got " + std::to_string(dt));
+  std::vector<double> time(horizontal.size());
+  for (std::size_t i = 0; i < time.size(); ++i) time[i] = start + static_cast<double>(i) * dt;
+  GroundMotion m = sampled(std::move(time), std::move(horizontal), std::move(vertical));
+  m.uniform_ = true;
+  m.dt_ = dt;
+  m.t0_ = start;
+  return m;
+}
+
+GroundMotion GroundMotion::analytic(Function f, double duration, std::vector<double> breakpoints) {
+  FLEXROCK_THROW_UNLESS(static_cast<bool>(f), "ground motion: analytic function is empty");
+  FLEXROCK_THROW_UNLESS(std::isfinite(duration) && duration >= 0.0,
+                        "ground motion: duration must be >= 0, got " + std::to_string(duration));
+  GroundMotion m;
+  m.f_ = std::move(f);
+  m.duration_ = duration;
+  breakpoints.push_back(0.0);
+  breakpoints.push_back(duration);
+  std::sort(breakpoints.begin(), breakpoints.end());
+  breakpoints.erase(std::unique(breakpoints.begin(), breakpoints.end()), breakpoints.end());
+  m.breaks_ = std::move(breakpoints);
+  m.has_vertical_ = true;
+  return m;
+}
+
+GroundMotion GroundMotion::none(double duration) {
+  return analytic([](double) { return BaseAcceleration{}; }, duration);
+}
+
+BaseAcceleration GroundMotion::at(double t, Cursor& c) const {
+  if (!time_.empty()) {
+    if (t < time_.front() || t > time_.back()) return {};
+    std::size_t i;
+    if (uniform_) {
+      // direct index, clamped; the cursor is not needed for uniform records
+      const double s = (t - t0_) / dt_;
+      i = std::min(static_cast<std::size_t>(s), time_.size() - 2);
+    } else {
+      i = std::min(c.index, time_.size() - 2);
+      while (i > 0 && time_[i] > t) --i;
+      while (i + 2 < time_.size() && time_[i + 1] <= t) ++i;
+      c.index = i;
+    }
+    const double w = (t - time_[i]) / (time_[i + 1] - time_[i]);
+    return {scale_ * (ax_[i] + w * (ax_[i + 1] - ax_[i])),
+            scale_ * (ay_[i] + w * (ay_[i + 1] - ay_[i]))};
+  }
+  if (t < 0.0 || t > duration_ || !f_) return {};
+  const BaseAcceleration a = f_(t);
+  return {scale_ * a.x, scale_ * a.y};
+}
+
+double GroundMotion::next_breakpoint(double t, Cursor& c) const {
+  const std::vector<double>& b = time_.empty() ? breaks_ : time_;
+  if (b.empty() || t >= b.back()) return std::numeric_limits<double>::infinity();
+  if (uniform_) {
+    // before the record: its first sample (and no negative double to size_t cast)
+    if (t < time_.front()) return time_.front();
+    // the sample after t, guarding against t sitting a rounding error below a sample
+    auto k = static_cast<std::size_t>(std::floor((t - t0_) / dt_)) + 1;
+    while (k > 0 && time_[k - 1] > t) --k;
+    while (k < time_.size() && time_[k] <= t) ++k;
+    return k < time_.size() ? time_[k] : std::numeric_limits<double>::infinity();
+  }
+  std::size_t i = std::min(c.index, b.size() - 1);
+  while (i > 0 && b[i - 1] > t) --i;
+  while (i < b.size() && b[i] <= t) ++i;
+  c.index = i > 0 ? i - 1 : 0;
+  return i < b.size() ? b[i] : std::numeric_limits<double>::infinity();
+}
+
+GroundMotion GroundMotion::scaled(double factor) const {
+  FLEXROCK_THROW_UNLESS(std::isfinite(factor),
+                        "ground motion: scale factor must be finite, got " + std::to_string(factor));
+  GroundMotion m = *this;
+  m.scale_ *= factor;
+  return m;
+}
+
+}  // namespace flexrock
