@@ -168,11 +168,14 @@ class Simulator {
     integ_.start([this](double tt, const State& xx, State& dd) { rhs(tt, xx, dd); }, ctl_, t, x);
     evaluate(t, x, s0_);
     observe(s0_, x);
+    // after an uplift or impact theta = 0 and it must grow: the impact (and, after an uplift,
+    // the peak) function starts at zero and is known to turn positive
     zero_start_.fill(false);
-    if (rocking()) {
-      if (s0_.v[0] == 0.0) zero_start_[0] = true;
-      if (s0_.v[kSlotPeak] == 0.0) zero_start_[kSlotPeak] = true;
+    if (rocking() && entered_by_contact_change_) {
+      zero_start_[0] = s0_.v[0] == 0.0;
+      zero_start_[kSlotPeak] = s0_.v[kSlotPeak] == 0.0;
     }
+    entered_by_contact_change_ = false;
     if (s0_.v[2] <= 0.0) return contact_lost(t, x);
     if (rocking() && s0_.v[1] <= 0.0) return overturned(t, x);
     if (s0_.v[kSlotFriction] <= 0.0 && !friction_over_) friction_exceeded(t, s0_);
@@ -240,13 +243,15 @@ class Simulator {
       }
     }
     if (slot_hit < 0) {
+      // an analytic motion may jump at a breakpoint: start the next step from its right limit
+      if (t1 == t_stop && t1 < t_end_ && !motion_.is_sampled()) {
+        integ_.refresh_derivative(sys, std::nextafter(t1, t_end_));
+      }
       emit_rows_until(t1);
       t = t1;
       x = integ_.x1();
       s0_ = smp[samples_];
-      for (int j = 0; j < kEventSlots; ++j) {
-        if (s0_.v[j] > 0.0) zero_start_[j] = false;
-      }
+      zero_start_.fill(false);
       if (s0_.v[kSlotFriction] > 0.0) friction_over_ = false;
       return true;
     }
@@ -280,7 +285,8 @@ class Simulator {
             gl = value_at(j, tl);
             found = gl > 0.0;
           }
-          if (!found) return t_prev;  // the excursion is below resolution: at the start
+          // the excursion is below resolution: an impact at the start, no peak
+          if (!found) return j == 0 ? t_prev : kInf;
         }
         return locate(j, tl, smp[k].t, gl, cur);
       }
@@ -384,6 +390,7 @@ class Simulator {
       res_.extremes.first_uplift_edge = e;
     }
     phase_ = e == 1 ? Phase::kRockingEdge1 : Phase::kRockingEdge2;
+    entered_by_contact_change_ = true;
     x(0) = 0.0;
     x(ithd()) = 0.0;
     last_contact_change_ = t;
@@ -439,6 +446,7 @@ class Simulator {
     x.segment(iqd(), n_) = out.q_dot;
     phase_ = out.both_edges ? Phase::kFullContact
                             : (landing == 1 ? Phase::kRockingEdge1 : Phase::kRockingEdge2);
+    entered_by_contact_change_ = true;
     // a degenerate excursion (no time since uplift) must not uplift again at once
     if (out.both_edges && t == last_contact_change_) suppress_uplift_at_start_ = true;
     last_contact_change_ = t;
@@ -603,6 +611,7 @@ class Simulator {
   std::array<bool, kEventSlots> zero_start_{};
   std::array<double, 2> overturn_limit_{};
   bool friction_over_ = false;
+  bool entered_by_contact_change_ = false;
   bool suppress_uplift_at_start_ = false;
   double chatter_interval_ = 0.0;
   double last_contact_change_ = 0.0;

@@ -31,9 +31,13 @@ class Dopri5 {
   template <class System>
   void start(System&& sys, const StepControl& ctl, double t, const State& x, double h = 0.0) {
     ctl_ = ctl;
-    t1_ = t;
+    for (State* v : {&x0_, &xn_, &xs_, &err_, &k1_, &k2_, &k3_, &k4_, &k5_, &k6_, &k7_, &k1s_}) {
+      v->setZero(x.size());
+    }
+    t0_ = t1_ = t;
+    hd_ = 0.0;
+    x0_ = x;
     x1_ = x;
-    k7_.resizeLike(x);
     sys(t, x, k7_);
     ++rhs_evals_;
     h_ = h > 0.0 ? h : initial_step(sys, t, x);
@@ -87,6 +91,14 @@ class Dopri5 {
     x1_ = x0_;
     stages(sys, t, h);
     accept(t, h, t_target);
+  }
+
+  /// Re-evaluates f at the current point with time `t_eval`: after a step that ended on a jump
+  /// of the forcing, the next step must start from the right-hand limit.
+  template <class System>
+  void refresh_derivative(System&& sys, double t_eval) {
+    sys(t_eval, x1_, k7_);
+    ++rhs_evals_;
   }
 
   /// State at t in [t0(), t1()] from the continuous extension of the last step.

@@ -1,0 +1,153 @@
+#include "flexrock/model/body.hpp"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <Eigen/Cholesky>
+#include <Eigen/Eigenvalues>
+#include <cmath>
+#include <limits>
+
+#include "flexrock/core/error.hpp"
+#include "support/bodies.hpp"
+
+namespace flexrock {
+namespace {
+
+using ::testing::HasSubstr;
+
+// expects construction to throw InputError whose message contains every fragment
+template <class... S>
+void expect_rejected(const BodyParameters& p, S... fragments) {
+  try {
+    Body b(p);
+    FAIL() << "accepted invalid parameters";
+  } catch (const InputError& e) {
+    for (const char* f : {fragments...}) EXPECT_THAT(e.what(), HasSubstr(f));
+  }
+}
+
+BodyParameters two_modes() { return test::random_lumped_body(2, 7); }
+
+TEST(BodyValidation, RejectsNonPositiveGeometry) {
+  auto p = BodyParameters::rectangular_block(100, 0.2, 1.0);
+  p.height = 0;
+  expect_rejected(p, "h", "positive", "got 0");
+  p = BodyParameters::rectangular_block(100, 0.2, 1.0);
+  p.b1 = -0.1;
+  expect_rejected(p, "b1", "got -0.1");
+  p = BodyParameters::rectangular_block(100, 0.2, 1.0);
+  p.b2 = 0;
+  expect_rejected(p, "b2");
+  p = BodyParameters::rectangular_block(100, 0.2, 1.0);
+  p.mass = std::numeric_limits<double>::quiet_NaN();
+  expect_rejected(p, "M", "nan");
+}
+
+TEST(BodyValidation, RejectsWrongSizes) {
+  auto p = two_modes();
+  p.kappa = MatrixX::Identity(3, 3);
+  expect_rejected(p, "kappa", "2x2", "got 3x3");
+  p = two_modes();
+  p.psi_x = VectorX::Zero(1);
+  expect_rejected(p, "psi_x", "2 entries", "got 1");
+}
+
+TEST(BodyValidation, RejectsMassMatrixNotPositiveDefinite) {
+  auto p = two_modes();
+  p.mu(1, 1) = -p.mu(1, 1);
+  expect_rejected(p, "mu", "positive definite", "smallest eigenvalue");
+}
+
+TEST(BodyValidation, RejectsAsymmetricStiffness) {
+  auto p = two_modes();
+  p.kappa(0, 1) += 1.0;
+  expect_rejected(p, "kappa", "symmetric", "(2,1)");
+}
+
+TEST(BodyValidation, RejectsGammaNotAntisymmetric) {
+  auto p = two_modes();
+  p.gamma(0, 1) = p.gamma(1, 0) = 0.1;
+  expect_rejected(p, "gamma", "antisymmetric");
+}
+
+TEST(BodyValidation, RejectsNaNInModalData) {
+  auto p = two_modes();
+  p.beta(1) = std::numeric_limits<double>::infinity();
+  expect_rejected(p, "beta", "NaN or inf");
+}
+
+TEST(BodyValidation, RejectsNegativeDampingRatio) {
+  auto p = two_modes();
+  p.damping.kind = DampingKind::kModal;
+  p.damping.modal_ratios = VectorX::Constant(2, -0.01);
+  expect_rejected(p, "damping ratio", ">= 0");
+}
+
+TEST(BodyDerived, RigidTippingAngleIsArctanAlpha) {
+  const Body b(BodyParameters::rigid(10, 1.0, 0.25, 0.4, 0.3));
+  EXPECT_NEAR(b.tipping_angle(1), std::atan(0.25), 1e-14);
+  EXPECT_NEAR(b.tipping_angle(2), std::atan(0.4), 1e-14);
+}
+
+TEST(BodyDerived, OscillatorFrequencyAndModalDamping) {
+  test::Oscillator o;
+  o.k = 1000 * std::pow(2 * M_PI * 2.0, 2);
+  const Body b(o.params());
+  ASSERT_EQ(b.modes(), 1);
+  EXPECT_NEAR(b.natural_frequencies()(0), o.omega(), 1e-12 * o.omega());
+  // C = 2 zeta omega mu for one mode
+  EXPECT_NEAR(b.damping_matrix()(0, 0), 2 * 0.05 * o.omega() * o.m / o.M(), 1e-12);
+}
+
+TEST(BodyDerived, ModalDampingGivesRequestedRatios) {
+  auto p = test::random_lumped_body(3, 11);
+  p.damping.kind = DampingKind::kModal;
+  p.damping.modal_ratios = VectorX::LinSpaced(3, 0.02, 0.05);
+  const Body b(p);
+  // the damping matrix is diagonal in the mass-normalised modes with entries 2 zeta omega
+  Eigen::GeneralizedSelfAdjointEigenSolver<MatrixX> ges(b.stiffness(), p.mu);
+  const MatrixX c = ges.eigenvectors().transpose() * b.damping_matrix() * ges.eigenvectors();
+  for (int i = 0; i < 3; ++i) {
+    EXPECT_NEAR(c(i, i), 2 * p.damping.modal_ratios(i) * b.natural_frequencies()(i), 1e-9);
+    for (int j = 0; j < 3; ++j) {
+      if (i != j) {
+        EXPECT_NEAR(c(i, j), 0.0, 1e-9);
+      }
+    }
+  }
+}
+
+TEST(BodyDerived, RayleighRatiosFollowTheFormula) {
+  auto p = test::random_lumped_body(2, 5);
+  p.damping.kind = DampingKind::kRayleigh;
+  p.damping.rayleigh_mass = 0.3;
+  p.damping.rayleigh_stiffness = 0.002;
+  const Body b(p);
+  for (int i = 0; i < 2; ++i) {
+    const double w = b.natural_frequencies()(i);
+    EXPECT_NEAR(b.damping_ratios()(i), 0.3 / (2 * w) + 0.002 * w / 2, 1e-14);
+  }
+}
+
+TEST(BodyDerived, StaticDeformationBalancesGravity) {
+  const auto p = test::random_lumped_body(3, 3);
+  const Body b(p);
+  // kappa q = -psi_y at rest
+  EXPECT_LT((p.kappa * b.static_deformation() + p.psi_y).norm(), 1e-14);
+}
+
+TEST(BodyDerived, FlexibleTippingAngleSatisfiesStaticEquilibrium) {
+  const auto p = test::random_lumped_body(2, 9, 2e4);
+  const Body b(p);
+  for (int edge : {1, 2}) {
+    const double th = (edge == 1 ? 1.0 : -1.0) * b.tipping_angle(edge);
+    const double a = edge == 1 ? -b.alpha1() : b.alpha2();
+    const VectorX q = -p.kappa.llt().solve(p.psi_x * std::sin(th) + p.psi_y * std::cos(th));
+    // tan(theta) = (psi_x.q - alpha)/(1 + psi_y.q)   (paper, above eq. 5)
+    EXPECT_NEAR(std::tan(th), (p.psi_x.dot(q) - a) / (1 + p.psi_y.dot(q)), 1e-12);
+  }
+}
+
+}  // namespace
+}  // namespace flexrock
