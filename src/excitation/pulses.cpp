@@ -1,0 +1,179 @@
+#include "flexrock/excitation/pulses.hpp"
+
+#include <cmath>
+#include <numbers>
+#include <sstream>
+#include <string>
+#include <utility>
+
+#include "flexrock/core/error.hpp"
+
+namespace flexrock {
+
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+// shortest round-trip text of a double, so messages show the value the user gave
+std::string show(double v) {
+  std::ostringstream s;
+  s.precision(17);
+  s << v;
+  return s.str();
+}
+
+// "pulse: argument 'name' = value, expected ..."
+void require(bool ok, const char* pulse, const char* name, double value, const char* expected) {
+  FLEXROCK_THROW_UNLESS(ok, std::string(pulse) + ": argument '" + name + "' = " + show(value) +
+                                ", expected " + expected);
+}
+
+void require_finite(const char* pulse, const char* name, double value) {
+  require(std::isfinite(value), pulse, name, value, "a finite number");
+}
+
+void require_positive(const char* pulse, const char* name, double value) {
+  require(std::isfinite(value) && value > 0.0, pulse, name, value, "a positive finite number");
+}
+
+// duration must be positive and cover the pulse of length t_end
+void require_duration(const char* pulse, double duration, double t_end) {
+  require_positive(pulse, "duration", duration);
+  FLEXROCK_THROW_UNLESS(duration >= t_end,
+                        std::string(pulse) + ": argument 'duration' = " + show(duration) +
+                            " s, expected at least the pulse " + "length " + show(t_end) + " s");
+}
+
+// a scalar acceleration history a(t) on [0, t_end] (zero after), placed on one component
+template <class F>
+GroundMotion make_pulse(F a, double t_end, double duration, Component component,
+                        std::vector<double> breakpoints) {
+  const bool vertical = component == Component::kVertical;
+  auto f = [a = std::move(a), t_end, vertical](double t) -> BaseAcceleration {
+    const double v = (t >= 0.0 && t <= t_end) ? a(t) : 0.0;
+    return vertical ? BaseAcceleration{0.0, v} : BaseAcceleration{v, 0.0};
+  };
+  return GroundMotion::analytic(std::move(f), duration, std::move(breakpoints));
+}
+
+// common checks of the sinusoidal pulses
+void check_sine_args(const char* pulse, double a_p, double omega_p) {
+  require_finite(pulse, "a_p", a_p);
+  require_positive(pulse, "omega_p", omega_p);
+}
+
+}  // namespace
+
+GroundMotion harmonic(double amplitude, double omega, double duration, double phase,
+                      Component component) {
+  const char* name = "harmonic";
+  require_finite(name, "amplitude", amplitude);
+  require_positive(name, "omega", omega);
+  require_positive(name, "duration", duration);
+  require_finite(name, "phase", phase);
+  return make_pulse([=](double t) { return amplitude * std::sin(omega * t + phase); }, duration,
+                    duration, component, {});
+}
+
+GroundMotion harmonic_cycles(double amplitude, double omega, double cycles, double duration,
+                             double phase, Component component) {
+  const char* name = "harmonic_cycles";
+  require_finite(name, "amplitude", amplitude);
+  require_positive(name, "omega", omega);
+  require_positive(name, "cycles", cycles);
+  require_finite(name, "phase", phase);
+  const double t_end = cycles * 2.0 * kPi / omega;
+  require_duration(name, duration, t_end);
+  return make_pulse([=](double t) { return amplitude * std::sin(omega * t + phase); }, t_end,
+                    duration, component, {t_end});
+}
+
+GroundMotion one_sine_pulse(double a_p, double omega_p, double duration, Component component) {
+  const char* name = "one_sine_pulse";
+  check_sine_args(name, a_p, omega_p);
+  const double t_end = 2.0 * kPi / omega_p;
+  require_duration(name, duration, t_end);
+  return make_pulse([=](double t) { return a_p * std::sin(omega_p * t); }, t_end, duration,
+                    component, {t_end});
+}
+
+GroundMotion half_sine_pulse(double a_p, double omega_p, double duration, Component component) {
+  const char* name = "half_sine_pulse";
+  check_sine_args(name, a_p, omega_p);
+  const double t_end = kPi / omega_p;
+  require_duration(name, duration, t_end);
+  return make_pulse([=](double t) { return a_p * std::sin(omega_p * t); }, t_end, duration,
+                    component, {t_end});
+}
+
+GroundMotion cycloidal_pulse_a(double a_p, double omega_p, double duration, Component component) {
+  const char* name = "cycloidal_pulse_a";
+  check_sine_args(name, a_p, omega_p);
+  const double t_end = 2.0 * kPi / omega_p;
+  require_duration(name, duration, t_end);
+  return make_pulse([=](double t) { return a_p * std::sin(omega_p * t); }, t_end, duration,
+                    component, {t_end});
+}
+
+GroundMotion cycloidal_pulse_b(double a_p, double omega_p, double duration, Component component) {
+  const char* name = "cycloidal_pulse_b";
+  check_sine_args(name, a_p, omega_p);
+  const double t_end = 2.0 * kPi / omega_p;
+  require_duration(name, duration, t_end);
+  return make_pulse([=](double t) { return a_p * std::cos(omega_p * t); }, t_end, duration,
+                    component, {t_end});
+}
+
+double cycloidal_c_phase(int n) {
+  FLEXROCK_THROW_UNLESS(n >= 1, "cycloidal_c_phase: argument 'n' = " + std::to_string(n) +
+                                    ", expected an integer >= 1");
+  // g(phi) = 2 cos(phi) - (c - 2 phi) sin(phi), c = (2n+1) pi; g(0) = 2 > 0, g(pi/2) < 0 and g is
+  // decreasing on [0, pi/2]: bisection to full precision
+  const double c = (2.0 * n + 1.0) * kPi;
+  auto g = [c](double phi) { return 2.0 * std::cos(phi) - (c - 2.0 * phi) * std::sin(phi); };
+  double lo = 0.0, hi = 0.5 * kPi;
+  for (int it = 0; it < 200 && hi - lo > 1e-16; ++it) {
+    const double mid = 0.5 * (lo + hi);
+    (g(mid) > 0.0 ? lo : hi) = mid;
+  }
+  return 0.5 * (lo + hi);
+}
+
+GroundMotion cycloidal_pulse_c(double a_p, double omega_p, double duration, int n,
+                               Component component) {
+  const char* name = "cycloidal_pulse_c";
+  check_sine_args(name, a_p, omega_p);
+  FLEXROCK_THROW_UNLESS(n >= 1, std::string(name) + ": argument 'n' = " + std::to_string(n) +
+                                    ", expected an integer >= 1");
+  const double phi = cycloidal_c_phase(n);
+  const double t_end = (n + 0.5 - phi / kPi) * 2.0 * kPi / omega_p;
+  require_duration(name, duration, t_end);
+  return make_pulse([=](double t) { return a_p * std::cos(omega_p * t + phi); }, t_end, duration,
+                    component, {t_end});
+}
+
+GroundMotion ricker_wavelet(double a_p, double omega_p, double t_c, double duration,
+                            Component component) {
+  const char* name = "ricker_wavelet";
+  check_sine_args(name, a_p, omega_p);
+  require_positive(name, "duration", duration);
+  require(std::isfinite(t_c) && t_c >= 0.0 && t_c <= duration, name, "t_c", t_c,
+          "a centre time in [0, duration]");
+  const double k = 0.25 * omega_p * omega_p;
+  return make_pulse(
+      [=](double t) {
+        const double s = k * (t - t_c) * (t - t_c);
+        return a_p * (1.0 - 2.0 * s) * std::exp(-s);
+      },
+      duration, duration, component, {t_c});
+}
+
+GroundMotion rectangular_pulse(double a_p, double t_1, double duration, Component component) {
+  const char* name = "rectangular_pulse";
+  require_finite(name, "a_p", a_p);
+  require_positive(name, "t_1", t_1);
+  require_duration(name, duration, t_1);
+  return make_pulse([=](double) { return a_p; }, t_1, duration, component, {t_1});
+}
+
+}  // namespace flexrock

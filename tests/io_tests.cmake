@@ -1,0 +1,12 @@
+# included from tests/CMakeLists.txt; paths are relative to tests/
+
+# record readers (PEER .AT2, single-column, time series, combine): flexrock::io
+flexrock_add_test(flexrock_io_tests
+  SOURCES unit/records_test.cpp
+  LIBS flexrock::io
+  LABEL unit)
+
+# synthetic pulses (excitation layer of flexrock::core, no files)
+flexrock_add_test(flexrock_excitation_tests
+  SOURCES unit/pulses_test.cpp
+  LABEL unit)
