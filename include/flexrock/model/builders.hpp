@@ -1,0 +1,62 @@
+// Bodies from what engineers have: dimensions, a finite-element model's modal output, or a
+// standard idealisation. Each builder returns the paper's parameters (BodyParameters); pass them
+// to Body to validate. No files here: readers live in io/.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "flexrock/model/body.hpp"
+
+namespace flexrock {
+
+/// Uniform rigid rectangular block of full `width` and full `height` [m], mass [kg].
+BodyParameters rigid_block(double width, double height, double mass);
+
+/// General rigid body: mass M [kg], rotary inertia about the c.g. I_cg [kg m^2], c.g. height h
+/// and distances b1, b2 [m] from the c.g. to the tipping points.
+BodyParameters rigid_body(double mass, double inertia_cg, double height, double b1, double b2);
+
+/// One node of a lumped-mass model, in a frame with the base line at y = 0.
+struct LumpedNode {
+  double x = 0.0;               // [m]
+  double y = 0.0;               // [m] height above the base line
+  double mass = 0.0;            // [kg]
+  double rotary_inertia = 0.0;  // [kg m^2] about the node
+};
+
+/// A lumped-mass modal model as a finite-element program exports it. The mode shapes are the
+/// pinned-base modes (both tipping points held), in any normalisation; they must vanish at the
+/// tipping points (nodes placed there must have zero shape).
+struct LumpedModel {
+  std::vector<LumpedNode> nodes;
+  double tip1_x = 0.0;  // [m] left tipping point (edge 1) on the base line
+  double tip2_x = 0.0;  // [m] right tipping point (edge 2)
+  MatrixX phi_x;        // [m] nodes x modes, horizontal mode shape components
+  MatrixX phi_y;        // [m] nodes x modes, vertical components
+  VectorX frequencies;  // [rad/s] natural frequencies of the modes (or give `stiffness`)
+  MatrixX stiffness;    // [N m] modal stiffness k_ij for the shapes as given (alternative)
+  Damping damping;      // material damping of the modes
+  double gravity = kStandardGravity;
+};
+
+/// Every integral of the paper from the lumped model: the shapes are rescaled so that q_i is
+/// the largest displacement of mode i over h (documented in docs/theory.md). Throws InputError
+/// for inconsistent data (sizes, shapes at the tipping points, tipping points not straddling
+/// the c.g., non-orthogonal modes with `frequencies`).
+BodyParameters from_lumped_model(const LumpedModel& model);
+
+/// An elastic oscillator on a rocking base slab: a top mass on a lateral spring at `height`
+/// above a rigid base slab of mass `base_mass` and full width `base_width` (uniform, thin).
+/// One mode: the top mass's horizontal displacement.
+BodyParameters oscillator_on_slab(double top_mass, double frequency_hz, double base_mass,
+                                  double height, double base_width, double damping_ratio = 0.0);
+
+/// A uniform flexible cantilever (tank, stack, column) of `height` and full `width`, mass per
+/// length [kg/m] and bending stiffness EI [N m^2], clamped to a rigid base plate of mass
+/// `base_mass` standing on its two edges, with `modes` clamped-free bending modes.
+BodyParameters uniform_cantilever(double height, double width, double mass_per_length,
+                                  double bending_stiffness, int modes, double base_mass = 0.0,
+                                  double damping_ratio = 0.0);
+
+}  // namespace flexrock
