@@ -1,3 +1,20 @@
 flexrock_add_test(flexrock_model_tests SOURCES unit/body_test.cpp unit/impact_test.cpp LABEL unit)
 flexrock_add_test(flexrock_integrate_tests SOURCES unit/dopri5_test.cpp LABEL unit)
 flexrock_add_test(flexrock_rigid_validation_tests SOURCES validation/rigid_block_test.cpp LABEL validation)
+flexrock_add_test(flexrock_flexible_validation_tests SOURCES validation/flexible_body_test.cpp LABEL validation)
+
+# the machine-checked derivation writes the reference values the C++ equations are compared with
+find_package(nlohmann_json REQUIRED)
+find_package(Python3 COMPONENTS Interpreter)
+set(FLEXROCK_SYMPY_PYTHON /usr/bin/python3 CACHE FILEPATH "Python with sympy (Debian python3-sympy)")
+add_test(NAME derive_sympy_reference
+         COMMAND ${FLEXROCK_SYMPY_PYTHON} ${PROJECT_SOURCE_DIR}/tools/derive/derive.py
+                 --out ${PROJECT_BINARY_DIR}/sympy_reference.json)
+set_tests_properties(derive_sympy_reference PROPERTIES FIXTURES_SETUP sympy_reference
+                     LABELS unit TIMEOUT 600)
+add_executable(flexrock_sympy_tests unit/sympy_reference_test.cpp)
+target_link_libraries(flexrock_sympy_tests PRIVATE flexrock::core nlohmann_json::nlohmann_json
+                      GTest::gtest GTest::gtest_main flexrock_warnings)
+target_compile_definitions(flexrock_sympy_tests PRIVATE FLEXROCK_BINARY_DIR="${PROJECT_BINARY_DIR}")
+flexrock_apply_sanitizers(flexrock_sympy_tests)
+gtest_discover_tests(flexrock_sympy_tests PROPERTIES LABELS unit FIXTURES_REQUIRED sympy_reference)

@@ -2,6 +2,7 @@
 // integral definitions) and the closed-form parameters of an oscillator on a rocking slab.
 #pragma once
 
+#include <algorithm>
 #include <random>
 #include <vector>
 
@@ -66,20 +67,23 @@ struct LumpedBody {
   BodyParameters params() const { return lumped_body(pts, x1, x2, k); }
 };
 
-/// A random point-mass body with n modes: 7 masses over a base [-b, b], heights up to ~2 m.
-inline LumpedBody random_lumped(int n, unsigned seed, double stiffness_scale = 2e5) {
+/// A random point-mass body with n modes: max(7, n) masses over a base [-b, b], heights up to ~2 m.
+inline LumpedBody random_lumped(int n, unsigned seed, double stiffness_scale = 2e5,
+                                double vertical_scale = 0.03) {
   std::mt19937 rng(seed);
   std::uniform_real_distribution<double> u(0.0, 1.0);
   LumpedBody lb;
   const double half = 0.3 + 0.4 * u(rng);
-  for (int k = 0; k < 7; ++k) {
+  // enough masses for n independent planar modes
+  const int masses = std::max(7, n);
+  for (int k = 0; k < masses; ++k) {
     PointMass p;
     p.m = 50 + 200 * u(rng);
     p.x = half * (2 * u(rng) - 1) * 0.9;
     p.y = 0.1 + 1.9 * u(rng);
     for (int i = 0; i < n; ++i) {
       p.phix.push_back(0.1 * (2 * u(rng) - 1) * p.y);
-      p.phiy.push_back(0.03 * (2 * u(rng) - 1) * p.y);
+      p.phiy.push_back(vertical_scale * (2 * u(rng) - 1) * p.y);
     }
     lb.pts.push_back(p);
   }
@@ -92,8 +96,9 @@ inline LumpedBody random_lumped(int n, unsigned seed, double stiffness_scale = 2
   return lb;
 }
 
-inline BodyParameters random_lumped_body(int n, unsigned seed, double stiffness_scale = 2e5) {
-  return random_lumped(n, seed, stiffness_scale).params();
+inline BodyParameters random_lumped_body(int n, unsigned seed, double stiffness_scale = 2e5,
+                                         double vertical_scale = 0.03) {
+  return random_lumped(n, seed, stiffness_scale, vertical_scale).params();
 }
 
 /// An elastic oscillator on a rocking base slab: top mass m at height H on a lateral spring k,

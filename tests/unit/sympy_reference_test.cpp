@@ -1,0 +1,195 @@
+// The C++ equations against the machine-checked derivation (tools/derive/derive.py): mass matrix,
+// forces, reaction, resultant, energies and impacts at random states of random point-mass bodies.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <set>
+#include <nlohmann/json.hpp>
+
+#include "flexrock/contact/impact.hpp"
+#include "flexrock/model/dynamics.hpp"
+
+namespace flexrock {
+namespace {
+
+using json = nlohmann::json;
+using DynX = Dynamics<Eigen::Dynamic, Eigen::Dynamic>;
+
+VectorX vec(const json& j) {
+  VectorX v(static_cast<Eigen::Index>(j.size()));
+  for (std::size_t i = 0; i < j.size(); ++i) v(static_cast<Eigen::Index>(i)) = j[i].get<double>();
+  return v;
+}
+MatrixX mat(const json& j, Eigen::Index n) {
+  MatrixX m(n, n);
+  for (Eigen::Index r = 0; r < n; ++r)
+    for (Eigen::Index c = 0; c < n; ++c) m(r, c) = j[static_cast<std::size_t>(r)][static_cast<std::size_t>(c)].get<double>();
+  return m;
+}
+
+json load() {
+  std::ifstream in(FLEXROCK_BINARY_DIR "/sympy_reference.json");
+  if (!in) return {};
+  return json::parse(in);
+}
+
+void expect_close(double got, double want, double scale, const std::string& what) {
+  EXPECT_NEAR(got, want, 1e-12 * std::max(1.0, std::abs(scale))) << what;
+}
+
+class SympyReference : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() { ref_ = new json(load()); }
+  static void TearDownTestSuite() { delete ref_; }
+  static json* ref_;
+};
+json* SympyReference::ref_ = nullptr;
+
+BodyParameters params_of(const json& c, double g) {
+  const auto n = c["n"].get<Eigen::Index>();
+  const json& p = c["params"];
+  BodyParameters b;
+  b.mass = p["M"];
+  b.height = p["h"];
+  b.b1 = p["b1"];
+  b.b2 = p["b2"];
+  b.zeta2 = p["zeta2"];
+  b.mu = mat(p["mu"], n);
+  b.kappa = mat(p["kappa"], n);
+  b.gamma = mat(p["gamma"], n);
+  b.psi_x = vec(p["psi_x"]);
+  b.psi_y = vec(p["psi_y"]);
+  b.delta = vec(p["delta"]);
+  b.beta = vec(p["beta"]);
+  b.gravity = g;
+  return b;
+}
+
+TEST_F(SympyReference, CoversEveryModeCount) {
+  ASSERT_FALSE(ref_->is_null()) << "run tools/derive/derive.py (the ctest fixture does)";
+  std::set<int> ns;
+  for (const auto& c : (*ref_)["cases"]) ns.insert(c["n"].get<int>());
+  EXPECT_EQ(ns, (std::set<int>{0, 1, 2, 3}));
+}
+
+TEST_F(SympyReference, RockingEquationsReactionAndEnergies) {
+  ASSERT_FALSE(ref_->is_null());
+  const double g = (*ref_)["g"];
+  int checked = 0;
+  for (const auto& c : (*ref_)["cases"]) {
+    const Body body(params_of(c, g));
+    const DynX dyn(body);
+    const double mg = body.params().mass * g;
+    EXPECT_NEAR(body.tipping_angle(1), c["tipping_angle"][0].get<double>(), 1e-12);
+    EXPECT_NEAR(body.tipping_angle(2), c["tipping_angle"][1].get<double>(), 1e-12);
+    for (const auto& s : c["rocking"]) {
+      const int edge = s["edge"];
+      const double a = dyn.alpha(edge), th = s["theta"], thd = s["theta_dot"];
+      const VectorX q = vec(s["q"]), qd = vec(s["q_dot"]);
+      const BaseAcceleration base{s["base_acc"][0].get<double>(), s["base_acc"][1].get<double>()};
+      const std::string at = "n=" + std::to_string(q.size()) + " edge " + std::to_string(edge);
+      // mass matrix A = [[m, b^T], [b, mu]]
+      const MatrixX A = mat(s["mass_matrix"], q.size() + 1);
+      expect_close(dyn.inertia(a, q), A(0, 0), A(0, 0), "m " + at);
+      const VectorX b = dyn.coupling(a, q);
+      for (Eigen::Index i = 0; i < q.size(); ++i) expect_close(b(i), A(i + 1, 0), A(0, 0), "b " + at);
+      // accelerations from A x = f
+      double thdd;
+      VectorX qdd(q.size());
+      dyn.rocking_acceleration(edge, th, q, thd, qd, base, thdd, qdd);
+      const VectorX acc = vec(s["accelerations"]);
+      expect_close(thdd, acc(0), acc.norm(), "theta_ddot " + at);
+      for (Eigen::Index i = 0; i < q.size(); ++i)
+        expect_close(qdd(i), acc(i + 1), acc.norm(), "q_ddot " + at);
+      // forces: A (computed accelerations) reproduces the reference f
+      VectorX nu(q.size() + 1);
+      nu(0) = thdd;
+      nu.tail(q.size()) = qdd;
+      const VectorX f = vec(s["forces"]);
+      const VectorX fa = A * nu;
+      for (Eigen::Index i = 0; i < f.size(); ++i) expect_close(fa(i), f(i), f.norm(), "force " + at);
+      const Eigen::Vector2d r = mg * dyn.rocking_reaction(edge, th, q, thd, qd, thdd, qdd, base);
+      expect_close(r(0), s["reaction"][0].get<double>(), mg, "F_I " + at);
+      expect_close(r(1), s["reaction"][1].get<double>(), mg, "F_J " + at);
+      const double t_ref = s["kinetic_energy"], v_ref = s["potential_energy"];
+      expect_close(dyn.kinetic_energy(a, q, thd, qd), t_ref, t_ref + std::abs(v_ref), "T " + at);
+      expect_close(dyn.potential_energy(a, th, q), v_ref, std::abs(v_ref), "V " + at);
+      expect_close(dyn.input_power(a, th, q, thd, qd, base), s["input_power"].get<double>(),
+                   mg * body.params().height, "input power " + at);
+      ++checked;
+    }
+  }
+  EXPECT_GE(checked, 40);
+}
+
+TEST_F(SympyReference, FullContactAccelerationReactionAndResultant) {
+  ASSERT_FALSE(ref_->is_null());
+  const double g = (*ref_)["g"];
+  int checked = 0;
+  for (const auto& c : (*ref_)["cases"]) {
+    const Body body(params_of(c, g));
+    const DynX dyn(body);
+    const double mg = body.params().mass * g;
+    for (const auto& s : c["full_contact"]) {
+      const VectorX q = vec(s["q"]), qd = vec(s["q_dot"]);
+      const BaseAcceleration base{s["base_acc"][0].get<double>(), s["base_acc"][1].get<double>()};
+      VectorX qdd(q.size());
+      dyn.full_contact_acceleration(q, qd, base, qdd);
+      const VectorX ref = vec(s["q_ddot"]);
+      for (Eigen::Index i = 0; i < q.size(); ++i) expect_close(qdd(i), ref(i), ref.norm(), "q_ddot");
+      const Eigen::Vector2d r = mg * dyn.full_contact_reaction(qdd, base);
+      expect_close(r(0), s["reaction"][0].get<double>(), mg, "F_I");
+      expect_close(r(1), s["reaction"][1].get<double>(), mg, "F_J");
+      const double alpha_star = s["resultant"];
+      expect_close(dyn.resultant_location(q, qdd, base), alpha_star, alpha_star, "resultant");
+      // the uplift functions are the moments about the edges: (F_J/Mg)(alpha* + alpha1), ...
+      const Eigen::Vector2d u = dyn.uplift_functions(q, qdd, base);
+      const double fj = r(1) / mg;
+      expect_close(u(0), fj * (alpha_star + body.alpha1()), fj * alpha_star, "U1");
+      expect_close(u(1), fj * (body.alpha2() - alpha_star), fj * alpha_star, "U2");
+      ++checked;
+    }
+  }
+  EXPECT_GE(checked, 30);
+}
+
+TEST_F(SympyReference, ImpactMapImpulseAndEnergyLoss) {
+  ASSERT_FALSE(ref_->is_null());
+  const double g = (*ref_)["g"];
+  int checked = 0, both = 0;
+  for (const auto& c : (*ref_)["cases"]) {
+    const Body body(params_of(c, g));
+    const DynX dyn(body);
+    for (const auto& s : c["impacts"]) {
+      const int landing = s["landing_edge"];
+      const VectorX q = vec(s["q"]), qdm = vec(s["q_dot_minus"]);
+      const double thdm = s["theta_dot_minus"];
+      double thdp;
+      VectorX qdp(q.size());
+      single_edge_impact(dyn, landing, q, thdm, qdm, thdp, qdp);
+      const double scale = std::abs(thdm) + qdm.norm();
+      expect_close(thdp, s["theta_dot_plus"].get<double>(), scale, "theta_dot+");
+      const VectorX qref = vec(s["q_dot_plus"]);
+      for (Eigen::Index i = 0; i < q.size(); ++i) expect_close(qdp(i), qref(i), scale, "q_dot+");
+      const auto out = resolve_impact(dyn, landing, q, thdm, qdm);
+      const json& want = out.both_edges ? s["both_edges"] : s;
+      const double iscale = std::abs(want["impulse"][0].get<double>()) + std::abs(want["impulse"][1].get<double>());
+      expect_close(out.impulse(0), want["impulse"][0].get<double>(), iscale, "I_x");
+      expect_close(out.impulse(1), want["impulse"][1].get<double>(), iscale, "I_y");
+      const double loss = want["energy_loss"];
+      expect_close(out.energy_loss, loss, loss, "energy loss");
+      if (out.both_edges) {
+        ++both;
+        const VectorX qb = vec(s["both_edges"]["q_dot_plus"]);
+        for (Eigen::Index i = 0; i < q.size(); ++i) expect_close(out.q_dot(i), qb(i), scale, "both q_dot+");
+      }
+      ++checked;
+    }
+  }
+  EXPECT_GE(checked, 40);
+  EXPECT_GE(both, 1);  // the squat block exercises the both-edges rule
+}
+
+}  // namespace
+}  // namespace flexrock

@@ -1,0 +1,967 @@
+#!/usr/bin/python3
+"""Derivation and reference values for flexrock (Moran & McLennan 1995 model).
+
+Part (a): symbolic, general body.  A generic material point (rho_x, rho_y,
+phi_kx, phi_ky) is moved with the rocking kinematics; |Rdot|^2, gravity,
+momenta, moments are expanded as polynomials in the material-point symbols and
+each monomial's mass integral is replaced by the linear functional fixed by the
+parameter definitions (M, zeta2, mu, gamma, psi, delta, beta).  Integrals not
+fixed by the parameters get auxiliary symbols (Jxx, Jxy, Dxx_k, Dxy_k, Pxx_ij,
+Sxy_ij); the script checks that they cancel.  Lagrange's equations, the floor
+reaction, the resultant, the impact map, the energy identities and the uplift
+identity are derived and compared with the closed forms used by the C++ code
+("conventions", implemented in conv_* below) by exact polynomial reduction
+modulo cos^2+sin^2-1.
+
+Part (b): numeric, realizable bodies.  Random discrete bodies (point masses,
+massless tipping points at base level so phi = 0 there), parameters computed by
+their definitions as sums; T, V, reaction, resultant, impacts computed DIRECTLY
+from the point masses (per-mass Lagrange terms derived symbolically with sin/cos
+and summed) in 30-digit mpmath, compared with the closed forms (assert 1e-12).
+
+Usage:  derive.py --out FILE.json [--seed 12345] [--print]
+"""
+import argparse
+import json
+import sys
+import time
+
+import mpmath as mp
+import numpy as np
+import sympy as sp
+
+G_STD = 9.80665
+mp.mp.dps = 30
+
+# ---------------------------------------------------------------------------
+# Closed forms used by the code (backend-agnostic: sympy expressions or mpf)
+# P: dict with n, M, h, zeta2, mu, kappa, gamma, psi_x, psi_y, delta, beta
+# ---------------------------------------------------------------------------
+
+
+def dot(a, b):
+    return sum((x * y for x, y in zip(a, b)), 0)
+
+
+def matvec(A, v):
+    return [dot(row, v) for row in A]
+
+
+def conv_w(P, alpha, q):
+    return (-alpha + dot(P['psi_x'], q), 1 + dot(P['psi_y'], q))
+
+
+def conv_c(P, alpha, q):
+    muq = matvec(P['mu'], q)
+    return [P['delta'][j] - alpha * P['psi_x'][j] + P['psi_y'][j] + muq[j]
+            for j in range(P['n'])]
+
+
+def conv_b(P, alpha, q):
+    n = P['n']
+    return [P['beta'][j] + sum((P['gamma'][i][j] * q[i] for i in range(n)), 0)
+            - alpha * P['psi_y'][j] - P['psi_x'][j] for j in range(n)]
+
+
+def conv_A(P, alpha, q):
+    n = P['n']
+    m = (1 + P['zeta2'] + alpha ** 2
+         + 2 * dot([P['delta'][j] - alpha * P['psi_x'][j] + P['psi_y'][j] for j in range(n)], q)
+         + dot(q, matvec(P['mu'], q)))
+    b = conv_b(P, alpha, q)
+    A = [[m] + list(b)]
+    for j in range(n):
+        A.append([b[j]] + list(P['mu'][j]))
+    return A
+
+
+def conv_G(ax, ay, s, c):
+    return (ax * c + ay * s, ay * c - ax * s)
+
+
+def conv_f(P, alpha, q, thd, qd, s, c, ax, ay, g):
+    n, h = P['n'], P['h']
+    w = conv_w(P, alpha, q)
+    G = conv_G(ax, ay, s, c)
+    cc = conv_c(P, alpha, q)
+    f = [-2 * dot(cc, qd) * thd - (g / h) * (w[0] * G[1] - w[1] * G[0])]
+    kq = matvec(P['kappa'], q)
+    for j in range(n):
+        gq = sum((P['gamma'][i][j] * qd[i] for i in range(n)), 0)
+        f.append(-2 * thd * gq + thd ** 2 * cc[j]
+                 - (g / h) * (kq[j] + P['psi_x'][j] * G[0] + P['psi_y'][j] * G[1]))
+    return f
+
+
+def kx(v):
+    return (-v[1], v[0])
+
+
+def conv_F_body(P, alpha, q, thd, qd, thdd, qdd, s, c, ax, ay, g):
+    h, M = P['h'], P['M']
+    w = conv_w(P, alpha, q)
+    G = conv_G(ax, ay, s, c)
+    pq = (dot(P['psi_x'], qd), dot(P['psi_y'], qd))
+    pqq = (dot(P['psi_x'], qdd), dot(P['psi_y'], qdd))
+    kw, kp = kx(w), kx(pq)
+    return tuple(M * g * (G[i] + (h / g) * (pqq[i] + thdd * kw[i] + 2 * thd * kp[i] - thd ** 2 * w[i]))
+                 for i in range(2))
+
+
+def body_to_inertial(v, s, c):
+    return (c * v[0] - s * v[1], s * v[0] + c * v[1])
+
+
+def conv_alpha_star_parts(P, q, qdd, ax, ay, g):
+    """returns (numerator, denominator) of alpha_star."""
+    n, h = P['n'], P['h']
+    bq = [P['beta'][j] + sum((P['gamma'][i][j] * q[i] for i in range(n)), 0) - P['psi_x'][j]
+          for j in range(n)]
+    num = dot(bq, qdd) * (h / g) + ay * dot(P['psi_x'], q) - ax * (1 + dot(P['psi_y'], q))
+    den = ay + dot(P['psi_y'], qdd) * (h / g)
+    return num, den
+
+
+def conv_impact_system(P, a_pre, a_post, q, thdm, qdm):
+    """A_post nu+ = rhs."""
+    A = conv_A(P, a_post, q)
+    nu = [thdm] + list(qdm)
+    rhs = matvec(A, nu)
+    w = conv_w(P, a_post, q)
+    d = a_pre - a_post
+    rhs[0] -= d * thdm * w[0]
+    for j in range(P['n']):
+        rhs[j + 1] -= d * thdm * P['psi_y'][j]
+    return A, rhs
+
+
+def conv_impulse(P, a_pre, a_post, q, thdm, qdm, thdp, qdp):
+    M, h = P['M'], P['h']
+    dq = [a - b for a, b in zip(qdp, qdm)]
+    kwp, kwm = kx(conv_w(P, a_post, q)), kx(conv_w(P, a_pre, q))
+    return tuple(M * h * (dot(P['psi_x' if i == 0 else 'psi_y'], dq) + thdp * kwp[i] - thdm * kwm[i])
+                 for i in range(2))
+
+
+def conv_Trel(P, alpha, q, thd, qd):
+    A = conv_A(P, alpha, q)
+    nu = [thd] + list(qd)
+    return P['M'] * P['h'] ** 2 * dot(nu, matvec(A, nu)) / 2
+
+
+def conv_V(P, alpha, q, s, c, g):
+    w = conv_w(P, alpha, q)
+    return P['M'] * g * P['h'] * (s * w[0] + c * w[1] + dot(q, matvec(P['kappa'], q)) / 2)
+
+
+def conv_vcm_body(P, alpha, q, thd, qd):
+    w = conv_w(P, alpha, q)
+    kw = kx(w)
+    return (P['h'] * (dot(P['psi_x'], qd) + thd * kw[0]), P['h'] * (dot(P['psi_y'], qd) + thd * kw[1]))
+
+
+# ---------------------------------------------------------------------------
+# Part (a): symbolic derivation for a general body
+# ---------------------------------------------------------------------------
+
+S, C = sp.symbols('s c')  # sin(theta), cos(theta)
+TRIG = C ** 2 + S ** 2 - 1
+
+
+def is_zero(expr):
+    e = sp.expand(sp.together(sp.expand(expr)))
+    num, den = sp.fraction(e)
+    num = sp.expand(num)
+    if num == 0:
+        return True
+    if num.has(C):
+        num = sp.rem(num, TRIG, C)
+    return sp.expand(num) == 0
+
+
+class General:
+    def __init__(self, n):
+        self.n = n
+        self.M, self.h, self.g = sp.symbols('M h g', positive=True)
+        self.alpha, self.zeta2 = sp.symbols('alpha zeta2')
+        self.thd, self.thdd = sp.symbols('thd thdd')
+        self.Xd, self.Yd, self.Xdd, self.Ydd, self.Y = sp.symbols('Xd Yd Xdd Ydd Y')
+        r = range(1, n + 1)
+        self.q = [sp.Symbol('q%d' % k) for k in r]
+        self.qd = [sp.Symbol('qd%d' % k) for k in r]
+        self.qdd = [sp.Symbol('qdd%d' % k) for k in r]
+        self.psi_x = [sp.Symbol('psix%d' % k) for k in r]
+        self.psi_y = [sp.Symbol('psiy%d' % k) for k in r]
+        self.delta = [sp.Symbol('delta%d' % k) for k in r]
+        self.beta = [sp.Symbol('beta%d' % k) for k in r]
+        sym = lambda name, i, j: sp.Symbol('%s%d%d' % (name, min(i, j) + 1, max(i, j) + 1))
+        self.mu = [[sym('mu', i, j) for j in range(n)] for i in range(n)]
+        self.kappa = [[sym('kappa', i, j) for j in range(n)] for i in range(n)]
+        self.gamma = [[(0 if i == j else (sym('gamma', i, j) if i < j else -sym('gamma', i, j)))
+                       for j in range(n)] for i in range(n)]
+        # auxiliary integrals not fixed by the parameters
+        self.Jxx, self.Jxy = sp.symbols('Jxx Jxy')
+        self.Dxx = [sp.Symbol('Dxx%d' % k) for k in r]
+        self.Dxy = [sp.Symbol('Dxy%d' % k) for k in r]
+        self.Pxx = [[sym('Pxx', i, j) for j in range(n)] for i in range(n)]
+        self.Sxy = [[sym('Sxy', i, j) for j in range(n)] for i in range(n)]
+        self.aux = ({self.Jxx, self.Jxy} | set(self.Dxx) | set(self.Dxy)
+                    | {x for row in self.Pxx for x in row} | {x for row in self.Sxy for x in row})
+        # material point
+        self.rx, self.ry = sp.symbols('rho_x rho_y')
+        self.fx = [sp.Symbol('phix%d' % k) for k in r]
+        self.fy = [sp.Symbol('phiy%d' % k) for k in r]
+        self.point = [self.rx, self.ry] + self.fx + self.fy
+        self.P = dict(n=n, M=self.M, h=self.h, zeta2=self.zeta2, mu=self.mu, kappa=self.kappa,
+                      gamma=self.gamma, psi_x=self.psi_x, psi_y=self.psi_y, delta=self.delta,
+                      beta=self.beta)
+        self._build_table()
+
+    def _build_table(self):
+        n, M, h = self.n, self.M, self.h
+        Mh2 = M * h ** 2
+        t = {}
+        e = lambda **kw: tuple(kw.get(str(p), 0) for p in self.point)
+        idx = {str(p): i for i, p in enumerate(self.point)}
+
+        def key(*syms):
+            k = [0] * len(self.point)
+            for s_ in syms:
+                k[idx[str(s_)]] += 1
+            return tuple(k)
+        t[key()] = M
+        t[key(self.rx)] = 0
+        t[key(self.ry)] = 0
+        t[key(self.rx, self.rx)] = self.Jxx
+        t[key(self.ry, self.ry)] = Mh2 * self.zeta2 - self.Jxx
+        t[key(self.rx, self.ry)] = self.Jxy
+        for k in range(n):
+            t[key(self.fx[k])] = M * h * self.psi_x[k]
+            t[key(self.fy[k])] = M * h * self.psi_y[k]
+            t[key(self.rx, self.fx[k])] = self.Dxx[k]
+            t[key(self.ry, self.fy[k])] = Mh2 * self.delta[k] - self.Dxx[k]
+            t[key(self.rx, self.fy[k])] = self.Dxy[k]
+            t[key(self.ry, self.fx[k])] = self.Dxy[k] - Mh2 * self.beta[k]
+            for j in range(n):
+                t[key(self.fx[k], self.fx[j])] = self.Pxx[k][j]
+                t[key(self.fy[k], self.fy[j])] = Mh2 * self.mu[k][j] - self.Pxx[k][j]
+                # int phix_k phiy_j = Sxy_kj + Mh2 gamma_kj / 2 (gamma antisymmetric)
+                t[key(self.fx[k], self.fy[j])] = self.Sxy[k][j] + Mh2 * self.gamma[k][j] / 2
+        self.table = t
+
+    def integrate(self, expr):
+        """mass integral of a polynomial in the material-point symbols."""
+        poly = sp.Poly(sp.expand(expr), *self.point)
+        out = 0
+        for mon, coeff in poly.terms():
+            out += coeff * self.table[mon]
+        return sp.expand(out)
+
+    # kinematics of the generic point -------------------------------------------------
+    def s_body(self, alpha):
+        """position of the point relative to the pivot, body components."""
+        return (-self.h * alpha + self.rx + dot(self.fx, self.q),
+                self.h + self.ry + dot(self.fy, self.q))
+
+    def u_body(self, alpha, thd, qd):
+        """velocity relative to the base, body components."""
+        s_ = self.s_body(alpha)
+        return (-thd * s_[1] + dot(self.fx, qd), thd * s_[0] + dot(self.fy, qd))
+
+    def vb_body(self):
+        return (self.Xd * C + self.Yd * S, -self.Xd * S + self.Yd * C)
+
+    def d_th(self, e):
+        return sp.diff(e, S) * C - sp.diff(e, C) * S
+
+    def ddt(self, e):
+        """total time derivative of a function of (theta, q, thd, qd, Xd, Yd)."""
+        out = self.d_th(e) * self.thd
+        for k in range(self.n):
+            out += sp.diff(e, self.q[k]) * self.qd[k] + sp.diff(e, self.qd[k]) * self.qdd[k]
+        out += sp.diff(e, self.thd) * self.thdd + sp.diff(e, self.Xd) * self.Xdd + sp.diff(e, self.Yd) * self.Ydd
+        return out
+
+    def derive(self):
+        n, M, h, g, alpha = self.n, self.M, self.h, self.g, self.alpha
+        res = {}
+        vb = self.vb_body()
+        u = self.u_body(alpha, self.thd, self.qd)
+        v = (vb[0] + u[0], vb[1] + u[1])
+        T_in = self.integrate((v[0] ** 2 + v[1] ** 2) / 2)
+        s_ = self.s_body(alpha)
+        k = [[M * g * h * self.kappa[i][j] for j in range(n)] for i in range(n)]
+        V = self.integrate(g * (self.Y + S * s_[0] + C * s_[1])) + dot(self.q, matvec(k, self.q)) / 2
+        res['aux_in_T'] = sorted(str(x) for x in T_in.free_symbols & self.aux)
+        res['aux_in_V'] = sorted(str(x) for x in V.free_symbols & self.aux)
+        self.T_in, self.V = T_in, V
+        # Lagrange
+        coords = [(None, self.thd, self.thdd)] + list(zip(self.q, self.qd, self.qdd))
+        EL = []
+        for (x, xd, xdd) in coords:
+            dTdxd = sp.diff(T_in, xd)
+            dTdx = self.d_th(T_in) if x is None else sp.diff(T_in, x)
+            dVdx = self.d_th(V) if x is None else sp.diff(V, x)
+            EL.append(sp.expand(self.ddt(dTdxd) - dTdx + dVdx))
+        self.EL = EL
+        acc = [self.thdd] + self.qdd
+        A_der = [[sp.expand(sp.diff(e, a) / (M * h ** 2)) for a in acc] for e in EL]
+        # forces include base acceleration terms: f = -(EL - A acc)/(M h^2)
+        f_der = [sp.expand(-(EL[i] - dot(A_der[i], acc) * M * h ** 2) / (M * h ** 2)) for i in range(n + 1)]
+        self.A_der, self.f_der = A_der, f_der
+        ax, ay = self.Xdd / g, 1 + self.Ydd / g
+        A_c = conv_A(self.P, alpha, self.q)
+        f_c = conv_f(self.P, alpha, self.q, self.thd, self.qd, S, C, ax, ay, g)
+        res['mass_matrix'] = all(is_zero(A_der[i][j] - A_c[i][j]) for i in range(n + 1) for j in range(n + 1))
+        res['forces'] = all(is_zero(f_der[i] - f_c[i]) for i in range(n + 1))
+        # kinetic energy split: T_in = 1/2 M |Vb|^2 + M Vb.vcm_rel + T_rel
+        vcm = conv_vcm_body(self.P, alpha, self.q, self.thd, self.qd)
+        T_rel = conv_Trel(self.P, alpha, self.q, self.thd, self.qd)
+        res['kinetic_energy'] = is_zero(T_in - (M * (self.Xd ** 2 + self.Yd ** 2) / 2
+                                                + M * dot(vb, vcm) + T_rel))
+        res['potential_energy'] = is_zero(V - M * g * self.Y - conv_V(self.P, alpha, self.q, S, C, g))
+        # reaction F = d/dt(int Rdot dm) + M g J  (body components)
+        P_body = [self.integrate(v[0]), self.integrate(v[1])]
+        P_in = body_to_inertial(P_body, S, C)
+        F_in = [sp.expand(self.ddt(P_in[0])), sp.expand(self.ddt(P_in[1]) + M * g)]
+        F_c = body_to_inertial(conv_F_body(self.P, alpha, self.q, self.thd, self.qd, self.thdd, self.qdd,
+                                           S, C, ax, ay, g), S, C)
+        res['reaction'] = all(is_zero(F_in[i] - F_c[i]) for i in range(2))
+        self.F_in = F_in
+        # resultant in full contact: moment about the c.g. projection (base frame)
+        vin = body_to_inertial(v, S, C)
+        acc_pt = [self.ddt(vin[0]), self.ddt(vin[1])]
+        full = {S: 0, C: 1, self.thd: 0, self.thdd: 0}
+        r_in = body_to_inertial(s_, S, C)
+        r_in = (h * alpha + r_in[0], r_in[1])
+        mom = self.integrate(sp.expand((r_in[0] * (acc_pt[1] + g) - r_in[1] * acc_pt[0]).subs(full)))
+        Fy0 = F_in[1].subs(full)
+        num, den = conv_alpha_star_parts(self.P, self.q, self.qdd, ax, ay, g)
+        res['resultant'] = is_zero(mom - M * g * h * num) and is_zero(Fy0 - M * g * den)
+        self.mom_fc, self.Fy_fc = mom, Fy0
+        # full-contact equations = q rows at theta=thd=thdd=0
+        res['full_contact'] = all(is_zero((f_der[j + 1] - f_c[j + 1]).subs(full)) for j in range(n))
+        # energy rate: d/dt(T_rel + V) = -M a_b . v_cm along the equations
+        nu = [self.thd] + self.qd
+        Tr = conv_Trel(self.P, alpha, self.q, self.thd, self.qd)
+        Vr = conv_V(self.P, alpha, self.q, S, C, g)
+        dTr = self.ddt(Tr)
+        # replace nu^T A acc by nu^T f
+        nuAacc = M * h ** 2 * dot(nu, matvec(A_c, acc))
+        dE = sp.expand(dTr - nuAacc + M * h ** 2 * dot(nu, f_c) + self.ddt(Vr))
+        vcm_in = body_to_inertial(vcm, S, C)
+        res['energy_rate'] = is_zero(dE + M * (self.Xdd * vcm_in[0] + self.Ydd * vcm_in[1]))
+        # uplift identity: (h/g)(f_th - b.qdd) = -U1 (alpha=-alpha1), = +U2 (alpha=alpha2), at theta=thd=0
+        a1, a2 = sp.symbols('alpha1 alpha2', positive=True)
+        ok = True
+        for a, sign in ((-a1, -1), (a2, 1)):
+            fc = conv_f(self.P, a, self.q, 0, self.qd, 0, 1, ax, ay, g)
+            b = conv_b(self.P, a, self.q)
+            lhs = (h / g) * (fc[0] - dot(b, self.qdd))
+            U = den * (num / den + a1) if sign < 0 else den * (a2 - num / den)
+            ok = ok and is_zero(lhs - sign * U)
+        res['uplift_identity'] = ok
+        # impact: general alpha_pre -> alpha_post at theta = 0
+        ap, aq = sp.symbols('alpha_pre alpha_post')
+        thm, thp = sp.symbols('thd_m thd_p')
+        qdm = [sp.Symbol('qdm%d' % k) for k in range(1, n + 1)]
+        qdp = [sp.Symbol('qdp%d' % k) for k in range(1, n + 1)]
+        vb0 = (self.Xd, self.Yd)
+        um, up = self.u_body(ap, thm, qdm), self.u_body(aq, thp, qdp)
+        Rm = (vb0[0] + um[0], vb0[1] + um[1])
+        Rp = (vb0[0] + up[0], vb0[1] + up[1])
+        s_post = self.s_body(aq)
+        H = lambda R_: self.integrate(s_post[0] * R_[1] - s_post[1] * R_[0])
+        pmod = lambda R_, j: self.integrate(self.fx[j] * R_[0] + self.fy[j] * R_[1])
+        Ai, rhs = conv_impact_system(self.P, ap, aq, self.q, thm, qdm)
+        nup = [thp] + qdp
+        resid = [dot(Ai[i], nup) - rhs[i] for i in range(n + 1)]
+        cons = [H(Rp) - H(Rm)] + [pmod(Rp, j) - pmod(Rm, j) for j in range(n)]
+        res['impact_map'] = all(is_zero(cons[i] - M * h ** 2 * resid[i]) for i in range(n + 1))
+        self.impact_cons = cons
+        I_der = [self.integrate(Rp[i] - Rm[i]) for i in range(2)]
+        I_c = conv_impulse(self.P, ap, aq, self.q, thm, qdm, thp, qdp)
+        res['impulse'] = all(is_zero(I_der[i] - I_c[i]) for i in range(2))
+        Tin = lambda R_: self.integrate((R_[0] ** 2 + R_[1] ** 2) / 2)
+        loss = self.Xd * I_der[0] + self.Yd * I_der[1] - (Tin(Rp) - Tin(Rm))
+        res['energy_loss_identity'] = is_zero(loss - (conv_Trel(self.P, ap, self.q, thm, qdm)
+                                                       - conv_Trel(self.P, aq, self.q, thp, qdp)))
+        # both edges: thd+ = 0 and modal momenta conserved -> mu qd+ = mu qd- + b_pre thd-
+        if n > 0:
+            bpre = conv_b(self.P, ap, self.q)
+            eqs = [sp.expand(pmod(Rp, j) - pmod(Rm, j)).subs(thp, 0) for j in range(n)]
+            target = [dot(self.mu[j], qdp) - dot(self.mu[j], qdm) - bpre[j] * thm for j in range(n)]
+            res['both_edges_modal'] = all(is_zero(eqs[j] - M * h ** 2 * target[j]) for j in range(n))
+        if n == 0:
+            sol = sp.solve(cons[0], thp)[0]
+            a1s, a2s = sp.symbols('alpha1 alpha2', positive=True)
+            ratio = sp.simplify(sol.subs({ap: a2s, aq: -a1s}) / thm)
+            res['rigid_ratio'] = is_zero(ratio - (1 + self.zeta2 - a1s * a2s) / (1 + self.zeta2 + a1s ** 2))
+            self.rigid_ratio = ratio
+        # static overturning: at rest, ax=0, ay=1, the rocking forces vanish iff the conv. conditions hold
+        fst = conv_f(self.P, alpha, self.q, 0, [0] * n, S, C, 0, 1, g)
+        w = conv_w(self.P, alpha, self.q)
+        res['static_theta_row'] = is_zero(fst[0] + (g / h) * (w[0] * C - w[1] * S))
+        return res
+
+
+def symbolic_checks(nlist, verbose=False):
+    allres = {}
+    gens = {}
+    for n in nlist:
+        t0 = time.time()
+        G = General(n)
+        r = G.derive()
+        allres[n] = r
+        gens[n] = G
+        if verbose:
+            print('  symbolic n=%d (%.1f s): %s' % (n, time.time() - t0, r), file=sys.stderr)
+    return allres, gens
+
+
+# ---------------------------------------------------------------------------
+# Part (b): realizable discrete bodies, direct point-mass mechanics
+# ---------------------------------------------------------------------------
+
+class PointMassKernel:
+    """Per-point-mass mechanics derived with explicit sin/cos (independent of part (a))."""
+
+    def __init__(self, n):
+        self.n = n
+        th, thd, thdd = sp.symbols('th thd thdd')
+        Xd, Yd, Xdd, Ydd, g = sp.symbols('Xd Yd Xdd Ydd g')
+        m, sx, sy, ex = sp.symbols('m sx sy ex')  # sx, sy: undeformed position rel. to pivot
+        q = list(sp.symbols('q1:%d' % (n + 1))) if n else []
+        qd = list(sp.symbols('qd1:%d' % (n + 1))) if n else []
+        qdd = list(sp.symbols('qdd1:%d' % (n + 1))) if n else []
+        fx = list(sp.symbols('fx1:%d' % (n + 1))) if n else []
+        fy = list(sp.symbols('fy1:%d' % (n + 1))) if n else []
+        X, Y = sp.symbols('X Y')
+        bx = sx + sum((fx[k] * q[k] for k in range(n)), 0)
+        by = sy + sum((fy[k] * q[k] for k in range(n)), 0)
+        # inertial position: base + pivot + rotation(theta) of body vector
+        R = sp.Matrix([X + ex + sp.cos(th) * bx - sp.sin(th) * by,
+                       Y + sp.sin(th) * bx + sp.cos(th) * by])
+        xs, xds, xdds = [th] + q, [thd] + qd, [thdd] + qdd
+
+        def ddt(e):
+            out = sp.diff(e, X) * Xd + sp.diff(e, Y) * Yd + sp.diff(e, Xd) * Xdd + sp.diff(e, Yd) * Ydd
+            for a, b_, c_ in zip(xs, xds, xdds):
+                out += sp.diff(e, a) * b_ + sp.diff(e, b_) * c_
+            return out
+        Rd = R.applyfunc(ddt)
+        Rdd = Rd.applyfunc(ddt)
+        T = m * (Rd[0] ** 2 + Rd[1] ** 2) / 2
+        V = m * g * (R[1] - Y)
+        EL = [ddt(sp.diff(T, xd)) - sp.diff(T, x) + sp.diff(V, x) for x, xd in zip(xs, xds)]
+        args = [m, sx, sy, ex] + fx + fy + xs + xds + xdds + [Xd, Yd, Xdd, Ydd, g]
+        self.args = args
+        lam = lambda e: sp.lambdify(args, e, modules='mpmath')
+        zero_acc = {a: 0 for a in xdds}
+        self.EL0 = lam(sp.Matrix([e.subs(zero_acc) for e in EL]))
+        self.ELA = lam(sp.Matrix([[sp.diff(e, a) for a in xdds] for e in EL]))
+        self.Rd = lam(Rd.subs({X: 0, Y: 0}))
+        self.Rdd = lam(Rdd)
+        self.Rrel = lam(R.subs({X: 0, Y: 0}))  # relative to the base origin (c.g. projection)
+
+    def call(self, fn, pt, pivot_x, th, q, thd, qd, thdd, qdd, base):
+        m, px, py, phx, phy = pt
+        a = ([m, px - pivot_x, py, pivot_x] + list(phx) + list(phy) + [th] + list(q) + [thd] + list(qd)
+             + [thdd] + list(qdd) + list(base))
+        return fn(*a)
+
+
+def mpf(x):
+    return mp.mpf(float(x))
+
+
+class Body:
+    def __init__(self, n, masses, pos, modes, k, b1, b2, name):
+        """pos: list of (x, y) relative to the c.g. projection on the base (y up from base).
+        modes[a][k] = (phix, phiy)."""
+        self.n, self.name = n, name
+        self.m = masses
+        self.M = sum(masses)
+        self.xc = sum(mi * p[0] for mi, p in zip(masses, pos)) / self.M
+        self.h = sum(mi * p[1] for mi, p in zip(masses, pos)) / self.M
+        assert abs(self.xc) < mp.mpf('1e-25')
+        self.pos = pos
+        self.modes = modes
+        self.k = k
+        self.b1, self.b2 = b1, b2
+        self.params()
+
+    def params(self):
+        n, M, h = self.n, self.M, self.h
+        Mh2 = M * h * h
+        rho = [(p[0], p[1] - h) for p in self.pos]
+        self.rho = rho
+        P = dict(n=n, M=M, h=h)
+        P['zeta2'] = sum(mi * (r[0] ** 2 + r[1] ** 2) for mi, r in zip(self.m, rho)) / Mh2
+        ph = self.modes
+        P['mu'] = [[sum(mi * (ph[a][i][0] * ph[a][j][0] + ph[a][i][1] * ph[a][j][1])
+                        for a, mi in enumerate(self.m)) / Mh2 for j in range(n)] for i in range(n)]
+        P['gamma'] = [[sum(mi * (ph[a][i][0] * ph[a][j][1] - ph[a][i][1] * ph[a][j][0])
+                           for a, mi in enumerate(self.m)) / Mh2 for j in range(n)] for i in range(n)]
+        P['kappa'] = [[self.k[i][j] / (M * G * h) for j in range(n)] for i in range(n)]
+        P['psi_x'] = [sum(mi * ph[a][i][0] for a, mi in enumerate(self.m)) / (M * h) for i in range(n)]
+        P['psi_y'] = [sum(mi * ph[a][i][1] for a, mi in enumerate(self.m)) / (M * h) for i in range(n)]
+        P['delta'] = [sum(mi * (rho[a][0] * ph[a][i][0] + rho[a][1] * ph[a][i][1])
+                          for a, mi in enumerate(self.m)) / Mh2 for i in range(n)]
+        P['beta'] = [sum(mi * (rho[a][0] * ph[a][i][1] - rho[a][1] * ph[a][i][0])
+                         for a, mi in enumerate(self.m)) / Mh2 for i in range(n)]
+        self.P = P
+        self.alpha1, self.alpha2 = self.b1 / h, self.b2 / h
+
+    def pts(self):
+        for a, mi in enumerate(self.m):
+            yield (mi, self.pos[a][0], self.pos[a][1],
+                   [self.modes[a][k][0] for k in range(self.n)], [self.modes[a][k][1] for k in range(self.n)])
+
+
+G = mp.mpf('9.80665')
+
+
+def rel(a, b):
+    a, b = mp.mpf(a), mp.mpf(b)
+    return abs(a - b) / max(mp.mpf(1), abs(a), abs(b))
+
+
+class Checker:
+    def __init__(self):
+        self.maxerr = mp.mpf(0)
+        self.tol = mp.mpf('1e-12')
+        self.where = ''
+
+    def eq(self, a, b, what):
+        if isinstance(a, (list, tuple)):
+            for x, y in zip(a, b):
+                self.eq(x, y, what)
+            return
+        e = rel(a, b)
+        if e > self.maxerr:
+            self.maxerr, self.where = e, what
+        assert e < self.tol, 'mismatch %s: %s vs %s' % (what, a, b)
+
+
+def direct_dynamics(K, body, pivot_x, th, q, thd, qd, base, g):
+    n = body.n
+    zero = [0] * n
+    EL0 = mp.matrix(n + 1, 1)
+    ELA = mp.matrix(n + 1, n + 1)
+    for pt in body.pts():
+        EL0 += K.call(K.EL0, pt, pivot_x, th, q, thd, qd, 0, zero, [0, 0] + list(base) + [g])
+        ELA += K.call(K.ELA, pt, pivot_x, th, q, thd, qd, 0, zero, [0, 0] + list(base) + [g])
+    # strain energy
+    for j in range(n):
+        EL0[j + 1] += sum(body.k[j][i] * q[i] for i in range(n))
+    return ELA, EL0
+
+
+def solve_lin(A, b):
+    return mp.lu_solve(A, b)
+
+
+def rocking_state(K, body, edge, th, q, thd, qd, base, chk):
+    n, P, M, h, g = body.n, body.P, body.M, body.h, G
+    pivot_x = -body.b1 if edge == 1 else body.b2
+    alpha = -body.alpha1 if edge == 1 else body.alpha2
+    ELA, EL0 = direct_dynamics(K, body, pivot_x, th, q, thd, qd, base, g)
+    acc = solve_lin(ELA, -EL0)
+    acc = [acc[i] for i in range(n + 1)]
+    A_dir = [[ELA[i, j] / (M * h * h) for j in range(n + 1)] for i in range(n + 1)]
+    f_dir = [-EL0[i] / (M * h * h) for i in range(n + 1)]
+    s, c = mp.sin(th), mp.cos(th)
+    ax, ay = base[0] / g, 1 + base[1] / g
+    A_c = conv_A(P, alpha, q)
+    f_c = conv_f(P, alpha, q, thd, qd, s, c, ax, ay, g)
+    chk.eq([x for r in A_dir for x in r], [x for r in A_c for x in r], 'mass matrix')
+    chk.eq(f_dir, f_c, 'forces')
+    thdd, qdd = acc[0], acc[1:]
+    # reaction, energies, power directly from the point masses
+    F = [mp.mpf(0), M * g]
+    T = mp.mpf(0)
+    V = sum(q[i] * body.k[i][j] * q[j] for i in range(n) for j in range(n)) / 2
+    pw = mp.mpf(0)
+    dE = sum(q[i] * body.k[i][j] * qd[j] for i in range(n) for j in range(n))
+    for pt in body.pts():
+        m = pt[0]
+        Rdd = K.call(K.Rdd, pt, pivot_x, th, q, thd, qd, thdd, qdd, [0, 0] + list(base) + [g])
+        Rd = K.call(K.Rd, pt, pivot_x, th, q, thd, qd, thdd, qdd, [0, 0] + list(base) + [g])
+        Rr = K.call(K.Rrel, pt, pivot_x, th, q, thd, qd, thdd, qdd, [0, 0] + list(base) + [g])
+        F[0] += m * Rdd[0]
+        F[1] += m * Rdd[1]
+        T += m * (Rd[0] ** 2 + Rd[1] ** 2) / 2
+        V += m * g * Rr[1]
+        pw -= m * (base[0] * Rd[0] + base[1] * Rd[1])
+        dE += m * (Rd[0] * (Rdd[0] - base[0]) + Rd[1] * (Rdd[1] - base[1]) + g * Rd[1])
+    chk.eq(dE, pw, 'energy rate (direct)')
+    Fc = body_to_inertial(conv_F_body(P, alpha, q, thd, qd, thdd, qdd, s, c, ax, ay, g), s, c)
+    chk.eq(F, Fc, 'reaction')
+    chk.eq(T, conv_Trel(P, alpha, q, thd, qd), 'T_rel')
+    chk.eq(V, conv_V(P, alpha, q, s, c, g), 'V')
+    vcm = body_to_inertial(conv_vcm_body(P, alpha, q, thd, qd), s, c)
+    chk.eq(pw, -M * (base[0] * vcm[0] + base[1] * vcm[1]), 'input power')
+    return dict(edge=edge, theta=th, q=q, theta_dot=thd, q_dot=qd, base_acc=list(base),
+                mass_matrix=A_dir, forces=f_dir, accelerations=acc, reaction=F,
+                kinetic_energy=T, potential_energy=V, input_power=pw)
+
+
+def full_contact_state(K, body, q, qd, base, chk):
+    n, P, M, h, g = body.n, body.P, body.M, body.h, G
+    pivot_x = -body.b1
+    ELA, EL0 = direct_dynamics(K, body, pivot_x, 0, q, 0, qd, base, g)
+    if n:
+        A = mp.matrix([[ELA[i + 1, j + 1] for j in range(n)] for i in range(n)])
+        b = mp.matrix([-EL0[i + 1] for i in range(n)])
+        qdd = solve_lin(A, b)
+        qdd = [qdd[i] for i in range(n)]
+    else:
+        qdd = []
+    ax, ay = base[0] / g, 1 + base[1] / g
+    # closed form mu qdd = -(g/h)(kappa q + psi_x ax + psi_y ay)
+    if n:
+        rhs = [-(g / h) * (dot(P['kappa'][j], q) + P['psi_x'][j] * ax + P['psi_y'][j] * ay) for j in range(n)]
+        qc = solve_lin(mp.matrix(P['mu']), mp.matrix(rhs))
+        chk.eq(qdd, [qc[i] for i in range(n)], 'full contact qdd')
+    F = [mp.mpf(0), M * g]
+    mom = mp.mpf(0)
+    for pt in body.pts():
+        m = pt[0]
+        Rdd = K.call(K.Rdd, pt, pivot_x, 0, q, 0, qd, 0, qdd, [0, 0] + list(base) + [g])
+        Rr = K.call(K.Rrel, pt, pivot_x, 0, q, 0, qd, 0, qdd, [0, 0] + list(base) + [g])
+        F[0] += m * Rdd[0]
+        F[1] += m * Rdd[1]
+        mom += m * (Rr[0] * (Rdd[1] + g) - Rr[1] * Rdd[0])
+    alpha_star = mom / (h * F[1])
+    Fc = conv_F_body(P, 0, q, 0, qd, 0, qdd, 0, 1, ax, ay, g)
+    chk.eq(F, Fc, 'full contact reaction')
+    num, den = conv_alpha_star_parts(P, q, qdd, ax, ay, g)
+    chk.eq(alpha_star, num / den, 'resultant')
+    return dict(q=q, q_dot=qd, base_acc=list(base), q_ddot=qdd, reaction=F, resultant=alpha_star)
+
+
+def impact(K, body, landing, q, thdm, qdm, vb, chk, stats):
+    n, P, M, h, g = body.n, body.P, body.M, body.h, G
+    if landing == 1:
+        xpre, xpost, apre, apost, sign_post = body.b2, -body.b1, body.alpha2, -body.alpha1, 1
+    else:
+        xpre, xpost, apre, apost, sign_post = -body.b1, body.b2, -body.alpha1, body.alpha2, -1
+    pts = list(body.pts())
+    base = [vb[0], vb[1], 0, 0, g]
+
+    def vel(pt, pivot, thd, qd):
+        return K.call(K.Rd, pt, pivot, 0, q, thd, qd, 0, [0] * n, base)
+
+    def rel_pos(pt):
+        return K.call(K.Rrel, pt, xpost, 0, q, 0, [0] * n, 0, [0] * n, base)
+
+    def conserved(pivot, thd, qd):
+        """[H about landing point, p_1..p_n]"""
+        out = [mp.mpf(0)] * (n + 1)
+        for pt in pts:
+            m, v, r = pt[0], vel(pt, pivot, thd, qd), rel_pos(pt)
+            out[0] += m * ((r[0] - xpost) * v[1] - r[1] * v[0])
+            for j in range(n):
+                out[j + 1] += m * (pt[3][j] * v[0] + pt[4][j] * v[1])
+        return out
+    pre = conserved(xpre, thdm, qdm)
+    # unknowns enter linearly: build the matrix column by column
+    base0 = conserved(xpost, 0, [0] * n)
+    cols = []
+    for k in range(n + 1):
+        e = [0] * (n + 1)
+        e[k] = 1
+        ck = conserved(xpost, e[0], e[1:])
+        cols.append([ck[i] - base0[i] for i in range(n + 1)])
+    A = mp.matrix([[cols[j][i] for j in range(n + 1)] for i in range(n + 1)])
+    sol = solve_lin(A, mp.matrix([pre[i] - base0[i] for i in range(n + 1)]))
+    thdp, qdp = sol[0], [sol[i + 1] for i in range(n)]
+    Ac, rhs = conv_impact_system(P, apre, apost, q, thdm, qdm)
+    solc = solve_lin(mp.matrix(Ac), mp.matrix(rhs))
+    chk.eq([sol[i] for i in range(n + 1)], [solc[i] for i in range(n + 1)], 'impact map')
+
+    def impulse_energy(thdp_, qdp_):
+        I = [mp.mpf(0), mp.mpf(0)]
+        dT = mp.mpf(0)
+        for pt in pts:
+            m = pt[0]
+            vm, vp = vel(pt, xpre, thdm, qdm), vel(pt, xpost, thdp_, qdp_)
+            I[0] += m * (vp[0] - vm[0])
+            I[1] += m * (vp[1] - vm[1])
+            dT += m * (vp[0] ** 2 + vp[1] ** 2 - vm[0] ** 2 - vm[1] ** 2) / 2
+        return I, vb[0] * I[0] + vb[1] * I[1] - dT
+    I, E = impulse_energy(thdp, qdp)
+    chk.eq(I, conv_impulse(P, apre, apost, q, thdm, qdm, thdp, qdp), 'impulse')
+    chk.eq(E, conv_Trel(P, apre, q, thdm, qdm) - conv_Trel(P, apost, q, thdp, qdp), 'energy loss')
+    assert E > -mp.mpf('1e-20'), 'negative single-edge impact loss'
+    # both edges: thd+ = 0, modal momenta conserved
+    if n:
+        Am = mp.matrix([[A[i + 1, j + 1] for j in range(n)] for i in range(n)])
+        qdb = solve_lin(Am, mp.matrix([pre[i + 1] - base0[i + 1] for i in range(n)]))
+        qdb = [qdb[i] for i in range(n)]
+        bpre = conv_b(P, apre, q)
+        qc = solve_lin(mp.matrix(P['mu']), mp.matrix([dot(P['mu'][j], qdm) + bpre[j] * thdm for j in range(n)]))
+        chk.eq(qdb, [qc[i] for i in range(n)], 'both-edges qd+')
+    else:
+        qdb = []
+    Ib, Eb = impulse_energy(0, qdb)
+    chk.eq(Ib, conv_impulse(P, apre, apost, q, thdm, qdm, 0, qdb), 'both-edges impulse')
+    chk.eq(Eb, conv_Trel(P, apre, q, thdm, qdm) - conv_Trel(P, apost, q, 0, qdb), 'both-edges loss')
+    assert Eb > -mp.mpf('1e-20'), 'negative both-edges loss'
+    # closed form of the single-edge map: thd+ does not depend on qd-
+    #   thd+/thd- = (m_post - Dalpha w_post_x - b_post mu^-1 b_pre) / S_post
+    Dal = apre - apost
+    S_post, S_pre = schur(P, apost, q), schur(P, apre, q)
+    Apost, bpost, bpre = conv_A(P, apost, q), conv_b(P, apost, q), conv_b(P, apre, q)
+    num = Apost[0][0] - Dal * conv_w(P, apost, q)[0] - (dot(bpost, mu_solve(P, bpre)) if n else 0)
+    chk.eq(thdp, num / S_post * thdm, 'closed-form thd+')
+    # losses via the Schur complements (modal momentum p conserved)
+    chk.eq(E, M * h * h / 2 * (S_pre * thdm ** 2 - S_post * thdp ** 2), 'loss via Schur')
+    chk.eq(Eb, M * h * h / 2 * S_pre * thdm ** 2, 'both-edges loss via Schur')
+    # split of the vertical impulse: moment about the landing edge of the other edge's impulse
+    post = conserved(xpost, 0, qdb)
+    I_other_y = (post[0] - pre[0]) / (xpre - xpost)
+    I_land_y = Ib[1] - I_other_y
+    # closed forms: I_other_y = -M h S_post thd+ / Dalpha,  I_land_y = M h S_pre thd- / Dalpha
+    chk.eq(I_other_y, -M * h * S_post * thdp / Dal, 'both-edges I_other_y')
+    chk.eq(I_land_y, M * h * S_pre * thdm / Dal, 'both-edges I_land_y')
+    applies = thdp * sign_post < 0
+    stats['impacts'] += 1
+    if applies:
+        stats['both_applies'] += 1
+        if I_other_y < 0 or I_land_y < 0:
+            stats['both_negative'].append((body.name, landing, float(I_land_y), float(I_other_y)))
+    stats['min_ratio'] = min(stats['min_ratio'], float(thdp / thdm))
+    return dict(landing_edge=landing, q=q, theta_dot_minus=thdm, q_dot_minus=qdm,
+                theta_dot_plus=thdp, q_dot_plus=qdp, impulse=I, energy_loss=E,
+                both_edges=dict(q_dot_plus=qdb, impulse=Ib, energy_loss=Eb))
+
+
+def mu_solve(P, v):
+    x = solve_lin(mp.matrix(P['mu']), mp.matrix(list(v)))
+    return [x[i] for i in range(P['n'])]
+
+
+def schur(P, alpha, q):
+    """S = m - b^T mu^-1 b  (> 0: A is positive definite)."""
+    A, b = conv_A(P, alpha, q), conv_b(P, alpha, q)
+    return A[0][0] - (dot(b, mu_solve(P, b)) if P['n'] else 0)
+
+
+def tipping_angles(K, body, chk):
+    n, P = body.n, body.P
+    out = []
+    for edge in (1, 2):
+        alpha = -body.alpha1 if edge == 1 else body.alpha2
+        pivot_x = -body.b1 if edge == 1 else body.b2
+
+        def qstat(th):
+            if not n:
+                return []
+            rhs = [-(P['psi_x'][j] * mp.sin(th) + P['psi_y'][j] * mp.cos(th)) for j in range(n)]
+            x = solve_lin(mp.matrix(P['kappa']), mp.matrix(rhs))
+            return [x[i] for i in range(n)]
+
+        def fun(th):
+            q = qstat(th)
+            w = conv_w(P, alpha, q)
+            return mp.tan(th) - w[0] / w[1]
+        th0 = mp.atan(body.alpha1) if edge == 1 else -mp.atan(body.alpha2)
+        th = mp.findroot(fun, th0)
+        # direct check: all generalized forces vanish at rest under gravity alone
+        q = qstat(th)
+        ELA, EL0 = direct_dynamics(K, body, pivot_x, th, q, 0, [0] * n, [0, 0], G)
+        for i in range(n + 1):
+            chk.eq(EL0[i] / (body.M * G * body.h), 0, 'static overturning')
+        out.append(abs(th))
+    return out
+
+
+# ---------------------------------------------------------------------------
+# body generation
+# ---------------------------------------------------------------------------
+
+def random_body(rng, n, name):
+    N = int(rng.randint(6, 9))
+    h_target = rng.uniform(0.5, 3.0)
+    M_target = 10 ** rng.uniform(1, 4)
+    w = rng.uniform(0.5, 2.0, N)
+    w = w / w.sum() * M_target
+    masses = [mpf(x) for x in w]
+    xs = rng.uniform(-0.5, 0.5, N) * rng.uniform(0.5, 1.5)
+    ys = rng.uniform(0.05, 1.0, N)
+    M = sum(masses)
+    xc = sum(mi * mpf(x) for mi, x in zip(masses, xs)) / M
+    yc = sum(mi * mpf(y) for mi, y in zip(masses, ys)) / M
+    scale = mpf(h_target) / yc
+    pos = [((mpf(x) - xc) * scale, mpf(y) * scale) for x, y in zip(xs, ys)]
+    h = yc * scale
+    b1 = h * mpf(rng.uniform(0.15, 0.7))
+    b2 = h * mpf(rng.uniform(0.15, 0.7))
+    modes = [[(mpf(rng.uniform(-0.4, 0.4)) * h, mpf(rng.uniform(-0.4, 0.4)) * h) for _ in range(n)]
+             for _ in range(N)]
+    k = [[mp.mpf(0)] * n for _ in range(n)]
+    if n:
+        mu = np.array([[float(sum(mi * (modes[a][i][0] * modes[a][j][0] + modes[a][i][1] * modes[a][j][1])
+                                  for a, mi in enumerate(masses))) for j in range(n)] for i in range(n)])
+        L = np.linalg.cholesky(mu)
+        Q, _ = np.linalg.qr(rng.normal(size=(n, n)))
+        om2 = rng.uniform(15.0, 80.0, n) ** 2
+        kk = L @ Q @ np.diag(om2) @ Q.T @ L.T  # N/m (q dimensionless)
+        k = [[(mpf(kk[i][j]) + mpf(kk[j][i])) / 2 for j in range(n)] for i in range(n)]
+    return Body(n, masses, pos, modes, k, b1, b2, name)
+
+
+def squat_block():
+    """rigid uniform rectangle, half-width b, height 2h, b/h = 2, by 4 Gauss-point masses."""
+    h, b, M = mp.mpf(1), mp.mpf(2), mp.mpf(1000)
+    r3 = 1 / mp.sqrt(3)
+    pos = [(sx * b * r3, h + sy * h * r3) for sx in (-1, 1) for sy in (-1, 1)]
+    return Body(0, [M / 4] * 4, pos, [[] for _ in range(4)], [], b, b, 'squat block b/h=2')
+
+
+# ---------------------------------------------------------------------------
+
+def fmt(x):
+    if isinstance(x, dict):
+        return '{' + ', '.join('"%s": %s' % (k, fmt(v)) for k, v in x.items()) + '}'
+    if isinstance(x, (list, tuple)):
+        return '[' + ', '.join(fmt(v) for v in x) + ']'
+    if isinstance(x, (int, np.integer)) and not isinstance(x, bool):
+        return str(int(x))
+    t = '%.17g' % float(x)
+    return t if any(ch in t for ch in '.eEn') else t + '.0'
+
+
+def case_json(body, K, rng, chk, stats):
+    n, P = body.n, body.P
+    params = dict(M=body.M, h=body.h, b1=body.b1, b2=body.b2, zeta2=P['zeta2'], mu=P['mu'],
+                  kappa=P['kappa'], gamma=P['gamma'], psi_x=P['psi_x'], psi_y=P['psi_y'],
+                  delta=P['delta'], beta=P['beta'])
+    u = lambda a, b: mpf(rng.uniform(a, b))
+    rocking = []
+    for i in range(6):
+        edge = 1 if i % 2 == 0 else 2
+        th = u(0.005, 0.3) * (1 if edge == 1 else -1)
+        q = [mpf(0.05 * rng.normal()) for _ in range(n)]
+        qd = [mpf(rng.normal()) for _ in range(n)]
+        base = [u(-0.3, 0.3) * G, u(-0.3, 0.3) * G]
+        rocking.append(rocking_state(K, body, edge, th, q, u(-1.5, 1.5), qd, base, chk))
+    full = []
+    for i in range(3):
+        q = [mpf(0.05 * rng.normal()) for _ in range(n)]
+        qd = [mpf(rng.normal()) for _ in range(n)]
+        base = [u(-0.3, 0.3) * G, u(-0.3, 0.3) * G]
+        full.append(full_contact_state(K, body, q, qd, base, chk))
+    imp = []
+    for i in range(4):
+        landing = 1 if i % 2 == 0 else 2
+        q = [mpf(0.05 * rng.normal()) for _ in range(n)]
+        qd = [mpf(rng.normal()) for _ in range(n)]
+        thdm = u(0.05, 1.5) * (1 if landing == 1 else -1)
+        vb = [u(-0.5, 0.5), u(-0.5, 0.5)]
+        imp.append(impact(K, body, landing, q, thdm, qd, vb, chk, stats))
+    return dict(n=n, params=params, tipping_angle=tipping_angles(K, body, chk), rocking=rocking,
+                full_contact=full, impacts=imp)
+
+
+def trig_reduce(e):
+    """reduce modulo cos^2 + sin^2 = 1 (c = cos(theta), s = sin(theta))."""
+    e = sp.expand(e)
+    return sp.expand(sp.rem(e, TRIG, C)) if e.has(C) else e
+
+
+def print_equations(gens):
+    print('Notation: s = sin(theta), c = cos(theta), thd = dtheta/dt, qd = dq/dt, dd = second derivative;')
+    print('Xd, Yd, Xdd, Ydd: base velocity / acceleration; alpha = -alpha1 (pivot 1) or alpha2 (pivot 2).')
+    for n, Gn in sorted(gens.items()):
+        if n not in (0, 1, 2):
+            continue
+        print('=' * 72)
+        print('n = %d   (alpha: tipping parameter of the current pivot; thd = dtheta/dt)' % n)
+        print('T_inertial =', sp.collect(trig_reduce(Gn.T_in), [Gn.Xd, Gn.Yd]))
+        print('V =', sp.factor_terms(Gn.V))
+        print('A (mass matrix over M h^2):')
+        for row in Gn.A_der:
+            print('   ', [sp.factor_terms(x) for x in row])
+        print('f (forces, A acc = f):')
+        for x in Gn.f_der:
+            print('   ', sp.collect(trig_reduce(x), [Gn.thd, Gn.g, Gn.Xdd, Gn.Ydd]))
+        print('floor reaction (inertial I, J):')
+        for x in Gn.F_in:
+            print('   ', sp.collect(trig_reduce(x), [Gn.thd, Gn.thdd, Gn.g, Gn.Xdd, Gn.Ydd]))
+        print('full contact: moment of floor force about c.g. projection =', sp.factor_terms(Gn.mom_fc))
+        print('              vertical reaction =', sp.factor_terms(Gn.Fy_fc))
+        print('impact conservation [H_landing; p_j] (post - pre):')
+        for x in Gn.impact_cons:
+            print('   ', sp.collect(sp.expand(x), [sp.Symbol('thd_p'), sp.Symbol('thd_m')]))
+        if n == 0:
+            print('rigid ratio thd+/thd- =', Gn.rigid_ratio)
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument('--out')
+    ap.add_argument('--seed', type=int, default=12345)
+    ap.add_argument('--print', action='store_true', dest='do_print')
+    ap.add_argument('--symbolic-n', type=int, default=3, help='largest n for the symbolic checks')
+    args = ap.parse_args()
+    t0 = time.time()
+    sres, gens = symbolic_checks(range(0, args.symbolic_n + 1), verbose=True)
+    failed = [(n, k) for n, r in sres.items() for k, v in r.items()
+              if (isinstance(v, bool) and not v) or (isinstance(v, list) and v)]
+    print('symbolic checks (n=0..%d): %s  [%.1f s]' % (args.symbolic_n, 'ALL PASS' if not failed else
+                                                      'FAILED %s' % failed, time.time() - t0), file=sys.stderr)
+    if args.do_print:
+        print_equations(gens)
+    if not args.out:
+        return 1 if failed else 0
+    rng = np.random.RandomState(args.seed)
+    chk = Checker()
+    stats = dict(impacts=0, both_applies=0, both_negative=[], min_ratio=1e9)
+    cases = []
+    kernels = {}
+    for n in range(4):
+        K = kernels.setdefault(n, PointMassKernel(n))
+        bodies = [random_body(rng, n, 'random n=%d #%d' % (n, i)) for i in range(3)]
+        if n == 0:
+            bodies.append(squat_block())
+        for b in bodies:
+            cases.append(case_json(b, K, rng, chk, stats))
+    # extra impacts (not written): wide-base flexible bodies, large modal rates, to exercise
+    # the both-edges rule and check that both edge impulses are compressive where it applies
+    st2 = dict(impacts=0, both_applies=0, both_negative=[], min_ratio=1e9)
+    for n in (1, 2, 3):
+        K = kernels[n]
+        for i in range(4):
+            b = random_body(rng, n, 'stress n=%d #%d' % (n, i))
+            b.b1, b.b2 = b.h * mpf(rng.uniform(0.1, 2.5)), b.h * mpf(rng.uniform(0.1, 2.5))
+            b.params()
+            for k in range(6):
+                q = [mpf(0.1 * rng.normal()) for _ in range(n)]
+                qd = [mpf(rng.normal() * rng.choice([0.1, 1.0, 10.0])) for _ in range(n)]
+                land = 1 + k % 2
+                thdm = mpf(rng.uniform(0.05, 1.5)) * (1 if land == 1 else -1)
+                impact(K, b, land, q, thdm, qd, [0, 0], chk, st2)
+    print('stress impacts: %d, both-edges rule applies in %d, negative edge impulse in: %s' %
+          (st2['impacts'], st2['both_applies'], st2['both_negative'] or 'none'), file=sys.stderr)
+    sq = cases[3]
+    ratio = sq['impacts'][0]['theta_dot_plus'] / sq['impacts'][0]['theta_dot_minus']
+    chk.eq(ratio, mp.mpf(1) - mp.mpf(3) / 2 * mp.sin(mp.atan(2)) ** 2, 'Housner ratio')
+    with open(args.out, 'w') as fh:
+        fh.write('{"g": 9.80665, "seed": %d, "cases": [\n' % args.seed)
+        fh.write(',\n'.join(fmt(c) for c in cases))
+        fh.write('\n]}\n')
+    json.load(open(args.out))
+    print('numeric cases: %d, max relative (a)-vs-(b) difference %.2e (%s)' %
+          (len(cases), float(chk.maxerr), chk.where), file=sys.stderr)
+    print('impacts: %d, both-edges rule applies in %d, negative edge impulse in: %s; min thd+/thd- = %.4f' %
+          (stats['impacts'], stats['both_applies'], stats['both_negative'] or 'none', stats['min_ratio']),
+          file=sys.stderr)
+    print('total %.1f s' % (time.time() - t0), file=sys.stderr)
+    return 1 if failed else 0
+
+
+if __name__ == '__main__':
+    sys.exit(main())
