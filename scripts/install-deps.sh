@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Installs the Debian packages flexrock builds and tests with, only those missing.
-# Usage: scripts/install-deps.sh [--python] [--bench]
+# Usage: scripts/install-deps.sh [--python] [--bench] [--lint]
 set -euo pipefail
 
 pkgs=(build-essential cmake ninja-build pkg-config
@@ -11,7 +11,8 @@ for arg in "$@"; do
   case "$arg" in
     --python) pkgs+=(pybind11-dev python3-dev python3-numpy python3-matplotlib python3-pytest) ;;
     --bench) pkgs+=(libbenchmark-dev python3-scipy python3-numpy) ;;
-    *) echo "install-deps.sh: unknown option '$arg' (expected --python or --bench)" >&2; exit 2 ;;
+    --lint) pkgs+=(clang-format) ;;
+    *) echo "install-deps.sh: unknown option '$arg' (expected --python, --bench or --lint)" >&2; exit 2 ;;
   esac
 done
 

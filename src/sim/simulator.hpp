@@ -428,8 +428,11 @@ class Simulator {
     }
     ex.max_impulse = std::max(ex.max_impulse, out.impulse(1));
     ex.max_impact_energy_loss = std::max(ex.max_impact_energy_loss, out.energy_loss);
-    ex.max_friction_demand = std::max(ex.max_friction_demand, ev.friction_demand);
-    if (std::isfinite(opt_.friction_coefficient) && ev.friction_demand > opt_.friction_coefficient) {
+    // the cut-off is a numerical device on a vanishing impulse (its ratio is 1/alpha for a rigid
+    // block whatever the speed): it sets no friction demand
+    if (!chatter) ex.max_friction_demand = std::max(ex.max_friction_demand, ev.friction_demand);
+    if (!chatter && std::isfinite(opt_.friction_coefficient) &&
+        ev.friction_demand > opt_.friction_coefficient) {
       res_.friction_exceeded = true;
       Event fe = ev;
       fe.kind = EventKind::kFrictionExceeded;

@@ -22,7 +22,8 @@ struct LumpedNode {
   double x = 0.0;               // [m]
   double y = 0.0;               // [m] height above the base line
   double mass = 0.0;            // [kg]
-  double rotary_inertia = 0.0;  // [kg m^2] about the node
+  double rotary_inertia = 0.0;  // [kg m^2] about the node; adds to zeta2 only (node rotations
+                                // are not part of the mode shapes)
 };
 
 /// A lumped-mass modal model as a finite-element program exports it. The mode shapes are the
@@ -41,14 +42,17 @@ struct LumpedModel {
 };
 
 /// Every integral of the paper from the lumped model: the shapes are rescaled so that q_i is
-/// the largest displacement of mode i over h (documented in docs/theory.md). Throws InputError
+/// the largest displacement of mode i over h (the sign of each shape is kept). With
+/// `frequencies`, k_ii = omega_i^2 m_ii and k_ij = 0 (modes must be mass-orthogonal; with modal
+/// damping the frequencies must ascend). Without shapes the body is rigid. Throws InputError
 /// for inconsistent data (sizes, shapes at the tipping points, tipping points not straddling
 /// the c.g., non-orthogonal modes with `frequencies`).
 BodyParameters from_lumped_model(const LumpedModel& model);
 
 /// An elastic oscillator on a rocking base slab: a top mass on a lateral spring at `height`
 /// above a rigid base slab of mass `base_mass` and full width `base_width` (uniform, thin).
-/// One mode: the top mass's horizontal displacement.
+/// One mode: the top mass's horizontal displacement. `base_mass` must be > 0 (a massless slab
+/// leaves no rotary inertia about the c.g.).
 BodyParameters oscillator_on_slab(double top_mass, double frequency_hz, double base_mass,
                                   double height, double base_width, double damping_ratio = 0.0);
 

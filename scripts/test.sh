@@ -1,0 +1,8 @@
+#!/usr/bin/env bash
+# Builds flexrock with every test and runs them all; installs missing Debian packages first.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+scripts/install-deps.sh
+cmake --preset release
+cmake --build --preset release -j"$(nproc)"
+ctest --preset release -j"$(nproc)"

@@ -1,0 +1,405 @@
+// Builders of the paper's parameters (Moran & McLennan 1995, KINETICS) from engineering data:
+// every parameter is its integral over the body, here sums over nodes or quadrature along a beam.
+#include "flexrock/model/builders.hpp"
+
+#include <Eigen/Cholesky>
+#include <algorithm>
+#include <boost/math/quadrature/gauss.hpp>
+#include <boost/math/tools/roots.hpp>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <numbers>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "flexrock/core/error.hpp"
+
+namespace flexrock {
+
+namespace {
+
+constexpr int kMaxBuilderModes = 20;         // modes a closed-form builder may generate
+constexpr double kTipTolerance = 1e-9;       // [m] a node this close to a tipping point is on it
+constexpr double kPinnedTolerance = 1e-6;    // |phi| at a tipping point relative to max |phi|
+constexpr double kOrthogonality = 1e-6;      // |m_ij| relative to sqrt(m_ii m_jj), i != j
+constexpr double kSymmetryTolerance = 1e-8;  // given stiffness, relative to its largest entry
+
+std::string num(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.6g", v);
+  return buf;
+}
+
+std::string idx(Eigen::Index i) { return std::to_string(i + 1); }
+
+void require_positive(const char* where, const char* name, double v, const char* unit) {
+  FLEXROCK_THROW_UNLESS(std::isfinite(v) && v > 0.0, std::string(where) + ": " + name + " " + unit +
+                                                         " must be > 0 and finite, got " + num(v));
+}
+
+void require_non_negative(const char* where, const char* name, double v, const char* unit) {
+  FLEXROCK_THROW_UNLESS(
+      std::isfinite(v) && v >= 0.0,
+      std::string(where) + ": " + name + " " + unit + " must be >= 0 and finite, got " + num(v));
+}
+
+void require_damping_ratio(const char* where, double zeta) {
+  FLEXROCK_THROW_UNLESS(std::isfinite(zeta) && zeta >= 0.0 && zeta < 1.0,
+                        std::string(where) + ": damping_ratio must be in [0, 1), got " + num(zeta));
+}
+
+Damping modal_damping(int n, double zeta) {
+  Damping d;
+  d.kind = DampingKind::kModal;
+  d.modal_ratios = VectorX::Constant(n, zeta);
+  return d;
+}
+
+// clamped-free Euler-Bernoulli mode in x = b y, X = b L; the hyperbolic part is written with
+// e^(x - X) and e^(-x) so that no term exceeds O(1) for any mode (cosh - s sinh cancels otherwise)
+struct CantileverMode {
+  double X = 0.0;  // b L, a root of cos X cosh X = -1
+  double s = 0.0;  // (cosh X + cos X)/(sinh X + sin X)
+  double a = 0.0;  // (1 - s) e^X / 2, the coefficient of e^(x - X)
+  double c = 0.0;  // (1 + s)/2, the coefficient of e^(-x)
+
+  explicit CantileverMode(double root) : X(root) {
+    const double e = std::exp(-X);
+    const double den = 1.0 - e * e + 2.0 * std::sin(X) * e;  // 2 e^-X (sinh X + sin X)
+    s = (1.0 + e * e + 2.0 * std::cos(X) * e) / den;
+    a = (std::sin(X) - std::cos(X) - e) / den;
+    c = 0.5 * (1.0 + s);
+  }
+  // cosh x - s sinh x
+  double hyperbolic(double x) const { return a * std::exp(x - X) + c * std::exp(-x); }
+  // cosh x - cos x - s (sinh x - sin x)
+  double shape(double x) const { return hyperbolic(x) - std::cos(x) + s * std::sin(x); }
+  // d^2/dx^2 of shape: cosh x + cos x - s (sinh x + sin x)
+  double curvature(double x) const { return hyperbolic(x) + std::cos(x) - s * std::sin(x); }
+};
+
+// i-th root (1-based) of cos X cosh X = -1; it lies in ((i - 1) pi, i pi)
+double cantilever_root(int i) {
+  // cos X + 1/cosh X: same roots, no overflow
+  auto f = [](double x) { return std::cos(x) + 1.0 / std::cosh(x); };
+  const double lo = (i - 1) * std::numbers::pi, hi = i * std::numbers::pi;
+  std::uintmax_t iters = 200;
+  const auto r = boost::math::tools::toms748_solve(
+      f, lo, hi, f(lo), f(hi), boost::math::tools::eps_tolerance<double>(53), iters);
+  FLEXROCK_DEMAND(iters < 200);
+  return 0.5 * (r.first + r.second);
+}
+
+// integral of f over [0, L] by composite 20-point Gauss-Legendre on `panels` equal panels
+template <class F>
+double integrate(F f, double L, int panels) {
+  const double w = L / panels;
+  double sum = 0.0;
+  for (int p = 0; p < panels; ++p)
+    sum += boost::math::quadrature::gauss<double, 20>::integrate(f, p * w, (p + 1) * w);
+  return sum;
+}
+
+}  // namespace
+
+BodyParameters rigid_block(double width, double height, double mass) {
+  constexpr const char* kWhere = "rigid_block";
+  require_positive(kWhere, "width", width, "[m]");
+  require_positive(kWhere, "height", height, "[m]");
+  require_positive(kWhere, "mass", mass, "[kg]");
+  const double h = 0.5 * height;
+  // I_zz = M (w^2 + H^2)/12 about the centre
+  return BodyParameters::rigid(mass, h, 0.5 * width, 0.5 * width,
+                               (width * width + height * height) / (12.0 * h * h));
+}
+
+BodyParameters rigid_body(double mass, double inertia_cg, double height, double b1, double b2) {
+  constexpr const char* kWhere = "rigid_body";
+  require_positive(kWhere, "mass", mass, "[kg]");
+  require_positive(kWhere, "inertia_cg", inertia_cg, "[kg m^2]");
+  require_positive(kWhere, "height", height, "[m]");
+  require_positive(kWhere, "b1", b1, "[m]");
+  require_positive(kWhere, "b2", b2, "[m]");
+  return BodyParameters::rigid(mass, height, b1, b2, inertia_cg / (mass * height * height));
+}
+
+BodyParameters from_lumped_model(const LumpedModel& model) {
+  constexpr const char* kWhere = "lumped model";
+  const std::string where = kWhere;
+  const auto& nodes = model.nodes;
+  const Eigen::Index nn = static_cast<Eigen::Index>(nodes.size());
+  FLEXROCK_THROW_UNLESS(nn > 0, where + ": nodes must not be empty");
+  require_positive(kWhere, "gravity", model.gravity, "[m/s^2]");
+
+  // nodes and the undeformed c.g.
+  double M = 0.0, xm = 0.0, ym = 0.0;
+  for (Eigen::Index k = 0; k < nn; ++k) {
+    const LumpedNode& nd = nodes[static_cast<std::size_t>(k)];
+    const std::string node = where + ": node " + idx(k);
+    FLEXROCK_THROW_UNLESS(
+        std::isfinite(nd.x) && std::isfinite(nd.y),
+        node + " position must be finite, got (" + num(nd.x) + ", " + num(nd.y) + ")");
+    FLEXROCK_THROW_UNLESS(nd.y >= -kTipTolerance, node + " y must be >= 0 (at or above the base " +
+                                                      "line), got " + num(nd.y));
+    FLEXROCK_THROW_UNLESS(std::isfinite(nd.mass) && nd.mass > 0.0,
+                          node + " mass must be > 0, got " + num(nd.mass));
+    FLEXROCK_THROW_UNLESS(std::isfinite(nd.rotary_inertia) && nd.rotary_inertia >= 0.0,
+                          node + " rotary_inertia must be >= 0, got " + num(nd.rotary_inertia));
+    M += nd.mass;
+    xm += nd.mass * nd.x;
+    ym += nd.mass * nd.y;
+  }
+  const double xc = xm / M, h = ym / M;
+  FLEXROCK_THROW_UNLESS(h > 0.0,
+                        where + ": the c.g. must lie above the base line, got height " + num(h));
+  FLEXROCK_THROW_UNLESS(std::isfinite(model.tip1_x) && std::isfinite(model.tip2_x) &&
+                            model.tip1_x < xc && xc < model.tip2_x,
+                        where + ": tipping points must straddle the c.g., tip1_x < " + num(xc) +
+                            " < tip2_x, got tip1_x = " + num(model.tip1_x) +
+                            ", tip2_x = " + num(model.tip2_x));
+
+  // mode shapes: nodes x modes, both components the same size
+  const bool rigid = model.phi_x.size() == 0 && model.phi_y.size() == 0;
+  const Eigen::Index n = rigid ? 0 : model.phi_x.cols();
+  if (!rigid) {
+    FLEXROCK_THROW_UNLESS(
+        model.phi_x.rows() == nn && model.phi_y.rows() == nn && model.phi_y.cols() == n,
+        where + ": phi_x and phi_y must both be " + std::to_string(nn) +
+            " x modes (one row per node), got phi_x " + std::to_string(model.phi_x.rows()) + "x" +
+            std::to_string(model.phi_x.cols()) + " and phi_y " +
+            std::to_string(model.phi_y.rows()) + "x" + std::to_string(model.phi_y.cols()));
+    FLEXROCK_THROW_UNLESS(model.phi_x.allFinite() && model.phi_y.allFinite(),
+                          where + ": phi_x and phi_y must be finite (a NaN or inf entry)");
+  }
+  const bool has_freq = model.frequencies.size() > 0, has_stiff = model.stiffness.size() > 0;
+  if (n > 0) {
+    FLEXROCK_THROW_UNLESS(has_freq != has_stiff,
+                          where + ": give exactly one of frequencies and stiffness, got " +
+                              (has_freq ? "both" : "neither"));
+  } else {
+    FLEXROCK_THROW_UNLESS(!has_freq && !has_stiff,
+                          where + ": frequencies/stiffness given but there are no mode shapes");
+  }
+
+  // rescale each mode so its largest nodal displacement is h: q_i = that displacement over h
+  MatrixX px(nn, n), py(nn, n);
+  VectorX scale(n);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const VectorX mag =
+        (model.phi_x.col(i).cwiseAbs2() + model.phi_y.col(i).cwiseAbs2()).cwiseSqrt();
+    const double big = mag.maxCoeff();
+    FLEXROCK_THROW_UNLESS(big > 0.0, where + ": mode " + idx(i) + " shape is zero at every node");
+    for (Eigen::Index k = 0; k < nn; ++k) {
+      const LumpedNode& nd = nodes[static_cast<std::size_t>(k)];
+      for (double tip : {model.tip1_x, model.tip2_x}) {
+        const bool on_tip = std::hypot(nd.x - tip, nd.y) <= kTipTolerance;
+        FLEXROCK_THROW_UNLESS(!on_tip || mag(k) <= kPinnedTolerance * big,
+                              where + ": mode " + idx(i) + " moves node " + idx(k) +
+                                  " at the tipping point x = " + num(tip) + " by " + num(mag(k)) +
+                                  " (max " + num(big) +
+                                  "): the modes must be pinned-base modes, zero at both "
+                                  "tipping points");
+      }
+    }
+    scale(i) = h / big;
+    px.col(i) = scale(i) * model.phi_x.col(i);
+    py.col(i) = scale(i) * model.phi_y.col(i);
+  }
+
+  // modal mass m_ij = sum m phi_i.phi_j for the rescaled shapes [kg m^2]
+  VectorX m(nn);
+  for (Eigen::Index k = 0; k < nn; ++k) m(k) = nodes[static_cast<std::size_t>(k)].mass;
+  const MatrixX modal_mass =
+      px.transpose() * m.asDiagonal() * px + py.transpose() * m.asDiagonal() * py;
+
+  // modal stiffness k_ij for the rescaled shapes [J]
+  MatrixX kq = MatrixX::Zero(n, n);
+  if (has_freq) {
+    FLEXROCK_THROW_UNLESS(model.frequencies.size() == n,
+                          where + ": frequencies must have " + std::to_string(n) +
+                              " entries (one per mode), got " +
+                              std::to_string(model.frequencies.size()));
+    for (Eigen::Index i = 0; i < n; ++i) {
+      const double w = model.frequencies(i);
+      FLEXROCK_THROW_UNLESS(std::isfinite(w) && w > 0.0, where + ": frequency " + idx(i) +
+                                                             " [rad/s] must be > 0, got " + num(w));
+      for (Eigen::Index j = 0; j < i; ++j) {
+        const double lim = kOrthogonality * std::sqrt(modal_mass(i, i) * modal_mass(j, j));
+        FLEXROCK_THROW_UNLESS(std::abs(modal_mass(i, j)) <= lim,
+                              where + ": modes " + idx(j) + " and " + idx(i) +
+                                  " are not mass-orthogonal (sum m phi_i.phi_j = " +
+                                  num(modal_mass(i, j) / (scale(i) * scale(j))) +
+                                  ", more than 1e-6 of sqrt(m_ii m_jj)); give stiffness "
+                                  "instead of frequencies");
+      }
+      // orthogonal modes: k = diag(omega_i^2 m_ii); the tolerated m_ij are not carried into k
+      kq(i, i) = w * w * modal_mass(i, i);
+    }
+    if (model.damping.kind == DampingKind::kModal) {
+      for (Eigen::Index i = 1; i < n; ++i)
+        FLEXROCK_THROW_UNLESS(model.frequencies(i) >= model.frequencies(i - 1),
+                              where +
+                                  ": with modal damping the modes must be in ascending "
+                                  "frequency (Body assigns modal_ratios in that order), "
+                                  "frequency " +
+                                  idx(i) + " = " + num(model.frequencies(i)) + " < frequency " +
+                                  idx(i - 1) + " = " + num(model.frequencies(i - 1)));
+    }
+  } else if (has_stiff) {
+    const MatrixX& ks = model.stiffness;
+    FLEXROCK_THROW_UNLESS(ks.rows() == n && ks.cols() == n,
+                          where + ": stiffness must be " + std::to_string(n) + "x" +
+                              std::to_string(n) + " (one row and column per mode), got " +
+                              std::to_string(ks.rows()) + "x" + std::to_string(ks.cols()));
+    FLEXROCK_THROW_UNLESS(ks.allFinite(), where + ": stiffness has a NaN or inf entry");
+    const double big = ks.cwiseAbs().maxCoeff();
+    const double asym = (ks - ks.transpose()).cwiseAbs().maxCoeff();
+    FLEXROCK_THROW_UNLESS(asym <= kSymmetryTolerance * big,
+                          where + ": stiffness must be symmetric, but k - k^T has an entry of " +
+                              "size " + num(asym) + " (largest entry " + num(big) + ")");
+    FLEXROCK_THROW_UNLESS(ks.llt().info() == Eigen::Success,
+                          where +
+                              ": stiffness must be positive definite (every mode needs "
+                              "stiffness)");
+    // u = phi_i q_i = (s_i phi_i)(q_i/s_i): k'_ij = s_i s_j k_ij, symmetrised
+    kq = scale.asDiagonal() * (0.5 * (ks + ks.transpose())) * scale.asDiagonal();
+  }
+
+  if (model.damping.kind == DampingKind::kModal)
+    FLEXROCK_THROW_UNLESS(model.damping.modal_ratios.size() == n,
+                          where + ": modal damping needs one ratio per mode (" + std::to_string(n) +
+                              "), got " + std::to_string(model.damping.modal_ratios.size()));
+
+  // the integrals of the paper as sums over the nodes, rho0 from the c.g.; node rotations are
+  // not part of the mode shapes, so a node's rotary inertia adds to zeta2 only
+  BodyParameters p;
+  p.mass = M;
+  p.height = h;
+  p.b1 = xc - model.tip1_x;
+  p.b2 = model.tip2_x - xc;
+  p.gravity = model.gravity;
+  p.damping = model.damping;
+  const double mh2 = M * h * h;
+  VectorX rx(nn), ry(nn);
+  double inertia = 0.0;
+  for (Eigen::Index k = 0; k < nn; ++k) {
+    const LumpedNode& nd = nodes[static_cast<std::size_t>(k)];
+    rx(k) = nd.x - xc;
+    ry(k) = nd.y - h;
+    inertia += nd.mass * (rx(k) * rx(k) + ry(k) * ry(k)) + nd.rotary_inertia;
+  }
+  p.zeta2 = inertia / mh2;
+  p.mu = modal_mass / mh2;
+  p.kappa = kq / (M * model.gravity * h);
+  p.gamma = (px.transpose() * m.asDiagonal() * py - py.transpose() * m.asDiagonal() * px) / mh2;
+  p.psi_x = px.transpose() * m / (M * h);
+  p.psi_y = py.transpose() * m / (M * h);
+  const VectorX mrx = m.cwiseProduct(rx), mry = m.cwiseProduct(ry);
+  p.delta = (px.transpose() * mrx + py.transpose() * mry) / mh2;
+  p.beta = (py.transpose() * mrx - px.transpose() * mry) / mh2;
+  return p;
+}
+
+BodyParameters oscillator_on_slab(double top_mass, double frequency_hz, double base_mass,
+                                  double height, double base_width, double damping_ratio) {
+  constexpr const char* kWhere = "oscillator_on_slab";
+  require_positive(kWhere, "top_mass", top_mass, "[kg]");
+  require_positive(kWhere, "frequency_hz", frequency_hz, "[Hz]");
+  // a slab is needed: with base_mass = 0 the body is a point mass at its c.g. (zeta2 = 0)
+  require_positive(kWhere, "base_mass", base_mass, "[kg]");
+  require_positive(kWhere, "height", height, "[m]");
+  require_positive(kWhere, "base_width", base_width, "[m]");
+  require_damping_ratio(kWhere, damping_ratio);
+
+  const double m = top_mass, m0 = base_mass, H = height;
+  const double M = m + m0, h = m * H / M, b = 0.5 * base_width;
+  const double w = 2.0 * std::numbers::pi * frequency_hz;
+  const double k = m * w * w;  // [N/m] lateral spring
+  BodyParameters p;
+  p.mass = M;
+  p.height = h;
+  p.b1 = p.b2 = b;
+  // top mass at H - h above the c.g., slab h below it with I = m0 (2b)^2/12 about its centre
+  p.zeta2 = (m * (H - h) * (H - h) + m0 * h * h + m0 * b * b / 3.0) / (M * h * h);
+  // one mode: phi = h i at the top mass, so q = u/h and the strain energy is k h^2 q^2/2
+  p.mu = MatrixX::Constant(1, 1, m / M);
+  p.kappa = MatrixX::Constant(1, 1, k * h / (M * p.gravity));
+  p.gamma = MatrixX::Zero(1, 1);
+  p.psi_x = VectorX::Constant(1, m / M);
+  p.psi_y = VectorX::Zero(1);
+  p.delta = VectorX::Zero(1);
+  p.beta = VectorX::Constant(1, -m * (H - h) / (M * h));
+  p.damping = modal_damping(1, damping_ratio);
+  return p;
+}
+
+BodyParameters uniform_cantilever(double height, double width, double mass_per_length,
+                                  double bending_stiffness, int modes, double base_mass,
+                                  double damping_ratio) {
+  constexpr const char* kWhere = "uniform_cantilever";
+  require_positive(kWhere, "height", height, "[m]");
+  require_positive(kWhere, "width", width, "[m]");
+  require_positive(kWhere, "mass_per_length", mass_per_length, "[kg/m]");
+  require_positive(kWhere, "bending_stiffness", bending_stiffness, "EI [N m^2]");
+  FLEXROCK_THROW_UNLESS(modes >= 1 && modes <= kMaxBuilderModes,
+                        std::string(kWhere) + ": modes must be in [1, " +
+                            std::to_string(kMaxBuilderModes) + "], got " + std::to_string(modes));
+  require_non_negative(kWhere, "base_mass", base_mass, "[kg]");
+  require_damping_ratio(kWhere, damping_ratio);
+
+  const double L = height, w = width, mbar = mass_per_length, EI = bending_stiffness;
+  const double M = mbar * L + base_mass, h = 0.5 * mbar * L * L / M, mh2 = M * h * h;
+  const int n = modes;
+  const int panels = 4 * n + 4;  // >= 4 panels per half-wave of the highest product
+
+  // modes normalised to tip displacement h: phi_i(y) = c_i shape(b_i y), q_i = tip u / h
+  std::vector<CantileverMode> mode;
+  VectorX b(n), c(n);
+  for (int i = 0; i < n; ++i) {
+    mode.emplace_back(cantilever_root(i + 1));
+    b(i) = mode.back().X / L;
+    c(i) = h / mode.back().shape(mode.back().X);
+  }
+  auto phi = [&](int i, double y) {
+    return c(i) * mode[static_cast<std::size_t>(i)].shape(b(i) * y);
+  };
+  auto phi2 = [&](int i, double y) {
+    return c(i) * b(i) * b(i) * mode[static_cast<std::size_t>(i)].curvature(b(i) * y);
+  };
+
+  BodyParameters p;
+  p.mass = M;
+  p.height = h;
+  p.b1 = p.b2 = 0.5 * w;
+  // beam: a uniform rectangle of width w (mbar w^2/12 per length); plate: thin, at y = 0
+  const double beam_inertia =
+      integrate([&](double y) { return mbar * ((y - h) * (y - h) + w * w / 12.0); }, L, 4);
+  p.zeta2 = (beam_inertia + base_mass * (h * h + w * w / 12.0)) / mh2;
+
+  // phi_i = phi_i(y) i along the centre line rho0 = (0, y - h): gamma = psi_y = delta = 0
+  p.mu = MatrixX::Zero(n, n);
+  p.kappa = MatrixX::Zero(n, n);
+  p.gamma = MatrixX::Zero(n, n);
+  p.psi_x = VectorX::Zero(n);
+  p.psi_y = VectorX::Zero(n);
+  p.delta = VectorX::Zero(n);
+  p.beta = VectorX::Zero(n);
+  for (int i = 0; i < n; ++i) {
+    for (int j = 0; j <= i; ++j) {
+      const double mij =
+          integrate([&](double y) { return mbar * phi(i, y) * phi(j, y); }, L, panels);
+      const double kij =
+          integrate([&](double y) { return EI * phi2(i, y) * phi2(j, y); }, L, panels);
+      p.mu(i, j) = p.mu(j, i) = mij / mh2;
+      p.kappa(i, j) = p.kappa(j, i) = kij / (M * p.gravity * h);
+    }
+    p.psi_x(i) = integrate([&](double y) { return mbar * phi(i, y); }, L, panels) / (M * h);
+    p.beta(i) = -integrate([&](double y) { return mbar * (y - h) * phi(i, y); }, L, panels) / mh2;
+  }
+  p.damping = modal_damping(n, damping_ratio);
+  return p;
+}
+
+}  // namespace flexrock
