@@ -18,7 +18,8 @@ void report(const char* title, const SimulationResult& r) {
   std::printf("%s\n", title);
   std::printf("  status        %s (%s)\n", to_string(r.status), r.message.c_str());
   if (e.first_uplift_time >= 0) {
-    std::printf("  first uplift  t = %.4f s about edge %d\n", e.first_uplift_time, e.first_uplift_edge);
+    std::printf("  first uplift  t = %.4f s about edge %d\n", e.first_uplift_time,
+                e.first_uplift_edge);
   } else {
     std::printf("  first uplift  none\n");
   }
@@ -46,7 +47,8 @@ int main(int argc, char** argv) {
          simulate(block, GroundMotion::none(opt.t_end), tilt, opt));
 
   // 2. a marble statue on a plinth, 0.5 m x 1.8 m, under El Centro 1940 N-S
-  const io::Record record = io::read_single_column(data + "/elcentro_1940_ns.dat", 0.02, io::AccelUnit::kG);
+  const io::Record record =
+      io::read_single_column(data + "/elcentro_1940_ns.dat", 0.02, io::AccelUnit::kG);
   const Body statue(rigid_block(0.5, 1.8, 900.0));
   report("Statue 0.5 m x 1.8 m under El Centro 1940 N-S, scaled x1.5",
          simulate(statue, record.to_motion(1.5)));
@@ -56,7 +58,10 @@ int main(int argc, char** argv) {
   const Body flexible(tank);
   const double w = 2.0 * M_PI * 2.0, a = 0.06 * kStandardGravity;
   const auto shaking = GroundMotion::analytic(
-      [&](double t) { return BaseAcceleration{a * std::sin(w * t), 0.0}; }, 10.0);
+      [&](double t) {
+        return BaseAcceleration{a * std::sin(w * t), 0.0};
+      },
+      10.0);
   report("Tank (2 Hz oscillator on a slab), 0.06 g at resonance", simulate(flexible, shaking));
   BodyParameters rigid_tank = tank;
   rigid_tank.mu.resize(0, 0);

@@ -18,3 +18,4 @@ target_link_libraries(flexrock_sympy_tests PRIVATE flexrock::core nlohmann_json:
 target_compile_definitions(flexrock_sympy_tests PRIVATE FLEXROCK_BINARY_DIR="${PROJECT_BINARY_DIR}")
 flexrock_apply_sanitizers(flexrock_sympy_tests)
 gtest_discover_tests(flexrock_sympy_tests PROPERTIES LABELS unit FIXTURES_REQUIRED sympy_reference)
+flexrock_add_test(flexrock_sim_tests SOURCES unit/simulate_test.cpp LABEL unit)

@@ -122,8 +122,8 @@ double GroundMotion::next_breakpoint(double t, Cursor& c) const {
 }
 
 GroundMotion GroundMotion::scaled(double factor) const {
-  FLEXROCK_THROW_UNLESS(std::isfinite(factor),
-                        "ground motion: scale factor must be finite, got " + std::to_string(factor));
+  FLEXROCK_THROW_UNLESS(std::isfinite(factor), "ground motion: scale factor must be finite, got " +
+                                                   std::to_string(factor));
   GroundMotion m = *this;
   m.scale_ *= factor;
   return m;

@@ -20,17 +20,17 @@ std::string num(double v) {
 }
 
 void require_positive(double v, const char* name, const char* meaning) {
-  FLEXROCK_THROW_UNLESS(std::isfinite(v) && v > 0.0,
-                        std::string("body: ") + name + " (" + meaning + ") must be a positive " +
-                            "finite number, got " + num(v));
+  FLEXROCK_THROW_UNLESS(std::isfinite(v) && v > 0.0, std::string("body: ") + name + " (" + meaning +
+                                                         ") must be a positive " +
+                                                         "finite number, got " + num(v));
 }
 
 void require_size(const MatrixX& m, int n, const char* name) {
-  FLEXROCK_THROW_UNLESS(m.rows() == n && m.cols() == n,
-                        std::string("body: ") + name + " must be " + std::to_string(n) + "x" +
-                            std::to_string(n) + " (one row and column per mode, n = " +
-                            std::to_string(n) + " from mu), got " + std::to_string(m.rows()) +
-                            "x" + std::to_string(m.cols()));
+  FLEXROCK_THROW_UNLESS(
+      m.rows() == n && m.cols() == n,
+      std::string("body: ") + name + " must be " + std::to_string(n) + "x" + std::to_string(n) +
+          " (one row and column per mode, n = " + std::to_string(n) + " from mu), got " +
+          std::to_string(m.rows()) + "x" + std::to_string(m.cols()));
   FLEXROCK_THROW_UNLESS(m.allFinite(), std::string("body: ") + name + " has a NaN or inf entry");
 }
 
@@ -48,9 +48,9 @@ void require_symmetric_positive_definite(const MatrixX& m, const char* name) {
     for (int j = 0; j < i; ++j) {
       FLEXROCK_THROW_UNLESS(std::abs(m(i, j) - m(j, i)) <= 1e-10 * scale,
                             std::string("body: ") + name + " must be symmetric, but entry (" +
-                                std::to_string(i + 1) + "," + std::to_string(j + 1) + ") = " +
-                                num(m(i, j)) + " differs from (" + std::to_string(j + 1) + "," +
-                                std::to_string(i + 1) + ") = " + num(m(j, i)));
+                                std::to_string(i + 1) + "," + std::to_string(j + 1) +
+                                ") = " + num(m(i, j)) + " differs from (" + std::to_string(j + 1) +
+                                "," + std::to_string(i + 1) + ") = " + num(m(j, i)));
     }
   }
   Eigen::SelfAdjointEigenSolver<MatrixX> eig(m);
@@ -133,9 +133,9 @@ Body::Body(BodyParameters params) : p_(std::move(params)) {
     case DampingKind::kNone:
       break;
     case DampingKind::kRayleigh:
-      FLEXROCK_THROW_UNLESS(std::isfinite(d.rayleigh_mass) && d.rayleigh_mass >= 0.0,
-                            "body: Rayleigh mass coefficient a [1/s] must be >= 0, got " +
-                                num(d.rayleigh_mass));
+      FLEXROCK_THROW_UNLESS(
+          std::isfinite(d.rayleigh_mass) && d.rayleigh_mass >= 0.0,
+          "body: Rayleigh mass coefficient a [1/s] must be >= 0, got " + num(d.rayleigh_mass));
       FLEXROCK_THROW_UNLESS(std::isfinite(d.rayleigh_stiffness) && d.rayleigh_stiffness >= 0.0,
                             "body: Rayleigh stiffness coefficient b [s] must be >= 0, got " +
                                 num(d.rayleigh_stiffness));
@@ -172,7 +172,8 @@ Body::Body(BodyParameters params) : p_(std::move(params)) {
     const double schur = n_ > 0 ? m - b.dot(mu_inv_ * b) : m;
     FLEXROCK_THROW_UNLESS(schur > 1e-12 * m,
                           "body: the parameters do not describe a real body: the rocking inertia "
-                          "about edge " + std::to_string(edge) +
+                          "about edge " +
+                              std::to_string(edge) +
                               " net of the modes (1 + zeta2 + alpha^2 - b^T mu^-1 b = " +
                               num(schur) + ") must be positive; check beta, psi and mu");
   }
@@ -182,8 +183,9 @@ Body::Body(BodyParameters params) : p_(std::move(params)) {
     const double rest = p_.psi_x.dot(q_static_) / (1.0 + p_.psi_y.dot(q_static_));
     FLEXROCK_THROW_UNLESS(rest > -alpha1() && rest < alpha2(),
                           "body: under gravity alone the reaction would act outside the base "
-                          "(alpha = " + num(rest) + ", base spans [" + num(-alpha1()) + ", " +
-                              num(alpha2()) + "]): the body cannot stand");
+                          "(alpha = " +
+                              num(rest) + ", base spans [" + num(-alpha1()) + ", " + num(alpha2()) +
+                              "]): the body cannot stand");
   }
 
   // rocking frequency of the rigid part, p^2 = g R / (r_O^2), the stiffer side

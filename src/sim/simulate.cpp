@@ -10,35 +10,52 @@ namespace flexrock {
 
 const char* to_string(Status s) {
   switch (s) {
-    case Status::kCompleted: return "completed";
-    case Status::kOverturned: return "overturned";
-    case Status::kContactLost: return "contact_lost";
-    case Status::kStopped: return "stopped";
+    case Status::kCompleted:
+      return "completed";
+    case Status::kOverturned:
+      return "overturned";
+    case Status::kContactLost:
+      return "contact_lost";
+    case Status::kStopped:
+      return "stopped";
   }
   return "?";
 }
 
 const char* to_string(EventKind k) {
   switch (k) {
-    case EventKind::kUplift: return "uplift";
-    case EventKind::kImpact: return "impact";
-    case EventKind::kRockingEnded: return "rocking_ended";
-    case EventKind::kChatterCutoff: return "chatter_cutoff";
-    case EventKind::kPeak: return "peak";
-    case EventKind::kOverturn: return "overturn";
-    case EventKind::kContactLost: return "contact_lost";
-    case EventKind::kFrictionExceeded: return "friction_exceeded";
-    case EventKind::kImpactGainedEnergy: return "impact_gained_energy";
-    case EventKind::kStopped: return "stopped";
+    case EventKind::kUplift:
+      return "uplift";
+    case EventKind::kImpact:
+      return "impact";
+    case EventKind::kRockingEnded:
+      return "rocking_ended";
+    case EventKind::kChatterCutoff:
+      return "chatter_cutoff";
+    case EventKind::kPeak:
+      return "peak";
+    case EventKind::kOverturn:
+      return "overturn";
+    case EventKind::kContactLost:
+      return "contact_lost";
+    case EventKind::kFrictionExceeded:
+      return "friction_exceeded";
+    case EventKind::kImpactGainedEnergy:
+      return "impact_gained_energy";
+    case EventKind::kStopped:
+      return "stopped";
   }
   return "?";
 }
 
 const char* to_string(Phase p) {
   switch (p) {
-    case Phase::kFullContact: return "full_contact";
-    case Phase::kRockingEdge1: return "rocking_edge1";
-    case Phase::kRockingEdge2: return "rocking_edge2";
+    case Phase::kFullContact:
+      return "full_contact";
+    case Phase::kRockingEdge1:
+      return "rocking_edge1";
+    case Phase::kRockingEdge2:
+      return "rocking_edge2";
   }
   return "?";
 }
@@ -54,21 +71,24 @@ void check_options(const Body& body, const InitialState& init, const SimulationO
   positive(o.rtol, "rtol", "e.g. 1e-9");
   positive(o.atol, "atol", "e.g. 1e-11");
   positive(o.max_step, "max_step", "seconds, e.g. 0.01");
-  FLEXROCK_THROW_UNLESS(o.rtol >= 1e-14, "options: rtol = " + std::to_string(o.rtol) +
-                                             " is below what double precision can deliver; use >= 1e-14");
+  FLEXROCK_THROW_UNLESS(o.rtol >= 1e-14,
+                        "options: rtol = " + std::to_string(o.rtol) +
+                            " is below what double precision can deliver; use >= 1e-14");
   FLEXROCK_THROW_UNLESS(o.event_samples >= 1 && o.event_samples <= detail::kMaxSamples,
                         "options: event_samples must be in [1, " +
                             std::to_string(detail::kMaxSamples) + "], got " +
                             std::to_string(o.event_samples));
-  FLEXROCK_THROW_UNLESS(std::isfinite(o.output_dt) && o.output_dt >= 0.0,
-                        "options: output_dt must be >= 0 (0: no time history), got " +
-                            std::to_string(o.output_dt));
+  FLEXROCK_THROW_UNLESS(
+      std::isfinite(o.output_dt) && o.output_dt >= 0.0,
+      "options: output_dt must be >= 0 (0: no time history), got " + std::to_string(o.output_dt));
   FLEXROCK_THROW_UNLESS(std::isfinite(o.t_end), "options: t_end must be finite");
-  FLEXROCK_THROW_UNLESS(std::isfinite(o.chatter_ratio) && o.chatter_ratio >= 0.0,
-                        "options: chatter_ratio must be >= 0, got " + std::to_string(o.chatter_ratio));
-  FLEXROCK_THROW_UNLESS(std::isfinite(o.restitution_factor) && o.restitution_factor >= 0.0,
-                        "options: restitution_factor must be >= 0 (1: the paper's impact law), got " +
-                            std::to_string(o.restitution_factor));
+  FLEXROCK_THROW_UNLESS(
+      std::isfinite(o.chatter_ratio) && o.chatter_ratio >= 0.0,
+      "options: chatter_ratio must be >= 0, got " + std::to_string(o.chatter_ratio));
+  FLEXROCK_THROW_UNLESS(
+      std::isfinite(o.restitution_factor) && o.restitution_factor >= 0.0,
+      "options: restitution_factor must be >= 0 (1: the paper's impact law), got " +
+          std::to_string(o.restitution_factor));
   FLEXROCK_THROW_UNLESS(!(o.friction_coefficient <= 0.0) && !std::isnan(o.friction_coefficient),
                         "options: friction_coefficient must be > 0 (or infinite for none), got " +
                             std::to_string(o.friction_coefficient));
@@ -76,8 +96,8 @@ void check_options(const Body& body, const InitialState& init, const SimulationO
                         "options: max_steps and max_impacts must be positive");
   const int n = body.modes();
   FLEXROCK_THROW_UNLESS(init.q.size() == 0 || init.q.size() == n,
-                        "initial state: q must have " + std::to_string(n) + " entries (one per mode), got " +
-                            std::to_string(init.q.size()));
+                        "initial state: q must have " + std::to_string(n) +
+                            " entries (one per mode), got " + std::to_string(init.q.size()));
   FLEXROCK_THROW_UNLESS(init.q_dot.size() == 0 || init.q_dot.size() == n,
                         "initial state: q_dot must have " + std::to_string(n) +
                             " entries (one per mode), got " + std::to_string(init.q_dot.size()));
@@ -106,11 +126,16 @@ SimulationResult simulate(const Body& body, const GroundMotion& motion, const In
   check_options(body, init, options);
   // fixed sizes for the common small bodies, a stack-bounded size up to 16 modes, heap beyond
   switch (body.modes()) {
-    case 0: return run<0, 0>(body, motion, init, options);
-    case 1: return run<1, 1>(body, motion, init, options);
-    case 2: return run<2, 2>(body, motion, init, options);
-    case 3: return run<3, 3>(body, motion, init, options);
-    case 4: return run<4, 4>(body, motion, init, options);
+    case 0:
+      return run<0, 0>(body, motion, init, options);
+    case 1:
+      return run<1, 1>(body, motion, init, options);
+    case 2:
+      return run<2, 2>(body, motion, init, options);
+    case 3:
+      return run<3, 3>(body, motion, init, options);
+    case 4:
+      return run<4, 4>(body, motion, init, options);
     default:
       if (body.modes() <= 16) return run<Eigen::Dynamic, 16>(body, motion, init, options);
       return run<Eigen::Dynamic, Eigen::Dynamic>(body, motion, init, options);

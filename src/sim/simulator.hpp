@@ -18,7 +18,8 @@ namespace flexrock::detail {
 
 // event functions, positive while nothing happens; the slot meaning depends on the phase:
 //   full contact: uplift about edge 1, uplift about edge 2, vertical reaction, friction margin
-//   rocking:      impact (s theta), overturn margin, vertical reaction, friction margin, peak (s theta_dot)
+//   rocking:      impact (s theta), overturn margin, vertical reaction, friction margin, peak (s
+//   theta_dot)
 inline constexpr int kEventSlots = 5;
 inline constexpr int kSlotFriction = 3;
 inline constexpr int kSlotPeak = 4;
@@ -40,12 +41,13 @@ class Simulator {
     qdd_.resize(n_);
     // shortest period among the pinned-base modes and the rigid rocking motion
     double shortest = 2.0 * std::numbers::pi / body.rocking_frequency();
-    if (n_ > 0) shortest = std::min(shortest, 2.0 * std::numbers::pi / body.natural_frequencies().maxCoeff());
+    if (n_ > 0)
+      shortest = std::min(shortest, 2.0 * std::numbers::pi / body.natural_frequencies().maxCoeff());
     chatter_interval_ = opt.chatter_ratio * shortest;
-    overturn_limit_[0] = opt.overturn == OverturnCriterion::kHalfPi ? 0.5 * std::numbers::pi
-                                                                     : body.tipping_angle(1);
-    overturn_limit_[1] = opt.overturn == OverturnCriterion::kHalfPi ? 0.5 * std::numbers::pi
-                                                                     : body.tipping_angle(2);
+    overturn_limit_[0] =
+        opt.overturn == OverturnCriterion::kHalfPi ? 0.5 * std::numbers::pi : body.tipping_angle(1);
+    overturn_limit_[1] =
+        opt.overturn == OverturnCriterion::kHalfPi ? 0.5 * std::numbers::pi : body.tipping_angle(2);
     ctl_.rtol = opt.rtol;
     ctl_.atol = opt.atol;
     ctl_.max_step = opt.max_step;
@@ -194,14 +196,16 @@ class Simulator {
   bool advance(double& t, State& x) {
     auto sys = [this](double tt, const State& xx, State& dd) { rhs(tt, xx, dd); };
     const double t_stop = std::min(t_end_, motion_.next_breakpoint(t, break_cursor_));
-    if (++res_.steps > opt_.max_steps) return stop(t, x, "step limit reached (" +
-                                                     std::to_string(opt_.max_steps) +
-                                                     " steps; raise max_steps)");
+    if (++res_.steps > opt_.max_steps)
+      return stop(
+          t, x,
+          "step limit reached (" + std::to_string(opt_.max_steps) + " steps; raise max_steps)");
     if (integ_.step(sys, t_stop) != Dopri5<State>::Status::kAccepted) {
-      return stop(t, x, "integration step collapsed below " + std::to_string(ctl_.min_step) +
-                            " s near t = " + std::to_string(t) +
-                            " s (the equations became too stiff or singular; loosen rtol/atol "
-                            "or check the body)");
+      return stop(t, x,
+                  "integration step collapsed below " + std::to_string(ctl_.min_step) +
+                      " s near t = " + std::to_string(t) +
+                      " s (the equations became too stiff or singular; loosen rtol/atol "
+                      "or check the body)");
     }
     const double t0 = integ_.t0(), t1 = integ_.t1();
     // sample the event functions across the step
@@ -366,8 +370,9 @@ class Simulator {
     // events piling up at one instant would loop forever: stop instead
     if (t - zeno_time_ < 1e-9 * std::max(1.0, t)) {
       if (++same_time_events_ > 64) {
-        return stop(t, x, "events accumulate at t = " + std::to_string(t) +
-                              " s without time advancing (Zeno behaviour)");
+        return stop(t, x,
+                    "events accumulate at t = " + std::to_string(t) +
+                        " s without time advancing (Zeno behaviour)");
       }
     } else {
       zeno_time_ = t;
@@ -403,8 +408,8 @@ class Simulator {
     unpack(x);
     const double thd_minus = x(ithd());
     const bool chatter = t - last_contact_change_ < chatter_interval_;
-    const auto out = resolve_impact(dyn_, landing, q_, thd_minus, qd_, opt_.restitution_factor,
-                                    chatter);
+    const auto out =
+        resolve_impact(dyn_, landing, q_, thd_minus, qd_, opt_.restitution_factor, chatter);
     Event ev;
     ev.time = t;
     ev.kind = chatter ? EventKind::kChatterCutoff
@@ -470,8 +475,8 @@ class Simulator {
     ev.edge = edge();
     ev.theta = x(0);
     res_.events.push_back(ev);
-    res_.message = std::string("overturned about edge ") + std::to_string(edge()) + " at t = " +
-                   std::to_string(t) + " s";
+    res_.message = std::string("overturned about edge ") + std::to_string(edge()) +
+                   " at t = " + std::to_string(t) + " s";
     return false;
   }
 
@@ -523,7 +528,8 @@ class Simulator {
     ex.max_overturning_moment =
         std::max(ex.max_overturning_moment, mg * dyn_.height() * std::abs(s.moment));
     if (s.reaction(1) > 0.0)
-      ex.max_friction_demand = std::max(ex.max_friction_demand, std::abs(s.reaction(0)) / s.reaction(1));
+      ex.max_friction_demand =
+          std::max(ex.max_friction_demand, std::abs(s.reaction(0)) / s.reaction(1));
     energy_scale_ = std::max({energy_scale_, std::abs(x(iw())), std::abs(x(id()))});
   }
 
@@ -570,7 +576,8 @@ class Simulator {
 
   void finish(double t, const State& x) {
     res_.t_end = t;
-    if (opt_.output_dt > 0.0 && (res_.history.time.empty() || res_.history.time.back() < t - 1e-12)) {
+    if (opt_.output_dt > 0.0 &&
+        (res_.history.time.empty() || res_.history.time.back() < t - 1e-12)) {
       emit_row(t, x);
     }
     res_.final_phase = phase_;
@@ -589,8 +596,8 @@ class Simulator {
     e.chatter_loss = chatter_loss_;
     e.kinetic_change = kin - kinetic0_;
     e.potential_change = pot - (energy0_ - kinetic0_);
-    e.residual = e.input_work -
-                 (e.kinetic_change + e.potential_change + e.damping_loss + e.impact_loss + e.chatter_loss);
+    e.residual = e.input_work - (e.kinetic_change + e.potential_change + e.damping_loss +
+                                 e.impact_loss + e.chatter_loss);
     e.scale = std::max({energy_scale_, std::abs(energy0_ - pot), std::abs(kin), kinetic0_,
                         impact_loss_ + chatter_loss_});
     res_.rejected_steps = integ_.rejected_steps();

@@ -4,8 +4,8 @@
 
 #include <cmath>
 #include <fstream>
-#include <set>
 #include <nlohmann/json.hpp>
+#include <set>
 
 #include "flexrock/contact/impact.hpp"
 #include "flexrock/model/dynamics.hpp"
@@ -24,7 +24,8 @@ VectorX vec(const json& j) {
 MatrixX mat(const json& j, Eigen::Index n) {
   MatrixX m(n, n);
   for (Eigen::Index r = 0; r < n; ++r)
-    for (Eigen::Index c = 0; c < n; ++c) m(r, c) = j[static_cast<std::size_t>(r)][static_cast<std::size_t>(c)].get<double>();
+    for (Eigen::Index c = 0; c < n; ++c)
+      m(r, c) = j[static_cast<std::size_t>(r)][static_cast<std::size_t>(c)].get<double>();
   return m;
 }
 
@@ -93,7 +94,8 @@ TEST_F(SympyReference, RockingEquationsReactionAndEnergies) {
       const MatrixX A = mat(s["mass_matrix"], q.size() + 1);
       expect_close(dyn.inertia(a, q), A(0, 0), A(0, 0), "m " + at);
       const VectorX b = dyn.coupling(a, q);
-      for (Eigen::Index i = 0; i < q.size(); ++i) expect_close(b(i), A(i + 1, 0), A(0, 0), "b " + at);
+      for (Eigen::Index i = 0; i < q.size(); ++i)
+        expect_close(b(i), A(i + 1, 0), A(0, 0), "b " + at);
       // accelerations from A x = f
       double thdd;
       VectorX qdd(q.size());
@@ -108,7 +110,8 @@ TEST_F(SympyReference, RockingEquationsReactionAndEnergies) {
       nu.tail(q.size()) = qdd;
       const VectorX f = vec(s["forces"]);
       const VectorX fa = A * nu;
-      for (Eigen::Index i = 0; i < f.size(); ++i) expect_close(fa(i), f(i), f.norm(), "force " + at);
+      for (Eigen::Index i = 0; i < f.size(); ++i)
+        expect_close(fa(i), f(i), f.norm(), "force " + at);
       const Eigen::Vector2d r = mg * dyn.rocking_reaction(edge, th, q, thd, qd, thdd, qdd, base);
       expect_close(r(0), s["reaction"][0].get<double>(), mg, "F_I " + at);
       expect_close(r(1), s["reaction"][1].get<double>(), mg, "F_J " + at);
@@ -137,7 +140,8 @@ TEST_F(SympyReference, FullContactAccelerationReactionAndResultant) {
       VectorX qdd(q.size());
       dyn.full_contact_acceleration(q, qd, base, qdd);
       const VectorX ref = vec(s["q_ddot"]);
-      for (Eigen::Index i = 0; i < q.size(); ++i) expect_close(qdd(i), ref(i), ref.norm(), "q_ddot");
+      for (Eigen::Index i = 0; i < q.size(); ++i)
+        expect_close(qdd(i), ref(i), ref.norm(), "q_ddot");
       const Eigen::Vector2d r = mg * dyn.full_contact_reaction(qdd, base);
       expect_close(r(0), s["reaction"][0].get<double>(), mg, "F_I");
       expect_close(r(1), s["reaction"][1].get<double>(), mg, "F_J");
@@ -174,7 +178,8 @@ TEST_F(SympyReference, ImpactMapImpulseAndEnergyLoss) {
       for (Eigen::Index i = 0; i < q.size(); ++i) expect_close(qdp(i), qref(i), scale, "q_dot+");
       const auto out = resolve_impact(dyn, landing, q, thdm, qdm);
       const json& want = out.both_edges ? s["both_edges"] : s;
-      const double iscale = std::abs(want["impulse"][0].get<double>()) + std::abs(want["impulse"][1].get<double>());
+      const double iscale =
+          std::abs(want["impulse"][0].get<double>()) + std::abs(want["impulse"][1].get<double>());
       expect_close(out.impulse(0), want["impulse"][0].get<double>(), iscale, "I_x");
       expect_close(out.impulse(1), want["impulse"][1].get<double>(), iscale, "I_y");
       const double loss = want["energy_loss"];
@@ -182,7 +187,8 @@ TEST_F(SympyReference, ImpactMapImpulseAndEnergyLoss) {
       if (out.both_edges) {
         ++both;
         const VectorX qb = vec(s["both_edges"]["q_dot_plus"]);
-        for (Eigen::Index i = 0; i < q.size(); ++i) expect_close(out.q_dot(i), qb(i), scale, "both q_dot+");
+        for (Eigen::Index i = 0; i < q.size(); ++i)
+          expect_close(out.q_dot(i), qb(i), scale, "both q_dot+");
       }
       ++checked;
     }

@@ -33,7 +33,10 @@ TEST(FlexibleBody, NoUpliftFollowsFixedBaseClosedForm) {
   const Body body(o.params());
   const double A = 0.02 * g, w = 0.8 * o.omega();
   const auto motion = GroundMotion::analytic(
-      [&](double t) { return BaseAcceleration{A * std::sin(w * t), 0.0}; }, 5.0);
+      [&](double t) {
+        return BaseAcceleration{A * std::sin(w * t), 0.0};
+      },
+      5.0);
   SimulationOptions opt;
   opt.output_dt = 0.05;
   opt.rtol = 1e-11;
@@ -80,7 +83,9 @@ TEST(FlexibleBody, ResonantOscillatorUpliftsAtLinearPrediction) {
     init.q_dot = VectorX::Constant(1, (cd(0, w) * U).imag() / o.h());
     const double periods = 10;
     const auto motion = GroundMotion::analytic(
-        [&](double t) { return BaseAcceleration{A * std::sin(w * t), 0.0}; },
+        [&](double t) {
+          return BaseAcceleration{A * std::sin(w * t), 0.0};
+        },
         periods * 2 * M_PI / w);
     const auto res = simulate(body, motion, init);
     if (factor < 1) {
@@ -110,7 +115,8 @@ TEST_P(FlexibleEnergy, ConservedBetweenImpactsWithoutDampingOrBaseMotion) {
   const auto res = simulate(body, GroundMotion::none(opt.t_end), init, opt);
   // after an impact the modes keep their momenta and can pull the pivot up: the run may end
   // with contact lost; the balance must hold to wherever it ends
-  ASSERT_TRUE(res.status == Status::kCompleted || res.status == Status::kContactLost) << res.message;
+  ASSERT_TRUE(res.status == Status::kCompleted || res.status == Status::kContactLost)
+      << res.message;
   const auto& h = res.history;
   const double e0 = h.kinetic[0] + h.potential[0];
   const double scale = std::max(h.kinetic[0], 1e-3 * e0);
@@ -139,7 +145,8 @@ TEST(FlexibleBody, EnergyBalanceClosesUnderDampedRecordLikeShaking) {
   const double amp = 1.5 * g * std::min(body.alpha1(), body.alpha2());
   const auto motion = GroundMotion::analytic(
       [&](double t) {
-        return BaseAcceleration{amp * std::sin(6 * t) * std::exp(-0.2 * t), 0.2 * g * std::sin(11 * t)};
+        return BaseAcceleration{amp * std::sin(6 * t) * std::exp(-0.2 * t),
+                                0.2 * g * std::sin(11 * t)};
       },
       8.0);
   SimulationOptions opt;
@@ -157,7 +164,9 @@ TEST(FlexibleBody, MirroredExcitationMirrorsSymmetricBody) {
   const Body body(o.params());
   auto motion = [&](double s) {
     return GroundMotion::analytic(
-        [s, &o](double t) { return BaseAcceleration{s * 0.08 * g * std::sin(o.omega() * t), 0.0}; },
+        [s, &o](double t) {
+          return BaseAcceleration{s * 0.08 * g * std::sin(o.omega() * t), 0.0};
+        },
         6.0);
   };
   SimulationOptions opt;
@@ -181,7 +190,8 @@ TEST(FlexibleBody, ManyModesRunOnTheHeapPath) {
   SimulationOptions opt;
   opt.t_end = 1.0;
   const auto res = simulate(body, GroundMotion::none(opt.t_end), init, opt);
-  EXPECT_TRUE(res.status == Status::kCompleted || res.status == Status::kContactLost) << res.message;
+  EXPECT_TRUE(res.status == Status::kCompleted || res.status == Status::kContactLost)
+      << res.message;
   EXPECT_GT(res.extremes.impacts, 0);
   EXPECT_LT(std::abs(res.energy.residual), 1e-7 * res.energy.scale);
 }

@@ -104,7 +104,10 @@ TEST(RigidBlock, VerticalAccelerationScalesUpliftThreshold) {
   for (double a0 : {-0.5 * g, 0.0, 0.7 * g}) {
     const double rate = 2.0;  // [m/s^3]
     const auto motion = GroundMotion::analytic(
-        [&](double t) { return BaseAcceleration{rate * t, a0}; }, 3.0);
+        [&](double t) {
+          return BaseAcceleration{rate * t, a0};
+        },
+        3.0);
     SimulationOptions opt;
     opt.t_end = 3.0;
     const auto res = simulate(body, motion, {}, opt);
@@ -117,8 +120,11 @@ TEST(RigidBlock, VerticalAccelerationScalesUpliftThreshold) {
 TEST(RigidBlock, BaseFallingFasterThanGravityLosesContact) {
   const Body body(BodyParameters::rectangular_block(100, 0.3, 1.0));
   const double rate = 5.0;
-  const auto motion =
-      GroundMotion::analytic([&](double t) { return BaseAcceleration{0.0, -rate * t}; }, 4.0);
+  const auto motion = GroundMotion::analytic(
+      [&](double t) {
+        return BaseAcceleration{0.0, -rate * t};
+      },
+      4.0);
   const auto res = simulate(body, motion);
   EXPECT_EQ(res.status, Status::kContactLost);
   EXPECT_NEAR(res.t_end, g / rate, 1e-10);
@@ -131,7 +137,10 @@ TEST(RigidBlock, AsymmetricBlockTipsAboutTheNearerEdge) {
   const Body body(BodyParameters::rigid(100, 1.0, 0.2, 0.4, 0.4));
   const double A = 0.3 * g, w = 2 * M_PI;
   const auto motion = GroundMotion::analytic(
-      [&](double t) { return BaseAcceleration{-A * std::sin(w * t), 0.0}; }, 2.0);
+      [&](double t) {
+        return BaseAcceleration{-A * std::sin(w * t), 0.0};
+      },
+      2.0);
   const auto res = simulate(body, motion);
   ASSERT_GE(res.extremes.first_uplift_time, 0.0);
   EXPECT_EQ(res.extremes.first_uplift_edge, 1);
@@ -143,7 +152,9 @@ TEST(RigidBlock, MirroredExcitationMirrorsResponse) {
   const Body body(BodyParameters::rectangular_block(100, 0.25, 1.0));
   auto motion = [](double s) {
     return GroundMotion::analytic(
-        [s](double t) { return BaseAcceleration{s * 0.5 * g * std::sin(8 * t), 0.1 * g * std::cos(3 * t)}; },
+        [s](double t) {
+          return BaseAcceleration{s * 0.5 * g * std::sin(8 * t), 0.1 * g * std::cos(3 * t)};
+        },
         4.0);
   };
   SimulationOptions opt;
@@ -163,7 +174,9 @@ TEST(RigidBlock, UpliftStartsWithoutAFalseImpact) {
   const Body body(BodyParameters::rectangular_block(100, 0.2, 1.0));
   const double ap = 1.02 * 0.2 * g, wp = 4.0;
   const auto motion = GroundMotion::analytic(
-      [&](double t) { return BaseAcceleration{t < M_PI / wp ? ap * std::sin(wp * t) : 0.0, 0.0}; },
+      [&](double t) {
+        return BaseAcceleration{t < M_PI / wp ? ap * std::sin(wp * t) : 0.0, 0.0};
+      },
       6.0, {M_PI / wp});
   const auto res = simulate(body, motion);
   std::vector<Event> changes;
@@ -198,7 +211,9 @@ TEST(RigidBlock, LargeLongPulseOverturnsAndCriterionOptionGoesFurther) {
   const Body body(BodyParameters::rectangular_block(100, 0.2, 1.0));
   const double ap = 3 * 0.2 * g, wp = 2 * M_PI;
   const auto motion = GroundMotion::analytic(
-      [&](double t) { return BaseAcceleration{t < 2 * M_PI / wp ? ap * std::sin(wp * t) : 0.0, 0.0}; },
+      [&](double t) {
+        return BaseAcceleration{t < 2 * M_PI / wp ? ap * std::sin(wp * t) : 0.0, 0.0};
+      },
       10.0, {2 * M_PI / wp});
   const auto res = simulate(body, motion);
   EXPECT_EQ(res.status, Status::kOverturned);

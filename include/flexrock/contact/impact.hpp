@@ -10,18 +10,19 @@ namespace flexrock {
 /// State just after an impact and what the impact did.
 template <class Vec>
 struct ImpactOutcome {
-  double theta_dot = 0.0;     // post-impact angular velocity [rad/s]
-  Vec q_dot;                  // post-impact modal velocities [1/s]
-  Eigen::Vector2d impulse;    // impulse of the floor on the body, (I, J) components [N s]
-  double energy_loss = 0.0;   // T_rel- - T_rel+ [J] (= work of the impulse on the base - dT)
-  bool both_edges = false;    // true when rocking ended with both edges on the floor
+  double theta_dot = 0.0;    // post-impact angular velocity [rad/s]
+  Vec q_dot;                 // post-impact modal velocities [1/s]
+  Eigen::Vector2d impulse;   // impulse of the floor on the body, (I, J) components [N s]
+  double energy_loss = 0.0;  // T_rel- - T_rel+ [J] (= work of the impulse on the base - dT)
+  bool both_edges = false;   // true when rocking ended with both edges on the floor
 };
 
 /// The single-edge impact map. The body rocks on the other edge before; `landing_edge` hits the
 /// floor and becomes the pivot. Conservation of the modal momenta p_i = int phi_i.Rdot dm (the
 /// impulse acts where phi_i = 0, paper eq. 7) and of the moment of momentum about the landing
 /// point (eq. 8) give, with Dalpha = alpha_pre - alpha_post:
-///   A_post [theta_dot+; q_dot+] = A_post [theta_dot-; q_dot-] - Dalpha theta_dot- [w_x,post; psi_y]
+///   A_post [theta_dot+; q_dot+] = A_post [theta_dot-; q_dot-] - Dalpha theta_dot- [w_x,post;
+///   psi_y]
 /// Rigid limit: theta_dot+/theta_dot- = (1 + zeta^2 - alpha1 alpha2)/(1 + zeta^2 + alpha_new^2).
 template <class Dyn, class Vec>
 void single_edge_impact(const Dyn& dyn, int landing_edge, const Vec& q, double theta_dot_minus,

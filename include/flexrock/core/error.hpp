@@ -25,13 +25,13 @@ namespace detail {
 }  // namespace flexrock
 
 // user input check: throws flexrock::InputError with the message (a std::string expression)
-#define FLEXROCK_THROW_UNLESS(cond, message)                   \
-  do {                                                         \
+#define FLEXROCK_THROW_UNLESS(cond, message)                         \
+  do {                                                               \
     if (!(cond)) throw ::flexrock::InputError(std::string(message)); \
   } while (0)
 
 // invariant check, always on: a failure is a bug in flexrock
-#define FLEXROCK_DEMAND(cond) \
-  do {                        \
+#define FLEXROCK_DEMAND(cond)                                                  \
+  do {                                                                         \
     if (!(cond)) ::flexrock::detail::demand_failed(#cond, __FILE__, __LINE__); \
   } while (0)

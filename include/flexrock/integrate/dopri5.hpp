@@ -15,11 +15,11 @@
 namespace flexrock {
 
 struct StepControl {
-  double rtol = 1e-9;           // relative tolerance
-  double atol = 1e-12;          // absolute tolerance (the state is in rad, -, rad/s, 1/s)
-  int controlled = -1;          // components in the error norm (the first ones); -1: all
+  double rtol = 1e-9;   // relative tolerance
+  double atol = 1e-12;  // absolute tolerance (the state is in rad, -, rad/s, 1/s)
+  int controlled = -1;  // components in the error norm (the first ones); -1: all
   double max_step = std::numeric_limits<double>::infinity();  // [s]
-  double min_step = 1e-13;      // relative to max(1, |t|): below it the step has collapsed
+  double min_step = 1e-13;  // relative to max(1, |t|): below it the step has collapsed
 };
 
 template <class State>

@@ -60,10 +60,10 @@ class Body {
   double g_over_h() const { return p_.gravity / p_.height; }  // [1/s^2]
 
   const MatrixX& mu_inverse() const { return mu_inv_; }
-  const MatrixX& stiffness() const { return stiffness_; }  // K = (g/h) kappa [1/s^2]
-  const MatrixX& damping_matrix() const { return damping_; }  // C [1/s]
-  const VectorX& natural_frequencies() const { return omega_; }  // pinned-base [rad/s], ascending
-  const VectorX& damping_ratios() const { return ratios_; }  // of the pinned-base modes [-]
+  const MatrixX& stiffness() const { return stiffness_; }          // K = (g/h) kappa [1/s^2]
+  const MatrixX& damping_matrix() const { return damping_; }       // C [1/s]
+  const VectorX& natural_frequencies() const { return omega_; }    // pinned-base [rad/s], ascending
+  const VectorX& damping_ratios() const { return ratios_; }        // of the pinned-base modes [-]
   const VectorX& static_deformation() const { return q_static_; }  // q under gravity at rest
   double rocking_frequency() const { return p_rock_; }  // p = sqrt(g h_pivot / r^2) [rad/s]
   /// Static overturning angle about edge 1 (theta > 0) and edge 2 (returned positive): the tilt

@@ -48,7 +48,8 @@ class Dynamics {
         psi_y_(body.params().psi_y),
         delta_(body.params().delta),
         beta_(body.params().beta),
-        damped_(body.damping_matrix().size() > 0 && body.damping_matrix().cwiseAbs().maxCoeff() > 0) {}
+        damped_(body.damping_matrix().size() > 0 &&
+                body.damping_matrix().cwiseAbs().maxCoeff() > 0) {}
 
   int modes() const { return n_; }
   double mass() const { return mass_; }
@@ -88,8 +89,8 @@ class Dynamics {
     const Vec b = coupling(a, q);
     const double m = 1.0 + zeta2_ + a * a + (cv + delta_ - a * psi_x_ + psi_y_).dot(q);
     const double f_theta = -2.0 * cv.dot(q_dot) * theta_dot - gh_ * (wx * gy - wy * gx);
-    Vec f_q = theta_dot * (theta_dot * cv - 2.0 * (gamma_.transpose() * q_dot)) -
-              stiffness_ * q - gh_ * (psi_x_ * gx + psi_y_ * gy);
+    Vec f_q = theta_dot * (theta_dot * cv - 2.0 * (gamma_.transpose() * q_dot)) - stiffness_ * q -
+              gh_ * (psi_x_ * gx + psi_y_ * gy);
     if (damped_) f_q.noalias() -= damping_ * q_dot;
     // block elimination with the constant mu^-1: (m - b^T mu^-1 b) thdd = f_theta - b^T mu^-1 f_q
     const Vec z = mu_inv_ * b;
@@ -119,8 +120,10 @@ class Dynamics {
     const double wx = -a + psi_x_.dot(q), wy = 1.0 + psi_y_.dot(q);
     const double px = psi_x_.dot(q_dot), py = psi_y_.dot(q_dot);
     const double t2 = theta_dot * theta_dot;
-    const double fx = gx + (psi_x_.dot(q_ddot) - theta_ddot * wy - 2.0 * theta_dot * py - t2 * wx) / gh_;
-    const double fy = gy + (psi_y_.dot(q_ddot) + theta_ddot * wx + 2.0 * theta_dot * px - t2 * wy) / gh_;
+    const double fx =
+        gx + (psi_x_.dot(q_ddot) - theta_ddot * wy - 2.0 * theta_dot * py - t2 * wx) / gh_;
+    const double fy =
+        gy + (psi_y_.dot(q_ddot) + theta_ddot * wx + 2.0 * theta_dot * px - t2 * wy) / gh_;
     return {fx * c - fy * s, fx * s + fy * c};
   }
 
@@ -158,7 +161,8 @@ class Dynamics {
   /// Gravity and strain energy [J]: V = M g h (J.w + 1/2 q^T kappa q).
   double potential_energy(double a, double theta, const Vec& q) const {
     const double wx = -a + psi_x_.dot(q), wy = 1.0 + psi_y_.dot(q);
-    return mass_ * g_ * h_ * (std::sin(theta) * wx + std::cos(theta) * wy + 0.5 * q.dot(kappa_ * q));
+    return mass_ * g_ * h_ *
+           (std::sin(theta) * wx + std::cos(theta) * wy + 0.5 * q.dot(kappa_ * q));
   }
   /// Power of the base's d'Alembert force on the body [W]: -M a_base . v_cm (relative velocity).
   double input_power(double a, double theta, const Vec& q, double theta_dot, const Vec& q_dot,

@@ -26,16 +26,16 @@ enum class Status {
 };
 
 enum class EventKind {
-  kUplift,             // full contact -> rocking on `edge`
-  kImpact,             // rocking -> rocking on the landing `edge`
-  kRockingEnded,       // an impact left both edges on the floor (the both-edges rule)
-  kChatterCutoff,      // impacts came faster than the chatter criterion: set to full contact
-  kPeak,               // a rocking amplitude: theta_dot = 0 while rocking
-  kOverturn,           // overturning criterion met about `edge`
-  kContactLost,        // vertical reaction reached zero
-  kFrictionExceeded,   // friction demand rose above the given coefficient (not terminal)
-  kImpactGainedEnergy, // an impact (with a restitution factor) added kinetic energy
-  kStopped,            // step collapse, step or event limit
+  kUplift,              // full contact -> rocking on `edge`
+  kImpact,              // rocking -> rocking on the landing `edge`
+  kRockingEnded,        // an impact left both edges on the floor (the both-edges rule)
+  kChatterCutoff,       // impacts came faster than the chatter criterion: set to full contact
+  kPeak,                // a rocking amplitude: theta_dot = 0 while rocking
+  kOverturn,            // overturning criterion met about `edge`
+  kContactLost,         // vertical reaction reached zero
+  kFrictionExceeded,    // friction demand rose above the given coefficient (not terminal)
+  kImpactGainedEnergy,  // an impact (with a restitution factor) added kinetic energy
+  kStopped,             // step collapse, step or event limit
 };
 
 const char* to_string(Status s);
@@ -52,23 +52,23 @@ struct InitialState {
 };
 
 struct SimulationOptions {
-  double t_end = -1.0;             // [s] end time; < 0: the end of the motion
-  double rtol = 1e-9;              // relative tolerance of the integrator
-  double atol = 1e-11;             // absolute tolerance (rad, -, rad/s, 1/s)
-  double max_step = 0.01;          // [s] cap on the step; events are sought within each step
-  int event_samples = 4;           // points per step where event functions are checked
-  double output_dt = 0.0;          // [s] time-history spacing; 0: no time history
+  double t_end = -1.0;     // [s] end time; < 0: the end of the motion
+  double rtol = 1e-9;      // relative tolerance of the integrator
+  double atol = 1e-11;     // absolute tolerance (rad, -, rad/s, 1/s)
+  double max_step = 0.01;  // [s] cap on the step; events are sought within each step
+  int event_samples = 4;   // points per step where event functions are checked
+  double output_dt = 0.0;  // [s] time-history spacing; 0: no time history
   OverturnCriterion overturn = OverturnCriterion::kStaticInstability;
-  double chatter_ratio = 0.01;     // impacts closer than this times the shortest period end rocking
-  double restitution_factor = 1.0; // factor on theta_dot after an impact (1: the paper's law)
+  double chatter_ratio = 0.01;  // impacts closer than this times the shortest period end rocking
+  double restitution_factor = 1.0;  // factor on theta_dot after an impact (1: the paper's law)
   double friction_coefficient = std::numeric_limits<double>::infinity();  // static friction
-  long max_steps = 50'000'000;     // integrator steps before the run stops
-  long max_impacts = 10'000'000;   // impacts before the run stops
+  long max_steps = 50'000'000;    // integrator steps before the run stops
+  long max_impacts = 10'000'000;  // impacts before the run stops
 };
 
 /// Something that happened, in time order. Fields not meaningful for a kind are zero.
 struct Event {
-  double time = 0.0;              // [s]
+  double time = 0.0;  // [s]
   EventKind kind = EventKind::kUplift;
   int edge = 0;                   // 1 or 2: the pivot after uplift/impact, or the overturn side
   double theta = 0.0;             // [rad] (peaks)
@@ -83,10 +83,10 @@ struct Event {
 /// Time history at the requested output times.
 struct History {
   int modes = 0;
-  std::vector<double> time;             // [s]
-  std::vector<int> phase;               // 0 full contact, 1 rocking on edge 1, 2 on edge 2
-  std::vector<double> theta, theta_dot; // [rad], [rad/s]
-  std::vector<double> q, q_dot;         // [-], [1/s]; row-major, `modes` values a row
+  std::vector<double> time;                    // [s]
+  std::vector<int> phase;                      // 0 full contact, 1 rocking on edge 1, 2 on edge 2
+  std::vector<double> theta, theta_dot;        // [rad], [rad/s]
+  std::vector<double> q, q_dot;                // [-], [1/s]; row-major, `modes` values a row
   std::vector<double> base_acc_x, base_acc_y;  // [m/s^2]
   std::vector<double> reaction_x, reaction_y;  // [N] floor on body, inertial I and J
   std::vector<double> resultant;        // [m] from the c.g. projection (full contact; else pivot)
@@ -97,19 +97,20 @@ struct History {
 };
 
 struct Extremes {
-  double max_theta_edge1 = 0.0;     // [rad] largest tilt on edge 1 (theta > 0)
-  double max_theta_edge2 = 0.0;     // [rad] largest tilt on edge 2, as a positive number
-  double max_uplift = 0.0;          // [m] height of the lifted tipping point, (b1+b2) sin|theta|
-  long impacts = 0;                 // impacts, chatter cut-offs included
-  double max_impulse = 0.0;         // [N s] largest vertical impulse
+  double max_theta_edge1 = 0.0;  // [rad] largest tilt on edge 1 (theta > 0)
+  double max_theta_edge2 = 0.0;  // [rad] largest tilt on edge 2, as a positive number
+  double max_uplift = 0.0;       // [m] height of the lifted tipping point, (b1+b2) sin|theta|
+  long impacts = 0;              // impacts, chatter cut-offs included
+  double max_impulse = 0.0;      // [N s] largest vertical impulse
   double max_impact_energy_loss = 0.0;  // [J]
-  VectorX max_abs_q;                // [-] largest |q_i|
-  double max_base_shear = 0.0;      // [N] largest |F_I|
-  double max_overturning_moment = 0.0;  // [N m] largest |moment of the reaction about the c.g. projection|
-  double max_friction_demand = 0.0; // [-] largest |F_I|/F_J, impulses included
-  double first_uplift_time = -1.0;  // [s] -1: never
+  VectorX max_abs_q;                    // [-] largest |q_i|
+  double max_base_shear = 0.0;          // [N] largest |F_I|
+  double max_overturning_moment =
+      0.0;  // [N m] largest |moment of the reaction about the c.g. projection|
+  double max_friction_demand = 0.0;  // [-] largest |F_I|/F_J, impulses included
+  double first_uplift_time = -1.0;   // [s] -1: never
   int first_uplift_edge = 0;
-  double overturn_time = -1.0;      // [s] -1: did not overturn
+  double overturn_time = -1.0;  // [s] -1: did not overturn
   int overturn_edge = 0;
 };
 
@@ -128,8 +129,8 @@ struct EnergyBalance {
 
 struct SimulationResult {
   Status status = Status::kCompleted;
-  std::string message;          // why it stopped, in words
-  double t_end = 0.0;           // [s] time reached
+  std::string message;  // why it stopped, in words
+  double t_end = 0.0;   // [s] time reached
   Phase final_phase = Phase::kFullContact;
   double final_theta = 0.0, final_theta_dot = 0.0;
   VectorX final_q, final_q_dot;

@@ -1,0 +1,124 @@
+// What a run says when the model's assumptions break or a limit is reached.
+#include "flexrock/sim/simulate.hpp"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "flexrock/core/error.hpp"
+
+namespace flexrock {
+namespace {
+
+using ::testing::HasSubstr;
+constexpr double g = kStandardGravity;
+
+GroundMotion one_sine(double ap, double wp, double duration) {
+  return GroundMotion::analytic(
+      [=](double t) {
+        return BaseAcceleration{t < 2 * M_PI / wp ? ap * std::sin(wp * t) : 0.0, 0.0};
+      },
+      duration, {2 * M_PI / wp});
+}
+
+bool has_event(const SimulationResult& r, EventKind k) {
+  for (const auto& e : r.events)
+    if (e.kind == k) return true;
+  return false;
+}
+
+TEST(Simulate, FrictionDemandAboveCoefficientIsReported) {
+  const Body body(BodyParameters::rectangular_block(100, 0.3, 1.0));
+  SimulationOptions opt;
+  opt.friction_coefficient = 0.2;  // below the 0.3 the block needs before it can uplift
+  const auto r = simulate(body, one_sine(0.4 * g, 8.0, 3.0), {}, opt);
+  EXPECT_TRUE(r.friction_exceeded);
+  EXPECT_TRUE(has_event(r, EventKind::kFrictionExceeded));
+  EXPECT_GT(r.extremes.max_friction_demand, 0.2);
+  // in full contact the demand is |Xdd|/(g + Ydd): the first crossing is where Xdd = 0.2 g
+  for (const auto& e : r.events) {
+    if (e.kind == EventKind::kFrictionExceeded) {
+      EXPECT_NEAR(e.time, std::asin(0.2 / 0.4) / 8.0, 1e-9);
+      break;
+    }
+  }
+}
+
+TEST(Simulate, RestitutionFactorThatAddsEnergyIsFlagged) {
+  const Body body(BodyParameters::rectangular_block(100, 0.1, 1.0));  // Housner r = 0.985
+  InitialState init;
+  init.theta = 0.05;
+  SimulationOptions opt;
+  opt.t_end = 2.0;
+  opt.restitution_factor = 1.1;
+  const auto r = simulate(body, GroundMotion::none(opt.t_end), init, opt);
+  EXPECT_TRUE(r.impact_gained_energy);
+  EXPECT_TRUE(has_event(r, EventKind::kImpactGainedEnergy));
+  // the balance still closes: the "loss" is negative and booked as such
+  EXPECT_LT(r.energy.impact_loss, 0.0);
+  EXPECT_LT(std::abs(r.energy.residual), 1e-8 * r.energy.scale);
+}
+
+TEST(Simulate, StepLimitStopsWithAReason) {
+  const Body body(BodyParameters::rectangular_block(100, 0.2, 1.0));
+  SimulationOptions opt;
+  opt.max_steps = 10;
+  const auto r = simulate(body, one_sine(0.3 * g, 6.0, 5.0), {}, opt);
+  EXPECT_EQ(r.status, Status::kStopped);
+  EXPECT_THAT(r.message, HasSubstr("step limit"));
+  EXPECT_EQ(r.events.back().kind, EventKind::kStopped);
+}
+
+TEST(Simulate, RejectsBadOptionsWithMessages) {
+  const Body body(BodyParameters::rectangular_block(100, 0.2, 1.0));
+  const auto motion = GroundMotion::none(1.0);
+  auto expect_throw = [&](SimulationOptions o, const char* fragment) {
+    try {
+      simulate(body, motion, {}, o);
+      ADD_FAILURE() << "accepted bad options";
+    } catch (const InputError& e) {
+      EXPECT_THAT(e.what(), HasSubstr(fragment));
+    }
+  };
+  SimulationOptions o;
+  o.rtol = -1;
+  expect_throw(o, "rtol must be positive");
+  o = {};
+  o.max_step = 0;
+  expect_throw(o, "max_step");
+  o = {};
+  o.friction_coefficient = 0;
+  expect_throw(o, "friction_coefficient must be > 0");
+  o = {};
+  o.event_samples = 0;
+  expect_throw(o, "event_samples");
+  InitialState init;
+  init.theta = 0.5;  // beyond atan(0.2)
+  try {
+    simulate(body, motion, init, {});
+    ADD_FAILURE() << "accepted a tilt past overturning";
+  } catch (const InputError& e) {
+    EXPECT_THAT(e.what(), HasSubstr("already past the overturning angle"));
+  }
+}
+
+TEST(Simulate, RigidFullContactHistoryIsExact) {
+  // a rigid body in full contact feels the record directly: reaction = M (g + Ydd), M Xdd
+  const Body body(BodyParameters::rectangular_block(250, 0.3, 1.0));
+  const auto motion =
+      GroundMotion::uniform(0.01, {0.0, 0.5, -1.0, 0.8, 0.0}, {0.0, 1.0, 0.5, -2.0, 0.0});
+  SimulationOptions opt;
+  opt.output_dt = 0.005;
+  const auto r = simulate(body, motion, {}, opt);
+  ASSERT_EQ(r.history.size(), 9u);
+  for (std::size_t i = 0; i < r.history.size(); ++i) {
+    const BaseAcceleration a = motion.at(r.history.time[i]);
+    EXPECT_NEAR(r.history.reaction_x[i], 250 * a.x, 1e-9);
+    EXPECT_NEAR(r.history.reaction_y[i], 250 * (g + a.y), 1e-9);
+    EXPECT_EQ(r.history.phase[i], 0);
+  }
+}
+
+}  // namespace
+}  // namespace flexrock
