@@ -226,6 +226,22 @@ TEST(RigidBlock, LargeLongPulseOverturnsAndCriterionOptionGoesFurther) {
   EXPECT_GT(further.extremes.overturn_time, res.extremes.overturn_time);
 }
 
+TEST(RigidBlock, SquatBlockStopsOnBothEdgesAtFirstImpact) {
+  // b/h = 1.6 > sqrt(2): the single-edge map would reverse theta_dot, so rocking ends
+  const Body body(BodyParameters::rectangular_block(100, 1.6, 1.0));
+  InitialState init;
+  init.theta = 0.3;
+  SimulationOptions opt;
+  opt.t_end = 3.0;
+  const auto res = simulate(body, GroundMotion::none(opt.t_end), init, opt);
+  ASSERT_EQ(res.extremes.impacts, 1);
+  EXPECT_EQ(of_kind(res, EventKind::kRockingEnded).size(), 1u);
+  EXPECT_EQ(res.final_phase, Phase::kFullContact);
+  EXPECT_EQ(res.final_theta_dot, 0.0);
+  // all the kinetic energy at impact is lost: the loss equals the potential energy released
+  EXPECT_NEAR(res.energy.impact_loss, -res.energy.potential_change, 1e-9 * res.energy.impact_loss);
+}
+
 TEST(RigidBlock, ChatterCutoffEndsFreeRocking) {
   const Body body(BodyParameters::rectangular_block(100, 0.2, 1.0));
   InitialState init;
