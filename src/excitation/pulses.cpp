@@ -88,31 +88,28 @@ GroundMotion harmonic_cycles(double amplitude, double omega, double cycles, doub
                     duration, component, {t_end});
 }
 
-GroundMotion one_sine_pulse(double a_p, double omega_p, double duration, Component component) {
-  const char* name = "one_sine_pulse";
+namespace {
+// a_p sin(omega_p t) over `half_periods` half periods; `name` is the caller's, for messages
+GroundMotion sine_pulse(const char* name, double a_p, double omega_p, double half_periods,
+                        double duration, Component component) {
   check_sine_args(name, a_p, omega_p);
-  const double t_end = 2.0 * kPi / omega_p;
+  const double t_end = half_periods * kPi / omega_p;
   require_duration(name, duration, t_end);
   return make_pulse([=](double t) { return a_p * std::sin(omega_p * t); }, t_end, duration,
                     component, {t_end});
+}
+}  // namespace
+
+GroundMotion one_sine_pulse(double a_p, double omega_p, double duration, Component component) {
+  return sine_pulse("one_sine_pulse", a_p, omega_p, 2.0, duration, component);
 }
 
 GroundMotion half_sine_pulse(double a_p, double omega_p, double duration, Component component) {
-  const char* name = "half_sine_pulse";
-  check_sine_args(name, a_p, omega_p);
-  const double t_end = kPi / omega_p;
-  require_duration(name, duration, t_end);
-  return make_pulse([=](double t) { return a_p * std::sin(omega_p * t); }, t_end, duration,
-                    component, {t_end});
+  return sine_pulse("half_sine_pulse", a_p, omega_p, 1.0, duration, component);
 }
 
 GroundMotion cycloidal_pulse_a(double a_p, double omega_p, double duration, Component component) {
-  const char* name = "cycloidal_pulse_a";
-  check_sine_args(name, a_p, omega_p);
-  const double t_end = 2.0 * kPi / omega_p;
-  require_duration(name, duration, t_end);
-  return make_pulse([=](double t) { return a_p * std::sin(omega_p * t); }, t_end, duration,
-                    component, {t_end});
+  return sine_pulse("cycloidal_pulse_a", a_p, omega_p, 2.0, duration, component);
 }
 
 GroundMotion cycloidal_pulse_b(double a_p, double omega_p, double duration, Component component) {
