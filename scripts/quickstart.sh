@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
-# Builds flexrock (installing missing Debian packages) and runs a real example.
+# Builds flexrock (installing missing Debian packages) and runs a real case end to end: a statue
+# under El Centro 1940. Outputs go to build/example/.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh
 cmake --preset release >/dev/null
 cmake --build --preset release -j"$(nproc)"
-./build/release/examples/engine_tour
+build/release/apps/flexrock run -o build/example examples/cases/museum_statue.toml

@@ -5,3 +5,16 @@ add_library(flexrock_io io/records.cpp)
 add_library(flexrock::io ALIAS flexrock_io)
 target_link_libraries(flexrock_io PUBLIC flexrock::core PRIVATE flexrock_warnings)
 flexrock_apply_sanitizers(flexrock_io)
+
+
+# case files (toml++) and outputs (CSV, summary JSON): flexrock::io
+target_sources(flexrock_io PRIVATE io/case_file.cpp io/outputs.cpp)
+find_package(tomlplusplus CONFIG QUIET)
+find_package(nlohmann_json 3.9 REQUIRED)
+if(TARGET tomlplusplus::tomlplusplus)
+  target_link_libraries(flexrock_io PRIVATE tomlplusplus::tomlplusplus)
+else()
+  # header-only use when no CMake package is installed
+  target_compile_definitions(flexrock_io PRIVATE TOML_HEADER_ONLY=1)
+endif()
+target_link_libraries(flexrock_io PRIVATE nlohmann_json::nlohmann_json)

@@ -1,0 +1,344 @@
+// flexrock: the command line. Parses arguments, calls io/ and sim/, maps outcomes and errors to
+// exit codes:
+//   0  the run completed (the body may have overturned or lost contact: physical outcomes)
+//   1  a run that could not complete (status "stopped"), or outputs that could not be written
+//   2  bad input or usage (case file, record, body, options, command line)
+#include <fmt/core.h>
+#include <unistd.h>
+
+#include <CLI/CLI.hpp>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <exception>
+#include <future>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include "flexrock/core/error.hpp"
+#include "flexrock/io/case_file.hpp"
+#include "flexrock/io/outputs.hpp"
+#include "flexrock/sim/simulate.hpp"
+
+#ifndef FLEXROCK_VERSION
+#define FLEXROCK_VERSION "unknown"
+#endif
+
+namespace {
+
+using namespace flexrock;
+
+constexpr int kExitOk = 0;
+constexpr int kExitRunFailed = 1;
+constexpr int kExitBadInput = 2;
+
+int error(const std::string& message, int code) {
+  std::fflush(stdout);
+  fmt::print(stderr, "flexrock: error: {}\n", message);
+  return code;
+}
+
+// ---------------------------------------------------------------------------------------------
+// progress: the engine reports none, so a run on a terminal that lasts more than a second shows
+// an activity bar with the elapsed time; nothing when stderr is not a terminal or with --quiet
+
+class Progress {
+ public:
+  Progress(bool enabled, double motion_s) : enabled_(enabled), motion_s_(motion_s) {}
+  void draw(double elapsed) {
+    if (!enabled_ || elapsed < 1.0) return;
+    constexpr int kWidth = 24;
+    const int pos = static_cast<int>(elapsed * 8.0) % (2 * (kWidth - 3));
+    const int at = pos < kWidth - 3 ? pos : 2 * (kWidth - 3) - pos;
+    std::string bar(kWidth, ' ');
+    bar.replace(static_cast<std::size_t>(at), 3, "<=>");
+    fmt::print(stderr, "\r[{}] simulating {:.1f} s of motion, {:.0f} s elapsed", bar, motion_s_,
+               elapsed);
+    std::fflush(stderr);
+    drawn_ = true;
+  }
+  void clear() {
+    if (drawn_) fmt::print(stderr, "\r\033[K");
+    drawn_ = false;
+  }
+
+ private:
+  bool enabled_;
+  double motion_s_;
+  bool drawn_ = false;
+};
+
+SimulationResult run_with_progress(const Body& body, const io::Case& c, bool show_progress) {
+  const double end = c.options.t_end >= 0.0 ? c.options.t_end : c.motion.duration();
+  Progress progress(show_progress, end);
+  const auto start = std::chrono::steady_clock::now();
+  auto future = std::async(std::launch::async,
+                           [&] { return simulate(body, c.motion, c.initial, c.options); });
+  while (future.wait_for(std::chrono::milliseconds(100)) != std::future_status::ready) {
+    progress.draw(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  }
+  progress.clear();
+  return future.get();  // rethrows InputError from the engine
+}
+
+// ---------------------------------------------------------------------------------------------
+// the human summary of a run
+
+std::string g_units(double a, double g) { return fmt::format("{:.4g} m/s^2 ({:.4g} g)", a, a / g); }
+
+void print_summary(const io::Case& c, const Body& body, const SimulationResult& r,
+                   const io::OutputPaths& paths, bool quiet) {
+  const BodyParameters& p = body.params();
+  const Extremes& x = r.extremes;
+  const EnergyBalance& e = r.energy;
+  fmt::print("case: {}{}\n", c.name, c.description.empty() ? "" : " - " + c.description);
+  fmt::print("body: {}{}, M = {:.6g} kg, h = {:.4g} m, b1 = {:.4g} m, b2 = {:.4g} m, {} mode{}\n",
+             c.body_type, c.rigid ? " (taken rigid)" : "", p.mass, p.height, p.b1, p.b2,
+             body.modes(), body.modes() == 1 ? "" : "s");
+  fmt::print("excitation: {}{}, {:.4g} s\n", c.horizontal.type,
+             c.vertical.type.empty() ? "" : " + vertical " + c.vertical.type, c.motion.duration());
+
+  switch (r.status) {
+    case Status::kCompleted:
+      fmt::print("outcome: completed at t = {:.4f} s (final phase {})\n", r.t_end,
+                 to_string(r.final_phase));
+      break;
+    case Status::kOverturned:
+      fmt::print("outcome: OVERTURNED about edge {} at t = {:.4f} s\n", x.overturn_edge,
+                 x.overturn_time);
+      break;
+    case Status::kContactLost:
+      fmt::print("outcome: CONTACT LOST at t = {:.4f} s: {}\n", r.t_end, r.message);
+      break;
+    case Status::kStopped:
+      fmt::print("outcome: STOPPED at t = {:.4f} s: {}\n", r.t_end, r.message);
+      break;
+  }
+  fmt::print("peak tilt: {:.6g} rad on edge 1, {:.6g} rad on edge 2; max uplift {:.4g} mm\n",
+             x.max_theta_edge1, x.max_theta_edge2, 1e3 * x.max_uplift);
+  if (x.first_uplift_time >= 0.0) {
+    fmt::print("uplift: first at t = {:.4f} s onto edge {}\n", x.first_uplift_time,
+               x.first_uplift_edge);
+  } else {
+    fmt::print("uplift: none (static uplift at {} onto edge 1, {} onto edge 2)\n",
+               g_units(p.gravity * body.alpha1(), p.gravity),
+               g_units(p.gravity * body.alpha2(), p.gravity));
+  }
+  if (x.overturn_time >= 0.0) {
+    fmt::print("overturning: at t = {:.4f} s about edge {}\n", x.overturn_time, x.overturn_edge);
+  } else {
+    fmt::print("overturning: none\n");
+  }
+  fmt::print("impacts: {}\n", x.impacts);
+  fmt::print("energy lost: {:.6g} J (impacts {:.6g} J, chatter {:.6g} J, damping {:.6g} J)\n",
+             e.impact_loss + e.chatter_loss + e.damping_loss, e.impact_loss, e.chatter_loss,
+             e.damping_loss);
+  if (std::isfinite(c.options.friction_coefficient)) {
+    fmt::print("friction demand: max {:.4g} (coefficient {:.4g})\n", x.max_friction_demand,
+               c.options.friction_coefficient);
+  } else {
+    fmt::print("friction demand: max {:.4g} (no friction limit given)\n", x.max_friction_demand);
+  }
+  fmt::print("energy balance residual: {:.3g} J ({:.3g} of {:.4g} J)\n", e.residual,
+             e.scale > 0.0 ? std::abs(e.residual) / e.scale : 0.0, e.scale);
+  if (r.friction_exceeded) {
+    fmt::print(
+        "warning: the friction demand exceeded the friction coefficient: the body would "
+        "slide, which this model does not follow\n");
+  }
+  if (r.chatter_cut_off) {
+    fmt::print("warning: the chatter criterion ended rocking (impacts too close together)\n");
+  }
+  if (r.impact_gained_energy) {
+    fmt::print("warning: an impact gained energy (check restitution_factor)\n");
+  }
+  if (!quiet) {
+    for (const std::string* s : {&paths.time_history, &paths.events, &paths.summary}) {
+      if (!s->empty()) fmt::print("wrote {}\n", *s);
+    }
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// commands
+
+int cmd_run(const std::string& file, const std::string& output_dir, bool quiet, bool no_progress) {
+  io::Case c;
+  try {
+    c = io::load_case(file);
+  } catch (const InputError& e) {
+    return error(e.what(), kExitBadInput);
+  }
+  const Body body(c.body);
+  SimulationResult r;
+  try {
+    r = run_with_progress(body, c, !quiet && !no_progress && ::isatty(STDERR_FILENO));
+  } catch (const InputError& e) {
+    return error(file + ": " + e.what(), kExitBadInput);
+  }
+  io::OutputPaths paths;
+  try {
+    paths = io::write_outputs(c, body, r, output_dir);
+  } catch (const std::exception& e) {
+    print_summary(c, body, r, {}, quiet);
+    return error(std::string("could not write the outputs: ") + e.what(), kExitRunFailed);
+  }
+  print_summary(c, body, r, paths, quiet);
+  if (r.status == Status::kStopped) {
+    return error("the run could not complete: " + r.message, kExitRunFailed);
+  }
+  return kExitOk;
+}
+
+int cmd_check(const std::vector<std::string>& files, bool quiet) {
+  int code = kExitOk;
+  for (const std::string& file : files) {
+    try {
+      const io::Case c = io::load_case(file);
+      const Body body(c.body);
+      if (!quiet) {
+        fmt::print("{}: ok: body {} ({} mode{}), excitation {:.4g} s{}, outputs: {}{}{}\n", file,
+                   c.body_type, body.modes(), body.modes() == 1 ? "" : "s", c.motion.duration(),
+                   c.vertical.type.empty() ? "" : " (with vertical)",
+                   c.output.time_history.empty() ? "" : c.output.time_history + " ",
+                   c.output.events.empty() ? "" : c.output.events + " ", c.output.summary);
+      }
+    } catch (const InputError& e) {
+      code = error(e.what(), kExitBadInput);
+    }
+  }
+  return code;
+}
+
+void print_matrix(const char* name, const MatrixX& m) {
+  fmt::print("  {} =\n", name);
+  for (Eigen::Index i = 0; i < m.rows(); ++i) {
+    fmt::print("   ");
+    for (Eigen::Index j = 0; j < m.cols(); ++j) fmt::print(" {:>13.6g}", m(i, j));
+    fmt::print("\n");
+  }
+}
+
+void print_vector(const char* name, const VectorX& v) {
+  fmt::print("  {:<6} =", name);
+  for (Eigen::Index i = 0; i < v.size(); ++i) fmt::print(" {:>13.6g}", v(i));
+  fmt::print("\n");
+}
+
+int cmd_params(const std::string& file) {
+  std::string type;
+  BodyParameters p;
+  try {
+    p = io::load_body(file, &type);
+  } catch (const InputError& e) {
+    return error(e.what(), kExitBadInput);
+  }
+  const Body body(p);
+  const double g = p.gravity;
+  fmt::print("body: {} from {}\n", type, file);
+  fmt::print("  mass M                    {:.6g} kg\n", p.mass);
+  fmt::print("  c.g. height h             {:.6g} m\n", p.height);
+  fmt::print("  b1, b2                    {:.6g} m, {:.6g} m (c.g. to tipping points 1, 2)\n", p.b1,
+             p.b2);
+  fmt::print("  gravity g                 {:.6g} m/s^2\n", g);
+  fmt::print("rigid-body parameters:\n");
+  fmt::print("  alpha1 = b1/h             {:.6g} (slenderness angle atan(b1/h) = {:.4g} deg)\n",
+             body.alpha1(), std::atan(body.alpha1()) * 180.0 / std::numbers::pi);
+  fmt::print("  alpha2 = b2/h             {:.6g} (slenderness angle atan(b2/h) = {:.4g} deg)\n",
+             body.alpha2(), std::atan(body.alpha2()) * 180.0 / std::numbers::pi);
+  fmt::print("  zeta^2 = I/(M h^2)        {:.6g}\n", p.zeta2);
+  fmt::print("  static uplift onto edge 1 (ground acceleration toward edge 2): g b1/h = {}\n",
+             g_units(g * body.alpha1(), g));
+  fmt::print("  static uplift onto edge 2 (ground acceleration toward edge 1): g b2/h = {}\n",
+             g_units(g * body.alpha2(), g));
+  fmt::print("  overturning angle         {:.6g} rad on edge 1, {:.6g} rad on edge 2\n",
+             body.tipping_angle(1), body.tipping_angle(2));
+  fmt::print("  rocking frequency p       {:.6g} rad/s\n", body.rocking_frequency());
+  const int n = body.modes();
+  fmt::print("deformation modes: {}\n", n);
+  if (n > 0) {
+    fmt::print("  {:>4} {:>13} {:>13} {:>13} {:>16}\n", "mode", "f [Hz]", "omega [rad/s]",
+               "damping [-]", "q static [-]");
+    const VectorX& w = body.natural_frequencies();
+    const VectorX& z = body.damping_ratios();
+    const VectorX& qs = body.static_deformation();
+    for (int i = 0; i < n; ++i) {
+      fmt::print("  {:>4} {:>13.6g} {:>13.6g} {:>13.6g} {:>16.6g}\n", i + 1,
+                 w(i) / (2.0 * std::numbers::pi), w(i), i < z.size() ? z(i) : 0.0,
+                 i < qs.size() ? qs(i) + 0.0 : 0.0);  // + 0.0: no "-0"
+    }
+    fmt::print(
+        "  (frequencies of the pinned-base modes; q static: the deformation under gravity,"
+        " standing on both edges)\n");
+    fmt::print("dimensionless parameters (Moran & McLennan):\n");
+    print_matrix("mu", p.mu);
+    print_matrix("kappa", p.kappa);
+    print_matrix("gamma", p.gamma);
+    print_vector("psi_x", p.psi_x);
+    print_vector("psi_y", p.psi_y);
+    print_vector("delta", p.delta);
+    print_vector("beta", p.beta);
+  }
+  return kExitOk;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"flexrock: rocking, impacts and overturning of free-standing deformable bodies",
+               "flexrock"};
+  app.set_version_flag("--version", std::string("flexrock ") + FLEXROCK_VERSION);
+  app.require_subcommand(1);
+  app.footer(
+      "Examples:\n"
+      "  flexrock run examples/cases/museum_statue.toml        run a case, write CSV + JSON\n"
+      "  flexrock run -o results -q examples/cases/slender_column.toml\n"
+      "  flexrock check examples/cases/*.toml                    validate without running\n"
+      "  flexrock params examples/cases/flexible_tank.toml       the body's derived parameters\n"
+      "\n"
+      "Exit codes: 0 ok (overturning and loss of contact are results, not failures);\n"
+      "1 a run that could not complete or outputs that could not be written;\n"
+      "2 bad input or usage. Case-file keys: docs/case-file.md.");
+
+  std::string run_file, output_dir, params_file;
+  std::vector<std::string> check_files;
+  bool quiet = false, no_progress = false;
+
+  CLI::App* run = app.add_subcommand(
+      "run", "Run a case: write the time-history CSV and the summary JSON, print a summary");
+  run->add_option("CASE", run_file, "case file (TOML)")->required();
+  run->add_option("-o,--output-dir", output_dir,
+                  "directory for outputs with relative paths (default: the working directory)");
+  run->add_flag("-q,--quiet", quiet, "print only the results: no progress, no file list");
+  run->add_flag("--no-progress", no_progress, "no progress bar, even on a terminal");
+
+  CLI::App* check = app.add_subcommand("check", "Validate case files without running them");
+  check->add_option("CASE", check_files, "case files (TOML)")->required();
+  check->add_flag("-q,--quiet", quiet, "print nothing but errors");
+
+  CLI::App* params = app.add_subcommand(
+      "params", "Print a body's derived parameters (the [body] table of a case or body file)");
+  params->add_option("BODY", params_file, "case or body file (TOML) with a [body] table")
+      ->required();
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    if (e.get_exit_code() == 0) return app.exit(e);  // --help, --version
+    error(e.what(), kExitBadInput);
+    fmt::print(stderr, "Run 'flexrock --help' for usage.\n");
+    return kExitBadInput;
+  }
+
+  try {
+    if (*run) return cmd_run(run_file, output_dir, quiet, no_progress);
+    if (*check) return cmd_check(check_files, quiet);
+    if (*params) return cmd_params(params_file);
+  } catch (const InputError& e) {
+    return error(e.what(), kExitBadInput);
+  } catch (const std::exception& e) {
+    return error(e.what(), kExitRunFailed);
+  }
+  return kExitBadInput;
+}

@@ -1,0 +1,72 @@
+// Case files: one TOML file describes a body, its excitation, the solver options and the outputs
+// of one simulation. Every key is documented in docs/case-file.md with its unit and default.
+//
+// Errors are flexrock::InputError with messages of the form
+//   "<file>:<line>: key '<table.key>': expected <what>, got <value>"
+// and unknown keys are rejected with the closest known key ("did you mean ...").
+#pragma once
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "flexrock/excitation/ground_motion.hpp"
+#include "flexrock/model/body.hpp"
+#include "flexrock/sim/simulate.hpp"
+
+namespace flexrock::io {
+
+/// Where the results of a run go. Relative paths are relative to the output directory the
+/// caller chooses (the `flexrock run --output-dir`, default the working directory); an empty
+/// path writes nothing.
+struct OutputSettings {
+  double dt = 0.01;          // [s] time-history spacing; 0: no time history
+  std::string time_history;  // CSV time history (default "<case stem>.csv")
+  std::string summary;       // summary JSON (default "<case stem>.summary.json")
+  std::string events;        // event log CSV (default: none)
+};
+
+/// One component (horizontal or vertical) of the excitation, as the case file describes it.
+struct ExcitationComponent {
+  std::string type;        // "record", "harmonic", "one_sine", ..., "none"
+  std::string file;        // record file, resolved against the case file's directory
+  std::string format;      // "at2", "single_column" or "time_series" (records)
+  std::string units;       // units of the file's values or of `amplitude`
+  double amplitude = 0.0;  // [m/s^2] peak of a synthetic motion, converted to SI
+  double scale = 1.0;      // [-] factor on a record component
+};
+
+/// A case, loaded and checked: everything a run needs.
+struct Case {
+  std::string source;       // path of the case file as given
+  std::string stem;         // file name without extension, the default output base name
+  std::string name;         // `name` (default: the stem)
+  std::string description;  // `description` (default: empty)
+  std::string body_type;    // body.type
+  bool rigid = false;       // body.rigid: the modes were dropped
+  BodyParameters body;      // the paper's parameters (already validated by Body)
+  GroundMotion motion;      // [m/s^2] both components, scaled
+  ExcitationComponent horizontal;
+  ExcitationComponent vertical;   // type empty: no vertical component
+  double excitation_scale = 1.0;  // [-] excitation.scale
+  InitialState initial;
+  SimulationOptions options;  // options.output_dt is output.dt
+  OutputSettings output;
+};
+
+/// Reads and checks a case file: the syntax, every key, the body (through the builders and
+/// Body), the records it names (relative to the case file), the options and the initial state.
+/// Throws InputError naming the file, the line and the key.
+Case load_case(const std::string& path);
+
+/// Reads only the [body] table of a case (or body) file: for `flexrock params`. Other tables are
+/// ignored. `type` receives body.type. Throws InputError like load_case.
+BodyParameters load_body(const std::string& path, std::string* type = nullptr);
+
+/// Levenshtein edit distance (insertions, deletions, substitutions), for "did you mean".
+std::size_t edit_distance(std::string_view a, std::string_view b);
+
+/// The candidate closest to `key` if it is close enough to be a likely typo, else empty.
+std::string closest_key(std::string_view key, const std::vector<std::string>& candidates);
+
+}  // namespace flexrock::io

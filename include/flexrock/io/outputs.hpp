@@ -1,0 +1,59 @@
+// Results on disk: the time-history CSV, the event log CSV and the summary JSON of one run.
+// Column names and JSON keys are stable and documented in docs/case-file.md. Every file is
+// written atomically: to "PATH.tmp.<pid>", then renamed onto PATH, so a reader never sees half a
+// file and a failed write leaves nothing behind.
+#pragma once
+
+#include <functional>
+#include <iosfwd>
+#include <string>
+#include <vector>
+
+#include "flexrock/io/case_file.hpp"
+#include "flexrock/model/body.hpp"
+#include "flexrock/sim/simulate.hpp"
+
+namespace flexrock::io {
+
+/// Version of the summary JSON layout; raised only when keys are removed or change meaning.
+inline constexpr int kSummarySchemaVersion = 1;
+
+/// Writes a file atomically: `write` fills a stream opened on "PATH.tmp.<pid>", which is then
+/// renamed onto `path`. Throws std::runtime_error (naming the path) if the file cannot be written;
+/// the temporary file is removed.
+void write_atomically(const std::string& path, const std::function<void(std::ostream&)>& write);
+
+/// Column names of the time history for a body with `modes` modes, each with its unit suffix:
+/// time_s, phase, theta_rad, theta_dot_rad_per_s, uplift_m, q1, ..., q1_dot_per_s, ...,
+/// base_acc_x_m_per_s2, base_acc_y_m_per_s2, reaction_x_N, reaction_y_N, resultant_m,
+/// friction_demand, kinetic_J, potential_J, input_work_J, damping_loss_J, impact_loss_J.
+std::vector<std::string> time_history_columns(int modes);
+
+/// The time history as CSV text (a header row, then one row per output time).
+void write_time_history(std::ostream& out, const SimulationResult& result, const Body& body);
+
+/// Column names of the event log: time_s, event, edge, theta_rad, theta_dot_before_rad_per_s,
+/// theta_dot_after_rad_per_s, energy_loss_J, impulse_x_N_s, impulse_y_N_s, friction_demand.
+std::vector<std::string> event_columns();
+
+/// The event log as CSV text.
+void write_events(std::ostream& out, const SimulationResult& result);
+
+/// Where a run's outputs went (empty: not written), for the summary.
+struct OutputPaths {
+  std::string time_history;
+  std::string summary;
+  std::string events;
+};
+
+/// The summary JSON document (pretty-printed, keys as documented).
+std::string summary_json(const Case& c, const Body& body, const SimulationResult& result,
+                         const OutputPaths& paths);
+
+/// Writes the outputs `c.output` asks for: the time history, the event log, then the summary
+/// (last, so that a summary on disk means a complete set). Relative paths are taken relative
+/// to `output_dir` (created if missing). Returns the paths written.
+OutputPaths write_outputs(const Case& c, const Body& body, const SimulationResult& result,
+                          const std::string& output_dir);
+
+}  // namespace flexrock::io

@@ -1,0 +1,946 @@
+#include "flexrock/io/case_file.hpp"
+
+#include <toml++/toml.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <numbers>
+#include <optional>
+#include <set>
+#include <sstream>
+#include <utility>
+
+#include "flexrock/core/error.hpp"
+#include "flexrock/excitation/pulses.hpp"
+#include "flexrock/io/records.hpp"
+#include "flexrock/model/builders.hpp"
+
+namespace flexrock::io {
+
+namespace fs = std::filesystem;
+
+std::size_t edit_distance(std::string_view a, std::string_view b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diag = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t up = row[j];
+      const std::size_t sub = diag + (a[i - 1] == b[j - 1] ? 0 : 1);
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, sub});
+      diag = up;
+    }
+  }
+  return row[b.size()];
+}
+
+std::string closest_key(std::string_view key, const std::vector<std::string>& candidates) {
+  std::string best;
+  std::size_t best_d = std::string::npos;
+  for (const std::string& c : candidates) {
+    const std::size_t d = edit_distance(key, c);
+    // a likely typo: a few edits for the length, or one name containing the other
+    const std::size_t allowed = std::max<std::size_t>(2, (c.size() + 2) / 3);
+    const bool contains = key.size() >= 3 && (c.find(key) != std::string::npos ||
+                                              key.find(c) != std::string_view::npos);
+    if ((d <= allowed || contains) && d < best_d) {
+      best = c;
+      best_d = d;
+    }
+  }
+  return best;
+}
+
+namespace {
+
+// a number for messages: shortest form that reads back
+std::string num(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.10g", v);
+  return buf;
+}
+
+std::string join(const std::vector<std::string>& v) {
+  std::string s;
+  for (std::size_t i = 0; i < v.size(); ++i) s += (i ? ", " : "") + v[i];
+  return s;
+}
+
+// what a TOML node holds, for "got ..."
+std::string describe(const toml::node& n) {
+  if (auto s = n.as_string()) return "\"" + s->get() + "\"";
+  if (auto i = n.as_integer()) return std::to_string(i->get());
+  if (auto f = n.as_floating_point()) return num(f->get());
+  if (auto b = n.as_boolean()) return b->get() ? "true" : "false";
+  if (n.is_array()) return "an array";
+  if (n.is_table()) return "a table";
+  return "a date or time";
+}
+
+std::size_t line_of(const toml::node& n) { return n.source().begin.line; }
+
+// the keys of one TOML table, read with checks; every error names file, line and key
+class Reader {
+ public:
+  Reader(std::string file, const toml::table& table, std::string prefix, std::size_t line)
+      : file_(std::move(file)), t_(table), prefix_(std::move(prefix)), line_(line) {
+    if (line_ == 0) line_ = line_of(table);
+  }
+
+  const std::string& file() const { return file_; }
+  std::size_t line() const { return line_; }
+  std::string full(std::string_view key) const { return prefix_ + std::string(key); }
+
+  [[noreturn]] void fail_at(std::size_t line, std::string_view key, const std::string& msg) const {
+    std::string where = file_ + ":";
+    if (line > 0) where += std::to_string(line) + ":";
+    throw InputError(where + " key '" + full(key) + "': " + msg);
+  }
+  [[noreturn]] void fail(std::string_view key, const std::string& msg) const {
+    const toml::node* n = t_.get(key);
+    fail_at(n ? line_of(*n) : line_, key, msg);
+  }
+  [[noreturn]] void expected(std::string_view key, const std::string& what) const {
+    const toml::node* n = t_.get(key);
+    fail(key, "expected " + what + ", got " + (n ? describe(*n) : std::string("nothing")));
+  }
+
+  bool has(std::string_view key) {
+    known_.insert(std::string(key));
+    return t_.contains(key);
+  }
+  const toml::node* node(std::string_view key) {
+    known_.insert(std::string(key));
+    return t_.get(key);
+  }
+  const toml::node& require(std::string_view key, const std::string& what) {
+    const toml::node* n = node(key);
+    if (!n) {
+      // a misspelt key is the likelier cause than a forgotten one: name it first
+      for (const auto& [k, v] : t_) {
+        const std::string other(k.str());
+        if (known_.count(other) || closest_key(other, {std::string(key)}).empty()) continue;
+        const std::size_t at = k.source().begin.line ? k.source().begin.line : line_of(v);
+        fail_at(at, other,
+                "unknown key (did you mean '" + full(key) + "'?); '" + full(key) +
+                    "' is required: " + what);
+      }
+      fail_at(line_, key, "missing; expected " + what);
+    }
+    return *n;
+  }
+
+  // any finite number (integers too); `allow_inf` admits +-inf
+  std::optional<double> number_opt(std::string_view key, const std::string& what,
+                                   bool allow_inf = false) {
+    const toml::node* n = node(key);
+    if (!n) return std::nullopt;
+    return to_number(*n, key, what, allow_inf);
+  }
+  double number(std::string_view key, const std::string& what) {
+    return to_number(require(key, what), key, what, false);
+  }
+  double number_or(std::string_view key, double def, const std::string& what) {
+    return number_opt(key, what).value_or(def);
+  }
+  double positive(std::string_view key, const std::string& unit) {
+    const std::string what = "a number > 0 " + unit;
+    const double v = number(key, what);
+    if (!(v > 0.0)) expected(key, what);
+    return v;
+  }
+  double positive_or(std::string_view key, double def, const std::string& unit) {
+    return has(key) ? positive(key, unit) : def;
+  }
+  double nonnegative_or(std::string_view key, double def, const std::string& unit) {
+    const std::string what = "a number >= 0 " + unit;
+    const std::optional<double> v = number_opt(key, what);
+    if (v && !(*v >= 0.0)) expected(key, what);
+    return v.value_or(def);
+  }
+  long integer_or(std::string_view key, long def, long min, const std::string& what) {
+    const toml::node* n = node(key);
+    if (!n) return def;
+    const auto* i = n->as_integer();
+    if (!i || i->get() < min) expected(key, what);
+    return static_cast<long>(i->get());
+  }
+  bool boolean_or(std::string_view key, bool def) {
+    const toml::node* n = node(key);
+    if (!n) return def;
+    if (!n->is_boolean()) expected(key, "true or false");
+    return n->as_boolean()->get();
+  }
+  std::optional<std::string> string_opt(std::string_view key, const std::string& what) {
+    const toml::node* n = node(key);
+    if (!n) return std::nullopt;
+    if (!n->is_string()) expected(key, what);
+    return n->as_string()->get();
+  }
+  std::string string(std::string_view key, const std::string& what) {
+    const toml::node& n = require(key, what);
+    if (!n.is_string()) expected(key, what);
+    return n.as_string()->get();
+  }
+  // one of `choices`; `def` empty: required
+  std::string choice(std::string_view key, const std::vector<std::string>& choices,
+                     const std::string& def = {}) {
+    const std::string what = "one of: " + join(choices);
+    std::optional<std::string> v;
+    if (def.empty()) {
+      v = string(key, "a string, " + what);
+    } else {
+      v = string_opt(key, "a string, " + what);
+      if (!v) return def;
+    }
+    if (std::find(choices.begin(), choices.end(), *v) != choices.end()) return *v;
+    const std::string hint = closest_key(*v, choices);
+    fail(key, "expected " + what + ", got \"" + *v + "\"" +
+                  (hint.empty() ? "" : " (did you mean \"" + hint + "\"?)"));
+  }
+  // an array of finite numbers
+  std::optional<std::vector<double>> vector_opt(std::string_view key, const std::string& what) {
+    const toml::node* n = node(key);
+    if (!n) return std::nullopt;
+    const toml::array* a = n->as_array();
+    if (!a) expected(key, what);
+    std::vector<double> v;
+    for (const toml::node& e : *a) v.push_back(to_number(e, key, what, false));
+    return v;
+  }
+  // an array of equally long arrays of finite numbers; `cols` < 0: any
+  std::optional<MatrixX> matrix_opt(std::string_view key, const std::string& what) {
+    const toml::node* n = node(key);
+    if (!n) return std::nullopt;
+    const toml::array* a = n->as_array();
+    if (!a) expected(key, what);
+    MatrixX m;
+    for (std::size_t i = 0; i < a->size(); ++i) {
+      const toml::array* row = (*a)[i].as_array();
+      if (!row)
+        fail_at(
+            line_of((*a)[i]), key,
+            "expected " + what + ", got row " + std::to_string(i + 1) + " = " + describe((*a)[i]));
+      if (i == 0)
+        m.resize(static_cast<Eigen::Index>(a->size()), static_cast<Eigen::Index>(row->size()));
+      if (static_cast<Eigen::Index>(row->size()) != m.cols()) {
+        fail_at(line_of((*a)[i]), key,
+                "expected " + what + ": every row as long as the first (" +
+                    std::to_string(m.cols()) + "), got row " + std::to_string(i + 1) + " with " +
+                    std::to_string(row->size()));
+      }
+      for (std::size_t j = 0; j < row->size(); ++j) {
+        m(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)) =
+            to_number((*row)[j], key, what, false);
+      }
+    }
+    return m;
+  }
+  std::optional<Reader> table_opt(std::string_view key) {
+    const toml::node* n = node(key);
+    if (!n) return std::nullopt;
+    if (!n->is_table()) expected(key, "a table");
+    return Reader(file_, *n->as_table(), full(key) + ".", line_of(*n));
+  }
+  Reader table(std::string_view key) {
+    const toml::node* n = node(key);
+    if (!n) {
+      throw InputError(file_ + ":" + (line_ ? std::to_string(line_) + ":" : std::string()) +
+                       " table [" + full(key) + "]: missing; expected a [" + full(key) +
+                       "] table (see docs/case-file.md)");
+    }
+    if (!n->is_table()) expected(key, "a table");
+    return Reader(file_, *n->as_table(), full(key) + ".", line_of(*n));
+  }
+
+  // every key of the table must have been asked for; `context` explains the set
+  void finish(const std::string& context = {}) const {
+    std::vector<std::string> known(known_.begin(), known_.end());
+    for (const auto& [k, v] : t_) {
+      const std::string key(k.str());
+      if (known_.count(key)) continue;
+      const std::string hint = closest_key(key, known);
+      std::string msg = "unknown key";
+      if (!context.empty()) msg += " " + context;
+      if (!hint.empty()) msg += " (did you mean '" + full(hint) + "'?)";
+      msg += "; expected one of: " + join(known);
+      const std::size_t line = k.source().begin.line ? k.source().begin.line : line_of(v);
+      fail_at(line, key, msg);
+    }
+  }
+
+ private:
+  double to_number(const toml::node& n, std::string_view key, const std::string& what,
+                   bool allow_inf) const {
+    double v;
+    if (auto i = n.as_integer()) {
+      v = static_cast<double>(i->get());
+    } else if (auto f = n.as_floating_point()) {
+      v = f->get();
+    } else {
+      fail_at(line_of(n), key, "expected " + what + ", got " + describe(n));
+    }
+    if (std::isnan(v) || (std::isinf(v) && !allow_inf)) {
+      fail_at(line_of(n), key, "expected " + what + " (finite), got " + num(v));
+    }
+    return v;
+  }
+
+  std::string file_;
+  const toml::table& t_;
+  std::string prefix_;
+  std::size_t line_;
+  std::set<std::string> known_;
+};
+
+// ---------------------------------------------------------------------------------------------
+// small CSV files of numbers (nodes, mode shapes)
+
+// rows of numbers; '#' lines and blank lines skipped; a first row without numbers is a header
+std::vector<std::vector<double>> read_number_rows(const std::string& path, std::size_t columns,
+                                                  const std::string& what) {
+  std::ifstream in(path);
+  if (!in) throw InputError(path + ": cannot open " + what + " file");
+  std::vector<std::vector<double>> rows;
+  std::string text;
+  std::size_t line = 0;
+  bool header_allowed = true;
+  while (std::getline(in, text)) {
+    ++line;
+    if (!text.empty() && text.back() == '\r') text.pop_back();
+    const auto first = text.find_first_not_of(" \t");
+    if (first == std::string::npos || text[first] == '#') continue;
+    for (char& c : text) {
+      if (c == ',' || c == ';') c = ' ';
+    }
+    std::istringstream ss(text);
+    std::vector<double> row;
+    std::string tok;
+    bool all_numbers = true, any_number = false;
+    while (ss >> tok) {
+      char* end = nullptr;
+      const double v = std::strtod(tok.c_str(), &end);
+      if (end == tok.c_str() || *end != '\0') {
+        all_numbers = false;
+      } else {
+        any_number = true;
+        if (!std::isfinite(v)) {
+          throw InputError(path + ":" + std::to_string(line) + ": expected finite numbers in " +
+                           what + ", got \"" + tok + "\"");
+        }
+      }
+      row.push_back(v);
+    }
+    if (header_allowed && !any_number) {
+      header_allowed = false;
+      continue;
+    }
+    header_allowed = false;
+    if (!all_numbers) {
+      throw InputError(path + ":" + std::to_string(line) + ": expected " + std::to_string(columns) +
+                       " numbers (" + what + "), got \"" + text + "\"");
+    }
+    if (row.size() != columns) {
+      throw InputError(path + ":" + std::to_string(line) + ": expected " + std::to_string(columns) +
+                       " values (" + what + "), got " + std::to_string(row.size()));
+    }
+    rows.push_back(std::move(row));
+  }
+  if (rows.empty()) throw InputError(path + ": no rows of " + what + " found");
+  return rows;
+}
+
+// the first row's column count of a numbers file
+std::size_t count_columns(const std::string& path, const std::string& what) {
+  std::ifstream in(path);
+  if (!in) throw InputError(path + ": cannot open " + what + " file");
+  std::string text;
+  while (std::getline(in, text)) {
+    const auto first = text.find_first_not_of(" \t\r");
+    if (first == std::string::npos || text[first] == '#') continue;
+    for (char& c : text) {
+      if (c == ',' || c == ';') c = ' ';
+    }
+    std::istringstream ss(text);
+    std::string tok;
+    std::size_t n = 0;
+    while (ss >> tok) ++n;
+    return n;
+  }
+  throw InputError(path + ": no rows of " + what + " found");
+}
+
+// a path in the case file, relative to the case file's directory
+std::string resolve(const std::string& case_file, const std::string& p) {
+  const fs::path path(p);
+  if (path.is_absolute()) return p;
+  return (fs::path(case_file).parent_path() / path).lexically_normal().string();
+}
+
+// ---------------------------------------------------------------------------------------------
+// body
+
+const std::vector<std::string> kBodyTypes = {
+    "rigid_block", "rigid_body", "paper", "lumped", "oscillator_on_slab", "uniform_cantilever"};
+
+// [body] damping of the modes: damping_ratios, or rayleigh_mass/rayleigh_stiffness
+Damping read_damping(Reader& r) {
+  Damping d;
+  const auto ratios = r.vector_opt("damping_ratios", "an array of damping ratios [-], one a mode");
+  const auto a = r.number_opt("rayleigh_mass", "a number >= 0 [1/s]");
+  const auto b = r.number_opt("rayleigh_stiffness", "a number >= 0 [s]");
+  if (ratios && (a || b)) {
+    r.fail("damping_ratios", "give either damping_ratios or rayleigh_mass/rayleigh_stiffness");
+  }
+  if (ratios) {
+    for (double z : *ratios) {
+      if (z < 0.0) r.expected("damping_ratios", "damping ratios >= 0");
+    }
+    d.kind = DampingKind::kModal;
+    d.modal_ratios =
+        Eigen::Map<const VectorX>(ratios->data(), static_cast<Eigen::Index>(ratios->size()));
+  } else if (a || b) {
+    if (a && *a < 0.0) r.expected("rayleigh_mass", "a number >= 0 [1/s]");
+    if (b && *b < 0.0) r.expected("rayleigh_stiffness", "a number >= 0 [s]");
+    d.kind = DampingKind::kRayleigh;
+    d.rayleigh_mass = a.value_or(0.0);
+    d.rayleigh_stiffness = b.value_or(0.0);
+  }
+  return d;
+}
+
+VectorX to_vector(const std::vector<double>& v) {
+  return Eigen::Map<const VectorX>(v.data(), static_cast<Eigen::Index>(v.size()));
+}
+
+BodyParameters read_paper_body(Reader& r) {
+  BodyParameters p;
+  p.mass = r.positive("mass", "[kg]");
+  p.height = r.positive("height", "[m]");
+  p.b1 = r.positive("b1", "[m]");
+  p.b2 = r.positive("b2", "[m]");
+  p.zeta2 = r.positive("zeta2", "[-]");
+  p.gravity = r.positive_or("gravity", kStandardGravity, "[m/s^2]");
+  const auto kappa = r.matrix_opt("kappa", "an n x n array of numbers [-]");
+  const Eigen::Index n = kappa ? kappa->rows() : 0;
+  auto square = [&](const char* key, const std::optional<MatrixX>& m) {
+    if (m && (m->rows() != n || m->cols() != n)) {
+      r.fail(key, "expected an " + std::to_string(n) + " x " + std::to_string(n) +
+                      " matrix (n from kappa), got " + std::to_string(m->rows()) + " x " +
+                      std::to_string(m->cols()));
+    }
+  };
+  square("kappa", kappa);
+  const auto mu = r.matrix_opt("mu", "an n x n array of numbers [-]");
+  const auto gamma = r.matrix_opt("gamma", "an n x n array of numbers [-]");
+  square("mu", mu);
+  square("gamma", gamma);
+  if (n > 0 && !mu) r.fail_at(r.line(), "mu", "missing; expected an n x n array (kappa is given)");
+  p.kappa = kappa.value_or(MatrixX(0, 0));
+  p.mu = mu.value_or(MatrixX(0, 0));
+  p.gamma = gamma.value_or(MatrixX::Zero(n, n));
+  auto vec = [&](const char* key) {
+    const auto v = r.vector_opt(key, "an array of n numbers [-]");
+    if (!v) return VectorX(VectorX::Zero(n));
+    if (static_cast<Eigen::Index>(v->size()) != n) {
+      r.fail(key, "expected " + std::to_string(n) + " values (one a mode), got " +
+                      std::to_string(v->size()));
+    }
+    return to_vector(*v);
+  };
+  p.psi_x = vec("psi_x");
+  p.psi_y = vec("psi_y");
+  p.delta = vec("delta");
+  p.beta = vec("beta");
+  p.damping = read_damping(r);
+  return p;
+}
+
+BodyParameters read_lumped_body(Reader& r) {
+  LumpedModel m;
+  m.tip1_x = r.number("tip1_x", "a number [m] (x of tipping point 1, the left edge)");
+  m.tip2_x = r.number("tip2_x", "a number [m] (x of tipping point 2, the right edge)");
+  if (!(m.tip2_x > m.tip1_x)) r.expected("tip2_x", "a number > tip1_x = " + num(m.tip1_x) + " [m]");
+  m.gravity = r.positive_or("gravity", kStandardGravity, "[m/s^2]");
+
+  // nodes: inline rows [x, y, mass(, rotary_inertia)] or a CSV file
+  std::vector<std::vector<double>> rows;
+  const bool inline_nodes = r.has("nodes");
+  const auto nodes_file = r.string_opt("nodes_file", "a path (CSV: x, y, mass[, rotary_inertia])");
+  if (inline_nodes == nodes_file.has_value()) {
+    r.fail_at(r.line(), "nodes", "expected exactly one of 'nodes' (inline) or 'nodes_file'");
+  }
+  if (inline_nodes) {
+    const toml::node* n = r.node("nodes");
+    const toml::array* a = n->as_array();
+    if (!a || a->empty())
+      r.expected("nodes", "an array of [x, y, mass] or [x, y, mass, rotary_inertia]");
+    for (const toml::node& e : *a) {
+      const toml::array* row = e.as_array();
+      if (!row || row->size() < 3 || row->size() > 4) {
+        r.fail_at(line_of(e), "nodes",
+                  "expected [x, y, mass] or [x, y, mass, rotary_inertia], got " + describe(e) +
+                      (row ? " with " + std::to_string(row->size()) + " values" : ""));
+      }
+      std::vector<double> v;
+      for (const toml::node& x : *row) {
+        const auto* i = x.as_integer();
+        const auto* f = x.as_floating_point();
+        const double d = i ? static_cast<double>(i->get()) : f ? f->get() : std::nan("");
+        if (!std::isfinite(d))
+          r.fail_at(line_of(x), "nodes", "expected finite numbers, got " + describe(x));
+        v.push_back(d);
+      }
+      rows.push_back(std::move(v));
+    }
+  } else {
+    const std::string path = resolve(r.file(), *nodes_file);
+    const std::size_t cols = count_columns(path, "nodes");
+    if (cols != 3 && cols != 4) {
+      r.fail("nodes_file",
+             "expected a CSV with 3 or 4 columns (x, y, mass[, rotary_inertia]), got " +
+                 std::to_string(cols) + " in " + path);
+    }
+    rows = read_number_rows(path, cols, "nodes: x, y, mass[, rotary_inertia]");
+  }
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    LumpedNode node{rows[i][0], rows[i][1], rows[i][2], rows[i].size() > 3 ? rows[i][3] : 0.0};
+    if (!(node.mass >= 0.0) || !(node.rotary_inertia >= 0.0)) {
+      r.fail(inline_nodes ? "nodes" : "nodes_file",
+             "expected node masses and rotary inertias >= 0, got node " + std::to_string(i + 1) +
+                 " with mass " + num(node.mass) + " kg, rotary inertia " +
+                 num(node.rotary_inertia) + " kg m^2");
+    }
+    m.nodes.push_back(node);
+  }
+  const auto nn = static_cast<Eigen::Index>(m.nodes.size());
+
+  // modes: frequencies_hz or stiffness, and the shapes inline or from a CSV file
+  const auto freqs = r.vector_opt("frequencies_hz", "an array of natural frequencies > 0 [Hz]");
+  const auto stiff = r.matrix_opt("stiffness", "an n x n modal stiffness matrix [N m]");
+  if (freqs.has_value() == stiff.has_value()) {
+    r.fail_at(r.line(), "frequencies_hz",
+              "expected exactly one of 'frequencies_hz' or 'stiffness'");
+  }
+  const auto n = static_cast<Eigen::Index>(freqs ? freqs->size() : stiff->rows());
+  if (n == 0) r.expected(freqs ? "frequencies_hz" : "stiffness", "at least one mode");
+  if (freqs) {
+    m.frequencies.resize(n);
+    for (Eigen::Index i = 0; i < n; ++i) {
+      const double f = (*freqs)[static_cast<std::size_t>(i)];
+      if (!(f > 0.0)) r.expected("frequencies_hz", "natural frequencies > 0 [Hz]");
+      m.frequencies(i) = 2.0 * std::numbers::pi * f;
+    }
+  } else {
+    if (stiff->cols() != n) r.expected("stiffness", "a square matrix [N m]");
+    m.stiffness = *stiff;
+  }
+  const bool inline_shapes = r.has("phi_x") || r.has("phi_y");
+  const auto shapes_file =
+      r.string_opt("shapes_file", "a path (CSV: phi_x_1, phi_y_1, ..., one row a node)");
+  if (inline_shapes == shapes_file.has_value()) {
+    r.fail_at(r.line(), "phi_x",
+              "expected exactly one of 'phi_x' and 'phi_y' (inline) or 'shapes_file'");
+  }
+  if (inline_shapes) {
+    auto shape = [&](const char* key) {
+      const auto s = r.matrix_opt(key, "an array of rows, one a node, of one value a mode [m]");
+      if (!s)
+        r.fail_at(r.line(), key, "missing; expected rows of one value a mode, one row a node");
+      if (s->rows() != nn || s->cols() != n) {
+        r.fail(key, "expected " + std::to_string(nn) + " rows (one a node) of " +
+                        std::to_string(n) + " values (one a mode), got " +
+                        std::to_string(s->rows()) + " x " + std::to_string(s->cols()));
+      }
+      return *s;
+    };
+    m.phi_x = shape("phi_x");
+    m.phi_y = shape("phi_y");
+  } else {
+    const std::string path = resolve(r.file(), *shapes_file);
+    const auto rows_s = read_number_rows(path, static_cast<std::size_t>(2 * n),
+                                         "mode shapes: phi_x_1, phi_y_1, ... one row a node");
+    if (static_cast<Eigen::Index>(rows_s.size()) != nn) {
+      r.fail("shapes_file", "expected " + std::to_string(nn) + " rows (one a node) in " + path +
+                                ", got " + std::to_string(rows_s.size()));
+    }
+    m.phi_x.resize(nn, n);
+    m.phi_y.resize(nn, n);
+    for (Eigen::Index i = 0; i < nn; ++i) {
+      for (Eigen::Index j = 0; j < n; ++j) {
+        m.phi_x(i, j) = rows_s[static_cast<std::size_t>(i)][static_cast<std::size_t>(2 * j)];
+        m.phi_y(i, j) = rows_s[static_cast<std::size_t>(i)][static_cast<std::size_t>(2 * j + 1)];
+      }
+    }
+  }
+  m.damping = read_damping(r);
+  return from_lumped_model(m);
+}
+
+// [body] of any type; `rigid` receives body.rigid
+BodyParameters read_body(Reader& r, std::string& type, bool& rigid) {
+  type = r.choice("type", kBodyTypes);
+  rigid = r.boolean_or("rigid", false);
+  BodyParameters p;
+  try {
+    if (type == "rigid_block") {
+      const double w = r.positive("width", "[m]");
+      const double h = r.positive("height", "[m]");
+      const double m = r.positive("mass", "[kg]");
+      p = rigid_block(w, h, m);
+    } else if (type == "rigid_body") {
+      const double m = r.positive("mass", "[kg]");
+      const double i = r.positive("inertia_cg", "[kg m^2]");
+      const double h = r.positive("height", "[m]");
+      const double b1 = r.positive("b1", "[m]");
+      const double b2 = r.positive("b2", "[m]");
+      p = rigid_body(m, i, h, b1, b2);
+    } else if (type == "paper") {
+      p = read_paper_body(r);
+    } else if (type == "lumped") {
+      p = read_lumped_body(r);
+    } else if (type == "oscillator_on_slab") {
+      const double top = r.positive("top_mass", "[kg]");
+      const double f = r.positive("frequency_hz", "[Hz]");
+      const double base = r.positive("base_mass", "[kg]");
+      const double h = r.positive("height", "[m]");
+      const double w = r.positive("base_width", "[m]");
+      const double z = r.nonnegative_or("damping_ratio", 0.0, "[-]");
+      p = oscillator_on_slab(top, f, base, h, w, z);
+    } else {
+      const double h = r.positive("height", "[m]");
+      const double w = r.positive("width", "[m]");
+      const double mpl = r.positive("mass_per_length", "[kg/m]");
+      const double ei = r.positive("bending_stiffness", "[N m^2]");
+      const auto modes = r.integer_or("modes", 1, 1, "an integer >= 1 (bending modes)");
+      const double base = r.nonnegative_or("base_mass", 0.0, "[kg]");
+      const double z = r.nonnegative_or("damping_ratio", 0.0, "[-]");
+      p = uniform_cantilever(h, w, mpl, ei, static_cast<int>(modes), base, z);
+    }
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    // errors that already name a place pass through; builder errors get the table's place
+    if (what.starts_with(r.file() + ":")) throw;
+    throw InputError(r.file() + ":" + std::to_string(r.line()) + ": [body] type '" + type +
+                     "': " + what);
+  }
+  r.finish("for body type '" + type + "'");
+  if (rigid) {
+    p.mu.resize(0, 0);
+    p.kappa.resize(0, 0);
+    p.gamma.resize(0, 0);
+    p.psi_x.resize(0);
+    p.psi_y.resize(0);
+    p.delta.resize(0);
+    p.beta.resize(0);
+    p.damping = Damping{};
+  }
+  // validate once here, so that the error names the case file
+  try {
+    Body body(p);
+  } catch (const InputError& e) {
+    throw InputError(r.file() + ":" + std::to_string(r.line()) + ": [body] type '" + type +
+                     "': " + e.what());
+  }
+  return p;
+}
+
+// ---------------------------------------------------------------------------------------------
+// excitation
+
+const std::vector<std::string> kUnits = {"g", "m/s^2", "cm/s^2"};
+const std::vector<std::string> kMotionTypes = {
+    "record",      "harmonic",    "one_sine", "half_sine",   "cycloidal_a",
+    "cycloidal_b", "cycloidal_c", "ricker",   "rectangular", "none"};
+
+AccelUnit unit_of(const std::string& u) {
+  if (u == "g") return AccelUnit::kG;
+  if (u == "m/s^2") return AccelUnit::kMetersPerSecond2;
+  return AccelUnit::kCentimetersPerSecond2;
+}
+
+// one component: a record (kept for combine()) or a synthetic motion along its own direction
+struct Built {
+  std::optional<Record> record;
+  GroundMotion motion;
+};
+
+Built read_component(Reader& r, bool vertical, ExcitationComponent& out) {
+  out.type = r.choice("type", kMotionTypes);
+  Built b;
+  const Component dir = vertical ? Component::kVertical : Component::kHorizontal;
+  if (out.type == "record") {
+    const std::string file = r.string("file", "a path to the record, relative to the case file");
+    out.file = resolve(r.file(), file);
+    std::string ext = fs::path(file).extension().string();
+    for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    out.format =
+        r.choice("format", {"at2", "single_column", "time_series"}, ext == ".at2" ? "at2" : "");
+    const auto units = r.has("units") ? std::optional(r.choice("units", kUnits)) : std::nullopt;
+    out.scale = r.number_or("scale", 1.0, "a number [-] (factor on this component)");
+    std::optional<double> dt;
+    if (out.format == "single_column") dt = r.positive("dt", "[s] (sample spacing)");
+    if (out.format != "at2" && !units) {
+      r.fail_at(r.line(), "units",
+                "missing; expected one of: " + join(kUnits) + " (the units of the file's values)");
+    }
+    const std::size_t file_line = line_of(*r.node("file"));
+    try {
+      if (out.format == "at2") {
+        b.record = read_at2(out.file);
+        if (units && unit_of(*units) != b.record->units) {
+          r.fail("units", "expected the units the AT2 file states (" +
+                              std::string(unit_name(b.record->units)) + "), got \"" + *units +
+                              "\"");
+        }
+      } else if (out.format == "single_column") {
+        b.record = read_single_column(out.file, *dt, unit_of(*units));
+      } else {
+        b.record = read_time_series(out.file, unit_of(*units));
+      }
+    } catch (const InputError& e) {
+      const std::string what = e.what();
+      if (what.starts_with(r.file() + ":")) throw;
+      throw InputError(what + " (record named by key '" + r.full("file") + "' at " + r.file() +
+                       ":" + std::to_string(file_line) + ")");
+    }
+    out.units = std::string(unit_name(b.record->units));
+    if (b.record->npts() < 2)
+      r.fail("file", "expected a record with at least 2 samples in " + out.file);
+    if (out.scale != 1.0) {
+      for (double& v : b.record->values) v *= out.scale;
+    }
+    r.finish("for a record");
+    return b;
+  }
+
+  const double duration = r.positive("duration", "[s] (length of the motion)");
+  if (out.type == "none") {
+    if (vertical) r.fail("type", "expected a motion for the vertical component, got \"none\"");
+    r.finish("for type 'none'");
+    b.motion = GroundMotion::none(duration);
+    return b;
+  }
+  out.units = r.choice("units", kUnits);
+  const double a = r.number("amplitude", "a number (peak acceleration, in `units`)");
+  out.amplitude = a * to_si_factor(unit_of(out.units));
+  const double ap = out.amplitude;
+  // frequency_hz or period for every pulse but the rectangular one
+  double omega = 0.0;
+  if (out.type != "rectangular") {
+    const bool f = r.has("frequency_hz");
+    const bool t = r.has("period");
+    if (f == t) {
+      r.fail_at(r.line(), "frequency_hz",
+                "expected exactly one of 'frequency_hz' [Hz] or 'period' [s]");
+    }
+    omega = f ? 2.0 * std::numbers::pi * r.positive("frequency_hz", "[Hz]")
+              : 2.0 * std::numbers::pi / r.positive("period", "[s]");
+  }
+  try {
+    if (out.type == "harmonic") {
+      const double phase = r.number_or("phase", 0.0, "a number [rad]");
+      const auto cycles = r.number_opt("cycles", "a number > 0 (cycles, then free vibration)");
+      if (cycles && !(*cycles > 0.0)) r.expected("cycles", "a number > 0");
+      b.motion = cycles ? harmonic_cycles(ap, omega, *cycles, duration, phase, dir)
+                        : harmonic(ap, omega, duration, phase, dir);
+    } else if (out.type == "one_sine") {
+      b.motion = one_sine_pulse(ap, omega, duration, dir);
+    } else if (out.type == "half_sine") {
+      b.motion = half_sine_pulse(ap, omega, duration, dir);
+    } else if (out.type == "cycloidal_a") {
+      b.motion = cycloidal_pulse_a(ap, omega, duration, dir);
+    } else if (out.type == "cycloidal_b") {
+      b.motion = cycloidal_pulse_b(ap, omega, duration, dir);
+    } else if (out.type == "cycloidal_c") {
+      const auto n = r.integer_or("n", 1, 1, "an integer >= 1 (main cycles)");
+      b.motion = cycloidal_pulse_c(ap, omega, duration, static_cast<int>(n), dir);
+    } else if (out.type == "ricker") {
+      const double tc = r.nonnegative_or("center", 3.0 * std::sqrt(6.0) / omega, "[s]");
+      b.motion = ricker_wavelet(ap, omega, tc, duration, dir);
+    } else {
+      const double len = r.positive("length", "[s] (pulse length)");
+      b.motion = rectangular_pulse(ap, len, duration, dir);
+    }
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    if (what.starts_with(r.file() + ":")) throw;
+    throw InputError(r.file() + ":" + std::to_string(r.line()) + ": [" +
+                     r.full("").substr(0, r.full("").size() - 1) + "] " + out.type + ": " + what);
+  }
+  r.finish("for type '" + out.type + "'");
+  return b;
+}
+
+// the breakpoints of a motion: its samples, or the analytic ones
+std::vector<double> breakpoints_of(const GroundMotion& m) {
+  if (m.is_sampled()) return m.times();
+  std::vector<double> b{0.0};
+  GroundMotion::Cursor c;
+  for (double t = m.next_breakpoint(-1.0, c); std::isfinite(t); t = m.next_breakpoint(t, c)) {
+    b.push_back(t);
+  }
+  return b;
+}
+
+// a horizontal and a vertical motion of any kinds as one analytic motion
+GroundMotion combine_any(GroundMotion h, GroundMotion v) {
+  std::vector<double> breaks = breakpoints_of(h);
+  const std::vector<double> bv = breakpoints_of(v);
+  breaks.insert(breaks.end(), bv.begin(), bv.end());
+  const double duration = std::max(h.duration(), v.duration());
+  // one cursor a component: a simulation evaluates the motion from a single thread
+  auto state = std::make_shared<std::pair<GroundMotion::Cursor, GroundMotion::Cursor>>();
+  auto f = [h = std::move(h), v = std::move(v), state](double t) {
+    return BaseAcceleration{h.at(t, state->first).x, v.at(t, state->second).y};
+  };
+  return GroundMotion::analytic(std::move(f), duration, std::move(breaks));
+}
+
+GroundMotion record_motion(const Record& rec, bool vertical) {
+  std::vector<double> v = rec.to_si();
+  if (!vertical) return rec.to_motion();
+  return GroundMotion::sampled(rec.time, std::vector<double>(v.size(), 0.0), std::move(v));
+}
+
+void read_excitation(Reader& r, Case& c) {
+  c.excitation_scale = r.number_or("scale", 1.0, "a number [-] (factor on both components)");
+  Reader hr = r.table("horizontal");
+  Built h = read_component(hr, false, c.horizontal);
+  std::optional<Built> v;
+  if (auto vr = r.table_opt("vertical")) v = read_component(*vr, true, c.vertical);
+  r.finish();
+  const double s = c.excitation_scale;
+  try {
+    if (!v) {
+      c.motion = h.record ? h.record->to_motion(s) : h.motion.scaled(s);
+    } else if (h.record && v->record) {
+      c.motion = combine(*h.record, &*v->record, s);
+    } else {
+      GroundMotion hm = h.record ? record_motion(*h.record, false) : h.motion;
+      GroundMotion vm = v->record ? record_motion(*v->record, true) : v->motion;
+      c.motion = combine_any(std::move(hm), std::move(vm)).scaled(s);
+    }
+  } catch (const InputError& e) {
+    throw InputError(r.file() + ":" + std::to_string(r.line()) + ": [excitation]: " + e.what());
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// initial state, solver, output
+
+void read_initial(Reader& r, Case& c, const Body& body) {
+  c.initial.theta = r.number_or("theta", 0.0, "a number [rad]");
+  c.initial.theta_dot = r.number_or("theta_dot", 0.0, "a number [rad/s]");
+  const auto n = static_cast<std::size_t>(body.modes());
+  auto modal = [&](const char* key, VectorX& out) {
+    const auto v = r.vector_opt(key, "an array of one value a mode");
+    if (!v) return;
+    if (v->size() != n) {
+      r.fail(key, "expected " + std::to_string(n) + " values (one a mode of the body), got " +
+                      std::to_string(v->size()));
+    }
+    out = to_vector(*v);
+  };
+  modal("q", c.initial.q);
+  modal("q_dot", c.initial.q_dot);
+  r.finish();
+  const int edge = c.initial.theta >= 0.0 ? 1 : 2;
+  const double limit = c.options.overturn == OverturnCriterion::kHalfPi ? std::numbers::pi / 2.0
+                                                                        : body.tipping_angle(edge);
+  if (!(std::abs(c.initial.theta) < limit)) {
+    r.fail("theta", "expected |theta| below the overturning angle " + num(limit) + " rad, got " +
+                        num(c.initial.theta));
+  }
+}
+
+void read_solver(Reader& r, SimulationOptions& o) {
+  o.t_end = r.nonnegative_or("t_end", -1.0, "[s]");
+  o.rtol = r.positive_or("rtol", o.rtol, "[-]");
+  if (o.rtol < 1e-14) r.expected("rtol", "a number >= 1e-14 (double precision)");
+  o.atol = r.positive_or("atol", o.atol, "[-]");
+  o.max_step = r.positive_or("max_step", o.max_step, "[s]");
+  o.event_samples = static_cast<int>(
+      r.integer_or("event_samples", o.event_samples, 1, "an integer >= 1 (points a step)"));
+  const std::string crit =
+      r.choice("overturn", {"static_instability", "half_pi"}, "static_instability");
+  o.overturn =
+      crit == "half_pi" ? OverturnCriterion::kHalfPi : OverturnCriterion::kStaticInstability;
+  o.chatter_ratio = r.nonnegative_or("chatter_ratio", o.chatter_ratio, "[-]");
+  o.restitution_factor = r.nonnegative_or("restitution_factor", o.restitution_factor, "[-]");
+  const std::string fw = "a number > 0 [-] (or inf: no friction limit)";
+  if (const auto mu = r.number_opt("friction_coefficient", fw, true)) {
+    if (!(*mu > 0.0)) r.expected("friction_coefficient", fw);
+    o.friction_coefficient = *mu;
+  }
+  o.max_steps = r.integer_or("max_steps", o.max_steps, 1, "an integer >= 1");
+  o.max_impacts = r.integer_or("max_impacts", o.max_impacts, 1, "an integer >= 1");
+  r.finish();
+}
+
+void read_output(Reader& r, OutputSettings& out) {
+  out.dt = r.nonnegative_or("dt", out.dt, "[s] (0: no time history)");
+  const std::string what = "a path (\"\": none)";
+  out.time_history = r.string_opt("time_history", what).value_or(out.time_history);
+  out.summary = r.string_opt("summary", what).value_or(out.summary);
+  out.events = r.string_opt("events", what).value_or(out.events);
+  r.finish();
+  if (out.dt == 0.0) out.time_history.clear();
+}
+
+toml::table parse(const std::string& path) {
+  if (!fs::exists(path)) throw InputError(path + ": no such case file");
+  if (fs::is_directory(path)) throw InputError(path + ": is a directory, expected a case file");
+  try {
+    return toml::parse_file(path);
+  } catch (const toml::parse_error& e) {
+    const auto& b = e.source().begin;
+    throw InputError(path + ":" + std::to_string(b.line) + ":" + std::to_string(b.column) +
+                     ": TOML syntax error: " + std::string(e.description()));
+  }
+}
+
+}  // namespace
+
+Case load_case(const std::string& path) {
+  const toml::table doc = parse(path);
+  Reader top(path, doc, "", 1);
+  Case c;
+  c.source = path;
+  c.stem = fs::path(path).stem().string();
+  c.name = top.string_opt("name", "a string").value_or(c.stem);
+  c.description = top.string_opt("description", "a string").value_or("");
+  c.output.time_history = c.stem + ".csv";
+  c.output.summary = c.stem + ".summary.json";
+
+  Reader br = top.table("body");
+  c.body = read_body(br, c.body_type, c.rigid);
+  const Body body(c.body);
+  Reader er = top.table("excitation");
+  read_excitation(er, c);
+  if (auto sr = top.table_opt("solver")) read_solver(*sr, c.options);
+  if (auto orr = top.table_opt("output")) read_output(*orr, c.output);
+  c.options.output_dt = c.output.time_history.empty() ? 0.0 : c.output.dt;
+  if (auto ir = top.table_opt("initial")) read_initial(*ir, c, body);
+  top.finish("at the top level");
+  return c;
+}
+
+BodyParameters load_body(const std::string& path, std::string* type) {
+  const toml::table doc = parse(path);
+  Reader top(path, doc, "", 1);
+  Reader br = top.table("body");
+  std::string t;
+  bool rigid = false;
+  BodyParameters p = read_body(br, t, rigid);
+  if (type) *type = t;
+  return p;
+}
+
+}  // namespace flexrock::io

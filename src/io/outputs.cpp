@@ -1,0 +1,314 @@
+#include "flexrock/io/outputs.hpp"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <numbers>
+#include <ostream>
+#include <stdexcept>
+#include <system_error>
+
+namespace flexrock::io {
+
+namespace fs = std::filesystem;
+using Json = nlohmann::ordered_json;  // keys in the documented order
+
+void write_atomically(const std::string& path, const std::function<void(std::ostream&)>& write) {
+  const std::string tmp = path + ".tmp." + std::to_string(::getpid());
+  try {
+    {
+      std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+      if (!out) throw std::runtime_error("cannot open " + tmp + " for writing");
+      write(out);
+      out.flush();
+      if (!out) throw std::runtime_error("cannot write " + tmp + " (disk full?)");
+    }
+    std::error_code ec;
+    fs::rename(tmp, path, ec);
+    if (ec) throw std::runtime_error("cannot rename " + tmp + " to " + path + ": " + ec.message());
+  } catch (...) {
+    std::error_code ignored;
+    fs::remove(tmp, ignored);
+    throw;
+  }
+}
+
+namespace {
+
+// shortest text that reads back to the same double
+void put(std::ostream& out, double v) {
+  if (!std::isfinite(v)) {
+    out << (std::isnan(v) ? "nan" : (v > 0 ? "inf" : "-inf"));
+    return;
+  }
+  char buf[32];
+  const auto r = std::to_chars(buf, buf + sizeof buf, v);
+  out.write(buf, r.ptr - buf);
+}
+
+template <class T>
+void put_row(std::ostream& out, const std::vector<T>& row) {
+  for (std::size_t i = 0; i < row.size(); ++i) {
+    if (i) out << ',';
+    put(out, static_cast<double>(row[i]));
+  }
+  out << '\n';
+}
+
+void put_header(std::ostream& out, const std::vector<std::string>& cols) {
+  for (std::size_t i = 0; i < cols.size(); ++i) out << (i ? "," : "") << cols[i];
+  out << '\n';
+}
+
+// a double for JSON: null when not finite (JSON has no inf/nan)
+Json jnum(double v) { return std::isfinite(v) ? Json(v) : Json(); }
+
+// a time that is -1 when the event never happened: null then
+Json jtime(double t) { return t < 0.0 ? Json() : Json(t); }
+
+Json jvec(const VectorX& v) {
+  Json a = Json::array();
+  for (Eigen::Index i = 0; i < v.size(); ++i) a.push_back(jnum(v(i)));
+  return a;
+}
+
+// largest |a| of a motion: over its samples, or sampled finely with its breakpoints
+std::pair<double, double> peak_acceleration(const GroundMotion& m) {
+  double px = 0.0, py = 0.0;
+  auto take = [&](double t) {
+    const BaseAcceleration a = m.at(t);
+    px = std::max(px, std::abs(a.x));
+    py = std::max(py, std::abs(a.y));
+  };
+  if (m.is_sampled()) {
+    for (double t : m.times()) take(t);
+    return {px, py};
+  }
+  const int n = 20000;
+  for (int i = 0; i <= n; ++i) take(m.duration() * i / n);
+  GroundMotion::Cursor c;
+  for (double t = m.next_breakpoint(-1.0, c); std::isfinite(t); t = m.next_breakpoint(t, c)) {
+    take(t);
+  }
+  return {px, py};
+}
+
+Json component_json(const ExcitationComponent& e) {
+  if (e.type.empty()) return nullptr;
+  Json j{{"type", e.type}};
+  if (e.type == "record") {
+    j["file"] = e.file;
+    j["format"] = e.format;
+    j["units"] = e.units;
+    j["scale"] = e.scale;
+  } else if (e.type != "none") {
+    j["amplitude_m_per_s2"] = e.amplitude;
+  }
+  return j;
+}
+
+std::string resolve_out(const std::string& dir, const std::string& p) {
+  if (p.empty()) return {};
+  const fs::path path(p);
+  if (path.is_absolute() || dir.empty()) return p;
+  return (fs::path(dir) / path).lexically_normal().string();
+}
+
+}  // namespace
+
+std::vector<std::string> time_history_columns(int modes) {
+  std::vector<std::string> c = {"time_s", "phase", "theta_rad", "theta_dot_rad_per_s", "uplift_m"};
+  // appended, not concatenated: GCC 12 warns (-Wrestrict) on "q" + std::to_string(i)
+  for (int i = 1; i <= modes; ++i) c.push_back(std::string("q").append(std::to_string(i)));
+  for (int i = 1; i <= modes; ++i) {
+    c.push_back(std::string("q").append(std::to_string(i)).append("_dot_per_s"));
+  }
+  for (const char* s : {"base_acc_x_m_per_s2", "base_acc_y_m_per_s2", "reaction_x_N",
+                        "reaction_y_N", "resultant_m", "friction_demand", "kinetic_J",
+                        "potential_J", "input_work_J", "damping_loss_J", "impact_loss_J"}) {
+    c.push_back(s);
+  }
+  return c;
+}
+
+void write_time_history(std::ostream& out, const SimulationResult& r, const Body& body) {
+  const History& h = r.history;
+  const int n = h.modes;
+  put_header(out, time_history_columns(n));
+  const double width = body.params().b1 + body.params().b2;
+  std::vector<double> row;
+  for (std::size_t k = 0; k < h.size(); ++k) {
+    row.clear();
+    row.push_back(h.time[k]);
+    row.push_back(h.phase[k]);
+    row.push_back(h.theta[k]);
+    row.push_back(h.theta_dot[k]);
+    row.push_back(h.phase[k] != 0 ? width * std::sin(std::abs(h.theta[k])) : 0.0);
+    const auto base = k * static_cast<std::size_t>(n);
+    for (int i = 0; i < n; ++i) row.push_back(h.q[base + static_cast<std::size_t>(i)]);
+    for (int i = 0; i < n; ++i) row.push_back(h.q_dot[base + static_cast<std::size_t>(i)]);
+    for (const std::vector<double>* col :
+         {&h.base_acc_x, &h.base_acc_y, &h.reaction_x, &h.reaction_y, &h.resultant,
+          &h.friction_demand, &h.kinetic, &h.potential, &h.input_work, &h.damping_loss,
+          &h.impact_loss}) {
+      row.push_back(k < col->size() ? (*col)[k] : std::nan(""));
+    }
+    put_row(out, row);
+  }
+}
+
+std::vector<std::string> event_columns() {
+  return {"time_s",
+          "event",
+          "edge",
+          "theta_rad",
+          "theta_dot_before_rad_per_s",
+          "theta_dot_after_rad_per_s",
+          "energy_loss_J",
+          "impulse_x_N_s",
+          "impulse_y_N_s",
+          "friction_demand"};
+}
+
+void write_events(std::ostream& out, const SimulationResult& r) {
+  put_header(out, event_columns());
+  for (const Event& e : r.events) {
+    put(out, e.time);
+    out << ',' << to_string(e.kind) << ',' << e.edge << ',';
+    put_row(out, std::vector<double>{e.theta, e.theta_dot_before, e.theta_dot_after, e.energy_loss,
+                                     e.impulse_x, e.impulse_y, e.friction_demand});
+  }
+}
+
+std::string summary_json(const Case& c, const Body& body, const SimulationResult& r,
+                         const OutputPaths& paths) {
+  using json = Json;
+  const BodyParameters& p = body.params();
+  const Extremes& x = r.extremes;
+  const EnergyBalance& e = r.energy;
+  const auto [pga_x, pga_y] = peak_acceleration(c.motion);
+  const double g = p.gravity;
+
+  json j;
+  j["schema"] = "flexrock.summary";
+  j["schema_version"] = kSummarySchemaVersion;
+  j["case"] = {{"name", c.name}, {"description", c.description}, {"file", c.source}};
+  VectorX hz = body.natural_frequencies() / (2.0 * std::numbers::pi);
+  j["body"] = {{"type", c.body_type},
+               {"rigid", body.modes() == 0},
+               {"modes", body.modes()},
+               {"mass_kg", p.mass},
+               {"height_m", p.height},
+               {"b1_m", p.b1},
+               {"b2_m", p.b2},
+               {"alpha1", body.alpha1()},
+               {"alpha2", body.alpha2()},
+               {"uplift_acceleration_edge1_m_per_s2", g * body.alpha1()},
+               {"uplift_acceleration_edge2_m_per_s2", g * body.alpha2()},
+               {"tipping_angle_edge1_rad", body.tipping_angle(1)},
+               {"tipping_angle_edge2_rad", body.tipping_angle(2)},
+               {"rocking_frequency_rad_per_s", body.rocking_frequency()},
+               {"natural_frequencies_hz", jvec(hz)},
+               {"damping_ratios", jvec(body.damping_ratios())}};
+  j["excitation"] = {{"horizontal", component_json(c.horizontal)},
+                     {"vertical", component_json(c.vertical)},
+                     {"scale", c.excitation_scale},
+                     {"duration_s", c.motion.duration()},
+                     {"pga_x_m_per_s2", pga_x},
+                     {"pga_y_m_per_s2", pga_y},
+                     {"pga_x_g", pga_x / kStandardGravity},
+                     {"pga_y_g", pga_y / kStandardGravity}};
+  j["outcome"] = {{"status", to_string(r.status)},
+                  {"message", r.message},
+                  {"t_end_s", r.t_end},
+                  {"final_phase", to_string(r.final_phase)},
+                  {"final_theta_rad", r.final_theta},
+                  {"final_theta_dot_rad_per_s", r.final_theta_dot},
+                  {"uplifted", x.first_uplift_time >= 0.0},
+                  {"first_uplift_time_s", jtime(x.first_uplift_time)},
+                  {"first_uplift_edge", x.first_uplift_edge},
+                  {"overturned", r.status == Status::kOverturned},
+                  {"overturn_time_s", jtime(x.overturn_time)},
+                  {"overturn_edge", x.overturn_edge}};
+  j["peaks"] = {{"max_theta_rad", std::max(x.max_theta_edge1, x.max_theta_edge2)},
+                {"max_theta_edge1_rad", x.max_theta_edge1},
+                {"max_theta_edge2_rad", x.max_theta_edge2},
+                {"max_uplift_m", x.max_uplift},
+                {"max_abs_q", jvec(x.max_abs_q)},
+                {"max_base_shear_N", x.max_base_shear},
+                {"max_overturning_moment_N_m", x.max_overturning_moment},
+                {"max_friction_demand", x.max_friction_demand},
+                {"impacts", x.impacts},
+                {"max_impulse_N_s", x.max_impulse},
+                {"max_impact_energy_loss_J", x.max_impact_energy_loss}};
+  j["energy"] = {{"input_work_J", e.input_work},
+                 {"kinetic_change_J", e.kinetic_change},
+                 {"potential_change_J", e.potential_change},
+                 {"damping_loss_J", e.damping_loss},
+                 {"impact_loss_J", e.impact_loss},
+                 {"chatter_loss_J", e.chatter_loss},
+                 {"energy_lost_J", e.damping_loss + e.impact_loss + e.chatter_loss},
+                 {"residual_J", e.residual},
+                 {"scale_J", e.scale},
+                 {"relative_residual", e.scale > 0.0 ? e.residual / e.scale : 0.0}};
+  j["warnings"] = {{"friction_exceeded", r.friction_exceeded},
+                   {"chatter_cut_off", r.chatter_cut_off},
+                   {"impact_gained_energy", r.impact_gained_energy}};
+  const SimulationOptions& o = c.options;
+  j["solver"] = {
+      {"rtol", o.rtol},
+      {"atol", o.atol},
+      {"max_step_s", o.max_step},
+      {"event_samples", o.event_samples},
+      {"overturn", o.overturn == OverturnCriterion::kHalfPi ? "half_pi" : "static_instability"},
+      {"chatter_ratio", o.chatter_ratio},
+      {"restitution_factor", o.restitution_factor},
+      {"friction_coefficient", jnum(o.friction_coefficient)},
+      {"steps", r.steps},
+      {"rejected_steps", r.rejected_steps},
+      {"rhs_evaluations", r.rhs_evaluations},
+      {"events", r.events.size()}};
+  auto jpath = [](const std::string& s) { return s.empty() ? json() : json(s); };
+  j["outputs"] = {{"time_history", jpath(paths.time_history)},
+                  {"summary", jpath(paths.summary)},
+                  {"events", jpath(paths.events)},
+                  {"output_dt_s", c.options.output_dt}};
+  return j.dump(2) + "\n";
+}
+
+OutputPaths write_outputs(const Case& c, const Body& body, const SimulationResult& r,
+                          const std::string& output_dir) {
+  OutputPaths paths{resolve_out(output_dir, c.output.time_history),
+                    resolve_out(output_dir, c.output.summary),
+                    resolve_out(output_dir, c.output.events)};
+  for (const std::string* p : {&paths.time_history, &paths.summary, &paths.events}) {
+    if (p->empty()) continue;
+    const fs::path parent = fs::path(*p).parent_path();
+    if (!parent.empty()) {
+      std::error_code ec;
+      fs::create_directories(parent, ec);
+      if (ec)
+        throw std::runtime_error("cannot create directory " + parent.string() + ": " +
+                                 ec.message());
+    }
+  }
+  if (!paths.time_history.empty()) {
+    write_atomically(paths.time_history,
+                     [&](std::ostream& out) { write_time_history(out, r, body); });
+  }
+  if (!paths.events.empty()) {
+    write_atomically(paths.events, [&](std::ostream& out) { write_events(out, r); });
+  }
+  if (!paths.summary.empty()) {
+    const std::string text = summary_json(c, body, r, paths);
+    write_atomically(paths.summary, [&](std::ostream& out) { out << text; });
+  }
+  return paths;
+}
+
+}  // namespace flexrock::io

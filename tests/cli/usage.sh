@@ -1,0 +1,37 @@
+#!/usr/bin/env bash
+# --help with examples, --version, usage errors: exit codes and "flexrock: error:" messages
+source "$(dirname "$0")/common.sh"
+
+run "$FLEXROCK" --help
+expect_rc 0 "--help"
+expect_in "$WORK/out" "Examples:"
+expect_in "$WORK/out" "flexrock run examples/cases/museum_statue.toml"
+expect_in "$WORK/out" "Exit codes"
+
+run "$FLEXROCK" run --help
+expect_rc 0 "run --help"
+expect_in "$WORK/out" "--output-dir"
+
+run "$FLEXROCK" --version
+expect_rc 0 "--version"
+grep -qE '^flexrock [0-9]+\.[0-9]+\.[0-9]+$' "$WORK/out" || fail "version line: $(cat "$WORK/out")"
+
+run "$FLEXROCK"
+expect_rc 2 "no subcommand"
+expect_in "$WORK/err" "flexrock: error:"
+
+run "$FLEXROCK" fly
+expect_rc 2 "unknown subcommand"
+expect_in "$WORK/err" "flexrock: error:"
+
+run "$FLEXROCK" run
+expect_rc 2 "run without a case"
+expect_in "$WORK/err" "CASE"
+
+run "$FLEXROCK" run --bogus x.toml
+expect_rc 2 "unknown option"
+
+run "$FLEXROCK" run "$WORK/none.toml"
+expect_rc 2 "missing case file"
+expect_in "$WORK/err" "flexrock: error: $WORK/none.toml: no such case file"
+echo "usage: ok"

@@ -1,0 +1,24 @@
+# included from tests/CMakeLists.txt; paths are relative to tests/
+
+# case files (toml++) and outputs (CSV, summary JSON): flexrock::io
+find_package(nlohmann_json 3.9 REQUIRED)
+flexrock_add_test(flexrock_case_file_tests
+  SOURCES unit/case_file_test.cpp unit/outputs_test.cpp
+  LIBS flexrock::io nlohmann_json::nlohmann_json
+  LABEL unit)
+
+# the `flexrock` command: exit codes, messages, columns, no partial outputs, the four examples
+if(TARGET flexrock)
+  foreach(script usage bad_input run_outcomes)
+    add_test(NAME cli_${script}
+             COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/cli/${script}.sh $<TARGET_FILE:flexrock>
+                     ${PROJECT_SOURCE_DIR})
+    set_tests_properties(cli_${script} PROPERTIES LABELS cli)
+  endforeach()
+  foreach(example museum_statue flexible_tank asymmetric_cabinet slender_column)
+    add_test(NAME cli_example_${example}
+             COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/cli/examples.sh $<TARGET_FILE:flexrock>
+                     ${PROJECT_SOURCE_DIR} ${example})
+    set_tests_properties(cli_example_${example} PROPERTIES LABELS cli)
+  endforeach()
+endif()
