@@ -7,6 +7,8 @@
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -40,21 +42,22 @@ int error(const std::string& message, int code) {
 }
 
 // ---------------------------------------------------------------------------------------------
-// progress: the engine reports none, so a run on a terminal that lasts more than a second shows
-// an activity bar with the elapsed time; nothing when stderr is not a terminal or with --quiet
+// progress: a run on a terminal that lasts more than a second shows a bar of the simulated time
+// with its rate and the time left; nothing when stderr is not a terminal or with --quiet
 
 class Progress {
  public:
   Progress(bool enabled, double motion_s) : enabled_(enabled), motion_s_(motion_s) {}
-  void draw(double elapsed) {
-    if (!enabled_ || elapsed < 1.0) return;
-    constexpr int kWidth = 24;
-    const int pos = static_cast<int>(elapsed * 8.0) % (2 * (kWidth - 3));
-    const int at = pos < kWidth - 3 ? pos : 2 * (kWidth - 3) - pos;
-    std::string bar(kWidth, ' ');
-    bar.replace(static_cast<std::size_t>(at), 3, "<=>");
-    fmt::print(stderr, "\r[{}] simulating {:.1f} s of motion, {:.0f} s elapsed", bar, motion_s_,
-               elapsed);
+  void draw(double elapsed, double simulated) {
+    if (!enabled_ || elapsed < 1.0 || motion_s_ <= 0.0) return;
+    constexpr int kWidth = 30;
+    const double frac = std::clamp(simulated / motion_s_, 0.0, 1.0);
+    const auto filled = static_cast<std::size_t>(frac * kWidth);
+    const std::string bar = std::string(filled, '#') + std::string(kWidth - filled, '.');
+    const double rate = simulated / elapsed;  // simulated seconds per second
+    const double eta = rate > 0.0 ? (motion_s_ - simulated) / rate : 0.0;
+    fmt::print(stderr, "\r[{}] {:5.1f}%  t = {:.2f} of {:.2f} s  {:.3g} s/s  {:.0f} s left\033[K",
+               bar, 100.0 * frac, simulated, motion_s_, rate, eta);
     std::fflush(stderr);
     drawn_ = true;
   }
@@ -72,11 +75,15 @@ class Progress {
 SimulationResult run_with_progress(const Body& body, const io::Case& c, bool show_progress) {
   const double end = c.options.t_end >= 0.0 ? c.options.t_end : c.motion.duration();
   Progress progress(show_progress, end);
+  std::atomic<double> reached{0.0};
+  SimulationOptions options = c.options;
+  options.progress = &reached;
   const auto start = std::chrono::steady_clock::now();
-  auto future = std::async(std::launch::async,
-                           [&] { return simulate(body, c.motion, c.initial, c.options); });
+  auto future =
+      std::async(std::launch::async, [&] { return simulate(body, c.motion, c.initial, options); });
   while (future.wait_for(std::chrono::milliseconds(100)) != std::future_status::ready) {
-    progress.draw(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    progress.draw(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
+                  reached.load(std::memory_order_relaxed));
   }
   progress.clear();
   return future.get();  // rethrows InputError from the engine

@@ -208,6 +208,7 @@ class Simulator {
                       "or check the body)");
     }
     const double t0 = integ_.t0(), t1 = integ_.t1();
+    if (opt_.progress) opt_.progress->store(t1, std::memory_order_relaxed);
     // sample the event functions across the step
     std::array<Sample, kMaxSamples + 1> smp;
     smp[0] = s0_;
@@ -576,6 +577,7 @@ class Simulator {
 
   void finish(double t, const State& x) {
     res_.t_end = t;
+    if (opt_.progress) opt_.progress->store(t, std::memory_order_relaxed);
     if (opt_.output_dt > 0.0 &&
         (res_.history.time.empty() || res_.history.time.back() < t - 1e-12)) {
       emit_row(t, x);

@@ -4,6 +4,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <cmath>
 
 #include "flexrock/core/error.hpp"
@@ -100,6 +101,18 @@ TEST(Simulate, RejectsBadOptionsWithMessages) {
     ADD_FAILURE() << "accepted a tilt past overturning";
   } catch (const InputError& e) {
     EXPECT_THAT(e.what(), HasSubstr("already past the overturning angle"));
+  }
+}
+
+TEST(Simulate, ProgressEndsAtTheTimeReached) {
+  const Body body(BodyParameters::rectangular_block(100, 0.2, 1.0));
+  for (double ap : {0.1 * g, 0.3 * g}) {  // stays down; overturns at about 1.1 s
+    std::atomic<double> reached{-1.0};
+    SimulationOptions opt;
+    opt.progress = &reached;
+    const auto r = simulate(body, one_sine(ap, 6.0, 3.0), {}, opt);
+    EXPECT_EQ(reached.load(), r.t_end);
+    EXPECT_EQ(r.t_end == 3.0, r.status == Status::kCompleted);
   }
 }
 

@@ -2,6 +2,7 @@
 // outcome (overturned, contact lost, stopped). Outcomes are returned, never thrown.
 #pragma once
 
+#include <atomic>
 #include <limits>
 #include <string>
 #include <vector>
@@ -62,8 +63,9 @@ struct SimulationOptions {
   double chatter_ratio = 0.01;  // impacts closer than this times the shortest period end rocking
   double restitution_factor = 1.0;  // factor on theta_dot after an impact (1: the paper's law)
   double friction_coefficient = std::numeric_limits<double>::infinity();  // static friction
-  long max_steps = 50'000'000;    // integrator steps before the run stops
-  long max_impacts = 10'000'000;  // impacts before the run stops
+  long max_steps = 50'000'000;              // integrator steps before the run stops
+  long max_impacts = 10'000'000;            // impacts before the run stops
+  std::atomic<double>* progress = nullptr;  // if set: the time reached [s], after every step
 };
 
 /// Something that happened, in time order. Fields not meaningful for a kind are zero.
