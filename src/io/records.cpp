@@ -33,10 +33,9 @@ struct Line {
 
 // shortest round-trip text of a double
 std::string show(double v) {
-  std::ostringstream s;
-  s.precision(17);
-  s << v;
-  return s.str();
+  char buf[32];
+  const auto end = std::to_chars(buf, buf + sizeof buf, v).ptr;
+  return std::string(buf, end);
 }
 
 // the text in quotes, shortened to 80 characters
