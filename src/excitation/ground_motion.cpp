@@ -88,14 +88,22 @@ BaseAcceleration GroundMotion::at(double t, Cursor& c) const {
       const double s = (t - t0_) / dt_;
       i = std::min(static_cast<std::size_t>(s), time_.size() - 2);
     } else {
+      // the cursor's interval or the next one (sequential use), else a binary search
       i = std::min(c.index, time_.size() - 2);
-      while (i > 0 && time_[i] > t) --i;
-      while (i + 2 < time_.size() && time_[i + 1] <= t) ++i;
+      if (!(time_[i] <= t && t < time_[i + 1])) {
+        if (i + 2 < time_.size() && time_[i + 1] <= t && t < time_[i + 2]) {
+          ++i;
+        } else {
+          const auto it = std::upper_bound(time_.begin(), time_.end(), t);
+          i = std::min(
+              static_cast<std::size_t>(std::max<std::ptrdiff_t>(it - time_.begin() - 1, 0)),
+              time_.size() - 2);
+        }
+      }
       c.index = i;
     }
     const double w = (t - time_[i]) / (time_[i + 1] - time_[i]);
-    return {scale_ * (ax_[i] + w * (ax_[i + 1] - ax_[i])),
-            scale_ * (ay_[i] + w * (ay_[i + 1] - ay_[i]))};
+    return {ax_[i] + w * (ax_[i + 1] - ax_[i]), ay_[i] + w * (ay_[i + 1] - ay_[i])};
   }
   if (t < 0.0 || t > duration_ || !f_) return {};
   const BaseAcceleration a = f_(t);
@@ -125,7 +133,13 @@ GroundMotion GroundMotion::scaled(double factor) const {
   FLEXROCK_THROW_UNLESS(std::isfinite(factor), "ground motion: scale factor must be finite, got " +
                                                    std::to_string(factor));
   GroundMotion m = *this;
-  m.scale_ *= factor;
+  // samples are scaled in place, so horizontal() and vertical() give what the body feels
+  if (m.time_.empty()) {
+    m.scale_ *= factor;
+  } else {
+    for (double& v : m.ax_) v *= factor;
+    for (double& v : m.ay_) v *= factor;
+  }
   return m;
 }
 

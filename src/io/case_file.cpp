@@ -795,10 +795,9 @@ GroundMotion combine_any(GroundMotion h, GroundMotion v) {
   const std::vector<double> bv = breakpoints_of(v);
   breaks.insert(breaks.end(), bv.begin(), bv.end());
   const double duration = std::max(h.duration(), v.duration());
-  // one cursor a component: a simulation evaluates the motion from a single thread
-  auto state = std::make_shared<std::pair<GroundMotion::Cursor, GroundMotion::Cursor>>();
-  auto f = [h = std::move(h), v = std::move(v), state](double t) {
-    return BaseAcceleration{h.at(t, state->first).x, v.at(t, state->second).y};
+  // stateless, so copies of the motion may run on several threads (at() searches the samples)
+  auto f = [h = std::move(h), v = std::move(v)](double t) {
+    return BaseAcceleration{h.at(t).x, v.at(t).y};
   };
   return GroundMotion::analytic(std::move(f), duration, std::move(breaks));
 }

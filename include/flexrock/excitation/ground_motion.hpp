@@ -35,7 +35,8 @@ class GroundMotion {
   /// No motion at all (free rocking), lasting `duration` [s].
   static GroundMotion none(double duration);
 
-  /// Walks forward through the samples so that a sequence of calls at increasing times costs O(1).
+  /// Walks forward through the samples so that a sequence of calls at increasing times costs O(1);
+  /// any other call costs a binary search. One cursor per thread.
   struct Cursor {
     std::size_t index = 0;
   };
@@ -65,7 +66,7 @@ class GroundMotion {
   Function f_;                          // analytic motion
   std::vector<double> breaks_;          // analytic breakpoints, sorted
   double duration_ = 0.0;
-  double scale_ = 1.0;
+  double scale_ = 1.0;  // analytic motions only; sampled ones are scaled in place
   bool has_vertical_ = false;
   bool uniform_ = false;
   double dt_ = 0.0, t0_ = 0.0;
