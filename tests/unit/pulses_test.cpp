@@ -12,25 +12,14 @@
 #include <vector>
 
 #include "flexrock/core/error.hpp"
+#include "support/expect_error.hpp"
 
 namespace flexrock {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-// expects fn() to throw InputError whose message holds every one of `parts`
-void expect_input_error(const std::function<void()>& fn, std::initializer_list<std::string> parts) {
-  try {
-    fn();
-  } catch (const InputError& e) {
-    const std::string what = e.what();
-    for (const std::string& p : parts) {
-      EXPECT_NE(what.find(p), std::string::npos) << "message lacks \"" << p << "\": " << what;
-    }
-    return;
-  }
-  ADD_FAILURE() << "no InputError thrown";
-}
+using test::expect_input_error;
 
 // ground velocity and displacement at T from rest at 0: v = int_0^T a, u = int_0^T (T - s) a(s) ds
 // (composite Simpson; the pulses are smooth on [0, T] when T is the pulse end)

@@ -14,6 +14,7 @@
 
 #include "flexrock/core/error.hpp"
 #include "flexrock/core/types.hpp"
+#include "support/expect_error.hpp"
 
 namespace flexrock::io {
 namespace {
@@ -22,19 +23,7 @@ namespace fs = std::filesystem;
 
 const std::string kData = FLEXROCK_SOURCE_DIR "/../shared/data/";
 
-// expects fn() to throw InputError whose message holds every one of `parts`
-void expect_input_error(const std::function<void()>& fn, std::initializer_list<std::string> parts) {
-  try {
-    fn();
-  } catch (const InputError& e) {
-    const std::string what = e.what();
-    for (const std::string& p : parts) {
-      EXPECT_NE(what.find(p), std::string::npos) << "message lacks \"" << p << "\": " << what;
-    }
-    return;
-  }
-  ADD_FAILURE() << "no InputError thrown";
-}
+using test::expect_input_error;
 
 // a fresh temporary directory per test, removed afterwards
 class TempDir : public ::testing::Test {
