@@ -53,6 +53,7 @@ class Simulator {
     ctl_.max_step = opt.max_step;
     ctl_.controlled = 2 * n_ + 2;  // the energy quadratures do not steer the step
     samples_ = std::clamp(opt.event_samples, 1, kMaxSamples);
+    for (State& xk : sample_states_) xk.setZero(2 * n_ + 4);
   }
 
   SimulationResult run(const InitialState& init) {
@@ -209,17 +210,18 @@ class Simulator {
     }
     const double t0 = integ_.t0(), t1 = integ_.t1();
     if (opt_.progress) opt_.progress->store(t1, std::memory_order_relaxed);
-    // sample the event functions across the step
-    std::array<Sample, kMaxSamples + 1> smp;
+    // sample the event functions across the step, keeping the states for the extremes
+    auto& smp = samples_buf_;
     smp[0] = s0_;
     for (int k = 1; k <= samples_; ++k) {
       const double tk = k == samples_ ? t1 : t0 + (t1 - t0) * k / samples_;
+      State& xk = sample_states_[static_cast<std::size_t>(k)];
       if (k == samples_) {
-        xs_ = integ_.x1();
+        xk = integ_.x1();
       } else {
-        integ_.dense(tk, xs_);
+        integ_.dense(tk, xk);
       }
-      evaluate(tk, xs_, smp[k]);
+      evaluate(tk, xk, smp[k]);
     }
     // earliest crossing per slot
     double t_hit = std::numeric_limits<double>::infinity();
@@ -240,12 +242,7 @@ class Simulator {
     // extremes from the samples that precede any state change
     for (int k = 1; k <= samples_; ++k) {
       if (smp[k].t >= t_hit) break;
-      if (k == samples_) {
-        observe(smp[k], integ_.x1());
-      } else {
-        integ_.dense(smp[k].t, xs_);
-        observe(smp[k], xs_);
-      }
+      observe(smp[k], sample_states_[static_cast<std::size_t>(k)]);
     }
     if (slot_hit < 0) {
       // an analytic motion may jump at a breakpoint: start the next step from its right limit
@@ -618,7 +615,9 @@ class Simulator {
   Phase phase_ = Phase::kFullContact;
   GroundMotion::Cursor rhs_cursor_, event_cursor_, break_cursor_;
   Vec q_, qd_, qdd_;
-  State xs_, xr_;
+  State xr_;
+  std::array<Sample, kMaxSamples + 1> samples_buf_;   // event functions at this step's samples
+  std::array<State, kMaxSamples + 1> sample_states_;  // the states there (sized once)
   Sample s0_;
   std::array<bool, kEventSlots> zero_start_{};
   std::array<double, 2> overturn_limit_{};
