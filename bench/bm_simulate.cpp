@@ -1,47 +1,87 @@
-// Whole runs: CPU time per simulation, with steps, right-hand sides and events as counters.
+// Whole runs (docs/performance.md, cases a-d): CPU time per simulation, with steps, right-hand
+// sides and events as counters, and the accuracy of each case's tolerance against a run at
+// rtol = 1e-13 (counters err_*, relative).
 #include <benchmark/benchmark.h>
 
-#include "flexrock/model/builders.hpp"
-#include "flexrock/sim/simulate.hpp"
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <string>
+
+#include "cases.hpp"
 
 namespace {
 
 using namespace flexrock;
+using namespace flexrock::bench;
 
-void run_and_count(benchmark::State& state, const Body& body, const InitialState& init,
-                   const SimulationOptions& opt) {
-  const GroundMotion none = GroundMotion::none(opt.t_end);
+// relative difference of two times (or angles), guarding zero
+double rel(double a, double b) { return std::abs(a - b) / std::max(std::abs(b), 1e-300); }
+
+// the robust quantities of a run under a record: first uplift, first impacts, overturning
+double robust_error(const SimulationResult& r, const SimulationResult& ref, int impacts) {
+  double e = rel(r.extremes.first_uplift_time, ref.extremes.first_uplift_time);
+  int k = 0;
+  for (std::size_t i = 0, j = 0; i < r.events.size() && j < ref.events.size() && k < impacts;) {
+    if (r.events[i].kind != EventKind::kImpact) {
+      ++i;
+      continue;
+    }
+    if (ref.events[j].kind != EventKind::kImpact) {
+      ++j;
+      continue;
+    }
+    e = std::max(e, rel(r.events[i].time, ref.events[j].time));
+    ++i, ++j, ++k;
+  }
+  if (r.status != ref.status || r.extremes.overturn_edge != ref.extremes.overturn_edge) e = 1.0;
+  return e;
+}
+
+void run_case(benchmark::State& state, const Case& c) {
   SimulationResult r;
   for (auto _ : state) {
-    r = simulate(body, none, init, opt);
+    r = simulate(c.body, c.motion, c.init, c.opt);
     benchmark::DoNotOptimize(r.extremes.impacts);
   }
+  SimulationOptions tight = c.opt;
+  tight.rtol = 1e-13;
+  tight.atol = 1e-15;
+  const SimulationResult ref = simulate(c.body, c.motion, c.init, tight);
   state.counters["steps"] = static_cast<double>(r.steps);
   state.counters["rhs"] = static_cast<double>(r.rhs_evaluations);
   state.counters["events"] = static_cast<double>(r.events.size());
   state.counters["impacts"] = static_cast<double>(r.extremes.impacts);
+  state.counters["overturned"] = r.status == Status::kOverturned ? 1.0 : 0.0;
+  const double mt = std::max(r.extremes.max_theta_edge1, r.extremes.max_theta_edge2);
+  const double mt_ref = std::max(ref.extremes.max_theta_edge1, ref.extremes.max_theta_edge2);
+  state.counters["max_theta"] = mt;
+  state.counters["err_max_theta"] = rel(mt, mt_ref);
+  state.counters["err_robust"] = robust_error(r, ref, 5);
+  state.counters["first_uplift"] = r.extremes.first_uplift_time;
 }
 
-// Housner's block, b = 0.2 m, h = 1.0 m (half-width, half-height), from 0.8 alpha, 20 s
-void BM_RigidBlockFreeRocking20s(benchmark::State& state) {
-  const Body body(BodyParameters::rectangular_block(1000.0, 0.2, 1.0));
-  InitialState init;
-  init.theta = 0.8 * body.alpha1();
-  SimulationOptions opt;
-  opt.t_end = 20.0;
-  run_and_count(state, body, init, opt);
-}
-BENCHMARK(BM_RigidBlockFreeRocking20s)->Unit(benchmark::kMicrosecond);
+void BM_A_RigidFreeRocking(benchmark::State& s) { run_case(s, case_a()); }
+void BM_B_RigidPulse2pi(benchmark::State& s) { run_case(s, case_b(2.0 * kPi)); }
+void BM_B_RigidPulse6pi(benchmark::State& s) { run_case(s, case_b(6.0 * kPi)); }
+void BM_C_RigidKobe(benchmark::State& s) { run_case(s, case_c()); }
+void BM_D_OscillatorKobe(benchmark::State& s) { run_case(s, case_d_oscillator()); }
+void BM_D_Cantilever4Kobe(benchmark::State& s) { run_case(s, case_d_cantilever()); }
 
-// a 1 Hz oscillator on a rocking slab (n = 1) from half its overturning angle, 20 s
-void BM_OscillatorFreeRocking20s(benchmark::State& state) {
-  const Body body(oscillator_on_slab(1000.0, 1.0, 500.0, 2.0, 1.0, 0.0));
-  InitialState init;
-  init.theta = 0.5 * body.tipping_angle(1);
-  SimulationOptions opt;
-  opt.t_end = 20.0;
-  run_and_count(state, body, init, opt);
-}
-BENCHMARK(BM_OscillatorFreeRocking20s)->Unit(benchmark::kMicrosecond);
+// medians over repetitions: the machine is shared, single runs are noisy
+#define FLEXROCK_WHOLE_RUN(fn)                                      \
+  BENCHMARK(fn)                                                     \
+      ->Unit(benchmark::kMicrosecond)                               \
+      ->Repetitions(7)                                              \
+      ->ReportAggregatesOnly(true)                                  \
+      ->ComputeStatistics("min", [](const std::vector<double>& v) { \
+        return *std::min_element(v.begin(), v.end());               \
+      })
+FLEXROCK_WHOLE_RUN(BM_A_RigidFreeRocking);
+FLEXROCK_WHOLE_RUN(BM_B_RigidPulse2pi);
+FLEXROCK_WHOLE_RUN(BM_B_RigidPulse6pi);
+FLEXROCK_WHOLE_RUN(BM_C_RigidKobe);
+FLEXROCK_WHOLE_RUN(BM_D_OscillatorKobe);
+FLEXROCK_WHOLE_RUN(BM_D_Cantilever4Kobe);
 
 }  // namespace

@@ -108,9 +108,10 @@ class Simulator {
     dx.resize(x.size());
     double thdd = 0.0;
     if (rocking()) {
-      dyn_.rocking_acceleration(edge(), x(0), q_, x(ithd()), qd_, a, thdd, qdd_);
+      const double sn = std::sin(x(0)), cs = std::cos(x(0));
+      dyn_.rocking_acceleration_sc(edge(), sn, cs, q_, x(ithd()), qd_, a, thdd, qdd_);
       dx(0) = x(ithd());
-      dx(iw()) = dyn_.input_power(dyn_.alpha(edge()), x(0), q_, x(ithd()), qd_, a);
+      dx(iw()) = dyn_.input_power_sc(dyn_.alpha(edge()), sn, cs, q_, x(ithd()), qd_, a);
     } else {
       dyn_.full_contact_acceleration(q_, qd_, a, qdd_);
       dx(0) = 0.0;
@@ -137,13 +138,14 @@ class Simulator {
     if (rocking()) {
       const double sg = edge_sign(edge());
       double thdd = 0.0;
-      dyn_.rocking_acceleration(edge(), x(0), q_, x(ithd()), qd_, a, thdd, qdd_);
-      s.reaction = dyn_.rocking_reaction(edge(), x(0), q_, x(ithd()), qd_, thdd, qdd_, a);
+      const double sn = std::sin(x(0)), cs = std::cos(x(0));
+      dyn_.rocking_acceleration_sc(edge(), sn, cs, q_, x(ithd()), qd_, a, thdd, qdd_);
+      s.reaction = dyn_.rocking_reaction_sc(edge(), sn, cs, q_, x(ithd()), qd_, thdd, qdd_, a);
       s.v[0] = sg * x(0);
       s.v[1] = overturn_limit_[edge() - 1] - sg * x(0);
       s.v[kSlotPeak] = sg * x(ithd());
       // reaction at the pivot, moment about the c.g. projection: alpha h F_j(body)
-      const double fy_body = -s.reaction(0) * std::sin(x(0)) + s.reaction(1) * std::cos(x(0));
+      const double fy_body = -s.reaction(0) * sn + s.reaction(1) * cs;
       s.moment = dyn_.alpha(edge()) * fy_body;
     } else {
       dyn_.full_contact_acceleration(q_, qd_, a, qdd_);
@@ -168,7 +170,14 @@ class Simulator {
       x(0) = 0.0;
       x(ithd()) = 0.0;
     }
-    integ_.start([this](double tt, const State& xx, State& dd) { rhs(tt, xx, dd); }, ctl_, t, x);
+    still_ = n_ == 0 && !rocking();
+    if (still_) {
+      // a rigid body in full contact does not move: no integration until it uplifts
+      x_still_ = x;
+      still_t1_ = t;
+    } else {
+      integ_.start([this](double tt, const State& xx, State& dd) { rhs(tt, xx, dd); }, ctl_, t, x);
+    }
     evaluate(t, x, s0_);
     observe(s0_, x);
     // after an uplift or impact theta = 0 and it must grow: the impact (and, after an uplift,
@@ -195,6 +204,7 @@ class Simulator {
 
   // one accepted step plus whatever happens in it; false when the run ends
   bool advance(double& t, State& x) {
+    if (still_) return advance_still(t, x);
     auto sys = [this](double tt, const State& xx, State& dd) { rhs(tt, xx, dd); };
     const double t_stop = std::min(t_end_, motion_.next_breakpoint(t, break_cursor_));
     if (++res_.steps > opt_.max_steps)
@@ -229,7 +239,7 @@ class Simulator {
     std::array<double, kEventSlots> when;
     when.fill(std::numeric_limits<double>::infinity());
     for (int j = 0; j < kEventSlots; ++j) {
-      when[j] = find_crossing(j, smp);
+      when[j] = find_crossing(j, smp, samples_);
       if (terminal(j) && when[j] < t_hit) {
         t_hit = when[j];
         slot_hit = j;
@@ -265,15 +275,122 @@ class Simulator {
     return act(slot_hit, t, x);
   }
 
+  // a rigid body in full contact does not move, and its event functions (uplift about either edge,
+  // vertical reaction, friction margin) depend on the base acceleration alone, linearly
+  // (docs/theory.md, "A rigid body in full contact"). Under a sampled record they are linear
+  // between samples, so a sign check at each sample finds every crossing and the state jumps from
+  // sample to sample; an analytic motion is checked at event_samples points per max_step.
+  bool advance_still(double& t, State& x) {
+    // each span checked counts as a step toward max_steps
+    if (++res_.steps > opt_.max_steps)
+      return stop(
+          t, x,
+          "step limit reached (" + std::to_string(opt_.max_steps) + " steps; raise max_steps)");
+    double ta = t, tb = t;
+    int samples = 1;
+    if (motion_.is_sampled()) {
+      tb = scan_record(t);
+    } else if (t >= motion_.duration()) {
+      tb = t_end_;  // the motion is over (zero): nothing can change any more
+    } else {
+      tb = std::min({t_end_, motion_.next_breakpoint(t, break_cursor_), t + opt_.max_step});
+      samples = samples_;
+    }
+    auto& smp = samples_buf_;
+    smp[0] = s0_;
+    if (motion_.is_sampled() && scan_from_ > ta) {
+      // the scan passed samples with no event on them: start from the last of them
+      ta = scan_from_;
+      evaluate(ta, x_still_, smp[0]);
+    }
+    for (int k = 1; k <= samples; ++k) {
+      const double tk = k == samples ? tb : ta + (tb - ta) * k / samples;
+      evaluate(tk, x_still_, smp[k]);
+    }
+    still_t1_ = tb;
+    if (opt_.progress) opt_.progress->store(tb, std::memory_order_relaxed);
+    double t_hit = std::numeric_limits<double>::infinity();
+    int slot_hit = -1;
+    std::array<double, kEventSlots> when;
+    when.fill(std::numeric_limits<double>::infinity());
+    for (int j = 0; j < kEventSlots; ++j) {
+      when[j] = find_crossing(j, smp, samples);
+      if (terminal(j) && when[j] < t_hit) {
+        t_hit = when[j];
+        slot_hit = j;
+      }
+    }
+    if (when[kSlotFriction] <= std::min(t_hit, tb))
+      record_nonterminal(kSlotFriction, when[kSlotFriction]);
+    for (int k = 1; k <= samples; ++k) {
+      if (smp[k].t >= t_hit) break;
+      observe(smp[k], x_still_);
+    }
+    if (slot_hit < 0) {
+      emit_rows_until(tb);
+      t = tb;
+      s0_ = smp[samples];
+      if (s0_.v[kSlotFriction] > 0.0) friction_over_ = false;
+      return true;
+    }
+    emit_rows_until(t_hit);
+    t = t_hit;
+    x = x_still_;
+    return act(slot_hit, t, x);
+  }
+
+  // walks the record's samples after t while every event function stays positive there, folding
+  // their reactions into the extremes; returns the end of the first span that may hold a crossing
+  // (a sample where some function is <= 0), or the end time. scan_from_ is the span's start.
+  double scan_record(double t) {
+    const std::vector<double>& ts = motion_.times();
+    const std::vector<double>& hx = motion_.horizontal();
+    const std::vector<double>& vy = motion_.vertical();
+    const bool vertical = vy.size() == ts.size();
+    const double g = dyn_.g();
+    const double a1 = dyn_.alpha1(), a2 = dyn_.alpha2();
+    const double fc = opt_.friction_coefficient;
+    const bool friction = std::isfinite(fc);
+    std::size_t i = scan_index_;
+    while (i > 0 && ts[i - 1] > t) --i;
+    while (i < ts.size() && ts[i] <= t) ++i;
+    scan_from_ = t;
+    double shear = 0.0, demand = 0.0;
+    // uplift about edge 1 / edge 2, vertical reaction, friction margin, over M g (rigid body)
+    for (; i < ts.size() && ts[i] < t_end_; ++i) {
+      const double ax = hx[i] / g, ay = 1.0 + (vertical ? vy[i] / g : 0.0);
+      const double u1 = a1 * ay - ax, u2 = a2 * ay + ax;
+      if (!(u1 > 0.0 && u2 > 0.0 && ay > 0.0)) break;
+      if (friction) {
+        // an exceedance is reported once, and again only after the margin has turned positive
+        if (fc * ay - std::abs(ax) > 0.0) {
+          friction_over_ = false;
+        } else if (!friction_over_) {
+          break;
+        }
+      }
+      shear = std::max(shear, std::abs(ax));
+      demand = std::max(demand, std::abs(ax) / ay);
+      scan_from_ = ts[i];
+    }
+    scan_index_ = i;
+    Extremes& ex = res_.extremes;
+    const double mg = dyn_.mass() * g;
+    ex.max_base_shear = std::max(ex.max_base_shear, mg * shear);
+    ex.max_overturning_moment = std::max(ex.max_overturning_moment, mg * dyn_.height() * shear);
+    ex.max_friction_demand = std::max(ex.max_friction_demand, demand);
+    return i < ts.size() ? std::min(ts[i], t_end_) : t_end_;
+  }
+
   // time of the first crossing of slot j in the step, or +inf
-  double find_crossing(int j, const std::array<Sample, kMaxSamples + 1>& smp) {
+  double find_crossing(int j, const std::array<Sample, kMaxSamples + 1>& smp, int samples) {
     constexpr double kInf = std::numeric_limits<double>::infinity();
     if (!rocking() && j == kSlotPeak) return kInf;
     if (j == kSlotFriction && friction_over_) return kInf;
     double prev = smp[0].v[j];
     double t_prev = smp[0].t;
     bool armed = prev > 0.0 || zero_start_[j];
-    for (int k = 1; k <= samples_; ++k) {
+    for (int k = 1; k <= samples; ++k) {
       const double cur = smp[k].v[j];
       if (armed && cur <= 0.0) {
         double tl = t_prev, gl = prev;
@@ -293,7 +410,7 @@ class Simulator {
         return locate(j, tl, smp[k].t, gl, cur);
       }
       // a dip between samples: parabola through three positive values with a vertex below zero
-      if (armed && k + 1 <= samples_ && cur > 0.0 && prev > 0.0 && smp[k + 1].v[j] > 0.0) {
+      if (armed && k + 1 <= samples && cur > 0.0 && prev > 0.0 && smp[k + 1].v[j] > 0.0) {
         const double g0 = prev, g1 = cur, g2 = smp[k + 1].v[j];
         const double curv = g0 - 2.0 * g1 + g2;
         if (curv > 0.0) {
@@ -317,9 +434,18 @@ class Simulator {
     return kInf;
   }
 
+  // the state at t within the last step (or the still state)
+  void state_at(double t, State& out) const {
+    if (still_) {
+      out = x_still_;
+    } else {
+      integ_.dense(t, out);
+    }
+  }
+
   double value_at(int j, double t) {
     Sample s;
-    integ_.dense(t, xr_);
+    state_at(t, xr_);
     evaluate(t, xr_, s);
     return s.v[j];
   }
@@ -335,7 +461,7 @@ class Simulator {
   }
 
   void record_nonterminal(int slot, double t) {
-    integ_.dense(t, xr_);
+    state_at(t, xr_);
     Sample s;
     evaluate(t, xr_, s);
     if (slot == kSlotPeak) {
@@ -536,7 +662,7 @@ class Simulator {
     for (;;) {
       const double to = static_cast<double>(next_output_) * opt_.output_dt;
       if (to > t_cut || to > t_end_ * (1.0 + 1e-14)) break;
-      integ_.dense(std::min(to, integ_.t1()), xr_);
+      state_at(std::min(to, still_ ? still_t1_ : integ_.t1()), xr_);
       emit_row(to, xr_);
       ++next_output_;
     }
@@ -619,6 +745,11 @@ class Simulator {
   std::array<Sample, kMaxSamples + 1> samples_buf_;   // event functions at this step's samples
   std::array<State, kMaxSamples + 1> sample_states_;  // the states there (sized once)
   Sample s0_;
+  std::size_t scan_index_ = 0;  // the record sample the last scan stopped at
+  double scan_from_ = 0.0;      // [s] the last sample the scan passed with no event
+  bool still_ = false;  // a rigid body in full contact: the state is x_still_, nothing integrates
+  State x_still_;
+  double still_t1_ = 0.0;  // [s] end of the span checked last while still
   std::array<bool, kEventSlots> zero_start_{};
   std::array<double, 2> overturn_limit_{};
   bool friction_over_ = false;

@@ -6,6 +6,7 @@
 
 #include <atomic>
 #include <cmath>
+#include <vector>
 
 #include "flexrock/core/error.hpp"
 
@@ -131,6 +132,58 @@ TEST(Simulate, RigidFullContactHistoryIsExact) {
     EXPECT_NEAR(r.history.reaction_y[i], 250 * (g + a.y), 1e-9);
     EXPECT_EQ(r.history.phase[i], 0);
   }
+}
+
+TEST(Simulate, RigidUpliftUnderARecordIsAtTheExactCrossing) {
+  // a rigid body in full contact uplifts about edge 1 when Xdd = alpha1 (g + Ydd); both are linear
+  // between samples, so the crossing time has a closed form in the sample interval
+  const double m = 250.0, a1 = 0.3;
+  const Body body(BodyParameters::rectangular_block(m, a1, 1.0));
+  const std::vector<double> ax{0.0, 1.0, -2.0, 0.5, 2.0, 4.0, 1.0};
+  const std::vector<double> ay{0.0, 0.5, -0.5, 1.0, 0.2, -1.0, 0.0};
+  const double dt = 0.02;
+  const auto motion = GroundMotion::uniform(dt, ax, ay);
+  // U1 = a1 (g + ay) - ax at samples 4 and 5, linear between them
+  const double u4 = a1 * (g + ay[4]) - ax[4], u5 = a1 * (g + ay[5]) - ax[5];
+  ASSERT_GT(u4, 0.0);
+  ASSERT_LT(u5, 0.0);
+  const double t_exact = dt * (4.0 + u4 / (u4 - u5));
+  const auto r = simulate(body, motion);
+  EXPECT_NEAR(r.extremes.first_uplift_time, t_exact, 1e-14);
+  EXPECT_EQ(r.extremes.first_uplift_edge, 1);
+}
+
+TEST(Simulate, RigidFullContactExtremesAreThoseOfTheSamples) {
+  // no uplift (alpha1 = 0.3): the base shear M |Xdd| and the friction demand |Xdd| / (g + Ydd)
+  // are largest at a sample (linear, or a ratio of linear functions, between samples)
+  const double m = 250.0;
+  const Body body(BodyParameters::rectangular_block(m, 0.3, 1.0));
+  const auto motion =
+      GroundMotion::uniform(0.02, {0.0, 1.0, -2.0, 0.5, 0.0}, {0.0, 0.5, -0.5, 1.0, 0.0});
+  const auto r = simulate(body, motion);
+  EXPECT_EQ(r.extremes.first_uplift_time, -1.0);
+  EXPECT_NEAR(r.extremes.max_base_shear, m * 2.0, 1e-9);
+  EXPECT_NEAR(r.extremes.max_overturning_moment, m * 2.0 * 1.0, 1e-9);
+  EXPECT_NEAR(r.extremes.max_friction_demand, 2.0 / (g - 0.5), 1e-12);
+}
+
+TEST(Simulate, RigidFullContactFrictionExceedanceIsReportedEachTimeItStarts) {
+  // |Xdd| / g rises above mu = 0.2 at 0.25 g, falls to 0.1 g and rises again: two exceedances,
+  // at the linear crossings, and no uplift (alpha1 = 0.3)
+  const Body body(BodyParameters::rectangular_block(250, 0.3, 1.0));
+  const auto motion = GroundMotion::uniform(0.01, {0.0, 0.25 * g, 0.1 * g, 0.25 * g, 0.0});
+  SimulationOptions opt;
+  opt.friction_coefficient = 0.2;
+  const auto r = simulate(body, motion, {}, opt);
+  std::vector<double> times;
+  for (const auto& e : r.events)
+    if (e.kind == EventKind::kFrictionExceeded) times.push_back(e.time);
+  ASSERT_EQ(times.size(), 2u);
+  EXPECT_NEAR(times[0], 0.01 * 0.2 / 0.25, 1e-14);
+  EXPECT_NEAR(times[1], 0.02 + 0.01 * 0.1 / 0.15, 1e-14);
+  EXPECT_EQ(r.extremes.first_uplift_time, -1.0);
+  EXPECT_NEAR(r.extremes.max_friction_demand, 0.25, 1e-12);
+  EXPECT_EQ(r.status, Status::kCompleted);
 }
 
 }  // namespace

@@ -79,8 +79,14 @@ class Dynamics {
   void rocking_acceleration(int edge, double theta, const Vec& q, double theta_dot,
                             const Vec& q_dot, BaseAcceleration base, double& theta_ddot,
                             Vec& q_ddot) const {
+    rocking_acceleration_sc(edge, std::sin(theta), std::cos(theta), q, theta_dot, q_dot, base,
+                            theta_ddot, q_ddot);
+  }
+  /// The same with s = sin(theta), c = cos(theta) given (the event loop computes them once).
+  void rocking_acceleration_sc(int edge, double s, double c, const Vec& q, double theta_dot,
+                               const Vec& q_dot, BaseAcceleration base, double& theta_ddot,
+                               Vec& q_ddot) const {
     const double a = alpha(edge);
-    const double s = std::sin(theta), c = std::cos(theta);
     const double ax = base.x / g_, ay = 1.0 + base.y / g_;
     // effective gravity over g in body axes: G = f(Xdd/g, 1 + Ydd/g, theta)
     const double gx = ax * c + ay * s, gy = ay * c - ax * s;
@@ -113,8 +119,14 @@ class Dynamics {
   Eigen::Vector2d rocking_reaction(int edge, double theta, const Vec& q, double theta_dot,
                                    const Vec& q_dot, double theta_ddot, const Vec& q_ddot,
                                    BaseAcceleration base) const {
+    return rocking_reaction_sc(edge, std::sin(theta), std::cos(theta), q, theta_dot, q_dot,
+                               theta_ddot, q_ddot, base);
+  }
+  /// The same with s = sin(theta), c = cos(theta) given.
+  Eigen::Vector2d rocking_reaction_sc(int edge, double s, double c, const Vec& q, double theta_dot,
+                                      const Vec& q_dot, double theta_ddot, const Vec& q_ddot,
+                                      BaseAcceleration base) const {
     const double a = alpha(edge);
-    const double s = std::sin(theta), c = std::cos(theta);
     const double ax = base.x / g_, ay = 1.0 + base.y / g_;
     const double gx = ax * c + ay * s, gy = ay * c - ax * s;
     const double wx = -a + psi_x_.dot(q), wy = 1.0 + psi_y_.dot(q);
@@ -167,7 +179,11 @@ class Dynamics {
   /// Power of the base's d'Alembert force on the body [W]: -M a_base . v_cm (relative velocity).
   double input_power(double a, double theta, const Vec& q, double theta_dot, const Vec& q_dot,
                      BaseAcceleration base) const {
-    const double s = std::sin(theta), c = std::cos(theta);
+    return input_power_sc(a, std::sin(theta), std::cos(theta), q, theta_dot, q_dot, base);
+  }
+  /// The same with s = sin(theta), c = cos(theta) given.
+  double input_power_sc(double a, double s, double c, const Vec& q, double theta_dot,
+                        const Vec& q_dot, BaseAcceleration base) const {
     const double wx = -a + psi_x_.dot(q), wy = 1.0 + psi_y_.dot(q);
     const double vx = h_ * (psi_x_.dot(q_dot) - theta_dot * wy);
     const double vy = h_ * (psi_y_.dot(q_dot) + theta_dot * wx);

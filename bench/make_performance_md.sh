@@ -1,0 +1,42 @@
+#!/usr/bin/env bash
+# Regenerates docs/performance.md: builds the benchmarks, runs Google Benchmark (JSON) and the
+# peer comparison, and writes the tables, the commands, the machine and the date.
+# Usage: bench/make_performance_md.sh [--quick]
+#   BUILD_DIR (default build/bench, the bench preset) is configured if needed.
+#   --quick: fewer tolerances and repetitions in the peer comparison (minutes instead of ~15).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+build=${BUILD_DIR:-build/bench}
+quick=()
+[ "${1:-}" = "--quick" ] && quick=(--quick)
+py=/usr/bin/python3
+
+if [ ! -f "$build/CMakeCache.txt" ]; then
+  if [ "$build" = build/bench ]; then
+    cmake --preset bench >/dev/null
+  else
+    cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DFLEXROCK_BUILD_BENCH=ON \
+      -DFLEXROCK_BUILD_TESTS=OFF >/dev/null
+  fi
+fi
+cmake --build "$build" -j2 --target flexrock_bench flexrock_run_case flexrock >/dev/null
+
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+load_before=$(cut -d' ' -f1-3 /proc/loadavg)
+"$build/bench/flexrock_bench" --benchmark_format=json --benchmark_out="$tmp/bench.json" \
+  --benchmark_out_format=json >/dev/null
+mkdir -p docs/img
+$py bench/peers/compare.py --run-case "$build/bench/flexrock_run_case" --out "$tmp/peers.json" \
+  --plot docs/img/work_precision.png "${quick[@]}"
+load_after=$(cut -d' ' -f1-3 /proc/loadavg)
+
+studies=""
+if [ -x bench/study_timing.sh ] && [ -x "$build/apps/flexrock" ]; then
+  studies=$(bench/study_timing.sh "$build/apps/flexrock" || true)
+fi
+
+$py bench/peers/write_performance_md.py --bench "$tmp/bench.json" --peers "$tmp/peers.json" \
+  --load "$load_before / $load_after" --command "bench/make_performance_md.sh ${quick[*]}" \
+  --studies "$studies" --out docs/performance.md
+echo "wrote docs/performance.md and docs/img/work_precision.png"

@@ -1,0 +1,214 @@
+#!/usr/bin/python3
+"""Writes docs/performance.md from Google Benchmark's JSON and the peer comparison's JSON
+(called by bench/make_performance_md.sh)."""
+import argparse
+import datetime
+import json
+import os
+import platform
+import re
+import subprocess
+
+ACCURACY = 1e-6  # the accuracy every timed configuration must reach (relative)
+CASES = {
+    "a": "(a) rigid block, free rocking from 0.8 alpha, 20 s",
+    "b2": "(b) one-sine pulse, omega_p = 2 pi (overturns), 10 s",
+    "b6": "(b) one-sine pulse, omega_p = 6 pi (rocks, settles), 10 s",
+    "c": "(c) Kobe 1995 at PGA 0.5 g, 40.95 s",
+}
+WHOLE = {
+    "BM_A_RigidFreeRocking": ("(a) rigid, free rocking 20 s", 100.0),
+    "BM_B_RigidPulse2pi": ("(b) rigid, one-sine 2 pi (overturns)", 100.0),
+    "BM_B_RigidPulse6pi": ("(b) rigid, one-sine 6 pi, 10 s", 100.0),
+    "BM_C_RigidKobe": ("(c) rigid, Kobe 0.5 g", 100.0),
+    "BM_D_OscillatorKobe": ("(d) oscillator on a rocking slab, n = 1, Kobe", 300.0),
+    "BM_D_Cantilever4Kobe": ("(d) cantilever, n = 4, Kobe", None),
+}
+
+
+def cpu_model():
+    try:
+        with open("/proc/cpuinfo") as f:
+            for line in f:
+                if line.startswith("model name"):
+                    return line.split(":", 1)[1].strip()
+    except OSError:
+        pass
+    return platform.processor() or "unknown"
+
+
+def to_us(b):
+    f = {"ns": 1e-3, "us": 1.0, "ms": 1e3, "s": 1e6}[b["time_unit"]]
+    return b["cpu_time"] * f
+
+
+def micro_table(bench):
+    rows = {}
+    for b in bench["benchmarks"]:
+        m = re.match(r"(BM_(?:Rhs|Dopri5Step|EventLocation|ImpactMap|RockingAcceleration))/n[:/](\d+)", b["name"])
+        if not m or b.get("run_type") == "aggregate":
+            continue
+        rows.setdefault(m.group(1), {})[int(m.group(2))] = to_us(b) * 1e3
+    out = ["| operation | n = 0 | n = 1 | n = 2 | n = 4 | n = 10 |", "|---|---|---|---|---|---|"]
+    labels = {"BM_Rhs": "right-hand side (rocking)", "BM_Dopri5Step": "one DOPRI5 step (6 rhs + 1 start)",
+              "BM_EventLocation": "one event location (TOMS 748 on the dense output)",
+              "BM_ImpactMap": "one impact map", "BM_RockingAcceleration": "rocking accelerations only"}
+    for k, v in rows.items():
+        out.append(f"| {labels.get(k, k)} [ns] | " + " | ".join(
+            f"{v[n]:.0f}" if n in v else "-" for n in (0, 1, 2, 4, 10)) + " |")
+    return "\n".join(out)
+
+
+def whole_table(bench):
+    med = {}
+    for b in bench["benchmarks"]:
+        if b.get("aggregate_name") == "median":
+            med[b["run_name"].split("/")[0]] = b
+    out = ["| case | median CPU per run [us] | steps | rhs | events | impacts | max theta [rad] "
+           "| err max theta | err robust | target [us] | met |",
+           "|---|---|---|---|---|---|---|---|---|---|---|"]
+    verdicts = []
+    for name, (label, target) in WHOLE.items():
+        b = med.get(name)
+        if not b:
+            continue
+        t = to_us(b)
+        met = "-" if target is None else ("yes" if t < target else "**no**")
+        if target is not None:
+            verdicts.append((label, t, target, t < target))
+        out.append(f"| {label} | {t:.1f} | {b['steps']:.0f} | {b['rhs']:.0f} | {b['events']:.0f} "
+                   f"| {b['impacts']:.0f} | {b['max_theta']:.6f} | {b['err_max_theta']:.1e} "
+                   f"| {b['err_robust']:.1e} | {target if target else '-'} | {met} |")
+    return "\n".join(out), verdicts
+
+
+def peer_tables(peers):
+    out, ratios = [], {}
+    for case, data in peers["cases"].items():
+        rows = data["rows"]
+        out.append(f"\n#### {CASES.get(case, case)}\n")
+        out.append(f"Reference check: {'exact solution vs flexrock at rtol 1e-13' if case == 'a' else 'DOP853 at rtol 1e-13 vs flexrock at rtol 1e-13'}"
+                   f": relative difference {data['reference_agreement']:.1e}.\n")
+        out.append("| solver | rtol | CPU per run [s] | error |")
+        out.append("|---|---|---|---|")
+        for r in rows:
+            out.append(f"| {r['solver']} | {r['rtol']:.0e} | {r['cpu_s']:.3g} | {r['error']:.1e} |")
+        fr = [r for r in rows if r["solver"] == "flexrock"]
+        for solver in sorted({r["solver"] for r in rows} - {"flexrock"}):
+            pr = [r for r in rows if r["solver"] == solver]
+            ok = [r for r in pr if r["error"] <= ACCURACY]
+            p = min(ok, key=lambda r: r["cpu_s"]) if ok else min(pr, key=lambda r: r["error"])
+            cand = [r for r in fr if r["error"] <= max(p["error"], 1e-15) and r["error"] <= ACCURACY]
+            if not cand:
+                continue
+            f = min(cand, key=lambda r: r["cpu_s"])
+            ratios[(case, solver)] = (p["cpu_s"] / f["cpu_s"], p, f)
+    return "\n".join(out), ratios
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--bench", required=True)
+    ap.add_argument("--peers", required=True)
+    ap.add_argument("--load", default="")
+    ap.add_argument("--command", default="bench/make_performance_md.sh")
+    ap.add_argument("--studies", default="")
+    ap.add_argument("--out", required=True)
+    a = ap.parse_args()
+    with open(a.bench) as f:
+        bench = json.load(f)
+    with open(a.peers) as f:
+        peers = json.load(f)
+    whole, verdicts = whole_table(bench)
+    ptab, ratios = peer_tables(peers)
+    now = datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%d %H:%M UTC")
+    try:
+        rev = subprocess.run(["git", "rev-parse", "--short", "HEAD"], capture_output=True,
+                             text=True).stdout.strip()
+    except OSError:
+        rev = "?"
+    lines = [
+        "# Performance",
+        "",
+        "Generated by `" + a.command.strip() + "` (do not edit by hand). "
+        f"Date: {now}; commit {rev} plus the working tree; machine: {cpu_model()}, "
+        f"{os.cpu_count()} CPUs, load average (1, 5, 15 min) before / after: {a.load}. "
+        "The machine may be shared: times are medians of repetitions, and the ratios are taken "
+        "side by side in one session.",
+        "",
+        "## Commands",
+        "",
+        "```sh",
+        "scripts/install-deps.sh --bench          # Google Benchmark, scipy, matplotlib, siconos",
+        "cmake --preset bench && cmake --build --preset bench",
+        "build/bench/bench/flexrock_bench          # micro-benchmarks and whole runs",
+        "build/bench/bench/flexrock_bench --benchmark_filter=BM_C --benchmark_format=json",
+        "/usr/bin/python3 bench/peers/compare.py --run-case build/bench/bench/flexrock_run_case \\",
+        "    --out peers.json --plot docs/img/work_precision.png",
+        "bench/make_performance_md.sh             # all of the above, then this file",
+        "```",
+        "",
+        "## Micro-benchmarks (CPU time per call)",
+        "",
+        micro_table(bench),
+        "",
+        "## Whole runs",
+        "",
+        "Median CPU time per run of 7 repetitions (each many runs). Each case runs at the "
+        "tolerance in bench/cases.hpp (rtol = 1e-8, atol = 1e-10); `err max theta` is the relative "
+        "difference of the largest |theta| from a run at rtol = 1e-13, `err robust` the largest "
+        "relative difference of the first uplift time and the first five impact times (and 1 if "
+        "the outcome or overturning side differs). Both must be at most 1e-6.",
+        "",
+        whole,
+        "",
+        "## Peers",
+        "",
+        "Rigid block cases (a)-(c): flexrock (bench/run_case.cpp), scipy `solve_ivp` DOP853 and "
+        "RK45 with terminal event functions for uplift, impact and overturning (Housner's "
+        "equation with his restitution, as a Python user writes it: bench/peers/compare.py), all "
+        "in one session. The error is relative: for (a) the impact times against the exact "
+        "solution (energy quadrature between impacts); for (b) max |theta|, or the overturning "
+        "time when it overturns, "
+        "and the first uplift and impact times; for (c) the first uplift time, the first five "
+        "impact times, and whether and to which side it overturns (1 when that differs).",
+        "",
+        "![work-precision](img/work_precision.png)",
+        ptab,
+        "",
+        "### Time ratios at equal or better accuracy",
+        "",
+        "For each peer: its fastest run with an error <= 1e-6 (else its most accurate), against "
+        "flexrock's fastest run with an error no larger.",
+        "",
+        "| case | peer | peer CPU [s] | peer error | flexrock CPU [s] | flexrock error | ratio |",
+        "|---|---|---|---|---|---|---|",
+    ]
+    for (case, solver), (ratio, p, f) in ratios.items():
+        lines.append(f"| {case} | {solver} | {p['cpu_s']:.3g} | {p['error']:.1e} | "
+                     f"{f['cpu_s']:.3g} | {f['error']:.1e} | {ratio:.0f} |")
+    lines += ["", "## Targets", ""]
+    for label, t, target, ok in verdicts:
+        lines.append(f"- {label}: {t:.1f} us per run, target < {target:.0f} us: "
+                     f"{'met' if ok else 'NOT met'}")
+    for solver in ("scipy DOP853", "siconos event-driven"):
+        r = ratios.get(("c", solver))
+        if r:
+            lines.append(f"- case (c), flexrock vs {solver}: {r[0]:.0f} times faster, target >= "
+                         f"1000: {'met' if r[0] >= 1000 else 'NOT met'}")
+        else:
+            lines.append(f"- case (c), flexrock vs {solver}: not measured in this run")
+    notes = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "bounds.md")
+    if os.path.exists(notes):
+        with open(notes) as f:
+            lines += ["", f.read().rstrip()]
+    if a.studies.strip():
+        lines += ["", a.studies.rstrip()]
+    tmp = a.out + ".tmp"
+    with open(tmp, "w") as f:
+        f.write("\n".join(lines) + "\n")
+    os.replace(tmp, a.out)
+
+
+if __name__ == "__main__":
+    main()
