@@ -1,6 +1,7 @@
 #include "flexrock/excitation/pulses.hpp"
 
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <sstream>
 #include <string>
@@ -13,6 +14,7 @@ namespace flexrock {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
+constexpr double kEpsilon = std::numeric_limits<double>::epsilon();
 
 // shortest round-trip text of a double, so messages show the value the user gave
 std::string show(double v) {
@@ -36,9 +38,12 @@ void require_positive(const char* pulse, const char* name, double value) {
   require(std::isfinite(value) && value > 0.0, pulse, name, value, "a positive finite number");
 }
 
-// duration must be positive and cover the pulse of length t_end
-void require_duration(const char* pulse, double duration, double t_end) {
+// duration must be positive and cover the pulse of length t_end. A duration short of t_end by
+// rounding only (2 pi/omega computed by the caller vs here) is accepted, and the pulse is cut at
+// the duration so that no breakpoint lies beyond the motion.
+void require_duration(const char* pulse, double duration, double& t_end) {
   require_positive(pulse, "duration", duration);
+  if (duration < t_end && duration >= t_end * (1.0 - 16.0 * kEpsilon)) t_end = duration;
   FLEXROCK_THROW_UNLESS(duration >= t_end,
                         std::string(pulse) + ": argument 'duration' = " + show(duration) +
                             " s, expected at least the pulse " + "length " + show(t_end) + " s");
@@ -82,7 +87,7 @@ GroundMotion harmonic_cycles(double amplitude, double omega, double cycles, doub
   require_positive(name, "omega", omega);
   require_positive(name, "cycles", cycles);
   require_finite(name, "phase", phase);
-  const double t_end = cycles * 2.0 * kPi / omega;
+  double t_end = cycles * 2.0 * kPi / omega;
   require_duration(name, duration, t_end);
   return make_pulse([=](double t) { return amplitude * std::sin(omega * t + phase); }, t_end,
                     duration, component, {t_end});
@@ -93,7 +98,7 @@ namespace {
 GroundMotion sine_pulse(const char* name, double a_p, double omega_p, double half_periods,
                         double duration, Component component) {
   check_sine_args(name, a_p, omega_p);
-  const double t_end = half_periods * kPi / omega_p;
+  double t_end = half_periods * kPi / omega_p;
   require_duration(name, duration, t_end);
   return make_pulse([=](double t) { return a_p * std::sin(omega_p * t); }, t_end, duration,
                     component, {t_end});
@@ -115,7 +120,7 @@ GroundMotion cycloidal_pulse_a(double a_p, double omega_p, double duration, Comp
 GroundMotion cycloidal_pulse_b(double a_p, double omega_p, double duration, Component component) {
   const char* name = "cycloidal_pulse_b";
   check_sine_args(name, a_p, omega_p);
-  const double t_end = 2.0 * kPi / omega_p;
+  double t_end = 2.0 * kPi / omega_p;
   require_duration(name, duration, t_end);
   return make_pulse([=](double t) { return a_p * std::cos(omega_p * t); }, t_end, duration,
                     component, {t_end});
@@ -143,7 +148,7 @@ GroundMotion cycloidal_pulse_c(double a_p, double omega_p, double duration, int 
   FLEXROCK_THROW_UNLESS(n >= 1, std::string(name) + ": argument 'n' = " + std::to_string(n) +
                                     ", expected an integer >= 1");
   const double phi = cycloidal_c_phase(n);
-  const double t_end = (n + 0.5 - phi / kPi) * 2.0 * kPi / omega_p;
+  double t_end = (n + 0.5 - phi / kPi) * 2.0 * kPi / omega_p;
   require_duration(name, duration, t_end);
   return make_pulse([=](double t) { return a_p * std::cos(omega_p * t + phi); }, t_end, duration,
                     component, {t_end});

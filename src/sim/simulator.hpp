@@ -5,6 +5,7 @@
 #include <array>
 #include <boost/math/tools/roots.hpp>
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 #include <string>
 
@@ -24,6 +25,14 @@ inline constexpr int kEventSlots = 5;
 inline constexpr int kSlotFriction = 3;
 inline constexpr int kSlotPeak = 4;
 inline constexpr int kMaxSamples = 32;
+
+// a number for a message: 6 significant digits, no trailing zeros (std::to_string prints 1e-13 as
+// "0.000000")
+inline std::string short_number(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.6g", v);
+  return buf;
+}
 
 template <int N, int MaxN>
 class Simulator {
@@ -212,11 +221,17 @@ class Simulator {
           t, x,
           "step limit reached (" + std::to_string(opt_.max_steps) + " steps; raise max_steps)");
     if (integ_.step(sys, t_stop) != Dopri5<State>::Status::kAccepted) {
+      // the step limit is relative (min_step x max(1 s, t)); while rocking the usual cause is
+      // impacts accumulating with the chatter cut-off disabled, so the message says so
+      const double h_min = ctl_.min_step * std::max(1.0, std::abs(t));
+      const std::string cause =
+          rocking() && opt_.chatter_ratio <= 0.0
+              ? "impacts accumulating while rocking with the chatter cut-off disabled "
+                "(chatter_ratio = 0); set chatter_ratio > 0"
+              : "the equations became too stiff or singular; loosen rtol/atol or check the body";
       return stop(t, x,
-                  "integration step collapsed below " + std::to_string(ctl_.min_step) +
-                      " s near t = " + std::to_string(t) +
-                      " s (the equations became too stiff or singular; loosen rtol/atol "
-                      "or check the body)");
+                  "integration step collapsed below " + short_number(h_min) +
+                      " s near t = " + short_number(t) + " s (" + cause + ")");
     }
     const double t0 = integ_.t0(), t1 = integ_.t1();
     if (opt_.progress) opt_.progress->store(t1, std::memory_order_relaxed);

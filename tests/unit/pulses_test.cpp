@@ -223,6 +223,19 @@ TEST(Pulses, RejectDurationShorterThanThePulse) {
                      {"rectangular_pulse", "'duration' = -1", "positive"});
 }
 
+TEST(Pulses, AcceptDurationShortOfThePulseByRoundingOnly) {
+  // the caller's 2 pi/omega may round one ulp below ours: that is the pulse length, not an error
+  const double omega = 2.0 * kPi / 3.0;
+  const double t_pulse = 2.0 * kPi / omega;
+  const double just_short = std::nextafter(t_pulse, 0.0);
+  const GroundMotion m = one_sine_pulse(1.0, omega, just_short);
+  EXPECT_EQ(m.duration(), just_short);
+  EXPECT_NEAR(m.at(0.25 * t_pulse).x, 1.0, 1e-12);
+  // a shortfall beyond rounding is still refused
+  expect_input_error([&] { one_sine_pulse(1.0, omega, t_pulse * (1.0 - 1e-9)); },
+                     {"one_sine_pulse", "at least the pulse length"});
+}
+
 TEST(Pulses, RejectBadShapeArguments) {
   expect_input_error([] { harmonic_cycles(1.0, 1.0, 0.0, 100.0); }, {"'cycles' = 0", "positive"});
   expect_input_error([] { rectangular_pulse(1.0, -0.5, 5.0); }, {"'t_1' = -0.5", "positive"});
