@@ -302,9 +302,20 @@ class Reader {
 // ---------------------------------------------------------------------------------------------
 // small CSV files of numbers (nodes, mode shapes)
 
+// a directory or a device (/dev/zero) would read as an error or never end
+void require_plain_file(const std::string& path, const std::string& what) {
+  std::error_code ec;
+  const auto type = fs::status(path, ec).type();
+  if (type == fs::file_type::directory || type == fs::file_type::character ||
+      type == fs::file_type::block) {
+    throw InputError(path + ": is a directory or a device; expected a " + what + " file");
+  }
+}
+
 // rows of numbers; '#' lines and blank lines skipped; a first row without numbers is a header
 std::vector<std::vector<double>> read_number_rows(const std::string& path, std::size_t columns,
                                                   const std::string& what) {
+  require_plain_file(path, what);
   std::ifstream in(path);
   if (!in) throw InputError(path + ": cannot open " + what + " file");
   std::vector<std::vector<double>> rows;
@@ -358,6 +369,7 @@ std::vector<std::vector<double>> read_number_rows(const std::string& path, std::
 
 // the first row's column count of a numbers file
 std::size_t count_columns(const std::string& path, const std::string& what) {
+  require_plain_file(path, what);
   std::ifstream in(path);
   if (!in) throw InputError(path + ": cannot open " + what + " file");
   std::string text;
@@ -896,6 +908,7 @@ void read_output(Reader& r, OutputSettings& out) {
 toml::table parse(const std::string& path) {
   if (!fs::exists(path)) throw InputError(path + ": no such case file");
   if (fs::is_directory(path)) throw InputError(path + ": is a directory, expected a case file");
+  require_plain_file(path, "case");
   try {
     return toml::parse_file(path);
   } catch (const toml::parse_error& e) {

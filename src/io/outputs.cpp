@@ -1,12 +1,17 @@
 #include "flexrock/io/outputs.hpp"
 
+#include <signal.h>
 #include <unistd.h>
 
 #include <algorithm>
+#include <atomic>
 #include <charconv>
 #include <cmath>
+#include <csignal>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <mutex>
 #include <nlohmann/json.hpp>
 #include <numbers>
 #include <ostream>
@@ -18,8 +23,74 @@ namespace flexrock::io {
 namespace fs = std::filesystem;
 using Json = nlohmann::ordered_json;  // keys in the documented order
 
+namespace {
+
+// Temporaries being written, for the interrupt handler: a fixed table (no allocation, lock-free
+// atomics) so that the handler stays async-signal-safe. A slot is 0 free, 1 being filled, 2 set.
+constexpr int kTempSlots = 64;
+constexpr std::size_t kTempPathMax = 4096;
+struct TempSlot {
+  std::atomic<int> state{0};
+  char path[kTempPathMax] = {};
+};
+TempSlot g_temp_slots[kTempSlots];
+
+// SIGINT/SIGTERM/SIGHUP: remove every temporary being written, then die of the signal as before
+extern "C" void remove_temporaries_and_reraise(int sig) {
+  for (TempSlot& s : g_temp_slots) {
+    if (s.state.load() == 2) ::unlink(s.path);
+  }
+  std::signal(sig, SIG_DFL);
+  std::raise(sig);  // delivered when the handler returns: the default action (termination)
+}
+
+// installs the handler once, only where the signal still has its default action (a program or
+// an interpreter with its own handler keeps it)
+void install_interrupt_cleanup() {
+  static std::once_flag once;
+  std::call_once(once, [] {
+    for (int sig : {SIGINT, SIGTERM, SIGHUP}) {
+      struct sigaction old {};
+      if (::sigaction(sig, nullptr, &old) != 0 || old.sa_handler != SIG_DFL) continue;
+      struct sigaction sa {};
+      sa.sa_handler = remove_temporaries_and_reraise;
+      sigemptyset(&sa.sa_mask);
+      ::sigaction(sig, &sa, nullptr);
+    }
+  });
+}
+
+// registers a temporary for the handler while it exists
+class TempRegistration {
+ public:
+  explicit TempRegistration(const std::string& tmp) {
+    if (tmp.size() >= kTempPathMax) return;
+    for (int i = 0; i < kTempSlots; ++i) {
+      int expected = 0;
+      if (g_temp_slots[i].state.compare_exchange_strong(expected, 1)) {
+        std::memcpy(g_temp_slots[i].path, tmp.c_str(), tmp.size() + 1);
+        g_temp_slots[i].state.store(2);
+        slot_ = i;
+        return;
+      }
+    }
+  }
+  ~TempRegistration() {
+    if (slot_ >= 0) g_temp_slots[slot_].state.store(0);
+  }
+  TempRegistration(const TempRegistration&) = delete;
+  TempRegistration& operator=(const TempRegistration&) = delete;
+
+ private:
+  int slot_ = -1;
+};
+
+}  // namespace
+
 void write_atomically(const std::string& path, const std::function<void(std::ostream&)>& write) {
   const std::string tmp = path + ".tmp." + std::to_string(::getpid());
+  install_interrupt_cleanup();
+  const TempRegistration registration(tmp);
   try {
     {
       std::ofstream out(tmp, std::ios::binary | std::ios::trunc);

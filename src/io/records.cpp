@@ -4,6 +4,7 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -73,6 +74,14 @@ std::string upper(std::string_view s) {
 
 // the whole file as lines, without line ends (LF or CRLF) and without a UTF-8 byte-order mark
 std::vector<Line> read_lines(const std::string& path) {
+  // a directory or a device (/dev/zero, /dev/urandom) would read as an error or never end
+  std::error_code ec;
+  const auto type = std::filesystem::status(path, ec).type();
+  FLEXROCK_THROW_UNLESS(type != std::filesystem::file_type::directory,
+                        path + ": is a directory; expected a record file");
+  FLEXROCK_THROW_UNLESS(
+      type != std::filesystem::file_type::character && type != std::filesystem::file_type::block,
+      path + ": is a device, not a file; expected a record file");
   std::ifstream in(path, std::ios::binary);
   FLEXROCK_THROW_UNLESS(in.good(), path + ": cannot open the file for reading");
   std::vector<Line> lines;
@@ -399,7 +408,11 @@ Record read_at2(const std::string& path) {
   r.units = at2_units(path, lines[2]);
   const auto [npts, dt] = at2_npts_dt(path, lines[3]);
   r.dt = dt;
-  r.values.reserve(npts);
+  // a short file claiming a huge NPTS must fail on its count, not on a giant allocation: each
+  // value needs at least one character and a separator
+  std::size_t value_bytes = 0;
+  for (std::size_t i = 4; i < lines.size(); ++i) value_bytes += lines[i].text.size() + 1;
+  r.values.reserve(std::min(npts, value_bytes / 2 + 1));
 
   // values: exactly npts finite numbers, any count a line
   for (std::size_t i = 4; i < lines.size(); ++i) {
@@ -421,6 +434,11 @@ Record read_at2(const std::string& path) {
              std::to_string(r.values.size()) + " by the end of the file");
   }
   r.time = uniform_times(npts, dt);
+  if (!std::isfinite(r.time.back())) {
+    fail(path, 4,
+         "DT = " + show(dt) + " s times NPTS = " + std::to_string(npts) +
+             " overflows the time axis; expected a DT in seconds (e.g. 0.005)");
+  }
   return r;
 }
 
@@ -448,6 +466,10 @@ Record read_single_column(const std::string& path, double dt, AccelUnit units) {
     fail(path, lines.size(), "expected acceleration values, got only comments and blank lines");
   }
   r.time = uniform_times(r.values.size(), dt);
+  FLEXROCK_THROW_UNLESS(std::isfinite(r.time.back()),
+                        path + ": argument 'dt' = " + show(dt) + " s times " +
+                            std::to_string(r.values.size()) +
+                            " values overflows the time axis; expected a time step in seconds");
   return r;
 }
 

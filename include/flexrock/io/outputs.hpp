@@ -20,7 +20,9 @@ inline constexpr int kSummarySchemaVersion = 1;
 
 /// Writes a file atomically: `write` fills a stream opened on "PATH.tmp.<pid>", which is then
 /// renamed onto `path`. Throws std::runtime_error (naming the path) if the file cannot be written;
-/// the temporary file is removed.
+/// the temporary file is removed. SIGINT, SIGTERM and SIGHUP left at their default action get a
+/// handler (installed on the first call) that removes the temporaries being written before the
+/// process dies of the signal: an interrupted program leaves complete files or none.
 void write_atomically(const std::string& path, const std::function<void(std::ostream&)>& write);
 
 /// Column names of the time history for a body with `modes` modes, each with its unit suffix:

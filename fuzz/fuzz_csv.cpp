@@ -1,0 +1,10 @@
+// libFuzzer entry point: see fuzz_inputs.hpp. Build with the "fuzz" preset (clang).
+#include <cstddef>
+#include <cstdint>
+
+#include "fuzz_inputs.hpp"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  flexrock::fuzz::csv(data, size);
+  return 0;
+}

@@ -1,0 +1,154 @@
+#include "fuzz_inputs.hpp"
+
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <limits>
+#include <vector>
+
+#include "flexrock/core/error.hpp"
+#include "flexrock/io/case_file.hpp"
+#include "flexrock/io/records.hpp"
+
+namespace flexrock::fuzz {
+namespace {
+
+namespace fs = std::filesystem;
+
+// a private scratch directory for this process, with the record files a case may name; removed
+// at exit
+struct Scratch {
+  fs::path dir;
+  Scratch() : dir(fs::temp_directory_path() / ("flexrock_fuzz." + std::to_string(::getpid()))) {
+    fs::create_directories(dir);
+    auto put = [&](const char* name, const char* text) { std::ofstream(dir / name) << text; };
+    put("rec.at2",
+        "PEER NGA STRONG MOTION DATABASE RECORD\nEVENT\nACCELERATION TIME HISTORY IN UNITS OF G\n"
+        "NPTS=    5, DT=   .0100 SEC\n0.0 0.01 -0.02 0.03 0.0\n");
+    put("rec.txt", "0 0.01 -0.02\n0.03 0\n");
+    put("rec.csv", "time,acc\n0,0\n0.01,0.1\n0.02,-0.1\n0.03,0\n");
+    put("nodes.csv", "x,y,mass\n-0.5,0,10\n0.5,0,10\n0,2,100\n");
+  }
+  ~Scratch() {
+    std::error_code ec;
+    fs::remove_all(dir, ec);
+  }
+  Scratch(const Scratch&) = delete;
+  Scratch& operator=(const Scratch&) = delete;
+};
+
+const fs::path& scratch() {
+  static const Scratch s;
+  return s.dir;
+}
+
+// writes the bytes to scratch()/name and returns the path
+std::string put_file(const std::string& name, const std::uint8_t* data, std::size_t size) {
+  const fs::path p = scratch() / name;
+  std::ofstream out(p, std::ios::binary | std::ios::trunc);
+  out.write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(size));
+  out.close();
+  if (!out) std::abort();  // the harness itself failed, not the reader
+  return p.string();
+}
+
+// a record that was read must be usable: a motion (or a clear error), finite values
+void use(const io::Record& r) {
+  for (double v : r.values) {
+    if (!std::isfinite(v)) std::abort();
+  }
+  if (r.time.size() != r.values.size()) std::abort();
+  for (std::size_t i = 1; i < r.time.size(); ++i) {
+    if (!(r.time[i] > r.time[i - 1])) std::abort();
+  }
+  (void)r.peak_index();
+  try {
+    const GroundMotion m = r.to_motion(0.5);
+    (void)m.at(0.5 * m.duration());
+    (void)io::combine(r, &r, 2.0);
+  } catch (const InputError&) {
+  }
+}
+
+constexpr io::AccelUnit kUnits[] = {io::AccelUnit::kG, io::AccelUnit::kMetersPerSecond2,
+                                    io::AccelUnit::kCentimetersPerSecond2};
+
+}  // namespace
+
+void at2(const std::uint8_t* data, std::size_t size) {
+  const std::string path = put_file("input.at2", data, size);
+  try {
+    use(io::read_at2(path));
+  } catch (const InputError&) {
+  }
+}
+
+void values(const std::uint8_t* data, std::size_t size) {
+  if (size == 0) return;
+  // dt: ordinary, tiny, huge and invalid steps (the invalid ones must be refused cleanly)
+  static constexpr double kDt[] = {0.01,
+                                   0.005,
+                                   1e-9,
+                                   1e3,
+                                   0.0,
+                                   -0.01,
+                                   1e300,
+                                   5e-324,
+                                   std::numeric_limits<double>::quiet_NaN(),
+                                   std::numeric_limits<double>::infinity()};
+  const double dt = kDt[data[0] % std::size(kDt)];
+  const io::AccelUnit units = kUnits[(data[0] / std::size(kDt)) % std::size(kUnits)];
+  const std::string path = put_file("input.txt", data + 1, size - 1);
+  try {
+    use(io::read_single_column(path, dt, units));
+  } catch (const InputError&) {
+  }
+}
+
+void csv(const std::uint8_t* data, std::size_t size) {
+  if (size == 0) return;
+  const io::AccelUnit units = kUnits[data[0] % std::size(kUnits)];
+  const std::string path = put_file("input.csv", data + 1, size - 1);
+  try {
+    use(io::read_time_series(path, units));
+  } catch (const InputError&) {
+  }
+}
+
+void case_file(const std::uint8_t* data, std::size_t size) {
+  const std::string path = put_file("case.toml", data, size);
+  try {
+    (void)io::load_case(path);
+  } catch (const InputError&) {
+  }
+  try {
+    std::string type;
+    (void)io::load_body(path, &type);
+  } catch (const InputError&) {
+  }
+}
+
+bool run_file(const std::string& target, const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  const std::vector<char> bytes((std::istreambuf_iterator<char>(in)),
+                                std::istreambuf_iterator<char>());
+  const auto* d = reinterpret_cast<const std::uint8_t*>(bytes.data());
+  if (target == "fuzz_at2") {
+    at2(d, bytes.size());
+  } else if (target == "fuzz_values") {
+    values(d, bytes.size());
+  } else if (target == "fuzz_csv") {
+    csv(d, bytes.size());
+  } else if (target == "fuzz_case") {
+    case_file(d, bytes.size());
+  } else {
+    return false;
+  }
+  return true;
+}
+
+}  // namespace flexrock::fuzz
