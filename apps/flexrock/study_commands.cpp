@@ -1,0 +1,656 @@
+// flexrock spectrum | sweep | fragility: studies over many runs, on every core and (when built
+// with MPI and started by mpirun) over several processes. Outputs are byte-identical whatever
+// the thread and process counts: runs are distributed by index and written in index order.
+#include "study_commands.hpp"
+
+#include <fmt/core.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <chrono>
+#include <csignal>
+#include <cstdlib>
+#include <filesystem>
+#include <future>
+#include <map>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "flexrock/core/error.hpp"
+#include "flexrock/io/outputs.hpp"
+#include "flexrock/io/study_files.hpp"
+#include "flexrock/study/fragility.hpp"
+#include "flexrock/study/spectrum.hpp"
+#include "flexrock/study/sweep.hpp"
+#include "progress.hpp"
+
+#ifdef FLEXROCK_HAVE_MPI
+#include <mpi.h>
+#endif
+
+namespace flexrock::cli {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr int kExitOk = 0;
+constexpr int kExitRunFailed = 1;
+constexpr int kExitBadInput = 2;
+
+// ---------------------------------------------------------------------------------------------
+// interruption: the first SIGINT/SIGTERM asks the workers to stop taking runs (finished ones are
+// kept); a second one ends the process the default way
+
+std::atomic<bool> g_cancel{false};
+
+extern "C" void on_signal(int sig) {
+  g_cancel.store(true);
+  std::signal(sig, SIG_DFL);
+}
+
+struct SignalGuard {
+  SignalGuard() {
+    g_cancel.store(false);
+    std::signal(SIGINT, on_signal);
+    std::signal(SIGTERM, on_signal);
+  }
+  ~SignalGuard() {
+    std::signal(SIGINT, SIG_DFL);
+    std::signal(SIGTERM, SIG_DFL);
+  }
+};
+
+// ---------------------------------------------------------------------------------------------
+// processes: MPI when built with it and started by a launcher, else one process
+
+bool launched_by_mpirun() {
+  for (const char* v : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "PMIX_RANK"}) {
+    if (std::getenv(v)) return true;
+  }
+  return false;
+}
+
+class Processes {
+ public:
+  Processes() {
+#ifdef FLEXROCK_HAVE_MPI
+    if (launched_by_mpirun()) {
+      int provided = 0;
+      MPI_Init_thread(nullptr, nullptr, MPI_THREAD_FUNNELED, &provided);
+      MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
+      MPI_Comm_size(MPI_COMM_WORLD, &size_);
+      mpi_ = true;
+    }
+#endif
+  }
+  ~Processes() {
+#ifdef FLEXROCK_HAVE_MPI
+    if (mpi_) MPI_Finalize();
+#endif
+  }
+  Processes(const Processes&) = delete;
+  Processes& operator=(const Processes&) = delete;
+
+  int rank() const { return rank_; }
+  int size() const { return size_; }
+  bool root() const { return rank_ == 0; }
+
+  // threads a process uses by default: the cores shared among the processes on this machine
+  int default_threads() const {
+    int local = 1;
+    if (const char* s = std::getenv("OMPI_COMM_WORLD_LOCAL_SIZE"))
+      local = std::max(1, std::atoi(s));
+    if (size_ == 1) local = 1;
+    return std::max(1, study::resolve_threads(0) / local);
+  }
+
+  // every process's text, concatenated in rank order, on rank 0 (others get "")
+  std::string gather(const std::string& mine) const {
+#ifdef FLEXROCK_HAVE_MPI
+    if (mpi_ && size_ > 1) {
+      const int n = static_cast<int>(mine.size());
+      std::vector<int> counts(static_cast<std::size_t>(size_)), displs(counts.size());
+      MPI_Gather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, MPI_COMM_WORLD);
+      std::string all;
+      if (rank_ == 0) {
+        int total = 0;
+        for (std::size_t i = 0; i < counts.size(); ++i) {
+          displs[i] = total;
+          total += counts[i];
+        }
+        all.resize(static_cast<std::size_t>(total));
+      }
+      MPI_Gatherv(mine.data(), n, MPI_CHAR, all.data(), counts.data(), displs.data(), MPI_CHAR, 0,
+                  MPI_COMM_WORLD);
+      return all;
+    }
+#endif
+    return mine;
+  }
+
+  // rank 0's text on every process
+  std::string broadcast(const std::string& text) const {
+#ifdef FLEXROCK_HAVE_MPI
+    if (mpi_ && size_ > 1) {
+      unsigned long n = text.size();
+      MPI_Bcast(&n, 1, MPI_UNSIGNED_LONG, 0, MPI_COMM_WORLD);
+      std::string out = rank_ == 0 ? text : std::string(n, '\0');
+      MPI_Bcast(out.data(), static_cast<int>(n), MPI_CHAR, 0, MPI_COMM_WORLD);
+      return out;
+    }
+#endif
+    return text;
+  }
+
+  // true on every process if it is true on any
+  bool any(bool v) const {
+#ifdef FLEXROCK_HAVE_MPI
+    if (mpi_ && size_ > 1) {
+      int in = v ? 1 : 0, out = 0;
+      MPI_Allreduce(&in, &out, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
+      return out != 0;
+    }
+#endif
+    return v;
+  }
+
+  void barrier() const {
+#ifdef FLEXROCK_HAVE_MPI
+    if (mpi_ && size_ > 1) MPI_Barrier(MPI_COMM_WORLD);
+#endif
+  }
+
+ private:
+  int rank_ = 0;
+  int size_ = 1;
+  bool mpi_ = false;
+};
+
+int error(const std::string& message, int code) {
+  std::fflush(stdout);
+  fmt::print(stderr, "flexrock: error: {}\n", message);
+  return code;
+}
+
+// runs `work` on a thread while the main thread draws the progress of `completed` of `total`
+template <class Work>
+auto with_progress(bool show, std::size_t total, std::atomic<std::size_t>& completed,
+                   const std::string& note, Work&& work) {
+  Progress progress(show, static_cast<double>(total));
+  const auto start = std::chrono::steady_clock::now();
+  auto future = std::async(std::launch::async, std::forward<Work>(work));
+  while (future.wait_for(std::chrono::milliseconds(200)) != std::future_status::ready) {
+    progress.draw_count(
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
+        static_cast<double>(completed.load(std::memory_order_relaxed)), note);
+  }
+  progress.clear();
+  return future.get();
+}
+
+// "key<TAB>line<NEWLINE>" records for gathering lines across processes
+std::string pack(const std::map<std::size_t, std::string>& lines) {
+  std::string s;
+  for (const auto& [k, v] : lines) s += std::to_string(k) + "\t" + v + "\n";
+  return s;
+}
+
+std::map<std::size_t, std::string> unpack(const std::string& s) {
+  std::map<std::size_t, std::string> out;
+  std::istringstream in(s);
+  std::string line;
+  while (std::getline(in, line)) {
+    const std::size_t tab = line.find('\t');
+    out[std::stoul(line.substr(0, tab))] = line.substr(tab + 1);
+  }
+  return out;
+}
+
+std::string default_output(const std::string& input, const std::string& suffix) {
+  return fs::path(input).stem().string() + suffix;
+}
+
+std::string join_columns(const std::vector<std::string>& v) {
+  std::string s;
+  for (std::size_t i = 0; i < v.size(); ++i) s += (i ? "," : "") + v[i];
+  return s;
+}
+
+}  // namespace
+
+// ---------------------------------------------------------------------------------------------
+
+struct StudyCommands::Impl {
+  CLI::App* spectrum = nullptr;
+  CLI::App* sweep = nullptr;
+  CLI::App* fragility = nullptr;
+
+  std::string input, output, boundary_output, curve_output;
+  int threads = -1;
+  bool quiet = false, no_progress = false, no_bisect = false;
+  std::string im = "pga", outcome = "overturned", body_name;
+  double level = 0.0, confidence = 0.95;
+  int curve_points = 50;
+
+  bool show_progress(const Processes& p) const {
+    return !quiet && !no_progress && p.root() && ::isatty(STDERR_FILENO);
+  }
+
+  study::RunOptions run_options(const Processes& p) const {
+    study::RunOptions o;
+    o.threads = threads > 0 ? threads : p.default_threads();
+    o.rank = p.rank();
+    o.ranks = p.size();
+    o.cancel = &g_cancel;
+    return o;
+  }
+
+  void check_threads() const {
+    if (threads == 0 || threads < -1) {
+      throw InputError("--threads: expected an integer >= 1, got " + std::to_string(threads));
+    }
+  }
+
+  int run_spectrum(const Processes& procs);
+  int run_sweep(const Processes& procs);
+  int run_fragility();
+};
+
+int StudyCommands::Impl::run_spectrum(const Processes& procs) {
+  check_threads();
+  io::SpectrumFile f = io::load_spectrum_file(input);
+  if (no_bisect) {
+    f.pulse.bisect = false;
+    f.record.bisect = false;
+  }
+  const Body body(f.body);
+  const double g = body.g();
+  if (output.empty()) output = default_output(input, ".spectrum.csv");
+  if (boundary_output.empty()) {
+    // next to the cells: "x.spectrum.csv" -> "x.boundary.csv", "x.csv" -> "x.boundary.csv"
+    fs::path p(output);
+    std::string stem = p.stem().string();
+    if (stem.ends_with(".spectrum")) stem.resize(stem.size() - 9);
+    boundary_output = (p.parent_path() / (stem + ".boundary.csv")).string();
+  }
+  const bool bisect = f.is_record ? f.record.bisect : f.pulse.bisect;
+
+  const SignalGuard signals;
+  std::atomic<std::size_t> completed{0};
+  study::RunOptions options = run_options(procs);
+  options.completed = &completed;
+  // the runs of rank 0's share, for its progress bar (the bisection's runs come on top)
+  const auto size = static_cast<std::size_t>(procs.size());
+  const auto rank = static_cast<std::size_t>(procs.rank());
+  const std::size_t units = f.is_record ? f.record.scales.size() : f.pulse.frequencies.size();
+  const std::size_t my_units = (units + size - 1 - rank) / size;
+  const std::size_t my_runs = f.is_record ? my_units : my_units * f.pulse.amplitudes.size();
+  const auto start = std::chrono::steady_clock::now();
+  study::SpectrumResult res =
+      with_progress(show_progress(procs), my_runs, completed,
+                    procs.size() > 1 ? fmt::format("  (rank 0 of {})", procs.size()) : "", [&] {
+                      return f.is_record ? study::compute_record_spectrum(body, f.record, options)
+                                         : study::compute_spectrum(body, f.pulse, options);
+                    });
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (procs.any(g_cancel.load())) {
+    if (procs.root()) return error("interrupted: nothing written", kExitRunFailed);
+    return kExitRunFailed;
+  }
+
+  // gather every computed cell's line and every boundary line on rank 0, by index
+  std::map<std::size_t, std::string> cells, bounds;
+  for (std::size_t i = 0; i < res.cells.size(); ++i) {
+    if (res.cells[i].computed) cells[i] = io::spectrum_row(res, res.cells[i], g);
+  }
+  for (std::size_t j = 0; j < res.boundary.size(); ++j) {
+    if (res.boundary[j].computed) {
+      bounds[j] = io::boundary_row(res, res.boundary[j], f.pulse.normalized || f.is_record, g);
+    }
+  }
+  std::map<std::size_t, std::string> all_cells = unpack(procs.gather(pack(cells)));
+  std::map<std::size_t, std::string> all_bounds = unpack(procs.gather(pack(bounds)));
+  if (!procs.root()) return kExitOk;
+  FLEXROCK_DEMAND(all_cells.size() == res.cells.size());
+  if (f.is_record && bisect && procs.size() > 1) {
+    // the record's rows came from several processes: take their outcomes from the lines
+    for (auto& [i, line] : all_cells) {
+      std::vector<std::string> fields;
+      std::stringstream ss(line);
+      for (std::string x; std::getline(ss, x, ',');) fields.push_back(x);
+      for (study::Outcome o :
+           {study::Outcome::kNoUplift, study::Outcome::kRocking,
+            study::Outcome::kOverturnedAfterImpacts, study::Outcome::kOverturnedWithoutImpact,
+            study::Outcome::kContactLost, study::Outcome::kStopped}) {
+        if (fields.at(7) == study::to_string(o)) res.cells[i].run.outcome = o;
+      }
+    }
+    const study::OverturnBoundary b = study::record_boundary(body, f.record, res.cells);
+    all_bounds[0] = io::boundary_row(res, b, true, g);
+  }
+  try {
+    io::write_atomically(output, [&](std::ostream& out) {
+      out << join_columns(io::spectrum_columns()) << '\n';
+      for (const auto& [i, line] : all_cells) out << line << '\n';
+    });
+    if (bisect) {
+      io::write_atomically(boundary_output, [&](std::ostream& out) {
+        out << join_columns(io::boundary_columns()) << '\n';
+        for (const auto& [j, line] : all_bounds) out << line << '\n';
+      });
+    }
+  } catch (const std::exception& e) {
+    return error(std::string("could not write the outputs: ") + e.what(), kExitRunFailed);
+  }
+
+  // a short account on stdout
+  std::map<std::string, std::size_t> counts;
+  for (const auto& [i, line] : all_cells) {
+    std::vector<std::string> fields;
+    std::stringstream ss(line);
+    for (std::string x; std::getline(ss, x, ',');) fields.push_back(x);
+    ++counts[fields.at(7)];
+  }
+  fmt::print("spectrum: {} ({}), body from {}\n", f.name,
+             f.is_record ? "record " + f.record_name + " x scales"
+                         : std::string(study::to_string(f.pulse.pulse)) + " pulse, " +
+                               (f.pulse.normalized ? "normalized" : "physical") + " axes",
+             f.body_source);
+  fmt::print("body: g tan(alpha1) = {:.4g} m/s^2, alpha1 = {:.4g} rad, p = {:.4g} rad/s\n",
+             g * res.tan_alpha, res.alpha, res.p);
+  fmt::print("cells: {}", all_cells.size());
+  for (const auto& [k, n] : counts) fmt::print(", {} {}", k, n);
+  fmt::print("\n");
+  if (!quiet) {
+    fmt::print("time: {:.3g} s on {} process{} x {} thread{}\n", seconds, procs.size(),
+               procs.size() == 1 ? "" : "es", options.threads, options.threads == 1 ? "" : "s");
+    fmt::print("wrote {}\n", output);
+    if (bisect) fmt::print("wrote {}\n", boundary_output);
+  }
+  return kExitOk;
+}
+
+int StudyCommands::Impl::run_sweep(const Processes& procs) {
+  check_threads();
+  const io::SweepManifest m = io::load_sweep_manifest(input);
+  study::validate(m.spec);
+  const std::vector<study::SweepRun> runs = study::sweep_runs(m.spec);
+  if (output.empty()) output = default_output(input, ".sweep.csv");
+  const std::string journal_path = output + ".partial";
+  const std::string rank_journal = journal_path + ".rank" + std::to_string(procs.rank());
+
+  // rank 0 opens the journal, merges journals that other processes left, and says what remains
+  std::string remaining_text;
+  std::unique_ptr<io::SweepJournal> journal;
+  std::size_t resumed = 0;
+  if (procs.root()) {
+    journal = std::make_unique<io::SweepJournal>(journal_path, m.hash, runs.size());
+    const std::string prefix = fs::path(journal_path).filename().string() + ".rank";
+    const fs::path dir = fs::path(journal_path).parent_path().empty()
+                             ? fs::path(".")
+                             : fs::path(journal_path).parent_path();
+    std::vector<fs::path> others;
+    for (const auto& e : fs::directory_iterator(dir)) {
+      if (e.path().filename().string().starts_with(prefix)) others.push_back(e.path());
+    }
+    for (const fs::path& p : others) {
+      io::SweepJournal other(p.string(), m.hash, runs.size());
+      for (const auto& [i, line] : other.finished()) {
+        if (!journal->finished().count(i)) journal->append(i, line);
+      }
+      other.remove();
+    }
+    resumed = journal->finished().size();
+    for (const study::SweepRun& r : runs) {
+      if (!journal->finished().count(r.index)) remaining_text += std::to_string(r.index) + "\n";
+    }
+  }
+  remaining_text = procs.broadcast(remaining_text);
+  std::vector<std::size_t> remaining;
+  {
+    std::istringstream in(remaining_text);
+    for (std::string s; std::getline(in, s);) remaining.push_back(std::stoul(s));
+  }
+  // this process's share: every size-th of the remaining runs
+  std::vector<std::size_t> mine;
+  for (std::size_t k = static_cast<std::size_t>(procs.rank()); k < remaining.size();
+       k += static_cast<std::size_t>(procs.size())) {
+    mine.push_back(remaining[k]);
+  }
+  std::unique_ptr<io::SweepJournal> own;
+  if (!procs.root() && !mine.empty()) {
+    own = std::make_unique<io::SweepJournal>(rank_journal, m.hash, runs.size());
+  }
+  io::SweepJournal* sink = procs.root() ? journal.get() : own.get();
+
+  const SignalGuard signals;
+  std::atomic<std::size_t> completed{0};
+  study::RunOptions options = run_options(procs);
+  options.rank = 0;
+  options.ranks = 1;  // the share is already this process's
+  options.completed = &completed;
+  if (!quiet && procs.root() && resumed > 0) {
+    fmt::print("resuming: {} of {} runs already in {}\n", resumed, runs.size(), journal_path);
+  }
+  const auto start = std::chrono::steady_clock::now();
+  std::map<std::size_t, std::string> lines;
+  if (!mine.empty()) {
+    with_progress(show_progress(procs), mine.size(), completed,
+                  procs.size() > 1 ? fmt::format("  (rank 0 of {})", procs.size()) : "", [&] {
+                    return study::run_sweep(m.spec, mine, options, [&](const study::SweepRow& r) {
+                      const std::string line = io::sweep_row(m.spec, r);
+                      sink->append(r.index, line);
+                    });
+                  });
+    for (const auto& [i, line] : sink->finished()) lines[i] = line;
+  }
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const bool cancelled = procs.any(g_cancel.load());
+  if (cancelled) {
+    // every finished run is in a journal; the next identical command goes on from there
+    if (procs.root()) {
+      return error(fmt::format("interrupted: finished runs are kept in {}{}; run the same "
+                               "command again to continue",
+                               journal_path, procs.size() > 1 ? " (and .rank<N> files)" : ""),
+                   kExitRunFailed);
+    }
+    return kExitRunFailed;
+  }
+  // gather the other processes' lines on rank 0
+  std::map<std::size_t, std::string> gathered =
+      unpack(procs.gather(procs.root() ? std::string() : pack(lines)));
+  if (!procs.root()) {
+    procs.barrier();  // rank 0 writes the result, then removes every journal
+    return kExitOk;
+  }
+  for (auto& [i, line] : gathered) {
+    if (!journal->finished().count(i)) journal->remember(i, line);
+  }
+  FLEXROCK_DEMAND(journal->finished().size() == runs.size());
+  try {
+    io::write_atomically(output, [&](std::ostream& out) {
+      out << join_columns(io::sweep_columns()) << '\n';
+      for (const auto& [i, line] : journal->finished()) out << line << '\n';
+    });
+  } catch (const std::exception& e) {
+    procs.barrier();
+    return error(std::string("could not write the outputs (the runs are kept in ") + journal_path +
+                     "): " + e.what(),
+                 kExitRunFailed);
+  }
+  std::size_t over = 0, stopped = 0;
+  for (const auto& [i, line] : journal->finished()) {
+    if (line.find(",overturned_") != std::string::npos) ++over;
+    // the outcome column, followed by overturned = 0 (the status column may say contact_lost
+    // for a body that left the floor past its overturning angle: that one is overturned)
+    if (line.find(",stopped,0,") != std::string::npos ||
+        line.find(",contact_lost,0,") != std::string::npos) {
+      ++stopped;
+    }
+  }
+  journal->remove();
+  procs.barrier();
+  for (int r = 1; r < procs.size(); ++r) {
+    std::error_code ec;
+    fs::remove(journal_path + ".rank" + std::to_string(r), ec);
+  }
+  fmt::print(
+      "sweep: {} bodies x {} records x {} scales = {} runs: {} overturned, {} not "
+      "classified (stopped or contact lost)\n",
+      m.spec.bodies.size(), m.spec.records.size(), m.spec.scales.size(), runs.size(), over,
+      stopped);
+  if (!quiet) {
+    fmt::print("time: {:.3g} s for {} new runs on {} process{} x {} thread{}\n", seconds,
+               remaining.size(), procs.size(), procs.size() == 1 ? "" : "es", options.threads,
+               options.threads == 1 ? "" : "s");
+    fmt::print("wrote {}\n", output);
+  }
+  return kExitOk;
+}
+
+int StudyCommands::Impl::run_fragility() {
+  const io::CsvTable table = io::read_csv_table(input);
+  io::FragilityQuery q;
+  q.im = im;
+  q.outcome = outcome;
+  q.level = level;
+  q.body = body_name;
+  if ((outcome == "theta" || outcome == "energy") && !(level > 0.0)) {
+    throw InputError("--level: expected a number > 0 with --outcome " + outcome);
+  }
+  if (!(confidence > 0.0 && confidence < 1.0)) {
+    throw InputError("--confidence: expected a number in (0, 1), got " +
+                     std::to_string(confidence));
+  }
+  const std::vector<io::FragilityData> data = io::fragility_data(table, q);
+  std::vector<study::FragilityFit> fits;
+  for (const io::FragilityData& d : data) {
+    try {
+      fits.push_back(study::fit_lognormal(d.im, d.failed, confidence));
+    } catch (const InputError& e) {
+      throw InputError(input + ": body '" + d.body + "': " + e.what());
+    }
+  }
+  const std::string what = outcome == "overturned" ? "overturning"
+                           : outcome == "theta"    ? fmt::format("max theta/alpha > {}", level)
+                                                   : fmt::format("energy lost > {} J", level);
+  const std::string unit = im == "pga" ? "m/s^2" : im == "pga_g" ? "g" : im == "pgv" ? "m/s" : "-";
+  for (std::size_t k = 0; k < data.size(); ++k) {
+    const study::FragilityFit& f = fits[k];
+    fmt::print("{}: P({} | {}) = Phi(ln(x/theta)/beta), {} runs ({} with the outcome{})\n",
+               data[k].body, what, im, f.samples, f.failures,
+               data[k].excluded ? fmt::format(", {} stopped runs left out", data[k].excluded) : "");
+    fmt::print("  theta = {:.5g} {}  [{:.5g}, {:.5g}] ({:.0f}% bounds)\n", f.theta, unit,
+               f.theta_lower, f.theta_upper, 100.0 * confidence);
+    fmt::print("  beta  = {:.5g}  [{:.5g}, {:.5g}]\n", f.beta, f.beta_lower, f.beta_upper);
+  }
+  try {
+    if (!output.empty()) {
+      io::write_atomically(output, [&](std::ostream& out) {
+        out << join_columns(io::fragility_columns()) << '\n';
+        for (std::size_t k = 0; k < data.size(); ++k)
+          out << io::fragility_row(data[k], fits[k]) << '\n';
+      });
+      if (!quiet) fmt::print("wrote {}\n", output);
+    }
+    if (!curve_output.empty()) {
+      io::write_atomically(curve_output, [&](std::ostream& out) {
+        out << "body,im,probability,lower,upper\n";
+        for (std::size_t k = 0; k < data.size(); ++k) {
+          const double lo = *std::min_element(data[k].im.begin(), data[k].im.end());
+          const double hi = *std::max_element(data[k].im.begin(), data[k].im.end());
+          for (int i = 0; i < curve_points; ++i) {
+            const double x =
+                curve_points == 1 ? lo : lo + (hi - lo) * i / static_cast<double>(curve_points - 1);
+            double l = 0.0, u = 0.0;
+            study::fragility_band(fits[k], x, l, u);
+            out << fmt::format("{},{},{},{},{}\n", data[k].body, x,
+                               study::fragility_probability(fits[k], x), l, u);
+          }
+        }
+      });
+      if (!quiet) fmt::print("wrote {}\n", curve_output);
+    }
+  } catch (const std::exception& e) {
+    return error(std::string("could not write the outputs: ") + e.what(), kExitRunFailed);
+  }
+  return kExitOk;
+}
+
+StudyCommands::StudyCommands(CLI::App& app) : impl_(std::make_unique<Impl>()) {
+  Impl& s = *impl_;
+  s.spectrum = app.add_subcommand(
+      "spectrum",
+      "Overturning spectrum: a pulse grid (amplitude x frequency) or one record x "
+      "scale factors; CSV of every cell and of the minimum overturning amplitudes");
+  s.spectrum->add_option("SPEC", s.input, "spectrum file (TOML, docs/studies.md)")->required();
+  s.spectrum->add_option("-o,--output", s.output, "cells CSV (default: <SPEC stem>.spectrum.csv)");
+  s.spectrum->add_option("--boundary", s.boundary_output,
+                         "minimum overturning amplitude CSV (default: <output stem>.boundary.csv)");
+  s.spectrum->add_flag("--no-bisect", s.no_bisect, "grid only: no bisection, no boundary file");
+
+  s.sweep =
+      app.add_subcommand("sweep",
+                         "Bodies x records x scale factors from a manifest: one CSV row per run; "
+                         "resumable (rerun the same command after an interruption)");
+  s.sweep->add_option("MANIFEST", s.input, "sweep manifest (TOML, docs/studies.md)")->required();
+  s.sweep->add_option("-o,--output", s.output, "CSV (default: <MANIFEST stem>.sweep.csv)");
+
+  for (CLI::App* c : {s.spectrum, s.sweep}) {
+    c->add_option("-j,--threads", s.threads,
+                  "worker threads (default: every core, shared among MPI processes)");
+    c->add_flag("-q,--quiet", s.quiet, "print only the results: no progress, no file list");
+    c->add_flag("--no-progress", s.no_progress, "no progress bar, even on a terminal");
+  }
+
+  s.fragility =
+      app.add_subcommand("fragility",
+                         "Lognormal fragility fit (maximum likelihood) from a sweep CSV, with "
+                         "confidence bounds");
+  s.fragility->add_option("SWEEP_CSV", s.input, "CSV written by flexrock sweep")->required();
+  s.fragility->add_option("--im", s.im, "intensity measure: pga (m/s^2), pga_g, pgv (m/s), scale")
+      ->check(CLI::IsMember({"pga", "pga_g", "pgv", "scale"}));
+  s.fragility
+      ->add_option("--outcome", s.outcome,
+                   "failure: overturned, theta (max theta/alpha > level), energy (energy lost > "
+                   "level J)")
+      ->check(CLI::IsMember({"overturned", "theta", "energy"}));
+  s.fragility->add_option("--level", s.level, "threshold of --outcome theta or energy");
+  s.fragility->add_option("--body", s.body_name, "fit only this body (default: each body)");
+  s.fragility->add_option("--confidence", s.confidence, "level of the bounds (default 0.95)");
+  s.fragility->add_option("-o,--output", s.output, "fit CSV (default: none)");
+  s.fragility->add_option("--curve", s.curve_output,
+                          "CSV of the curve and its confidence band over the data's IM range");
+  s.fragility->add_option("--curve-points", s.curve_points, "points of --curve (default 50)")
+      ->check(CLI::PositiveNumber);
+  s.fragility->add_flag("-q,--quiet", s.quiet, "no file list");
+}
+
+StudyCommands::~StudyCommands() = default;
+
+bool StudyCommands::selected() const {
+  return impl_->spectrum->parsed() || impl_->sweep->parsed() || impl_->fragility->parsed();
+}
+
+int StudyCommands::run() {
+  Impl& s = *impl_;
+  if (s.fragility->parsed()) return s.run_fragility();
+  const Processes procs;
+  try {
+    return s.spectrum->parsed() ? s.run_spectrum(procs) : s.run_sweep(procs);
+  } catch (const InputError& e) {
+    // every process reads the same input: one message is enough
+    if (procs.root()) return error(e.what(), kExitBadInput);
+    return kExitBadInput;
+  } catch (const std::exception& e) {
+    if (procs.root() || procs.size() > 1) return error(e.what(), kExitRunFailed);
+    return kExitRunFailed;
+  }
+}
+
+}  // namespace flexrock::cli

@@ -1,0 +1,66 @@
+// The outcome of one run of a study, in the classes of the overturning-spectrum literature
+// (Housner 1963; Zhang & Makris 2001): no uplift, rocking, overturned after impacts (their mode 1),
+// overturned without impact (their mode 2).
+#pragma once
+
+#include "flexrock/model/body.hpp"
+#include "flexrock/sim/simulate.hpp"
+
+namespace flexrock::study {
+
+enum class Outcome {
+  kNoUplift,                 // the body never left full contact
+  kRocking,                  // it uplifted (rocked) and did not overturn
+  kOverturnedAfterImpacts,   // it overturned after at least one impact
+  kOverturnedWithoutImpact,  // it overturned on its first uplift, with no impact before
+  kContactLost,  // the floor would have had to pull below the overturning angle: not classified
+  kStopped,      // the run could not go on (step collapse, limits): see the message
+};
+
+/// Stable lower-case name: "no_uplift", "rocking", "overturned_after_impacts",
+/// "overturned_without_impact", "contact_lost", "stopped".
+const char* to_string(Outcome o);
+
+/// The solver options a study starts from: the engine's, except that overturning is declared at
+/// |theta| = pi/2. Under a pulse or record that reverses, a body past its static overturning angle
+/// (the engine's default criterion, paper eq. 5) can still be brought back, so that criterion
+/// would put the overturning boundary too low (some 17% low for the one-sine pulse at
+/// omega_p/p = 4, alpha = 0.15: docs/validation.md).
+inline SimulationOptions study_solver_defaults() {
+  SimulationOptions o;
+  o.overturn = OverturnCriterion::kHalfPi;
+  return o;
+}
+
+/// True for both overturning classes.
+inline bool overturned(Outcome o) {
+  return o == Outcome::kOverturnedAfterImpacts || o == Outcome::kOverturnedWithoutImpact;
+}
+
+/// What a study keeps of one simulation.
+struct RunSummary {
+  Outcome outcome = Outcome::kNoUplift;
+  Status status = Status::kCompleted;
+  double max_theta_over_alpha = 0.0;  // [-] max over both edges of max|theta| / tipping angle
+  double max_theta = 0.0;             // [rad] largest |theta| on either edge
+  long impacts = 0;  // impacts before the end (chatter cut-offs and landings included); the
+                     // run ends at an overturn, so these are the impacts before it
+  double first_uplift_time = -1.0;   // [s] -1: never
+  double overturn_time = -1.0;       // [s] -1: did not overturn
+  int overturn_edge = 0;             // 1 or 2; 0: did not overturn
+  double max_impulse = 0.0;          // [N s] largest vertical impact impulse
+  double energy_lost = 0.0;          // [J] impacts + chatter cut-offs + material damping
+  double max_friction_demand = 0.0;  // [-] largest |F_I|/F_J, impulses included
+  double max_uplift = 0.0;           // [m] largest height of a lifted tipping point
+  double t_end = 0.0;                // [s] time reached
+};
+
+/// Classifies a finished simulation: overturned with zero impacts (Extremes::impacts, which
+/// counts every impact, chatter cut-off and landing in full contact; overturning ends the run)
+/// is "without impact", with one or more "after impacts"; otherwise rocking if it uplifted with a
+/// tilt > 0, else no uplift (an uplift event without any tilt, where the base acceleration only
+/// touches the static threshold, is no rocking). Tilts are normalised by Body::tipping_angle(edge)
+/// (atan(b/h) for a rigid body).
+RunSummary summarize(const Body& body, const SimulationResult& result);
+
+}  // namespace flexrock::study

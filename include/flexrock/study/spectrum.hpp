@@ -1,0 +1,127 @@
+// Overturning spectra: the outcome of a body under a family of pulses over a grid of amplitude x
+// frequency (or one record x scale factors), and the minimum overturning amplitude of every
+// frequency, refined by bisection between grid points. No files here: io/ and the CLI read specs
+// and write the CSV.
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "flexrock/excitation/ground_motion.hpp"
+#include "flexrock/model/body.hpp"
+#include "flexrock/sim/simulate.hpp"
+#include "flexrock/study/outcome.hpp"
+#include "flexrock/study/parallel.hpp"
+
+namespace flexrock::study {
+
+/// Pulse families of a spectrum (the functions of flexrock/excitation/pulses.hpp).
+enum class PulseType {
+  kOneSine,     // one_sine_pulse
+  kHalfSine,    // half_sine_pulse
+  kCycloidalA,  // cycloidal_pulse_a
+  kCycloidalB,  // cycloidal_pulse_b
+  kCycloidalC,  // cycloidal_pulse_c (n = 1)
+  kRicker,      // ricker_wavelet, centred at 3 sqrt(6) / omega_p
+};
+
+/// Stable names: "one_sine", "half_sine", "cycloidal_a", "cycloidal_b", "cycloidal_c", "ricker".
+const char* to_string(PulseType t);
+/// The pulse type of a name above; throws InputError listing the names otherwise.
+PulseType pulse_type_from_string(const std::string& name);
+
+/// A pulse spectrum: pulse type x amplitude x frequency.
+struct SpectrumSpec {
+  PulseType pulse = PulseType::kOneSine;
+  bool normalized = true;  // true: amplitudes a_p/(g tan alpha1) [-], frequencies omega_p/p [-];
+                           // false: amplitudes [m/s^2], frequencies omega_p [rad/s]
+  std::vector<double> amplitudes;   // the grid rows, strictly increasing, > 0
+  std::vector<double> frequencies;  // the grid columns, > 0
+  double free_periods = 4.0;        // [-] free motion after the pulse, in rocking periods 2 pi / p
+  bool bisect = true;               // refine the minimum overturning amplitude of every column
+  double bisection_tolerance = 1e-3;  // [-] relative width of the final bracket
+  // tolerances etc. (overturning at pi/2); t_end and output_dt are set per run
+  SimulationOptions solver = study_solver_defaults();
+};
+
+/// One record x scale factors: the same outcome classes and a minimum overturning scale.
+struct RecordSpectrumSpec {
+  GroundMotion motion;                // [m/s^2] the record at scale 1
+  std::vector<double> scales;         // [-] strictly increasing, > 0
+  double free_periods = 4.0;          // [-] free motion after the record, in 2 pi / p
+  bool bisect = true;                 // refine the minimum overturning scale
+  double bisection_tolerance = 1e-3;  // [-] relative width of the final bracket
+  // overturning at pi/2; t_end and output_dt are set per run
+  SimulationOptions solver = study_solver_defaults();
+};
+
+/// One cell of the grid.
+struct SpectrumCell {
+  std::size_t row = 0;        // amplitude (or scale) index
+  std::size_t column = 0;     // frequency index (0 for a record)
+  double amplitude = 0.0;     // in the spec's units (normalised, m/s^2, or the scale factor)
+  double frequency = 0.0;     // in the spec's units (normalised or rad/s; 0 for a record)
+  double amplitude_si = 0.0;  // [m/s^2] a_p (record: the scaled record's PGA)
+  double omega_si = 0.0;      // [rad/s] omega_p (record: 0)
+  bool computed = false;      // false: another process (rank) computed this cell
+  RunSummary run;
+};
+
+/// The minimum overturning amplitude of one frequency column.
+struct OverturnBoundary {
+  std::size_t column = 0;
+  double frequency = 0.0;  // in the spec's units
+  // where the first overturning cell of the column is (from the bottom), in the spec's units:
+  //   found: bracket [safe, overturning] refined by bisection to the tolerance;
+  //   below_grid: the lowest amplitude of the grid already overturns (min <= amplitudes[0]);
+  //   none: no cell of the column overturns.
+  enum class Kind { kFound, kBelowGrid, kNone } kind = Kind::kNone;
+  double safe = 0.0;         // largest amplitude known not to overturn below `overturning`
+  double overturning = 0.0;  // smallest amplitude found to overturn: the estimate of the minimum
+  int bisection_runs = 0;    // extra simulations the bisection took
+  bool computed = false;     // false: another process (rank) computed this column
+  Outcome mode = Outcome::kNoUplift;  // outcome at `overturning` (which overturning mode)
+};
+
+const char* to_string(OverturnBoundary::Kind k);  // "found", "below_grid", "none"
+
+struct SpectrumResult {
+  double alpha = 0.0;               // [rad] tipping angle of edge 1 (atan(b1/h) for a rigid body)
+  double tan_alpha = 0.0;           // [-] b1/h: g tan alpha is the static uplift acceleration
+  double p = 0.0;                   // [rad/s] Body::rocking_frequency()
+  std::vector<SpectrumCell> cells;  // row-major: cells[row * columns + column]
+  std::vector<OverturnBoundary> boundary;  // one per column (empty without bisection)
+};
+
+/// The motion of one cell: a_p [m/s^2], omega_p [rad/s], total duration [s].
+GroundMotion pulse_motion(PulseType type, double a_p, double omega_p, double duration);
+/// Length of the pulse [s] (where the free motion starts; Ricker: its centre + 3 sqrt(6)/omega).
+double pulse_length(PulseType type, double omega_p);
+
+/// Simulates one cell (a pulse spectrum cell) exactly as compute_spectrum does.
+RunSummary run_pulse_cell(const Body& body, const SpectrumSpec& spec, double a_p, double omega_p);
+/// Simulates one record cell exactly as compute_record_spectrum does.
+RunSummary run_record_cell(const Body& body, const RecordSpectrumSpec& spec, double scale);
+
+/// Every cell of the grid, then (if spec.bisect) the boundary of every column. Columns run in
+/// parallel (one task a column: its cells, then its bisection), so results do not depend on the
+/// thread count. With options.ranks > 1 only the columns with index % ranks == rank are
+/// computed (the others keep computed = false). Throws InputError for a bad spec.
+SpectrumResult compute_spectrum(const Body& body, const SpectrumSpec& spec,
+                                const RunOptions& options = {});
+/// The record spectrum: one column, rows = scales (spread over threads and ranks), then the
+/// boundary (the minimum overturning scale) when this process computed every row (ranks == 1).
+SpectrumResult compute_record_spectrum(const Body& body, const RecordSpectrumSpec& spec,
+                                       const RunOptions& options = {});
+/// The boundary of a record spectrum from its complete cells (after gathering them from every
+/// rank): what compute_record_spectrum adds itself with ranks == 1.
+OverturnBoundary record_boundary(const Body& body, const RecordSpectrumSpec& spec,
+                                 const std::vector<SpectrumCell>& cells);
+
+/// Runs a study computes for a spec: grid cells (the bisection adds more, not known ahead).
+inline std::size_t grid_runs(const SpectrumSpec& s) {
+  return s.amplitudes.size() * s.frequencies.size();
+}
+
+}  // namespace flexrock::study

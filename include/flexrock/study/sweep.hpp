@@ -1,0 +1,91 @@
+// Sweeps: bodies x records x scale factors (incremental dynamic analysis), one summary row per
+// run. No files here: io/study_files.hpp reads manifests and journals the rows.
+#pragma once
+
+#include <cstddef>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "flexrock/excitation/ground_motion.hpp"
+#include "flexrock/model/body.hpp"
+#include "flexrock/sim/simulate.hpp"
+#include "flexrock/study/outcome.hpp"
+#include "flexrock/study/parallel.hpp"
+
+namespace flexrock::study {
+
+/// Intensity measures of a ground motion's horizontal component.
+struct Intensity {
+  double pga = 0.0;  // [m/s^2] peak |Xddot| (over the samples, or a fine sampling of a function)
+  double pgv = 0.0;  // [m/s] peak |Xdot|, Xdot the trapezoidal integral of Xddot from 0 (no
+                     // baseline correction: a record's own processing is trusted)
+};
+
+/// PGA and PGV of `motion`. Sampled motions: over the samples. Analytic motions: on a uniform
+/// grid of `analytic_dt` [s] plus the breakpoints.
+Intensity intensity(const GroundMotion& motion, double analytic_dt = 1e-3);
+
+struct SweepBody {
+  std::string name;     // as the CSV shows it
+  BodyParameters body;  // validated by Body when the sweep runs
+};
+
+struct SweepRecord {
+  std::string name;     // as the CSV shows it
+  GroundMotion motion;  // [m/s^2] at scale 1
+};
+
+/// How the scale factors are given.
+enum class ScaleKind {
+  kFactor,     // `scales` are factors on every record
+  kTargetPga,  // `scales` are target PGAs [m/s^2]: the factor is target / the record's PGA
+};
+
+struct SweepSpec {
+  std::vector<SweepBody> bodies;
+  std::vector<SweepRecord> records;
+  ScaleKind scale_kind = ScaleKind::kFactor;
+  std::vector<double> scales;  // [-] factors, or [m/s^2] target PGAs (see scale_kind), > 0
+  double free_periods = 2.0;   // [-] free motion after the record, in rocking periods 2 pi / p
+  // tolerances etc. (overturning at pi/2); t_end and output_dt are set per run
+  SimulationOptions solver = study_solver_defaults();
+};
+
+/// One run of a sweep. Run indices are body-major: index = (body * records + record) * scales
+/// + scale_index.
+struct SweepRun {
+  std::size_t index = 0;
+  std::size_t body = 0, record = 0, scale_index = 0;
+};
+
+/// The runs of a spec in index order.
+std::vector<SweepRun> sweep_runs(const SweepSpec& spec);
+
+struct SweepRow {
+  std::size_t index = 0;  // run index (see SweepRun)
+  std::size_t body = 0, record = 0, scale_index = 0;
+  double scale = 0.0;     // [-] factor applied to the record
+  double pga = 0.0;       // [m/s^2] of the scaled record
+  double pgv = 0.0;       // [m/s] of the scaled record
+  double duration = 0.0;  // [s] simulated span (record + free motion)
+  std::string message;    // why a stopped run stopped (else empty)
+  RunSummary run;
+};
+
+/// Simulates one run of the sweep (what run_sweep does for that index).
+SweepRow run_sweep_one(const SweepSpec& spec, const SweepRun& run);
+
+/// Runs the given indices (all of sweep_runs(spec) if `indices` is empty; with options.ranks
+/// > 1 only those with index % ranks == rank) on options.threads workers. `on_row` (may be
+/// empty) is called, one call at a time, as each run finishes, in completion order, e.g. to
+/// journal it. Returns the rows computed here in index order. Throws InputError for a bad spec
+/// (checked before any run).
+std::vector<SweepRow> run_sweep(const SweepSpec& spec, const std::vector<std::size_t>& indices,
+                                const RunOptions& options = {},
+                                const std::function<void(const SweepRow&)>& on_row = {});
+
+/// Checks a spec (non-empty lists, valid bodies, positive scales); throws InputError.
+void validate(const SweepSpec& spec);
+
+}  // namespace flexrock::study

@@ -1,0 +1,862 @@
+#include "flexrock/io/study_files.hpp"
+
+#include <toml++/toml.h>
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <numbers>
+#include <optional>
+#include <ostream>
+#include <set>
+#include <sstream>
+#include <utility>
+
+#include "flexrock/core/error.hpp"
+#include "flexrock/core/types.hpp"
+#include "flexrock/io/case_file.hpp"
+#include "flexrock/io/records.hpp"
+
+namespace flexrock::io {
+
+namespace fs = std::filesystem;
+
+std::uint64_t fnv1a(const std::string& bytes, std::uint64_t h) {
+  for (const char c : bytes) {
+    h ^= static_cast<unsigned char>(c);
+    h *= 1099511628211ULL;
+  }
+  return h;
+}
+
+namespace {
+
+// shortest text that reads back to the same double
+std::string num(double v) {
+  if (!std::isfinite(v)) return std::isnan(v) ? "nan" : (v > 0 ? "inf" : "-inf");
+  char buf[32];
+  const auto r = std::to_chars(buf, buf + sizeof buf, v);
+  return std::string(buf, r.ptr);
+}
+
+std::string join(const std::vector<std::string>& v, const char* sep = ", ") {
+  std::string s;
+  for (std::size_t i = 0; i < v.size(); ++i) s += (i ? sep : "") + v[i];
+  return s;
+}
+
+std::string file_bytes(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+std::string resolve(const std::string& base_file, const std::string& p) {
+  const fs::path path(p);
+  if (path.is_absolute()) return p;
+  return (fs::path(base_file).parent_path() / path).lexically_normal().string();
+}
+
+std::size_t line_of(const toml::node& n) { return n.source().begin.line; }
+
+std::string describe(const toml::node& n) {
+  if (auto s = n.as_string()) return "\"" + s->get() + "\"";
+  if (auto i = n.as_integer()) return std::to_string(i->get());
+  if (auto f = n.as_floating_point()) return num(f->get());
+  if (auto b = n.as_boolean()) return b->get() ? "true" : "false";
+  if (n.is_array()) return "an array";
+  if (n.is_table()) return "a table";
+  return "a date or time";
+}
+
+// checked reads of one TOML table; errors name file, line and key
+class Keys {
+ public:
+  Keys(std::string file, const toml::table& t, std::string prefix)
+      : file_(std::move(file)), t_(t), prefix_(std::move(prefix)), line_(line_of(t)) {}
+
+  const std::string& file() const { return file_; }
+  std::size_t line() const { return line_; }
+  std::string full(std::string_view key) const { return prefix_ + std::string(key); }
+
+  [[noreturn]] void fail(std::string_view key, const std::string& msg) const {
+    const toml::node* n = t_.get(key);
+    const std::size_t at = n ? line_of(*n) : line_;
+    throw InputError(file_ + ":" + (at ? std::to_string(at) + ":" : std::string()) + " key '" +
+                     full(key) + "': " + msg);
+  }
+  [[noreturn]] void expected(std::string_view key, const std::string& what) const {
+    const toml::node* n = t_.get(key);
+    fail(key, "expected " + what + ", got " + (n ? describe(*n) : std::string("nothing")));
+  }
+  const toml::node* node(std::string_view key) {
+    known_.insert(std::string(key));
+    return t_.get(key);
+  }
+  bool has(std::string_view key) { return node(key) != nullptr; }
+  double to_number(const toml::node& n, std::string_view key, const std::string& what) const {
+    double v = 0.0;
+    if (auto i = n.as_integer()) {
+      v = static_cast<double>(i->get());
+    } else if (auto f = n.as_floating_point()) {
+      v = f->get();
+    } else {
+      fail(key, "expected " + what + ", got " + describe(n));
+    }
+    if (!std::isfinite(v)) fail(key, "expected " + what + " (finite), got " + num(v));
+    return v;
+  }
+  std::optional<double> number_opt(std::string_view key, const std::string& what) {
+    const toml::node* n = node(key);
+    if (!n) return std::nullopt;
+    return to_number(*n, key, what);
+  }
+  double positive_or(std::string_view key, double def, const std::string& unit) {
+    const std::string what = "a number > 0 " + unit;
+    const auto v = number_opt(key, what);
+    if (v && !(*v > 0.0)) expected(key, what);
+    return v.value_or(def);
+  }
+  double nonnegative_or(std::string_view key, double def, const std::string& unit) {
+    const std::string what = "a number >= 0 " + unit;
+    const auto v = number_opt(key, what);
+    if (v && !(*v >= 0.0)) expected(key, what);
+    return v.value_or(def);
+  }
+  long integer_or(std::string_view key, long def, long min, const std::string& what) {
+    const toml::node* n = node(key);
+    if (!n) return def;
+    const auto* i = n->as_integer();
+    if (!i || i->get() < min) expected(key, what);
+    return static_cast<long>(i->get());
+  }
+  bool boolean_or(std::string_view key, bool def) {
+    const toml::node* n = node(key);
+    if (!n) return def;
+    if (!n->is_boolean()) expected(key, "true or false");
+    return n->as_boolean()->get();
+  }
+  std::optional<std::string> string_opt(std::string_view key, const std::string& what) {
+    const toml::node* n = node(key);
+    if (!n) return std::nullopt;
+    if (!n->is_string()) expected(key, what);
+    return n->as_string()->get();
+  }
+  std::string string(std::string_view key, const std::string& what) {
+    auto v = string_opt(key, what);
+    if (!v) fail(key, "missing; expected " + what);
+    return *v;
+  }
+  std::string choice(std::string_view key, const std::vector<std::string>& choices,
+                     const std::string& def) {
+    const std::string what = "one of: " + join(choices);
+    const auto v = string_opt(key, "a string, " + what);
+    if (!v) {
+      if (def.empty()) fail(key, "missing; expected " + what);
+      return def;
+    }
+    if (std::find(choices.begin(), choices.end(), *v) != choices.end()) return *v;
+    const std::string hint = closest_key(*v, choices);
+    fail(key, "expected " + what + ", got \"" + *v + "\"" +
+                  (hint.empty() ? "" : " (did you mean \"" + hint + "\"?)"));
+  }
+  // a list of numbers: an array, or a table {start, stop, count[, spacing]} or {start, stop,
+  // step}
+  std::optional<std::vector<double>> grid_opt(std::string_view key, const std::string& unit) {
+    const toml::node* n = node(key);
+    if (!n) return std::nullopt;
+    const std::string what = "an array of numbers " + unit +
+                             " or a table {start, stop, count[, spacing = \"linear\"|\"log\"]} "
+                             "or {start, stop, step}";
+    std::vector<double> v;
+    if (const toml::array* a = n->as_array()) {
+      for (const toml::node& e : *a) v.push_back(to_number(e, key, what));
+      if (v.empty()) expected(key, what + " (not empty)");
+      return v;
+    }
+    const toml::table* t = n->as_table();
+    if (!t) expected(key, what);
+    Keys g(file_, *t, full(key) + ".");
+    const toml::node* s0 = g.node("start");
+    const toml::node* s1 = g.node("stop");
+    if (!s0 || !s1) fail(key, "expected " + what + ": 'start' and 'stop' are required");
+    const double start = g.to_number(*s0, "start", "a number " + unit);
+    const double stop = g.to_number(*s1, "stop", "a number " + unit);
+    if (!(stop >= start)) g.fail("stop", "expected stop >= start (" + num(start) + ")");
+    if (g.has("step")) {
+      if (g.has("count")) g.fail("step", "expected 'step' or 'count', not both");
+      const double step = g.positive_or("step", 1.0, unit);
+      // integer multiples of the step, so that values do not drift; stop included to 1e-9 steps
+      const auto n_steps = static_cast<long>(std::floor((stop - start) / step + 1e-9));
+      for (long i = 0; i <= n_steps; ++i) v.push_back(start + static_cast<double>(i) * step);
+    } else {
+      const long count = g.integer_or("count", 0, 1, "an integer >= 1 (grid points)");
+      if (count == 0) g.fail("count", "missing; expected 'count' (an integer >= 1) or 'step'");
+      const std::string spacing = g.choice("spacing", {"linear", "log"}, "linear");
+      if (spacing == "log" && !(start > 0.0)) g.fail("start", "expected start > 0 for a log grid");
+      for (long i = 0; i < count; ++i) {
+        const double f = count == 1 ? 0.0 : static_cast<double>(i) / static_cast<double>(count - 1);
+        v.push_back(spacing == "log" ? start * std::pow(stop / start, f)
+                                     : start + f * (stop - start));
+      }
+      if (count > 1) v.back() = stop;
+    }
+    g.finish();
+    return v;
+  }
+  std::optional<Keys> table_opt(std::string_view key) {
+    const toml::node* n = node(key);
+    if (!n) return std::nullopt;
+    if (!n->is_table()) expected(key, "a table");
+    return Keys(file_, *n->as_table(), full(key) + ".");
+  }
+  // an array of tables ([[key]])
+  std::vector<Keys> tables(std::string_view key, const std::string& what) {
+    const toml::node* n = node(key);
+    if (!n) {
+      throw InputError(file_ + ": [[" + full(key) + "]]: missing; expected " + what);
+    }
+    const toml::array* a = n->as_array();
+    if (!a || a->empty()) expected(key, "[[" + full(key) + "]] tables: " + what);
+    std::vector<Keys> out;
+    for (const toml::node& e : *a) {
+      if (!e.is_table()) expected(key, "[[" + full(key) + "]] tables: " + what);
+      out.emplace_back(file_, *e.as_table(), full(key) + ".");
+    }
+    return out;
+  }
+  void finish(const std::string& context = {}) const {
+    std::vector<std::string> known(known_.begin(), known_.end());
+    for (const auto& [k, v] : t_) {
+      const std::string key(k.str());
+      if (known_.count(key)) continue;
+      const std::string hint = closest_key(key, known);
+      std::string msg = "unknown key";
+      if (!context.empty()) msg += " " + context;
+      if (!hint.empty()) msg += " (did you mean '" + full(hint) + "'?)";
+      msg += "; expected one of: " + join(known);
+      const std::size_t at = k.source().begin.line ? k.source().begin.line : line_of(v);
+      throw InputError(file_ + ":" + std::to_string(at) + ": key '" + full(key) + "': " + msg);
+    }
+  }
+
+ private:
+  std::string file_;
+  const toml::table& t_;
+  std::string prefix_;
+  std::size_t line_ = 0;
+  std::set<std::string> known_;
+};
+
+toml::table parse(const std::string& path, const char* what) {
+  if (!fs::exists(path)) throw InputError(path + ": no such " + std::string(what));
+  if (fs::is_directory(path))
+    throw InputError(path + ": is a directory, expected a " + std::string(what));
+  try {
+    return toml::parse_file(path);
+  } catch (const toml::parse_error& e) {
+    const auto& b = e.source().begin;
+    throw InputError(path + ":" + std::to_string(b.line) + ":" + std::to_string(b.column) +
+                     ": TOML syntax error: " + std::string(e.description()));
+  }
+}
+
+// [solver]: the keys of a case file's [solver] table that make sense for a study
+void read_solver(Keys& r, SimulationOptions& o) {
+  o.rtol = r.positive_or("rtol", o.rtol, "[-]");
+  if (o.rtol < 1e-14) r.expected("rtol", "a number >= 1e-14 (double precision)");
+  o.atol = r.positive_or("atol", o.atol, "[-]");
+  o.max_step = r.positive_or("max_step", o.max_step, "[s]");
+  o.event_samples = static_cast<int>(
+      r.integer_or("event_samples", o.event_samples, 1, "an integer >= 1 (points a step)"));
+  const std::string crit =
+      r.choice("overturn", {"static_instability", "half_pi"},
+               o.overturn == OverturnCriterion::kHalfPi ? "half_pi" : "static_instability");
+  o.overturn =
+      crit == "half_pi" ? OverturnCriterion::kHalfPi : OverturnCriterion::kStaticInstability;
+  o.chatter_ratio = r.nonnegative_or("chatter_ratio", o.chatter_ratio, "[-]");
+  o.restitution_factor = r.nonnegative_or("restitution_factor", o.restitution_factor, "[-]");
+  if (const auto mu = r.number_opt("friction_coefficient", "a number > 0 [-]")) {
+    if (!(*mu > 0.0)) r.expected("friction_coefficient", "a number > 0 [-]");
+    o.friction_coefficient = *mu;
+  }
+  o.max_steps = r.integer_or("max_steps", o.max_steps, 1, "an integer >= 1");
+  o.max_impacts = r.integer_or("max_impacts", o.max_impacts, 1, "an integer >= 1");
+  r.finish("in [solver] (see docs/studies.md)");
+}
+
+const std::vector<std::string> kUnits = {"g", "m/s^2", "cm/s^2"};
+
+AccelUnit unit_of(const std::string& u) {
+  if (u == "g") return AccelUnit::kG;
+  if (u == "m/s^2") return AccelUnit::kMetersPerSecond2;
+  return AccelUnit::kCentimetersPerSecond2;
+}
+
+// a record table {file, format, units, dt, name}; the record's bytes go into `hash`
+Record read_record(Keys& r, std::string& name, std::uint64_t* hash) {
+  const std::string file = r.string("file", "a path to the record, relative to this file");
+  const std::string path = resolve(r.file(), file);
+  std::string ext = fs::path(file).extension().string();
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  const std::string format =
+      r.choice("format", {"at2", "single_column", "time_series"}, ext == ".at2" ? "at2" : "");
+  std::optional<std::string> units;
+  if (r.has("units")) units = r.choice("units", kUnits, "g");
+  std::optional<double> dt;
+  if (format == "single_column") {
+    dt = r.positive_or("dt", 0.0, "[s] (sample spacing)");
+    if (!(*dt > 0.0))
+      r.fail("dt", "missing; expected the sample spacing [s] of a single_column record");
+  }
+  if (format != "at2" && !units) {
+    r.fail("units",
+           "missing; expected one of: " + join(kUnits) + " (the units of the file's values)");
+  }
+  name = r.string_opt("name", "a string").value_or(fs::path(file).stem().string());
+  r.finish("for a record");
+  Record rec;
+  try {
+    if (format == "at2") {
+      rec = read_at2(path);
+      if (units && unit_of(*units) != rec.units) {
+        r.fail("units", "expected the units the AT2 file states (" +
+                            std::string(unit_name(rec.units)) + "), got \"" + *units + "\"");
+      }
+    } else if (format == "single_column") {
+      rec = read_single_column(path, *dt, unit_of(*units));
+    } else {
+      rec = read_time_series(path, unit_of(*units));
+    }
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    if (what.starts_with(r.file() + ":")) throw;
+    throw InputError(what + " (record named by key '" + r.full("file") + "' in " + r.file() + ")");
+  }
+  if (rec.npts() < 2) r.fail("file", "expected a record with at least 2 samples in " + path);
+  if (hash) *hash = fnv1a(file_bytes(path), *hash);
+  return rec;
+}
+
+void check_name(Keys& r, const std::string& key, const std::string& name) {
+  if (name.empty() || name.find_first_of(",\"\n\r") != std::string::npos) {
+    r.fail(key,
+           "expected a non-empty name without commas, quotes or line ends, got \"" + name + "\"");
+  }
+}
+
+}  // namespace
+
+// ---------------------------------------------------------------------------------------------
+// spectrum
+
+SpectrumFile load_spectrum_file(const std::string& path) {
+  const toml::table doc = parse(path, "spectrum file");
+  Keys top(path, doc, "");
+  SpectrumFile f;
+  f.source = path;
+  f.name = top.string_opt("name", "a string").value_or(fs::path(path).stem().string());
+  top.string_opt("description", "a string");
+  // the body: a path, or this file's own [body] table
+  const bool inline_body = top.has("body") && doc.get("body")->is_table();
+  if (inline_body) {
+    f.body_source = path;
+  } else {
+    const std::string b = top.string("body",
+                                     "a path to a case or body file with a [body] table, "
+                                     "or a [body] table here");
+    f.body_source = resolve(path, b);
+  }
+  f.body = load_body(f.body_source);
+  SimulationOptions solver = study::study_solver_defaults();
+  if (auto s = top.table_opt("solver")) read_solver(*s, solver);
+  auto sp = top.table_opt("spectrum");
+  if (!sp)
+    throw InputError(
+        path + ": table [spectrum]: missing; expected a [spectrum] table (see docs/studies.md)");
+  Keys& s = *sp;
+  const double free_periods = s.nonnegative_or("free_periods", 4.0, "[-] (rocking periods 2 pi/p)");
+  const bool bisect = s.boolean_or("bisect", true);
+  const double tol = s.positive_or("bisection_tolerance", 1e-3, "[-] (relative)");
+  if (!(tol < 1.0)) s.expected("bisection_tolerance", "a number in (0, 1)");
+  if (s.has("record")) {
+    f.is_record = true;
+    for (const char* k :
+         {"pulse", "axes", "amplitudes", "frequencies", "amplitude_units", "frequency_units"}) {
+      if (s.has(k)) s.fail(k, "not allowed with 'record' (a record spectrum has 'scales')");
+    }
+    const toml::node* rn = s.node("record");
+    if (!rn->is_table()) s.expected("record", "a table {file, format, units, dt, name}");
+    Keys rk(path, *rn->as_table(), "spectrum.record.");
+    const Record rec = read_record(rk, f.record_name, nullptr);
+    f.record.motion = rec.to_motion();
+    const auto scales = s.grid_opt("scales", "[-] (factors on the record)");
+    if (!scales) s.fail("scales", "missing; expected the scale factors of the record");
+    f.record.scales = *scales;
+    f.record.free_periods = free_periods;
+    f.record.bisect = bisect;
+    f.record.bisection_tolerance = tol;
+    f.record.solver = solver;
+  } else {
+    if (s.has("scales")) s.fail("scales", "only with 'record' (a pulse spectrum has 'amplitudes')");
+    const std::string pulse = s.choice(
+        "pulse", {"one_sine", "half_sine", "cycloidal_a", "cycloidal_b", "cycloidal_c", "ricker"},
+        "one_sine");
+    f.pulse.pulse = study::pulse_type_from_string(pulse);
+    const std::string axes = s.choice("axes", {"normalized", "physical"}, "normalized");
+    f.pulse.normalized = axes == "normalized";
+    double a_factor = 1.0, w_factor = 1.0;
+    if (f.pulse.normalized) {
+      if (s.has("amplitude_units")) s.fail("amplitude_units", "only with axes = \"physical\"");
+      if (s.has("frequency_units")) s.fail("frequency_units", "only with axes = \"physical\"");
+    } else {
+      a_factor = to_si_factor(unit_of(s.choice("amplitude_units", kUnits, "m/s^2")));
+      w_factor = s.choice("frequency_units", {"rad/s", "Hz"}, "rad/s") == "Hz"
+                     ? 2.0 * std::numbers::pi
+                     : 1.0;
+    }
+    const std::string au = f.pulse.normalized ? "[-] (a_p / (g tan alpha))" : "(amplitude_units)";
+    const std::string wu = f.pulse.normalized ? "[-] (omega_p / p)" : "(frequency_units)";
+    auto amps = s.grid_opt("amplitudes", au);
+    auto freqs = s.grid_opt("frequencies", wu);
+    if (!amps) s.fail("amplitudes", "missing; expected the grid of pulse amplitudes " + au);
+    if (!freqs) s.fail("frequencies", "missing; expected the grid of pulse frequencies " + wu);
+    for (double& a : *amps) a *= a_factor;
+    for (double& w : *freqs) w *= w_factor;
+    for (std::size_t i = 0; i < amps->size(); ++i) {
+      if (!((*amps)[i] > 0.0) || (i > 0 && !((*amps)[i] > (*amps)[i - 1]))) {
+        s.fail("amplitudes",
+               "expected strictly increasing values > 0 (the bisection needs an "
+               "ordered column), got " +
+                   num((*amps)[i]) + " at position " + std::to_string(i + 1));
+      }
+    }
+    for (std::size_t i = 0; i < freqs->size(); ++i) {
+      if (!((*freqs)[i] > 0.0)) {
+        s.fail("frequencies", "expected values > 0, got " + num((*freqs)[i]) + " at position " +
+                                  std::to_string(i + 1));
+      }
+    }
+    f.pulse.amplitudes = std::move(*amps);
+    f.pulse.frequencies = std::move(*freqs);
+    f.pulse.free_periods = free_periods;
+    f.pulse.bisect = bisect;
+    f.pulse.bisection_tolerance = tol;
+    f.pulse.solver = solver;
+  }
+  if (f.is_record) {
+    for (std::size_t i = 0; i < f.record.scales.size(); ++i) {
+      const double v = f.record.scales[i];
+      if (!(v > 0.0) || (i > 0 && !(v > f.record.scales[i - 1]))) {
+        s.fail("scales", "expected strictly increasing values > 0, got " + num(v) +
+                             " at position " + std::to_string(i + 1));
+      }
+    }
+  }
+  s.finish("in [spectrum] (see docs/studies.md)");
+  top.finish("at the top level of a spectrum file");
+  return f;
+}
+
+std::vector<std::string> spectrum_columns() {
+  return {"row",
+          "column",
+          "a_p_m_per_s2",
+          "a_p_over_g_tan_alpha",
+          "omega_p_rad_per_s",
+          "omega_p_over_p",
+          "scale",
+          "outcome",
+          "overturned",
+          "max_theta_over_alpha",
+          "impacts",
+          "first_uplift_time_s",
+          "overturn_time_s",
+          "energy_lost_J",
+          "status"};
+}
+
+std::string spectrum_row(const study::SpectrumResult& res, const study::SpectrumCell& c, double g) {
+  const bool record = c.omega_si == 0.0;
+  const study::RunSummary& r = c.run;
+  std::string s = std::to_string(c.row) + "," + std::to_string(c.column) + ",";
+  s += num(c.amplitude_si) + "," + num(c.amplitude_si / (g * res.tan_alpha)) + ",";
+  s += num(c.omega_si) + "," + num(c.omega_si / res.p) + ",";
+  s += (record ? num(c.amplitude) : std::string("")) + ",";
+  s += std::string(study::to_string(r.outcome)) + "," + (study::overturned(r.outcome) ? "1" : "0");
+  s += "," + num(r.max_theta_over_alpha) + "," + std::to_string(r.impacts) + ",";
+  s += num(r.first_uplift_time) + "," + num(r.overturn_time) + "," + num(r.energy_lost) + ",";
+  s += to_string(r.status);
+  return s;
+}
+
+std::vector<std::string> boundary_columns() {
+  return {"column",
+          "frequency",
+          "omega_p_rad_per_s",
+          "omega_p_over_p",
+          "kind",
+          "min_overturning",
+          "safe_below",
+          "min_overturning_m_per_s2",
+          "min_overturning_over_g_tan_alpha",
+          "mode",
+          "bisection_runs"};
+}
+
+std::string boundary_row(const study::SpectrumResult& res, const study::OverturnBoundary& b,
+                         bool normalized, double g) {
+  const bool record = res.cells.size() == 1 || (!res.cells.empty() && res.cells[0].omega_si == 0.0);
+  // the spec's units to m/s^2 and rad/s
+  double a_unit = normalized ? g * res.tan_alpha : 1.0;
+  double omega = normalized ? b.frequency * res.p : b.frequency;
+  if (record) {
+    const study::SpectrumCell& c0 = res.cells.front();
+    a_unit = c0.amplitude > 0.0 ? c0.amplitude_si / c0.amplitude : 0.0;  // the record's PGA
+    omega = 0.0;
+  }
+  const bool found = b.kind != study::OverturnBoundary::Kind::kNone;
+  std::string s = std::to_string(b.column) + "," + num(b.frequency) + "," + num(omega) + "," +
+                  num(omega / res.p) + "," + study::to_string(b.kind) + ",";
+  s += (found ? num(b.overturning) : "") + ",";
+  s += (b.kind == study::OverturnBoundary::Kind::kFound ? num(b.safe) : "") + ",";
+  s += (found ? num(b.overturning * a_unit) : "") + ",";
+  s += (found ? num(b.overturning * a_unit / (g * res.tan_alpha)) : "") + ",";
+  s += std::string(found ? study::to_string(b.mode) : "") + "," + std::to_string(b.bisection_runs);
+  return s;
+}
+
+void write_spectrum_csv(std::ostream& out, const study::SpectrumResult& result, double g) {
+  out << join(spectrum_columns(), ",") << '\n';
+  for (const study::SpectrumCell& c : result.cells) out << spectrum_row(result, c, g) << '\n';
+}
+
+void write_boundary_csv(std::ostream& out, const study::SpectrumResult& result, bool normalized,
+                        double g) {
+  out << join(boundary_columns(), ",") << '\n';
+  for (const study::OverturnBoundary& b : result.boundary) {
+    out << boundary_row(result, b, normalized, g) << '\n';
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// sweep
+
+SweepManifest load_sweep_manifest(const std::string& path) {
+  const toml::table doc = parse(path, "sweep manifest");
+  Keys top(path, doc, "");
+  SweepManifest m;
+  m.source = path;
+  std::uint64_t h = fnv1a(file_bytes(path));
+  top.string_opt("name", "a string");
+  top.string_opt("description", "a string");
+  m.spec.free_periods =
+      top.nonnegative_or("free_periods", 2.0, "[-] (rocking periods 2 pi/p after the record)");
+  std::set<std::string> names;
+  for (Keys& b : top.tables("body", "a body: { name, file } (a case or body file)")) {
+    study::SweepBody sb;
+    const std::string file = b.string("file", "a path to a case or body file with a [body] table");
+    const std::string full = resolve(path, file);
+    sb.name = b.string_opt("name", "a string").value_or(fs::path(file).stem().string());
+    check_name(b, "name", sb.name);
+    if (!names.insert("body:" + sb.name).second)
+      b.fail("name", "expected a unique body name, got \"" + sb.name + "\" twice");
+    b.finish("for a [[body]] (see docs/studies.md)");
+    try {
+      sb.body = load_body(full);
+    } catch (const InputError& e) {
+      throw InputError(std::string(e.what()) + " (body named by [[body]] at " + path + ":" +
+                       std::to_string(b.line()) + ")");
+    }
+    h = fnv1a(file_bytes(full), h);
+    m.spec.bodies.push_back(std::move(sb));
+  }
+  for (Keys& r : top.tables("record", "a record: { file, format, units, dt, name }")) {
+    study::SweepRecord sr;
+    const Record rec = read_record(r, sr.name, &h);
+    check_name(r, "name", sr.name);
+    if (!names.insert("record:" + sr.name).second)
+      r.fail("name", "expected a unique record name, got \"" + sr.name + "\" twice");
+    sr.motion = rec.to_motion();
+    m.spec.records.push_back(std::move(sr));
+  }
+  auto sk = top.table_opt("scales");
+  if (!sk)
+    throw InputError(path +
+                     ": table [scales]: missing; expected a [scales] table with 'factors' or "
+                     "'target_pga' (see docs/studies.md)");
+  const bool f = sk->has("factors");
+  const bool t = sk->has("target_pga");
+  if (f == t) sk->fail("factors", "expected exactly one of 'factors' [-] or 'target_pga'");
+  if (f) {
+    m.spec.scale_kind = study::ScaleKind::kFactor;
+    m.spec.scales = *sk->grid_opt("factors", "[-]");
+    if (sk->has("units")) sk->fail("units", "only with 'target_pga'");
+  } else {
+    m.spec.scale_kind = study::ScaleKind::kTargetPga;
+    const double u = to_si_factor(unit_of(sk->choice("units", kUnits, "g")));
+    m.spec.scales = *sk->grid_opt("target_pga", "(units)");
+    for (double& v : m.spec.scales) v *= u;
+  }
+  for (std::size_t i = 0; i < m.spec.scales.size(); ++i) {
+    if (!(m.spec.scales[i] > 0.0)) {
+      sk->fail(f ? "factors" : "target_pga", "expected values > 0, got " + num(m.spec.scales[i]) +
+                                                 " at position " + std::to_string(i + 1));
+    }
+  }
+  sk->finish("in [scales] (see docs/studies.md)");
+  if (auto s = top.table_opt("solver")) read_solver(*s, m.spec.solver);
+  top.finish("at the top level of a sweep manifest");
+  m.hash = h;
+  return m;
+}
+
+std::vector<std::string> sweep_columns() {
+  return {"index",         "body",
+          "record",        "scale",
+          "pga_m_per_s2",  "pga_g",
+          "pgv_m_per_s",   "duration_s",
+          "outcome",       "overturned",
+          "overturn_edge", "overturn_time_s",
+          "max_theta_rad", "max_theta_over_alpha",
+          "impacts",       "first_uplift_time_s",
+          "max_uplift_m",  "max_impulse_N_s",
+          "energy_lost_J", "max_friction_demand",
+          "status",        "message"};
+}
+
+std::string sweep_row(const study::SweepSpec& spec, const study::SweepRow& row) {
+  const study::RunSummary& r = row.run;
+  std::string msg = row.message;
+  for (char& c : msg) {
+    if (c == ',' || c == '"') c = ';';
+    if (c == '\n' || c == '\r') c = ' ';
+  }
+  std::string s = std::to_string(row.index) + "," + spec.bodies.at(row.body).name + "," +
+                  spec.records.at(row.record).name + ",";
+  s += num(row.scale) + "," + num(row.pga) + "," + num(row.pga / kStandardGravity) + "," +
+       num(row.pgv) + "," + num(row.duration) + ",";
+  s += std::string(study::to_string(r.outcome)) + "," + (study::overturned(r.outcome) ? "1" : "0");
+  s += "," + std::to_string(r.overturn_edge) + "," + num(r.overturn_time) + ",";
+  s += num(r.max_theta) + "," + num(r.max_theta_over_alpha) + "," + std::to_string(r.impacts) + ",";
+  s += num(r.first_uplift_time) + "," + num(r.max_uplift) + "," + num(r.max_impulse) + "," +
+       num(r.energy_lost) + "," + num(r.max_friction_demand) + ",";
+  s += std::string(to_string(r.status)) + "," + msg;
+  return s;
+}
+
+std::string journal_header(std::uint64_t hash, std::size_t runs) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(hash));
+  return "# flexrock sweep journal v1 manifest=" + std::string(buf) +
+         " runs=" + std::to_string(runs);
+}
+
+std::size_t row_index(const std::string& line) {
+  std::size_t idx = 0;
+  const auto r = std::from_chars(line.data(), line.data() + line.size(), idx);
+  if (r.ec != std::errc() || r.ptr == line.data() || r.ptr == line.data() + line.size() ||
+      *r.ptr != ',') {
+    throw InputError("expected a line starting with a run index, got \"" + line + "\"");
+  }
+  return idx;
+}
+
+SweepJournal::SweepJournal(std::string path, std::uint64_t hash, std::size_t runs)
+    : path_(std::move(path)) {
+  const std::string header = journal_header(hash, runs);
+  const std::size_t fields = sweep_columns().size();
+  if (fs::exists(path_)) {
+    std::string text = file_bytes(path_);
+    // keep whole lines only: a line without its end was torn by a kill
+    const std::size_t keep = text.rfind('\n') == std::string::npos ? 0 : text.rfind('\n') + 1;
+    text.resize(keep);
+    std::istringstream in(text);
+    std::string line;
+    if (!std::getline(in, line) || line != header) {
+      throw InputError(path_ + ": a sweep journal of another manifest or run count (" +
+                       (line.empty() ? std::string("empty header") : line) + ", expected " +
+                       header + "): delete it to start afresh, or run the manifest that wrote it");
+    }
+    std::size_t n = 1;
+    while (std::getline(in, line)) {
+      ++n;
+      const auto commas = static_cast<std::size_t>(std::count(line.begin(), line.end(), ','));
+      std::size_t idx = 0;
+      try {
+        idx = row_index(line);
+      } catch (const InputError& e) {
+        throw InputError(path_ + ":" + std::to_string(n) + ": corrupt sweep journal: " + e.what());
+      }
+      if (commas + 1 != fields || idx >= runs) {
+        throw InputError(path_ + ":" + std::to_string(n) + ": corrupt sweep journal line (" +
+                         std::to_string(commas + 1) + " fields, expected " +
+                         std::to_string(fields) + "): delete the journal to start afresh");
+      }
+      finished_[idx] = line;
+    }
+    fs::resize_file(path_, keep);
+    file_ = std::fopen(path_.c_str(), "ab");
+  } else {
+    file_ = std::fopen(path_.c_str(), "wb");
+    if (file_) {
+      std::fputs((header + "\n").c_str(), file_);
+      std::fflush(file_);
+    }
+  }
+  if (!file_) throw std::runtime_error("cannot open the sweep journal " + path_ + " for writing");
+}
+
+SweepJournal::~SweepJournal() {
+  if (file_) std::fclose(file_);
+}
+
+void SweepJournal::append(std::size_t index, const std::string& line) {
+  finished_[index] = line;
+  const std::string text = line + "\n";
+  // one write of the whole line, then to the operating system: a kill leaves whole lines or a
+  // torn last one, which the next opening drops
+  if (std::fwrite(text.data(), 1, text.size(), file_) != text.size() || std::fflush(file_) != 0) {
+    throw std::runtime_error("cannot write the sweep journal " + path_ + " (disk full?)");
+  }
+}
+
+void SweepJournal::remove() {
+  if (file_) std::fclose(file_);
+  file_ = nullptr;
+  std::error_code ec;
+  fs::remove(path_, ec);
+}
+
+// ---------------------------------------------------------------------------------------------
+// fragility input
+
+std::size_t CsvTable::column(const std::string& name) const {
+  const auto it = std::find(columns.begin(), columns.end(), name);
+  if (it == columns.end()) {
+    throw InputError(source + ":1: no column '" + name + "'; the columns are: " + join(columns));
+  }
+  return static_cast<std::size_t>(it - columns.begin());
+}
+
+CsvTable read_csv_table(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw InputError(path + ": cannot open the CSV file");
+  CsvTable t;
+  t.source = path;
+  auto split = [](const std::string& line) {
+    std::vector<std::string> out;
+    std::size_t start = 0;
+    for (;;) {
+      const std::size_t c = line.find(',', start);
+      out.push_back(line.substr(start, c == std::string::npos ? std::string::npos : c - start));
+      if (c == std::string::npos) break;
+      start = c + 1;
+    }
+    return out;
+  };
+  std::string line;
+  std::size_t n = 0;
+  while (std::getline(in, line)) {
+    ++n;
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (line.empty()) continue;
+    if (t.columns.empty()) {
+      t.columns = split(line);
+      continue;
+    }
+    std::vector<std::string> f = split(line);
+    if (f.size() != t.columns.size()) {
+      throw InputError(path + ":" + std::to_string(n) + ": expected " +
+                       std::to_string(t.columns.size()) + " fields (as the header), got " +
+                       std::to_string(f.size()));
+    }
+    t.rows.push_back(std::move(f));
+    t.lines.push_back(n);
+  }
+  if (t.columns.empty()) throw InputError(path + ": empty CSV file, expected a header row");
+  return t;
+}
+
+std::vector<FragilityData> fragility_data(const CsvTable& t, const FragilityQuery& q) {
+  const std::vector<std::string> ims = {"pga", "pga_g", "pgv", "scale"};
+  if (std::find(ims.begin(), ims.end(), q.im) == ims.end()) {
+    throw InputError("fragility: intensity measure '" + q.im + "': expected one of: " + join(ims));
+  }
+  const std::string im_col = q.im == "pga" ? "pga_m_per_s2" : q.im == "pgv" ? "pgv_m_per_s" : q.im;
+  std::string out_col;
+  if (q.outcome == "overturned") {
+    out_col = "overturned";
+  } else if (q.outcome == "theta") {
+    out_col = "max_theta_over_alpha";
+  } else if (q.outcome == "energy") {
+    out_col = "energy_lost_J";
+  } else {
+    throw InputError("fragility: outcome '" + q.outcome +
+                     "': expected one of: overturned, theta, energy");
+  }
+  const std::size_t ci = t.column(im_col), co = t.column(out_col), cb = t.column("body"),
+                    cs = t.column("outcome"), cv = t.column("overturned");
+  auto number = [&](std::size_t r, std::size_t c) {
+    double v = 0.0;
+    const std::string& s = t.rows[r][c];
+    const auto res = std::from_chars(s.data(), s.data() + s.size(), v);
+    if (res.ec != std::errc() || res.ptr != s.data() + s.size()) {
+      throw InputError(t.source + ":" + std::to_string(t.lines[r]) + ": column '" + t.columns[c] +
+                       "': expected a number, got \"" + s + "\"");
+    }
+    return v;
+  };
+  std::vector<FragilityData> out;
+  for (std::size_t r = 0; r < t.rows.size(); ++r) {
+    const std::string& body = t.rows[r][cb];
+    if (!q.body.empty() && body != q.body) continue;
+    auto it = std::find_if(out.begin(), out.end(),
+                           [&](const FragilityData& d) { return d.body == body; });
+    if (it == out.end()) {
+      out.push_back({body, {}, {}, 0});
+      it = out.end() - 1;
+    }
+    // not classified (a body that left the floor past its overturning angle is classified)
+    const std::string& outcome = t.rows[r][cs];
+    if (outcome == "stopped" || outcome == "contact_lost") {
+      ++it->excluded;
+      continue;
+    }
+    const double x = number(r, ci);
+    int y = 0;
+    if (q.outcome == "overturned") {
+      y = number(r, co) != 0.0 ? 1 : 0;
+    } else {
+      // an overturned body exceeds every tilt and energy level
+      y = (number(r, cv) != 0.0 || number(r, co) > q.level) ? 1 : 0;
+    }
+    it->im.push_back(x);
+    it->failed.push_back(y);
+  }
+  if (out.empty()) {
+    throw InputError(
+        t.source + ": " +
+        (q.body.empty() ? std::string("no rows") : "no rows of body '" + q.body + "'"));
+  }
+  return out;
+}
+
+std::vector<std::string> fragility_columns() {
+  return {"body",        "samples",     "failures",   "excluded",      "theta",
+          "beta",        "se_ln_theta", "se_beta",    "confidence",    "theta_lower",
+          "theta_upper", "beta_lower",  "beta_upper", "log_likelihood"};
+}
+
+std::string fragility_row(const FragilityData& d, const study::FragilityFit& f) {
+  return d.body + "," + std::to_string(f.samples) + "," + std::to_string(f.failures) + "," +
+         std::to_string(d.excluded) + "," + num(f.theta) + "," + num(f.beta) + "," +
+         num(f.se_ln_theta) + "," + num(f.se_beta) + "," + num(f.confidence) + "," +
+         num(f.theta_lower) + "," + num(f.theta_upper) + "," + num(f.beta_lower) + "," +
+         num(f.beta_upper) + "," + num(f.log_likelihood);
+}
+
+}  // namespace flexrock::io

@@ -1,0 +1,300 @@
+#include "flexrock/study/spectrum.hpp"
+
+#include <cmath>
+#include <numbers>
+#include <string>
+
+#include "flexrock/core/error.hpp"
+#include "flexrock/excitation/pulses.hpp"
+#include "flexrock/study/sweep.hpp"
+
+namespace flexrock::study {
+
+namespace {
+
+constexpr double kTwoPi = 2.0 * std::numbers::pi;
+
+// the free-vibration span after the excitation [s]
+double free_span(const Body& body, double free_periods) {
+  return free_periods * kTwoPi / body.rocking_frequency();
+}
+
+void check_grid(const std::vector<double>& v, const char* name, bool increasing) {
+  FLEXROCK_THROW_UNLESS(!v.empty(),
+                        std::string("spectrum: ") + name + ": expected at least one value");
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    FLEXROCK_THROW_UNLESS(std::isfinite(v[i]) && v[i] > 0.0,
+                          std::string("spectrum: ") + name + "[" + std::to_string(i) +
+                              "]: expected a finite number > 0, got " + std::to_string(v[i]));
+    if (increasing && i > 0) {
+      FLEXROCK_THROW_UNLESS(v[i] > v[i - 1], std::string("spectrum: ") + name +
+                                                 ": expected strictly increasing values (at " +
+                                                 std::to_string(i) + ")");
+    }
+  }
+}
+
+void check_common(double free_periods, double tolerance) {
+  FLEXROCK_THROW_UNLESS(std::isfinite(free_periods) && free_periods >= 0.0,
+                        "spectrum: free_periods: expected a number >= 0");
+  FLEXROCK_THROW_UNLESS(std::isfinite(tolerance) && tolerance > 0.0 && tolerance < 1.0,
+                        "spectrum: bisection_tolerance: expected a number in (0, 1)");
+}
+
+SimulationOptions run_options(const SimulationOptions& solver, double t_end) {
+  SimulationOptions o = solver;
+  o.t_end = t_end;
+  o.output_dt = 0.0;
+  o.progress = nullptr;
+  return o;
+}
+
+// one column's boundary: bisection between the last safe and the first overturning grid row
+template <class Run>
+OverturnBoundary bisect_column(const std::vector<double>& rows,
+                               const std::vector<SpectrumCell>& cells, std::size_t columns,
+                               std::size_t column, double frequency, bool bisect, double tol,
+                               const Run& run) {
+  OverturnBoundary b;
+  b.column = column;
+  b.frequency = frequency;
+  b.computed = true;
+  std::size_t k = rows.size();
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    if (overturned(cells[i * columns + column].run.outcome)) {
+      k = i;
+      break;
+    }
+  }
+  if (k == rows.size()) return b;  // kNone
+  b.mode = cells[k * columns + column].run.outcome;
+  b.overturning = rows[k];
+  if (k == 0) {
+    b.kind = OverturnBoundary::Kind::kBelowGrid;
+    return b;
+  }
+  b.kind = OverturnBoundary::Kind::kFound;
+  b.safe = rows[k - 1];
+  if (!bisect) return b;
+  while (b.overturning - b.safe > tol * b.overturning) {
+    const double mid = 0.5 * (b.safe + b.overturning);
+    const RunSummary s = run(mid);
+    ++b.bisection_runs;
+    if (overturned(s.outcome)) {
+      b.overturning = mid;
+      b.mode = s.outcome;
+    } else {
+      b.safe = mid;
+    }
+  }
+  return b;
+}
+
+bool mine(std::size_t index, const RunOptions& o) {
+  return o.ranks <= 1 ||
+         index % static_cast<std::size_t>(o.ranks) == static_cast<std::size_t>(o.rank);
+}
+
+void check_ranks(const RunOptions& o) {
+  FLEXROCK_THROW_UNLESS(o.ranks >= 1 && o.rank >= 0 && o.rank < o.ranks,
+                        "run options: expected 0 <= rank < ranks");
+}
+
+}  // namespace
+
+const char* to_string(PulseType t) {
+  switch (t) {
+    case PulseType::kOneSine:
+      return "one_sine";
+    case PulseType::kHalfSine:
+      return "half_sine";
+    case PulseType::kCycloidalA:
+      return "cycloidal_a";
+    case PulseType::kCycloidalB:
+      return "cycloidal_b";
+    case PulseType::kCycloidalC:
+      return "cycloidal_c";
+    case PulseType::kRicker:
+      return "ricker";
+  }
+  return "unknown";
+}
+
+PulseType pulse_type_from_string(const std::string& name) {
+  for (PulseType t : {PulseType::kOneSine, PulseType::kHalfSine, PulseType::kCycloidalA,
+                      PulseType::kCycloidalB, PulseType::kCycloidalC, PulseType::kRicker}) {
+    if (name == to_string(t)) return t;
+  }
+  throw InputError(
+      "expected a pulse type, one of: one_sine, half_sine, cycloidal_a, "
+      "cycloidal_b, cycloidal_c, ricker; got \"" +
+      name + "\"");
+}
+
+const char* to_string(OverturnBoundary::Kind k) {
+  switch (k) {
+    case OverturnBoundary::Kind::kFound:
+      return "found";
+    case OverturnBoundary::Kind::kBelowGrid:
+      return "below_grid";
+    case OverturnBoundary::Kind::kNone:
+      return "none";
+  }
+  return "unknown";
+}
+
+double pulse_length(PulseType type, double omega_p) {
+  switch (type) {
+    case PulseType::kHalfSine:
+      return std::numbers::pi / omega_p;
+    case PulseType::kCycloidalC:
+      return (1.5 - cycloidal_c_phase(1) / std::numbers::pi) * kTwoPi / omega_p;
+    case PulseType::kRicker:
+      return 6.0 * std::sqrt(6.0) / omega_p;  // centre 3 sqrt(6)/omega plus as much again
+    default:
+      return kTwoPi / omega_p;
+  }
+}
+
+GroundMotion pulse_motion(PulseType type, double a_p, double omega_p, double duration) {
+  switch (type) {
+    case PulseType::kOneSine:
+      return one_sine_pulse(a_p, omega_p, duration);
+    case PulseType::kHalfSine:
+      return half_sine_pulse(a_p, omega_p, duration);
+    case PulseType::kCycloidalA:
+      return cycloidal_pulse_a(a_p, omega_p, duration);
+    case PulseType::kCycloidalB:
+      return cycloidal_pulse_b(a_p, omega_p, duration);
+    case PulseType::kCycloidalC:
+      return cycloidal_pulse_c(a_p, omega_p, duration, 1);
+    case PulseType::kRicker:
+      return ricker_wavelet(a_p, omega_p, 3.0 * std::sqrt(6.0) / omega_p, duration);
+  }
+  return GroundMotion::none(duration);
+}
+
+RunSummary run_pulse_cell(const Body& body, const SpectrumSpec& spec, double a_p, double omega_p) {
+  const double t_pulse = pulse_length(spec.pulse, omega_p);
+  const double duration = t_pulse + free_span(body, spec.free_periods);
+  const GroundMotion motion = pulse_motion(spec.pulse, a_p, omega_p, duration);
+  // a rigid body in full contact when a pulse that ends has ended stays at rest: no need to
+  // follow the free motion (the Ricker wavelet never quite ends)
+  if (body.modes() == 0 && spec.pulse != PulseType::kRicker && spec.free_periods > 0.0) {
+    const SimulationResult r = simulate(body, motion, {}, run_options(spec.solver, t_pulse));
+    if (r.status != Status::kCompleted || r.final_phase == Phase::kFullContact) {
+      RunSummary s = summarize(body, r);
+      if (r.status == Status::kCompleted) s.t_end = duration;
+      return s;
+    }
+  }
+  return summarize(body, simulate(body, motion, {}, run_options(spec.solver, duration)));
+}
+
+RunSummary run_record_cell(const Body& body, const RecordSpectrumSpec& spec, double scale) {
+  const double duration = spec.motion.duration() + free_span(body, spec.free_periods);
+  return summarize(
+      body, simulate(body, spec.motion.scaled(scale), {}, run_options(spec.solver, duration)));
+}
+
+SpectrumResult compute_spectrum(const Body& body, const SpectrumSpec& spec,
+                                const RunOptions& options) {
+  check_grid(spec.amplitudes, "amplitudes", true);
+  check_grid(spec.frequencies, "frequencies", false);
+  check_common(spec.free_periods, spec.bisection_tolerance);
+  check_ranks(options);
+  SpectrumResult res;
+  res.tan_alpha = body.alpha1();
+  res.alpha = body.tipping_angle(1);
+  res.p = body.rocking_frequency();
+  const double a_unit = spec.normalized ? body.g() * body.alpha1() : 1.0;
+  const double w_unit = spec.normalized ? res.p : 1.0;
+  const std::size_t rows = spec.amplitudes.size();
+  const std::size_t cols = spec.frequencies.size();
+  res.cells.resize(rows * cols);
+  if (spec.bisect) res.boundary.resize(cols);
+  for (std::size_t i = 0; i < rows; ++i) {
+    for (std::size_t j = 0; j < cols; ++j) {
+      SpectrumCell& c = res.cells[i * cols + j];
+      c.row = i;
+      c.column = j;
+      c.amplitude = spec.amplitudes[i];
+      c.frequency = spec.frequencies[j];
+      c.amplitude_si = c.amplitude * a_unit;
+      c.omega_si = c.frequency * w_unit;
+    }
+  }
+  // the columns this process computes
+  std::vector<std::size_t> todo;
+  for (std::size_t j = 0; j < cols; ++j) {
+    if (mine(j, options)) todo.push_back(j);
+  }
+  parallel_for(
+      todo.size(), options.threads,
+      [&](std::size_t k) {
+        const std::size_t j = todo[k];
+        const double omega = spec.frequencies[j] * w_unit;
+        for (std::size_t i = 0; i < rows; ++i) {
+          SpectrumCell& c = res.cells[i * cols + j];
+          c.run = run_pulse_cell(body, spec, c.amplitude_si, omega);
+          c.computed = true;
+          if (options.completed) options.completed->fetch_add(1, std::memory_order_relaxed);
+        }
+        if (spec.bisect) {
+          res.boundary[j] = bisect_column(spec.amplitudes, res.cells, cols, j, spec.frequencies[j],
+                                          true, spec.bisection_tolerance, [&](double a) {
+                                            return run_pulse_cell(body, spec, a * a_unit, omega);
+                                          });
+        }
+      },
+      options.cancel);
+  return res;
+}
+
+SpectrumResult compute_record_spectrum(const Body& body, const RecordSpectrumSpec& spec,
+                                       const RunOptions& options) {
+  check_grid(spec.scales, "scales", true);
+  check_common(spec.free_periods, spec.bisection_tolerance);
+  check_ranks(options);
+  FLEXROCK_THROW_UNLESS(spec.motion.duration() > 0.0, "spectrum: the record is empty");
+  SpectrumResult res;
+  res.tan_alpha = body.alpha1();
+  res.alpha = body.tipping_angle(1);
+  res.p = body.rocking_frequency();
+  const double pga = intensity(spec.motion).pga;  // sampled or analytic
+  const std::size_t rows = spec.scales.size();
+  res.cells.resize(rows);
+  for (std::size_t i = 0; i < rows; ++i) {
+    SpectrumCell& c = res.cells[i];
+    c.row = i;
+    c.amplitude = spec.scales[i];
+    c.amplitude_si = spec.scales[i] * pga;
+  }
+  // rows spread over ranks and threads; the bisection (one column) runs on rank 0 afterwards
+  std::vector<std::size_t> todo;
+  for (std::size_t i = 0; i < rows; ++i) {
+    if (mine(i, options)) todo.push_back(i);
+  }
+  parallel_for(
+      todo.size(), options.threads,
+      [&](std::size_t k) {
+        SpectrumCell& c = res.cells[todo[k]];
+        c.run = run_record_cell(body, spec, c.amplitude);
+        c.computed = true;
+        if (options.completed) options.completed->fetch_add(1, std::memory_order_relaxed);
+      },
+      options.cancel);
+  const bool cancelled = options.cancel && options.cancel->load();
+  if (options.ranks == 1 && spec.bisect && !cancelled) {
+    res.boundary = {record_boundary(body, spec, res.cells)};
+  }
+  return res;
+}
+
+OverturnBoundary record_boundary(const Body& body, const RecordSpectrumSpec& spec,
+                                 const std::vector<SpectrumCell>& cells) {
+  return bisect_column(spec.scales, cells, 1, 0, 0.0, spec.bisect, spec.bisection_tolerance,
+                       [&](double s) { return run_record_cell(body, spec, s); });
+}
+
+}  // namespace flexrock::study

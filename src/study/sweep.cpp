@@ -1,0 +1,178 @@
+#include "flexrock/study/sweep.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <mutex>
+#include <numbers>
+
+#include "flexrock/core/error.hpp"
+
+namespace flexrock::study {
+
+Intensity intensity(const GroundMotion& motion, double analytic_dt) {
+  Intensity out;
+  std::vector<double> t, a;
+  if (motion.is_sampled()) {
+    t = motion.times();
+    a = motion.horizontal();
+  } else {
+    FLEXROCK_THROW_UNLESS(analytic_dt > 0.0, "intensity: analytic_dt must be > 0");
+    // a uniform grid plus the breakpoints, where pulses jump or kink
+    const double end = motion.duration();
+    const auto n = static_cast<std::size_t>(std::ceil(end / analytic_dt));
+    for (std::size_t i = 0; i <= n; ++i) {
+      t.push_back(std::min(end, static_cast<double>(i) * analytic_dt));
+    }
+    GroundMotion::Cursor c;
+    for (double b = motion.next_breakpoint(0.0, c); std::isfinite(b) && b <= end;
+         b = motion.next_breakpoint(b, c)) {
+      t.push_back(b);
+    }
+    std::sort(t.begin(), t.end());
+    t.erase(std::unique(t.begin(), t.end()), t.end());
+    a.reserve(t.size());
+    for (double ti : t) a.push_back(motion.at(ti).x);
+  }
+  double v = 0.0;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    out.pga = std::max(out.pga, std::abs(a[i]));
+    if (i > 0) v += 0.5 * (a[i] + a[i - 1]) * (t[i] - t[i - 1]);
+    out.pgv = std::max(out.pgv, std::abs(v));
+  }
+  return out;
+}
+
+std::vector<SweepRun> sweep_runs(const SweepSpec& spec) {
+  std::vector<SweepRun> runs;
+  runs.reserve(spec.bodies.size() * spec.records.size() * spec.scales.size());
+  for (std::size_t b = 0; b < spec.bodies.size(); ++b) {
+    for (std::size_t r = 0; r < spec.records.size(); ++r) {
+      for (std::size_t s = 0; s < spec.scales.size(); ++s) {
+        runs.push_back({runs.size(), b, r, s});
+      }
+    }
+  }
+  return runs;
+}
+
+void validate(const SweepSpec& spec) {
+  FLEXROCK_THROW_UNLESS(!spec.bodies.empty(), "sweep: expected at least one body");
+  FLEXROCK_THROW_UNLESS(!spec.records.empty(), "sweep: expected at least one record");
+  FLEXROCK_THROW_UNLESS(!spec.scales.empty(), "sweep: expected at least one scale");
+  for (std::size_t i = 0; i < spec.scales.size(); ++i) {
+    FLEXROCK_THROW_UNLESS(std::isfinite(spec.scales[i]) && spec.scales[i] > 0.0,
+                          "sweep: scales[" + std::to_string(i) +
+                              "]: expected a finite number > 0, got " +
+                              std::to_string(spec.scales[i]));
+  }
+  FLEXROCK_THROW_UNLESS(std::isfinite(spec.free_periods) && spec.free_periods >= 0.0,
+                        "sweep: free_periods: expected a number >= 0");
+  for (const SweepBody& b : spec.bodies) {
+    try {
+      const Body body(b.body);
+    } catch (const InputError& e) {
+      throw InputError("sweep: body '" + b.name + "': " + e.what());
+    }
+  }
+  for (const SweepRecord& r : spec.records) {
+    FLEXROCK_THROW_UNLESS(r.motion.duration() > 0.0,
+                          "sweep: record '" + r.name + "': expected a record lasting > 0 s");
+    if (spec.scale_kind == ScaleKind::kTargetPga) {
+      FLEXROCK_THROW_UNLESS(
+          intensity(r.motion).pga > 0.0,
+          "sweep: record '" + r.name + "': PGA is zero, it cannot be scaled to a target PGA");
+    }
+  }
+}
+
+namespace {
+
+SweepRow run_one(const SweepSpec& spec, const SweepRun& run, const Body& body,
+                 const Intensity& im) {
+  SweepRow row;
+  row.index = run.index;
+  row.body = run.body;
+  row.record = run.record;
+  row.scale_index = run.scale_index;
+  const double s = spec.scales[run.scale_index];
+  row.scale = spec.scale_kind == ScaleKind::kTargetPga ? s / im.pga : s;
+  row.pga = row.scale * im.pga;
+  row.pgv = row.scale * im.pgv;
+  const GroundMotion& m = spec.records[run.record].motion;
+  row.duration =
+      m.duration() + spec.free_periods * 2.0 * std::numbers::pi / body.rocking_frequency();
+  SimulationOptions o = spec.solver;
+  o.t_end = row.duration;
+  o.output_dt = 0.0;
+  o.progress = nullptr;
+  const SimulationResult r = simulate(body, m.scaled(row.scale), {}, o);
+  row.run = summarize(body, r);
+  if (r.status == Status::kStopped || r.status == Status::kContactLost) row.message = r.message;
+  return row;
+}
+
+}  // namespace
+
+SweepRow run_sweep_one(const SweepSpec& spec, const SweepRun& run) {
+  const Body body(spec.bodies.at(run.body).body);
+  return run_one(spec, run, body, intensity(spec.records.at(run.record).motion));
+}
+
+std::vector<SweepRow> run_sweep(const SweepSpec& spec, const std::vector<std::size_t>& indices,
+                                const RunOptions& options,
+                                const std::function<void(const SweepRow&)>& on_row) {
+  validate(spec);
+  FLEXROCK_THROW_UNLESS(options.ranks >= 1 && options.rank >= 0 && options.rank < options.ranks,
+                        "run options: expected 0 <= rank < ranks");
+  const std::vector<SweepRun> all = sweep_runs(spec);
+  std::vector<std::size_t> todo;
+  const auto ranks = static_cast<std::size_t>(options.ranks);
+  const auto rank = static_cast<std::size_t>(options.rank);
+  auto take = [&](std::size_t i) {
+    FLEXROCK_THROW_UNLESS(i < all.size(), "sweep: run index " + std::to_string(i) +
+                                              " out of range (" + std::to_string(all.size()) +
+                                              " runs)");
+    if (i % ranks == rank) todo.push_back(i);
+  };
+  if (indices.empty()) {
+    for (std::size_t i = 0; i < all.size(); ++i) take(i);
+  } else {
+    for (std::size_t i : indices) take(i);
+    std::sort(todo.begin(), todo.end());
+    todo.erase(std::unique(todo.begin(), todo.end()), todo.end());
+  }
+  // shared, read-only across threads
+  std::vector<Body> bodies;
+  bodies.reserve(spec.bodies.size());
+  for (const SweepBody& b : spec.bodies) bodies.emplace_back(b.body);
+  std::vector<Intensity> im;
+  im.reserve(spec.records.size());
+  for (const SweepRecord& r : spec.records) im.push_back(intensity(r.motion));
+
+  std::vector<SweepRow> rows(todo.size());
+  std::mutex row_mutex;
+  parallel_for(
+      todo.size(), options.threads,
+      [&](std::size_t k) {
+        const SweepRun& run = all[todo[k]];
+        rows[k] = run_one(spec, run, bodies[run.body], im[run.record]);
+        if (on_row) {
+          const std::lock_guard lock(row_mutex);
+          on_row(rows[k]);
+        }
+        if (options.completed) options.completed->fetch_add(1, std::memory_order_relaxed);
+      },
+      options.cancel);
+  // with a cancel, unfinished rows are dropped (index 0 of a default row is ambiguous: keep by
+  // position)
+  if (options.cancel && options.cancel->load()) {
+    std::vector<SweepRow> done;
+    for (std::size_t k = 0; k < rows.size(); ++k) {
+      if (rows[k].duration > 0.0) done.push_back(std::move(rows[k]));
+    }
+    return done;
+  }
+  return rows;
+}
+
+}  // namespace flexrock::study

@@ -1,0 +1,39 @@
+# flexrock fragility: a fit of a sweep CSV written by flexrock sweep, its outputs and its errors
+source "$(dirname "$0")/common.sh"
+
+cd "$WORK"
+run "$FLEXROCK" sweep "$SRC/examples/studies/sweep.toml" -o sweep.csv -q
+expect_rc 0 "example sweep"
+[ "$(wc -l <sweep.csv)" -eq 33 ] || fail "expected 32 rows + header"
+head -1 sweep.csv | grep -q "^index,body,record,scale,pga_m_per_s2,pga_g,pgv_m_per_s,duration_s,outcome,overturned," ||
+  fail "sweep columns: $(head -1 sweep.csv)"
+
+run "$FLEXROCK" fragility sweep.csv --im pga_g -o fit.csv --curve curve.csv --curve-points 20
+expect_rc 0 "fragility of the example sweep"
+expect_in "$WORK/out" "statue: P(overturning | pga_g)"
+expect_in "$WORK/out" "theta = "
+[ "$(wc -l <fit.csv)" -eq 3 ] || fail "expected one fit per body"
+[ "$(wc -l <curve.csv)" -eq 41 ] || fail "expected 20 curve points per body"
+head -1 fit.csv | grep -q "^body,samples,failures,excluded,theta,beta,se_ln_theta,se_beta" || fail "fit columns"
+
+# no body exceeds theta/alpha 1e9 without overturning, so only overturned rows count: same fit
+run "$FLEXROCK" fragility sweep.csv --im pga_g --outcome theta --level 1e9 --body statue
+expect_rc 0 "theta outcome"
+# all outcomes equal, or perfectly separated by the IM: clear errors, exit 2
+grep -E "^index|,no_uplift," sweep.csv >none.csv
+run "$FLEXROCK" fragility none.csv
+expect_rc 2 "no failures"
+expect_in "$WORK/err" "outcomes is 0: the curve cannot be fitted"
+printf '%s\n' "$(head -1 sweep.csv)" >sep.csv
+grep -E ",no_uplift," sweep.csv | head -2 >>sep.csv
+grep -E ",overturned_" sweep.csv | sort -t, -k5 -g | tail -2 >>sep.csv
+run "$FLEXROCK" fragility sep.csv
+expect_rc 2 "perfect separation"
+expect_in "$WORK/err" "perfectly separated by the intensity measure"
+run "$FLEXROCK" fragility sweep.csv --body nobody
+expect_rc 2 "unknown body"
+expect_in "$WORK/err" "no rows of body 'nobody'"
+run "$FLEXROCK" fragility sweep.csv --outcome theta
+expect_rc 2 "theta without level"
+expect_in "$WORK/err" "--level: expected a number > 0"
+echo "ok"

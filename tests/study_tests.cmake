@@ -1,0 +1,34 @@
+# included from tests/CMakeLists.txt; paths are relative to tests/
+
+# studies (flexrock::study, io/study_files): spectra, sweeps, fragility fits, the thread pool
+flexrock_add_test(flexrock_study_tests
+  SOURCES unit/study_spectrum_test.cpp unit/study_sweep_test.cpp unit/study_fragility_test.cpp
+          unit/study_files_test.cpp
+  LIBS flexrock::study flexrock::io
+  LABEL unit)
+
+if(TARGET flexrock)
+  # the commands: outputs, thread-count independence, errors; resume after SIGINT and SIGKILL
+  foreach(script study_spectrum study_sweep_resume study_fragility)
+    add_test(NAME cli_${script}
+             COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/cli/${script}.sh $<TARGET_FILE:flexrock>
+                     ${PROJECT_SOURCE_DIR})
+    set_tests_properties(cli_${script} PROPERTIES LABELS cli TIMEOUT 300)
+  endforeach()
+  # the fit against scipy.optimize (Debian's python3-scipy, only for /usr/bin/python3)
+  execute_process(COMMAND /usr/bin/python3 -c "import scipy.optimize, numpy"
+                  RESULT_VARIABLE flexrock_no_scipy OUTPUT_QUIET ERROR_QUIET)
+  if(flexrock_no_scipy EQUAL 0)
+    add_test(NAME cli_study_fragility_scipy
+             COMMAND /usr/bin/python3 ${CMAKE_CURRENT_SOURCE_DIR}/unit/study_fragility_reference.py
+                     $<TARGET_FILE:flexrock>)
+    set_tests_properties(cli_study_fragility_scipy PROPERTIES LABELS cli)
+  endif()
+  # two MPI processes write the same file as threads do
+  if(FLEXROCK_HAVE_MPI AND MPIEXEC_EXECUTABLE)
+    add_test(NAME cli_study_mpi
+             COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/cli/study_mpi.sh $<TARGET_FILE:flexrock>
+                     ${PROJECT_SOURCE_DIR} ${MPIEXEC_EXECUTABLE})
+    set_tests_properties(cli_study_mpi PROPERTIES LABELS cli TIMEOUT 300)
+  endif()
+endif()

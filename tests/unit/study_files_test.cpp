@@ -1,0 +1,159 @@
+// Study files: manifests and spectrum specs (errors with file:line: key), the sweep journal
+// (resume, torn lines, foreign journals), CSV input of fragility fits.
+#include "flexrock/io/study_files.hpp"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "support/expect_error.hpp"
+
+namespace flexrock::io {
+namespace {
+
+namespace fs = std::filesystem;
+
+class StudyFiles : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() /
+           ("flexrock_study_files_" +
+            std::to_string(::testing::UnitTest::GetInstance()->random_seed()) + "_" +
+            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  std::string write(const std::string& name, const std::string& text) {
+    const fs::path p = dir_ / name;
+    std::ofstream(p) << text;
+    return p.string();
+  }
+  static std::string read(const std::string& p) {
+    std::ifstream in(p);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+  }
+  fs::path dir_;
+};
+
+const char* kBody = "[body]\ntype = \"rigid_block\"\nwidth = 0.4\nheight = 2.0\nmass = 100.0\n";
+const char* kRecord = "0.0\n0.1\n-0.2\n0.3\n0.0\n";
+
+TEST_F(StudyFiles, ManifestLoadsBodiesRecordsAndScales) {
+  write("b.toml", kBody);
+  write("r.dat", kRecord);
+  const std::string m = write("m.toml",
+                              "[[body]]\nfile = \"b.toml\"\n"
+                              "[[record]]\nfile = \"r.dat\"\nformat = \"single_column\"\n"
+                              "dt = 0.01\nunits = \"g\"\nname = \"rec\"\n"
+                              "[scales]\nfactors = { start = 0.5, stop = 2.0, step = 0.5 }\n");
+  const SweepManifest sm = load_sweep_manifest(m);
+  ASSERT_EQ(sm.spec.bodies.size(), 1u);
+  EXPECT_EQ(sm.spec.bodies[0].name, "b");
+  EXPECT_EQ(sm.spec.records[0].name, "rec");
+  EXPECT_EQ(sm.spec.scales, (std::vector<double>{0.5, 1.0, 1.5, 2.0}));
+  // the hash follows the files the manifest names
+  write("r.dat", "0.0\n0.1\n-0.2\n0.3\n0.01\n");
+  EXPECT_NE(load_sweep_manifest(m).hash, sm.hash);
+}
+
+TEST_F(StudyFiles, ManifestErrorsNameFileLineAndKey) {
+  write("b.toml", kBody);
+  write("r.dat", kRecord);
+  const std::string head =
+      "[[body]]\nfile = \"b.toml\"\n[[record]]\nfile = \"r.dat\"\nformat = \"single_column\"\n"
+      "dt = 0.01\nunits = \"g\"\n";
+  const std::string m1 = write("m1.toml", head + "[scales]\nfactor = [1.0]\n");
+  test::expect_input_error([&] { load_sweep_manifest(m1); }, {"m1.toml:8", "scales.factors"});
+  const std::string m2 = write("m2.toml", head + "[scales]\nfactors = [1.0, -2.0]\n");
+  test::expect_input_error([&] { load_sweep_manifest(m2); }, {"m2.toml:9", "> 0"});
+  const std::string m3 = write("m3.toml", head + "[scales]\nfactors = [1.0]\n[solvr]\n");
+  test::expect_input_error([&] { load_sweep_manifest(m3); }, {"m3.toml:10", "solvr", "solver"});
+  const std::string m4 = write("m4.toml", "[[body]]\nfile = \"missing.toml\"\n");
+  test::expect_input_error([&] { load_sweep_manifest(m4); }, {"missing.toml", "m4.toml:1"});
+}
+
+TEST_F(StudyFiles, SpectrumFileWithInlineBodyAndPhysicalAxes) {
+  const std::string p = write("s.toml", std::string(kBody) +
+                                            "[spectrum]\naxes = \"physical\"\n"
+                                            "amplitude_units = \"g\"\nfrequency_units = \"Hz\"\n"
+                                            "amplitudes = [0.5, 1.0]\nfrequencies = { start = 1, "
+                                            "stop = 4, count = 4, spacing = \"log\" }\n");
+  const SpectrumFile f = load_spectrum_file(p);
+  EXPECT_FALSE(f.is_record);
+  EXPECT_FALSE(f.pulse.normalized);
+  EXPECT_NEAR(f.pulse.amplitudes[1], 9.80665, 1e-12);
+  ASSERT_EQ(f.pulse.frequencies.size(), 4u);
+  EXPECT_NEAR(f.pulse.frequencies[3], 8.0 * std::acos(-1.0), 1e-12);
+  EXPECT_NEAR(f.pulse.frequencies[1], 2.0 * std::acos(-1.0) * std::cbrt(4.0), 1e-12);
+  const std::string bad =
+      write("bad.toml", std::string(kBody) + "[spectrum]\npulse = \"one-sine\"\n");
+  test::expect_input_error([&] { load_spectrum_file(bad); },
+                           {"bad.toml:7", "spectrum.pulse", "did you mean \"one_sine\""});
+}
+
+TEST_F(StudyFiles, JournalResumesDropsATornLineAndRejectsAForeignOne) {
+  const std::string p = (dir_ / "out.csv.partial").string();
+  const std::string row5 = "5" + std::string(21, ',');
+  const std::string row2 = "2" + std::string(21, ',');
+  {
+    SweepJournal j(p, 42, 10);
+    j.append(5, row5);
+    j.append(2, row2);
+  }
+  // a kill in the middle of a line
+  std::ofstream(p, std::ios::app) << "7,half a li";
+  {
+    SweepJournal j(p, 42, 10);
+    ASSERT_EQ(j.finished().size(), 2u);
+    EXPECT_EQ(j.finished().at(5), row5);
+    EXPECT_EQ(read(p), journal_header(42, 10) + "\n" + row5 + "\n" + row2 + "\n");
+    j.append(7, "7" + std::string(21, ','));
+  }
+  EXPECT_EQ(SweepJournal(p, 42, 10).finished().size(), 3u);
+  test::expect_input_error([&] { SweepJournal(p, 43, 10); }, {"another manifest", "delete it"});
+  test::expect_input_error([&] { SweepJournal(p, 42, 11); }, {"another manifest or run count"});
+  SweepJournal(p, 42, 10).remove();
+  EXPECT_FALSE(fs::exists(p));
+}
+
+TEST_F(StudyFiles, FragilityDataFromASweepCsv) {
+  std::string csv;
+  for (std::size_t i = 0; i < sweep_columns().size(); ++i)
+    csv += (i ? "," : "") + sweep_columns()[i];
+  csv += "\n";
+  // index body record scale pga pga_g pgv duration outcome overturned edge t_over theta
+  // theta/alpha impacts t_up uplift impulse energy friction status message
+  csv += "0,a,r,1,1.5,0.15,0.2,10,rocking,0,0,-1,0.1,0.5,3,1,0,0,2.5,0.1,completed,\n";
+  csv += "1,a,r,2,3.0,0.3,0.4,10,overturned_after_impacts,1,1,4,1,1,3,1,0,0,1.0,0.1,overturned,\n";
+  csv += "2,a,r,3,4.5,0.45,0.6,10,stopped,0,0,-1,0,0,0,-1,0,0,0,0,stopped,step collapse\n";
+  csv += "3,b,r,1,1.5,0.15,0.2,10,no_uplift,0,0,-1,0,0,0,-1,0,0,0,0.1,completed,\n";
+  const std::string p = write("s.csv", csv);
+  const CsvTable t = read_csv_table(p);
+  FragilityQuery q;
+  auto d = fragility_data(t, q);
+  ASSERT_EQ(d.size(), 2u);
+  EXPECT_EQ(d[0].body, "a");
+  EXPECT_EQ(d[0].im, (std::vector<double>{1.5, 3.0}));
+  EXPECT_EQ(d[0].failed, (std::vector<int>{0, 1}));
+  EXPECT_EQ(d[0].excluded, 1u);
+  q.outcome = "theta";
+  q.level = 0.4;
+  q.im = "pgv";
+  q.body = "a";
+  d = fragility_data(t, q);
+  ASSERT_EQ(d.size(), 1u);
+  EXPECT_EQ(d[0].failed, (std::vector<int>{1, 1}));
+  EXPECT_EQ(d[0].im, (std::vector<double>{0.2, 0.4}));
+  q.im = "sa";
+  test::expect_input_error([&] { fragility_data(t, q); }, {"'sa'", "pga, pga_g, pgv, scale"});
+  const std::string bad = write("bad.csv", "index,body\n1,a,b\n");
+  test::expect_input_error([&] { read_csv_table(bad); }, {"bad.csv:2", "expected 2 fields"});
+}
+
+}  // namespace
+}  // namespace flexrock::io
