@@ -1,0 +1,78 @@
+#include "plot_command.hpp"
+
+#include <fmt/core.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+// set by CMake: where the build lays out the Python package, and the interpreter with numpy and
+// matplotlib
+#ifndef FLEXROCK_PYTHON_DIR
+#define FLEXROCK_PYTHON_DIR ""
+#endif
+#ifndef FLEXROCK_PYTHON_EXECUTABLE
+#define FLEXROCK_PYTHON_EXECUTABLE "/usr/bin/python3"
+#endif
+
+namespace flexrock::cli {
+
+CLI::App* add_plot_command(CLI::App& app, PlotOptions& options) {
+  CLI::App* plot = app.add_subcommand(
+      "plot",
+      "Plot a run's time-history CSV (response figure or moment-rotation loop) or a spectrum "
+      "CSV as PNG or SVG (needs Python 3 with matplotlib)");
+  plot->add_option("RESULT_OR_SPECTRUM", options.file,
+                   "time-history CSV of `flexrock run` (its summary JSON and event log are read "
+                   "from next to it) or spectrum CSV")
+      ->required();
+  plot->add_option("-o,--output", options.output,
+                   "figure file, .png or .svg (default: the CSV's name with .png)");
+  plot->add_option("--kind", options.kind, "auto (by the CSV header), response, loop, spectrum")
+      ->check(CLI::IsMember({"auto", "response", "loop", "spectrum"}));
+  plot->add_option("--dpi", options.dpi, "PNG resolution")->check(CLI::Range(10, 1200));
+  return plot;
+}
+
+int run_plot(const PlotOptions& options) {
+  // FLEXROCK_PYTHON overrides the interpreter found at build time
+  const char* env_python = std::getenv("FLEXROCK_PYTHON");
+  const std::string python = env_python && *env_python ? env_python : FLEXROCK_PYTHON_EXECUTABLE;
+  if (::access(python.c_str(), X_OK) != 0) {
+    fmt::print(stderr,
+               "flexrock: error: flexrock plot needs Python 3 with numpy and matplotlib, but {} "
+               "cannot be run ({}); install them with scripts/install-deps.sh --python\n",
+               python, std::strerror(errno));
+    return 1;
+  }
+  // the build's package first; without it an installed `flexrock` package is used
+  const std::string dir = FLEXROCK_PYTHON_DIR;
+  std::error_code ec;
+  if (!dir.empty() && std::filesystem::exists(dir + "/flexrock/plot.py", ec)) {
+    const char* old = std::getenv("PYTHONPATH");
+    const std::string path = old && *old ? dir + ":" + old : dir;
+    ::setenv("PYTHONPATH", path.c_str(), 1);
+  }
+  std::vector<std::string> args = {
+      python,   "-m",         "flexrock.plot", options.file,
+      "--kind", options.kind, "--dpi",         std::to_string(options.dpi)};
+  if (!options.output.empty()) {
+    args.push_back("--output");
+    args.push_back(options.output);
+  }
+  std::vector<char*> argv;
+  for (std::string& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  std::fflush(stdout);
+  std::fflush(stderr);
+  ::execv(python.c_str(), argv.data());
+  fmt::print(stderr, "flexrock: error: cannot run {}: {}\n", python, std::strerror(errno));
+  return 1;
+}
+
+}  // namespace flexrock::cli

@@ -1,0 +1,22 @@
+// `flexrock plot`: figures of a run or a spectrum, drawn by the Python package (matplotlib).
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <string>
+
+namespace flexrock::cli {
+
+struct PlotOptions {
+  std::string file;           // a run's time-history CSV or a spectrum CSV
+  std::string output;         // .png or .svg; empty: next to `file`
+  std::string kind = "auto";  // auto, response, loop, spectrum
+  int dpi = 110;              // [1/inch] PNG resolution
+};
+
+/// Adds the `plot` subcommand to `app`, filling `options`.
+CLI::App* add_plot_command(CLI::App& app, PlotOptions& options);
+
+/// Replaces this process with `python3 -m flexrock.plot ...`; returns only on failure (exit code).
+int run_plot(const PlotOptions& options);
+
+}  // namespace flexrock::cli

@@ -1,0 +1,110 @@
+// Bodies: the paper's parameters, the validated Body and the builders (model/body.hpp,
+// model/builders.hpp).
+#include <pybind11/eigen.h>
+#include <pybind11/stl.h>
+
+#include "bindings.hpp"
+#include "flexrock/model/body.hpp"
+#include "flexrock/model/builders.hpp"
+
+namespace py = pybind11;
+
+namespace flexrock::python {
+
+void bind_model(py::module_& m) {
+  py::enum_<DampingKind>(m, "DampingKind")
+      .value("none", DampingKind::kNone)
+      .value("rayleigh", DampingKind::kRayleigh)
+      .value("modal", DampingKind::kModal);
+
+  py::class_<Damping>(m, "Damping", "Material damping of the deformation modes.")
+      .def(py::init<>())
+      .def_readwrite("kind", &Damping::kind)
+      .def_readwrite("rayleigh_mass", &Damping::rayleigh_mass, "a [1/s], coefficient on mu")
+      .def_readwrite("rayleigh_stiffness", &Damping::rayleigh_stiffness,
+                     "b [s], coefficient on K = (g/h) kappa")
+      .def_readwrite("modal_ratios", &Damping::modal_ratios,
+                     "[-] one ratio per pinned-base mode, ascending frequency");
+
+  py::class_<BodyParameters>(m, "BodyParameters",
+                             "The paper's parameters of a deformable body on two tipping points "
+                             "(SI units; mu, kappa, ... dimensionless).")
+      .def(py::init<>())
+      .def_readwrite("mass", &BodyParameters::mass, "M [kg]")
+      .def_readwrite("height", &BodyParameters::height, "h [m], c.g. above the base")
+      .def_readwrite("b1", &BodyParameters::b1, "[m] c.g. to tipping point 1 (left)")
+      .def_readwrite("b2", &BodyParameters::b2, "[m] c.g. to tipping point 2 (right)")
+      .def_readwrite("zeta2", &BodyParameters::zeta2, "I_zz/(M h^2) [-]")
+      .def_readwrite("mu", &BodyParameters::mu)
+      .def_readwrite("kappa", &BodyParameters::kappa)
+      .def_readwrite("gamma", &BodyParameters::gamma)
+      .def_readwrite("psi_x", &BodyParameters::psi_x)
+      .def_readwrite("psi_y", &BodyParameters::psi_y)
+      .def_readwrite("delta", &BodyParameters::delta)
+      .def_readwrite("beta", &BodyParameters::beta)
+      .def_readwrite("damping", &BodyParameters::damping)
+      .def_readwrite("gravity", &BodyParameters::gravity, "g [m/s^2]")
+      .def_property_readonly("modes", [](const BodyParameters& p) { return p.kappa.rows(); })
+      .def_static("rigid", &BodyParameters::rigid, py::arg("mass"), py::arg("height"),
+                  py::arg("b1"), py::arg("b2"), py::arg("zeta2"))
+      .def_static("rectangular_block", &BodyParameters::rectangular_block, py::arg("mass"),
+                  py::arg("half_width"), py::arg("half_height"));
+
+  py::class_<Body>(m, "Body", "A validated body; bad parameters raise InputError.")
+      .def(py::init<BodyParameters>(), py::arg("params"))
+      .def_property_readonly("params", &Body::params)
+      .def_property_readonly("modes", &Body::modes)
+      .def_property_readonly("alpha1", &Body::alpha1)
+      .def_property_readonly("alpha2", &Body::alpha2)
+      .def_property_readonly("g", &Body::g)
+      .def_property_readonly("mu_inverse", &Body::mu_inverse)
+      .def_property_readonly("stiffness", &Body::stiffness, "K = (g/h) kappa [1/s^2]")
+      .def_property_readonly("damping_matrix", &Body::damping_matrix, "C [1/s]")
+      .def_property_readonly("natural_frequencies", &Body::natural_frequencies,
+                             "pinned-base [rad/s], ascending")
+      .def_property_readonly("damping_ratios", &Body::damping_ratios)
+      .def_property_readonly("static_deformation", &Body::static_deformation)
+      .def_property_readonly("rocking_frequency", &Body::rocking_frequency, "p [rad/s]")
+      .def("tipping_angle", &Body::tipping_angle, py::arg("edge"),
+           "static overturning angle about edge 1 or 2 [rad], positive");
+
+  m.def("rigid_block", &rigid_block, py::arg("width"), py::arg("height"), py::arg("mass"),
+        "Uniform rigid rectangular block of full width and height [m], mass [kg].");
+  m.def("rigid_body", &rigid_body, py::arg("mass"), py::arg("inertia_cg"), py::arg("height"),
+        py::arg("b1"), py::arg("b2"), "General rigid body.");
+  m.def("oscillator_on_slab", &oscillator_on_slab, py::arg("top_mass"), py::arg("frequency_hz"),
+        py::arg("base_mass"), py::arg("height"), py::arg("base_width"),
+        py::arg("damping_ratio") = 0.0, "An elastic oscillator on a rocking base slab.");
+  m.def("uniform_cantilever", &uniform_cantilever, py::arg("height"), py::arg("width"),
+        py::arg("mass_per_length"), py::arg("bending_stiffness"), py::arg("modes"),
+        py::arg("base_mass") = 0.0, py::arg("damping_ratio") = 0.0,
+        "A uniform flexible cantilever on a rigid base plate.");
+
+  py::class_<LumpedNode>(m, "LumpedNode")
+      .def(py::init([](double x, double y, double mass, double rotary_inertia) {
+             return LumpedNode{x, y, mass, rotary_inertia};
+           }),
+           py::arg("x"), py::arg("y"), py::arg("mass"), py::arg("rotary_inertia") = 0.0)
+      .def_readwrite("x", &LumpedNode::x)
+      .def_readwrite("y", &LumpedNode::y)
+      .def_readwrite("mass", &LumpedNode::mass)
+      .def_readwrite("rotary_inertia", &LumpedNode::rotary_inertia);
+
+  py::class_<LumpedModel>(m, "LumpedModel",
+                          "A lumped-mass modal model (pinned-base modes) from a finite-element "
+                          "program.")
+      .def(py::init<>())
+      .def_readwrite("nodes", &LumpedModel::nodes)
+      .def_readwrite("tip1_x", &LumpedModel::tip1_x)
+      .def_readwrite("tip2_x", &LumpedModel::tip2_x)
+      .def_readwrite("phi_x", &LumpedModel::phi_x, "[m] nodes x modes")
+      .def_readwrite("phi_y", &LumpedModel::phi_y, "[m] nodes x modes")
+      .def_readwrite("frequencies", &LumpedModel::frequencies, "[rad/s]")
+      .def_readwrite("stiffness", &LumpedModel::stiffness, "[N m] modal stiffness")
+      .def_readwrite("damping", &LumpedModel::damping)
+      .def_readwrite("gravity", &LumpedModel::gravity);
+  m.def("from_lumped_model", &from_lumped_model, py::arg("model"),
+        "The paper's parameters from a lumped-mass modal model.");
+}
+
+}  // namespace flexrock::python

@@ -1,0 +1,177 @@
+// One simulation and its result (sim/simulate.hpp). Time histories come out as numpy arrays;
+// the GIL is released while the engine runs, so Python threads simulate in parallel.
+#include <pybind11/eigen.h>
+#include <pybind11/numpy.h>
+#include <pybind11/stl.h>
+
+#include <vector>
+
+#include "bindings.hpp"
+#include "flexrock/sim/simulate.hpp"
+
+namespace py = pybind11;
+
+namespace flexrock::python {
+
+namespace {
+
+// a copy of a column as a 1-D numpy array
+template <class T>
+py::array_t<T> column(const std::vector<T>& v) {
+  return py::array_t<T>(static_cast<py::ssize_t>(v.size()), v.data());
+}
+
+// q or q_dot (row-major, `modes` values a row) as a (rows, modes) array
+py::array_t<double> modal(const std::vector<double>& v, const History& h) {
+  const auto n = static_cast<py::ssize_t>(h.modes);
+  const auto rows = static_cast<py::ssize_t>(h.size());
+  py::array_t<double> a({rows, n});
+  std::copy(v.begin(), v.end(), a.mutable_data());
+  return a;
+}
+
+}  // namespace
+
+void bind_sim(py::module_& m) {
+  // enum value names are the C++ to_string() names (the CSV and JSON words): use `.name`
+  py::enum_<Phase>(m, "Phase")
+      .value("full_contact", Phase::kFullContact)
+      .value("rocking_edge1", Phase::kRockingEdge1)
+      .value("rocking_edge2", Phase::kRockingEdge2);
+  py::enum_<Status>(m, "Status")
+      .value("completed", Status::kCompleted)
+      .value("overturned", Status::kOverturned)
+      .value("contact_lost", Status::kContactLost)
+      .value("stopped", Status::kStopped);
+  py::enum_<EventKind>(m, "EventKind")
+      .value("uplift", EventKind::kUplift)
+      .value("impact", EventKind::kImpact)
+      .value("rocking_ended", EventKind::kRockingEnded)
+      .value("chatter_cutoff", EventKind::kChatterCutoff)
+      .value("peak", EventKind::kPeak)
+      .value("overturn", EventKind::kOverturn)
+      .value("contact_lost", EventKind::kContactLost)
+      .value("friction_exceeded", EventKind::kFrictionExceeded)
+      .value("impact_gained_energy", EventKind::kImpactGainedEnergy)
+      .value("stopped", EventKind::kStopped);
+  py::enum_<OverturnCriterion>(m, "OverturnCriterion")
+      .value("static_instability", OverturnCriterion::kStaticInstability)
+      .value("half_pi", OverturnCriterion::kHalfPi);
+
+  py::class_<InitialState>(m, "InitialState", "Where the body starts.")
+      .def(py::init([](double theta, double theta_dot, VectorX q, VectorX q_dot) {
+             return InitialState{theta, theta_dot, std::move(q), std::move(q_dot)};
+           }),
+           py::arg("theta") = 0.0, py::arg("theta_dot") = 0.0, py::arg("q") = VectorX(),
+           py::arg("q_dot") = VectorX())
+      .def_readwrite("theta", &InitialState::theta, "[rad]")
+      .def_readwrite("theta_dot", &InitialState::theta_dot, "[rad/s]")
+      .def_readwrite("q", &InitialState::q, "[-] empty: the static deformation under gravity")
+      .def_readwrite("q_dot", &InitialState::q_dot, "[1/s] empty: zero");
+
+  py::class_<SimulationOptions>(m, "SimulationOptions", "Solver options (SI units).")
+      .def(py::init<>())
+      .def_readwrite("t_end", &SimulationOptions::t_end, "[s] < 0: the end of the motion")
+      .def_readwrite("rtol", &SimulationOptions::rtol)
+      .def_readwrite("atol", &SimulationOptions::atol)
+      .def_readwrite("max_step", &SimulationOptions::max_step, "[s]")
+      .def_readwrite("event_samples", &SimulationOptions::event_samples)
+      .def_readwrite("output_dt", &SimulationOptions::output_dt, "[s] 0: no time history")
+      .def_readwrite("overturn", &SimulationOptions::overturn)
+      .def_readwrite("chatter_ratio", &SimulationOptions::chatter_ratio)
+      .def_readwrite("restitution_factor", &SimulationOptions::restitution_factor)
+      .def_readwrite("friction_coefficient", &SimulationOptions::friction_coefficient)
+      .def_readwrite("max_steps", &SimulationOptions::max_steps)
+      .def_readwrite("max_impacts", &SimulationOptions::max_impacts);
+
+  py::class_<Event>(m, "Event", "Something that happened; fields not meaningful are zero.")
+      .def_readonly("time", &Event::time)
+      .def_readonly("kind", &Event::kind)
+      .def_readonly("edge", &Event::edge)
+      .def_readonly("theta", &Event::theta)
+      .def_readonly("theta_dot_before", &Event::theta_dot_before)
+      .def_readonly("theta_dot_after", &Event::theta_dot_after)
+      .def_readonly("energy_loss", &Event::energy_loss)
+      .def_readonly("impulse_x", &Event::impulse_x)
+      .def_readonly("impulse_y", &Event::impulse_y)
+      .def_readonly("friction_demand", &Event::friction_demand)
+      .def("__repr__", [](const Event& e) {
+        return "<Event " + std::string(to_string(e.kind)) + " t=" + std::to_string(e.time) + ">";
+      });
+
+  py::class_<History>(m, "History", "Time history at the output times; each a numpy copy.")
+      .def_readonly("modes", &History::modes)
+      .def("__len__", &History::size)
+      .def_property_readonly("time", [](const History& h) { return column(h.time); })
+      .def_property_readonly("phase", [](const History& h) { return column(h.phase); })
+      .def_property_readonly("theta", [](const History& h) { return column(h.theta); })
+      .def_property_readonly("theta_dot", [](const History& h) { return column(h.theta_dot); })
+      .def_property_readonly("q", [](const History& h) { return modal(h.q, h); })
+      .def_property_readonly("q_dot", [](const History& h) { return modal(h.q_dot, h); })
+      .def_property_readonly("base_acc_x", [](const History& h) { return column(h.base_acc_x); })
+      .def_property_readonly("base_acc_y", [](const History& h) { return column(h.base_acc_y); })
+      .def_property_readonly("reaction_x", [](const History& h) { return column(h.reaction_x); })
+      .def_property_readonly("reaction_y", [](const History& h) { return column(h.reaction_y); })
+      .def_property_readonly("resultant", [](const History& h) { return column(h.resultant); })
+      .def_property_readonly("friction_demand",
+                             [](const History& h) { return column(h.friction_demand); })
+      .def_property_readonly("kinetic", [](const History& h) { return column(h.kinetic); })
+      .def_property_readonly("potential", [](const History& h) { return column(h.potential); })
+      .def_property_readonly("input_work", [](const History& h) { return column(h.input_work); })
+      .def_property_readonly("damping_loss",
+                             [](const History& h) { return column(h.damping_loss); })
+      .def_property_readonly("impact_loss", [](const History& h) { return column(h.impact_loss); });
+
+  py::class_<Extremes>(m, "Extremes")
+      .def_readonly("max_theta_edge1", &Extremes::max_theta_edge1)
+      .def_readonly("max_theta_edge2", &Extremes::max_theta_edge2)
+      .def_readonly("max_uplift", &Extremes::max_uplift)
+      .def_readonly("impacts", &Extremes::impacts)
+      .def_readonly("max_impulse", &Extremes::max_impulse)
+      .def_readonly("max_impact_energy_loss", &Extremes::max_impact_energy_loss)
+      .def_readonly("max_abs_q", &Extremes::max_abs_q)
+      .def_readonly("max_base_shear", &Extremes::max_base_shear)
+      .def_readonly("max_overturning_moment", &Extremes::max_overturning_moment)
+      .def_readonly("max_friction_demand", &Extremes::max_friction_demand)
+      .def_readonly("first_uplift_time", &Extremes::first_uplift_time)
+      .def_readonly("first_uplift_edge", &Extremes::first_uplift_edge)
+      .def_readonly("overturn_time", &Extremes::overturn_time)
+      .def_readonly("overturn_edge", &Extremes::overturn_edge);
+
+  py::class_<EnergyBalance>(m, "EnergyBalance")
+      .def_readonly("input_work", &EnergyBalance::input_work)
+      .def_readonly("kinetic_change", &EnergyBalance::kinetic_change)
+      .def_readonly("potential_change", &EnergyBalance::potential_change)
+      .def_readonly("damping_loss", &EnergyBalance::damping_loss)
+      .def_readonly("impact_loss", &EnergyBalance::impact_loss)
+      .def_readonly("chatter_loss", &EnergyBalance::chatter_loss)
+      .def_readonly("residual", &EnergyBalance::residual)
+      .def_readonly("scale", &EnergyBalance::scale);
+
+  py::class_<SimulationResult>(m, "SimulationResult")
+      .def_readonly("status", &SimulationResult::status)
+      .def_readonly("message", &SimulationResult::message)
+      .def_readonly("t_end", &SimulationResult::t_end)
+      .def_readonly("final_phase", &SimulationResult::final_phase)
+      .def_readonly("final_theta", &SimulationResult::final_theta)
+      .def_readonly("final_theta_dot", &SimulationResult::final_theta_dot)
+      .def_readonly("final_q", &SimulationResult::final_q)
+      .def_readonly("final_q_dot", &SimulationResult::final_q_dot)
+      .def_readonly("friction_exceeded", &SimulationResult::friction_exceeded)
+      .def_readonly("chatter_cut_off", &SimulationResult::chatter_cut_off)
+      .def_readonly("impact_gained_energy", &SimulationResult::impact_gained_energy)
+      .def_readonly("history", &SimulationResult::history)
+      .def_readonly("extremes", &SimulationResult::extremes)
+      .def_readonly("energy", &SimulationResult::energy)
+      .def_readonly("events", &SimulationResult::events)
+      .def_readonly("steps", &SimulationResult::steps)
+      .def_readonly("rejected_steps", &SimulationResult::rejected_steps)
+      .def_readonly("rhs_evaluations", &SimulationResult::rhs_evaluations);
+
+  m.def("simulate", &simulate, py::arg("body"), py::arg("motion"),
+        py::arg("initial") = InitialState{}, py::arg("options") = SimulationOptions{},
+        py::call_guard<py::gil_scoped_release>(),
+        "Simulates `body` on a base moving with `motion`; the outcome is in the result's status.");
+}
+
+}  // namespace flexrock::python

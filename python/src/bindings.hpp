@@ -1,0 +1,16 @@
+// One bind_<area>.cpp per header group; each only exposes the C++ API (no physics here).
+#pragma once
+
+#include <pybind11/pybind11.h>
+
+namespace flexrock::python {
+
+void bind_model(pybind11::module_& m);       // BodyParameters, Body, builders
+void bind_excitation(pybind11::module_& m);  // GroundMotion, pulses
+void bind_sim(pybind11::module_& m);         // simulate and its result
+void bind_io(pybind11::module_& m);          // records, case files, outputs
+#ifdef FLEXROCK_PYTHON_STUDY
+void bind_study(pybind11::module_& m);  // spectrum, sweep, fragility
+#endif
+
+}  // namespace flexrock::python

@@ -1,0 +1,132 @@
+"""Spectra, sweeps and fragility fits from Python (thin: the library tests the physics)."""
+
+import math
+
+import numpy as np
+import pytest
+
+import flexrock as fr
+
+
+@pytest.fixture(scope="module")
+def block():
+    return fr.Body(fr.rigid_block(0.5, 3.0, 1000.0))
+
+
+def test_spectrum_cells_equal_single_simulations(block):
+    amps, freqs = [0.8, 2.0, 6.0], [2.0, 6.0]
+    r = fr.spectrum(block, amps, freqs, bisect=False, threads=2)
+    assert len(r.cells) == 6 and len(r.boundary) == 0
+    # below the static uplift acceleration (a_p < g tan alpha) nothing uplifts
+    assert all(c.run.outcome.name == "no_uplift" for c in r.cells if c.amplitude == 0.8)
+    # every cell equals the library's single-cell entry point (the threads change nothing)
+    spec = fr.SpectrumSpec()
+    spec.amplitudes, spec.frequencies = amps, freqs
+    for c in r.cells:
+        one = fr.run_pulse_cell(block, spec, c.amplitude_si, c.omega_si)
+        assert (one.outcome, one.impacts, one.max_theta) == (c.run.outcome, c.run.impacts, c.run.max_theta)
+    c = r.cells[1 * 2 + 1]
+    # normalised units: a_p/(g tan alpha) and omega_p/p
+    assert c.amplitude_si == pytest.approx(2.0 * block.g * block.alpha1, rel=1e-14)
+    assert c.omega_si == pytest.approx(6.0 * block.rocking_frequency, rel=1e-14)
+
+
+def test_spectrum_table_has_the_cli_columns_and_the_map_draws_it(block, tmp_path):
+    r = fr.spectrum(block, [1.5, 4.0, 8.0], [1.5, 4.0], threads=2, bisection_tolerance=0.05)
+    t = fr.spectrum_table(r, block.g)
+    assert list(t) == fr.spectrum_columns()
+    csv, boundary = fr.write_spectrum(r, tmp_path / "s.csv", g=block.g)
+    assert boundary is not None
+    from flexrock import plots
+
+    fig = plots.spectrum_map(csv)
+    assert len(fig.axes) == 1
+    fig2 = plots.spectrum_map(r, g=block.g)
+    assert len(fig2.axes) == 1
+
+
+def test_threads_do_not_change_a_spectrum(block):
+    a = fr.spectrum(block, [1.5, 3.0, 6.0], [2.0, 5.0], threads=1, bisection_tolerance=0.05)
+    b = fr.spectrum(block, [1.5, 3.0, 6.0], [2.0, 5.0], threads=3, bisection_tolerance=0.05)
+    assert fr.spectrum_table(a).keys() == fr.spectrum_table(b).keys()
+    assert fr._flexrock.spectrum_csv(a, 9.80665) == fr._flexrock.spectrum_csv(b, 9.80665)
+
+
+def test_sweep_rows_and_fragility_fit():
+    body = fr.rigid_block(0.3, 1.8, 600.0)
+    t = np.arange(0.0, 4.0, 0.01)
+    records = {"sine": fr.motion_from_array(np.sin(2 * math.pi * 1.0 * t), dt=0.01)}
+    table = fr.sweep({"b": body}, records, [0.5, 1.0, 2.0, 4.0, 8.0], threads=2)
+    assert list(table) == fr.sweep_columns()
+    assert list(table["scale"]) == [0.5, 1.0, 2.0, 4.0, 8.0]
+    np.testing.assert_allclose(table["pga_m_per_s2"], table["scale"] * 1.0, rtol=1e-6)
+    # a fit of hand-made data: the lognormal model's median is where half fail
+    im = np.array([0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8])
+    failed = [0, 0, 1, 0, 1, 0, 1, 1]
+    fit = fr.fragility(im, failed)
+    assert fit.samples == 8 and fit.failures == 4
+    assert fr.fragility_probability(fit, fit.theta) == pytest.approx(0.5, abs=1e-12)
+    lo, hi = fr.fragility_band(fit, 0.4)
+    assert lo < fr.fragility_probability(fit, 0.4) < hi
+    # the maximum: the log-likelihood drops when theta or beta moves
+    ll = fr.lognormal_log_likelihood(im.tolist(), failed, fit.theta, fit.beta)
+    assert ll == pytest.approx(fit.log_likelihood, rel=1e-10)
+    assert fr.lognormal_log_likelihood(im.tolist(), failed, fit.theta * 1.05, fit.beta) < ll
+
+
+def test_study_input_errors_are_input_errors(block):
+    with pytest.raises(fr.InputError):
+        fr.spectrum(block, [2.0, 1.0], [1.0])  # amplitudes must increase
+    with pytest.raises(fr.InputError):
+        fr.fragility([0.1, 0.2], [0, 0])  # all outcomes equal
+
+
+def test_spectrum_file_from_python_equals_flexrock_spectrum(cli, source_dir, tmp_path):
+    # the same spec through `flexrock spectrum` and through Python: the same CSV bytes; then
+    # `flexrock plot` draws the map with the boundary file found next to the cells
+    import subprocess
+
+    spec = source_dir / "examples" / "studies" / "one_sine_block.toml"
+    cells = tmp_path / "block.spectrum.csv"
+    p = subprocess.run([str(cli), "spectrum", str(spec), "-o", str(cells), "-q", "-j", "2"],
+                       capture_output=True, text=True)
+    assert p.returncode == 0, p.stderr
+    f = fr.load_spectrum_file(str(spec))
+    r = fr.compute_spectrum(fr.Body(f.body), f.pulse, 2)
+    g = f.body.gravity
+    assert fr.spectrum_csv(r, g) == cells.read_text()
+    assert fr.boundary_csv(r, f.pulse.normalized, g) == (tmp_path / "block.boundary.csv").read_text()
+
+    from flexrock import plots
+
+    fig = plots.spectrum_map(str(cells))
+    (curve,) = [ln for ln in fig.axes[0].lines if ln.get_gid() == "min_overturning"]
+    found = [k != "none" for k in plots._read_columns(str(tmp_path / "block.boundary.csv"))["kind"]]
+    assert len(curve.get_xdata()) == sum(found) > 0
+    p = subprocess.run([str(cli), "plot", str(cells), "-o", str(tmp_path / "map.svg")],
+                       capture_output=True, text=True)
+    assert p.returncode == 0, p.stderr
+    assert (tmp_path / "map.svg").exists()
+
+
+def test_sweep_and_fragility_from_python_equal_the_cli(cli, source_dir, tmp_path):
+    import subprocess
+
+    manifest = source_dir / "examples" / "studies" / "sweep.toml"
+    out = tmp_path / "sweep.csv"
+    p = subprocess.run([str(cli), "sweep", str(manifest), "-o", str(out), "-q", "-j", "2"],
+                       capture_output=True, text=True)
+    assert p.returncode == 0, p.stderr
+    m = fr.load_sweep_manifest(str(manifest))
+    rows = fr.run_sweep(m.spec, [], 2)
+    text = ",".join(fr.sweep_columns()) + "\n" + "".join(fr.sweep_row(m.spec, r) + "\n" for r in rows)
+    assert text == out.read_text()
+
+    fit_csv = tmp_path / "fit.csv"
+    p = subprocess.run([str(cli), "fragility", str(out), "--im", "pga_g", "-o", str(fit_csv)],
+                       capture_output=True, text=True)
+    assert p.returncode == 0, p.stderr
+    fits = fr.fragility_from_sweep(str(out), im="pga_g")
+    text = ",".join(fr.fragility_columns()) + "\n" + "".join(
+        fr.fragility_row(d, f) + "\n" for d, f in fits)
+    assert text == fit_csv.read_text()

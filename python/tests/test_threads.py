@@ -1,0 +1,49 @@
+"""The GIL is released while simulating: threads run at once and give the serial results."""
+
+import math
+import threading
+import time
+from concurrent.futures import ThreadPoolExecutor
+
+import numpy as np
+
+import flexrock as fr
+
+
+def _run(amplitude):
+    body = fr.uniform_cantilever(10.0, 3.0, 2000.0, 5e9, modes=2, base_mass=1000.0)
+    return fr.simulate(body, fr.harmonic(amplitude, 2 * math.pi * 1.2, 4.0), output_dt=0.01)
+
+
+def test_threads_give_the_serial_results():
+    amplitudes = [1.5, 2.0, 2.5, 3.0, 3.5, 4.0]
+    serial = [_run(a) for a in amplitudes]
+    with ThreadPoolExecutor(max_workers=4) as pool:
+        threaded = list(pool.map(_run, amplitudes))
+    for s, t in zip(serial, threaded):
+        assert s.status == t.status
+        assert s.time_history_csv() == t.time_history_csv()
+        assert s.summary() == t.summary()
+
+
+def test_python_runs_while_a_simulation_runs():
+    # with the GIL held for the whole simulation, the main thread could not run a single
+    # iteration between the worker's start and end marks
+    marks = {}
+    body = fr.rigid_block(0.4, 1.8, 800.0)
+    t = np.arange(0.0, 30.0, 0.01)
+    motion = fr.motion_from_array(4.0 * np.sin(2 * math.pi * 1.3 * t), dt=0.01)
+
+    def work():
+        marks["start"] = time.perf_counter()
+        fr.simulate(body, motion, rtol=1e-12, atol=1e-14, max_step=1e-3)
+        marks["end"] = time.perf_counter()
+
+    worker = threading.Thread(target=work)
+    worker.start()
+    ticks = []
+    while worker.is_alive():
+        ticks.append(time.perf_counter())
+    worker.join()
+    during = [x for x in ticks if marks["start"] < x < marks["end"]]
+    assert len(during) > 10, (len(ticks), marks)
