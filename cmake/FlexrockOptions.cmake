@@ -1,6 +1,12 @@
 option(FLEXROCK_BUILD_TESTS "Build the test suite" ${FLEXROCK_MASTER_PROJECT})
 option(FLEXROCK_BUILD_EXAMPLES "Build the example programs" ${FLEXROCK_MASTER_PROJECT})
 option(FLEXROCK_BUILD_BENCH "Build the benchmarks (Google Benchmark)" OFF)
+option(FLEXROCK_BUILD_VALIDATION "Build the validation driver (docs/validation.md)"
+       ${FLEXROCK_MASTER_PROJECT})
 option(FLEXROCK_BUILD_PYTHON "Build the Python module (pybind11)" OFF)
+option(FLEXROCK_BUILD_FUZZERS "Build the libFuzzer targets in fuzz/ (clang only)" OFF)
 option(FLEXROCK_WERROR "Treat compiler warnings as errors" OFF)
+set(FLEXROCK_WITH_MPI "AUTO" CACHE STRING
+    "MPI for `flexrock spectrum/sweep` across processes: AUTO (if found), ON (required), OFF")
+set_property(CACHE FLEXROCK_WITH_MPI PROPERTY STRINGS AUTO ON OFF)
 set(FLEXROCK_SANITIZE "" CACHE STRING "Sanitizers for flexrock targets, e.g. address;undefined")

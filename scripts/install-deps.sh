@@ -1,18 +1,24 @@
 #!/usr/bin/env bash
 # Installs the Debian packages flexrock builds and tests with, only those missing.
-# Usage: scripts/install-deps.sh [--python] [--bench] [--lint]
+# Usage: scripts/install-deps.sh [--python] [--bench] [--lint] [--mpi] [--fuzz]
+# (the Python module, its tests and the validation checks are part of the release build: their
+# packages are always installed; --python is accepted and adds nothing)
 set -euo pipefail
 
 pkgs=(build-essential cmake ninja-build pkg-config
       libeigen3-dev libboost-dev libboost-math-dev
       libtomlplusplus-dev nlohmann-json3-dev libcli11-dev libfmt-dev
-      libgtest-dev libgmock-dev python3 python3-sympy)
+      libgtest-dev libgmock-dev python3 python3-sympy
+      pybind11-dev python3-dev python3-numpy python3-scipy python3-matplotlib python3-pytest)
 for arg in "$@"; do
   case "$arg" in
     --python) pkgs+=(pybind11-dev python3-dev python3-numpy python3-matplotlib python3-pytest) ;;
-    --bench) pkgs+=(libbenchmark-dev python3-scipy python3-numpy) ;;
+    --bench) pkgs+=(libbenchmark-dev python3-scipy python3-numpy python3-matplotlib
+                    python3-siconos valgrind) ;;
     --lint) pkgs+=(clang-format) ;;
-    *) echo "install-deps.sh: unknown option '$arg' (expected --python, --bench or --lint)" >&2; exit 2 ;;
+    --mpi) pkgs+=(openmpi-bin libopenmpi-dev) ;;  # studies across processes
+    --fuzz) pkgs+=(clang-14 libclang-rt-14-dev) ;;  # libFuzzer targets (fuzz/, preset "fuzz")
+    *) echo "install-deps.sh: unknown option '$arg' (expected --python, --bench, --lint, --mpi or --fuzz)" >&2; exit 2 ;;
   esac
 done
 

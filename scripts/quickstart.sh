@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # Builds flexrock (installing missing Debian packages) and runs a real case end to end: a statue
-# under El Centro 1940. Outputs go to build/example/.
+# under El Centro 1940, and draws its response. Outputs go to build/example/.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh
 cmake --preset release >/dev/null
 cmake --build --preset release -j"$(nproc)"
 build/release/apps/flexrock run -o build/example examples/cases/museum_statue.toml
+build/release/apps/flexrock plot build/example/museum_statue.csv -o build/example/museum_statue.png

@@ -2,7 +2,7 @@
 # Builds flexrock with every test and runs them all; installs missing Debian packages first.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-scripts/install-deps.sh
+scripts/install-deps.sh --mpi  # MPI: the 2-process study test runs too
 cmake --preset release
 cmake --build --preset release -j"$(nproc)"
 ctest --preset release -j"$(nproc)"

@@ -22,6 +22,9 @@
 #include "flexrock/io/case_file.hpp"
 #include "flexrock/io/outputs.hpp"
 #include "flexrock/sim/simulate.hpp"
+#include "plot_command.hpp"
+#include "progress.hpp"
+#include "study_commands.hpp"
 
 #ifndef FLEXROCK_VERSION
 #define FLEXROCK_VERSION "unknown"
@@ -41,40 +44,9 @@ int error(const std::string& message, int code) {
   return code;
 }
 
-// ---------------------------------------------------------------------------------------------
-// progress: a run on a terminal that lasts more than a second shows a bar of the simulated time
-// with its rate and the time left; nothing when stderr is not a terminal or with --quiet
-
-class Progress {
- public:
-  Progress(bool enabled, double motion_s) : enabled_(enabled), motion_s_(motion_s) {}
-  void draw(double elapsed, double simulated) {
-    if (!enabled_ || elapsed < 1.0 || motion_s_ <= 0.0) return;
-    constexpr int kWidth = 30;
-    const double frac = std::clamp(simulated / motion_s_, 0.0, 1.0);
-    const auto filled = static_cast<std::size_t>(frac * kWidth);
-    const std::string bar = std::string(filled, '#') + std::string(kWidth - filled, '.');
-    const double rate = simulated / elapsed;  // simulated seconds per second
-    const double eta = rate > 0.0 ? (motion_s_ - simulated) / rate : 0.0;
-    fmt::print(stderr, "\r[{}] {:5.1f}%  t = {:.2f} of {:.2f} s  {:.3g} s/s  {:.0f} s left\033[K",
-               bar, 100.0 * frac, simulated, motion_s_, rate, eta);
-    std::fflush(stderr);
-    drawn_ = true;
-  }
-  void clear() {
-    if (drawn_) fmt::print(stderr, "\r\033[K");
-    drawn_ = false;
-  }
-
- private:
-  bool enabled_;
-  double motion_s_;
-  bool drawn_ = false;
-};
-
 SimulationResult run_with_progress(const Body& body, const io::Case& c, bool show_progress) {
   const double end = c.options.t_end >= 0.0 ? c.options.t_end : c.motion.duration();
-  Progress progress(show_progress, end);
+  cli::Progress progress(show_progress, end);
   std::atomic<double> reached{0.0};
   SimulationOptions options = c.options;
   options.progress = &reached;
@@ -82,8 +54,9 @@ SimulationResult run_with_progress(const Body& body, const io::Case& c, bool sho
   auto future =
       std::async(std::launch::async, [&] { return simulate(body, c.motion, c.initial, options); });
   while (future.wait_for(std::chrono::milliseconds(100)) != std::future_status::ready) {
-    progress.draw(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
-                  reached.load(std::memory_order_relaxed));
+    progress.draw_time(
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
+        reached.load(std::memory_order_relaxed));
   }
   progress.clear();
   return future.get();  // rethrows InputError from the engine
@@ -303,6 +276,7 @@ int main(int argc, char** argv) {
       "  flexrock run -o results -q examples/cases/slender_column.toml\n"
       "  flexrock check examples/cases/*.toml                    validate without running\n"
       "  flexrock params examples/cases/flexible_tank.toml       the body's derived parameters\n"
+      "  flexrock plot museum_statue.csv -o statue.png           figure of a run (or a spectrum)\n"
       "\n"
       "Exit codes: 0 ok (overturning and loss of contact are results, not failures);\n"
       "1 a run that could not complete or outputs that could not be written;\n"
@@ -329,6 +303,11 @@ int main(int argc, char** argv) {
   params->add_option("BODY", params_file, "case or body file (TOML) with a [body] table")
       ->required();
 
+  flexrock::cli::PlotOptions plot_options;
+  CLI::App* plot = flexrock::cli::add_plot_command(app, plot_options);
+
+  flexrock::cli::StudyCommands studies(app);  // spectrum, sweep, fragility
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -342,6 +321,8 @@ int main(int argc, char** argv) {
     if (*run) return cmd_run(run_file, output_dir, quiet, no_progress);
     if (*check) return cmd_check(check_files, quiet);
     if (*params) return cmd_params(params_file);
+    if (studies.selected()) return studies.run();
+    if (*plot) return flexrock::cli::run_plot(plot_options);
   } catch (const InputError& e) {
     return error(e.what(), kExitBadInput);
   } catch (const std::exception& e) {

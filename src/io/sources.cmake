@@ -18,3 +18,7 @@ else()
   target_compile_definitions(flexrock_io PRIVATE TOML_HEADER_ONLY=1)
 endif()
 target_link_libraries(flexrock_io PRIVATE nlohmann_json::nlohmann_json)
+
+# study files (spectrum specs, sweep manifests and journals, fragility input): flexrock::io
+target_sources(flexrock_io PRIVATE io/study_files.cpp)
+target_link_libraries(flexrock_io PUBLIC flexrock::study)
