@@ -11,6 +11,7 @@ after ``flexrock: error:``. The GIL is released while simulating: Python threads
 
 from __future__ import annotations
 
+import csv
 import functools
 import io
 import json
@@ -18,7 +19,7 @@ from typing import Optional, Sequence, Union
 
 import numpy as np
 
-from . import _flexrock
+from . import _csv, _flexrock
 from ._flexrock import (  # noqa: F401  (re-exported API)
     AccelUnit,
     Body,
@@ -247,21 +248,8 @@ def _component(d: Optional[dict]) -> ExcitationComponent:
 
 
 def _parse_csv(text: str) -> dict:
-    # the CLI's CSV text as columns: numbers are the shortest text that reads back exactly
-    f = io.StringIO(text)
-    header = f.readline().strip().split(",")
-    rows = [line.rstrip("\n").split(",") for line in f if line.strip()]
-    out = {}
-    for j, name in enumerate(header):
-        col = [r[j] if j < len(r) else "" for r in rows]
-        try:
-            if col and all(v == "" for v in col):
-                raise ValueError("no numbers")
-            # an empty field is a value that does not apply: nan
-            out[name] = np.array([float(v) if v != "" else np.nan for v in col], dtype=float)
-        except ValueError:
-            out[name] = np.array(col, dtype=object)
-    return out
+    # the CLI's CSV text as columns
+    return _csv.columns(list(csv.reader(io.StringIO(text))), "time history")
 
 
 class Result:

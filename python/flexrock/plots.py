@@ -20,6 +20,8 @@ from matplotlib.figure import Figure
 from matplotlib.lines import Line2D
 from matplotlib.patches import Patch
 
+from ._csv import columns as _columns  # shared with the results API
+
 __all__ = [
     "load_run",
     "response_figure",
@@ -34,24 +36,6 @@ _EDGE_COLOURS = {1: "tab:orange", 2: "tab:purple"}
 
 
 # --- inputs ------------------------------------------------------------------------------------
-
-
-def _columns(rows, source: str) -> dict:
-    # CSV rows (header first) as columns: numbers as float arrays (empty field: nan), text as
-    # object arrays
-    if not rows:
-        raise ValueError(f"{source}: empty file, expected a CSV with a header row")
-    header, body = rows[0], [r for r in rows[1:] if r]
-    out = {}
-    for j, name in enumerate(header):
-        col = [r[j] if j < len(r) else "" for r in body]
-        try:
-            if col and all(v == "" for v in col):
-                raise ValueError("no numbers")
-            out[name] = np.array([float(v) if v != "" else np.nan for v in col], dtype=float)
-        except ValueError:
-            out[name] = np.array(col, dtype=object)
-    return out
 
 
 def _read_columns(path: str) -> dict:

@@ -18,6 +18,7 @@
 #include "flexrock/core/types.hpp"
 #include "flexrock/io/case_file.hpp"
 #include "flexrock/io/records.hpp"
+#include "table_reader.hpp"
 
 namespace flexrock::io {
 
@@ -60,196 +61,56 @@ std::string resolve(const std::string& base_file, const std::string& p) {
   return (fs::path(base_file).parent_path() / path).lexically_normal().string();
 }
 
-std::size_t line_of(const toml::node& n) { return n.source().begin.line; }
+using detail::describe;
+using detail::line_of;
+// the checked reads of a table, shared with the case-file loader
+using Keys = detail::TableReader;
 
-std::string describe(const toml::node& n) {
-  if (auto s = n.as_string()) return "\"" + s->get() + "\"";
-  if (auto i = n.as_integer()) return std::to_string(i->get());
-  if (auto f = n.as_floating_point()) return num(f->get());
-  if (auto b = n.as_boolean()) return b->get() ? "true" : "false";
-  if (n.is_array()) return "an array";
-  if (n.is_table()) return "a table";
-  return "a date or time";
+// a list of numbers: an array, or a table {start, stop, count[, spacing]} or {start, stop,
+// step}
+std::optional<std::vector<double>> grid_opt(Keys& r, std::string_view key,
+                                            const std::string& unit) {
+  const toml::node* n = r.node(key);
+  if (!n) return std::nullopt;
+  const std::string what = "an array of numbers " + unit +
+                           " or a table {start, stop, count[, spacing = \"linear\"|\"log\"]} "
+                           "or {start, stop, step}";
+  std::vector<double> v;
+  if (const toml::array* a = n->as_array()) {
+    for (const toml::node& e : *a) v.push_back(r.to_number(e, key, what));
+    if (v.empty()) r.expected(key, what + " (not empty)");
+    return v;
+  }
+  const toml::table* t = n->as_table();
+  if (!t) r.expected(key, what);
+  Keys g(r.file(), *t, r.full(key) + ".", line_of(*n));
+  const toml::node* s0 = g.node("start");
+  const toml::node* s1 = g.node("stop");
+  if (!s0 || !s1) r.fail(key, "expected " + what + ": 'start' and 'stop' are required");
+  const double start = g.to_number(*s0, "start", "a number " + unit);
+  const double stop = g.to_number(*s1, "stop", "a number " + unit);
+  if (!(stop >= start)) g.fail("stop", "expected stop >= start (" + num(start) + ")");
+  if (g.has("step")) {
+    if (g.has("count")) g.fail("step", "expected 'step' or 'count', not both");
+    const double step = g.positive_or("step", 1.0, unit);
+    // integer multiples of the step, so that values do not drift; stop included to 1e-9 steps
+    const auto n_steps = static_cast<long>(std::floor((stop - start) / step + 1e-9));
+    for (long i = 0; i <= n_steps; ++i) v.push_back(start + static_cast<double>(i) * step);
+  } else {
+    const long count = g.integer_or("count", 0, 1, "an integer >= 1 (grid points)");
+    if (count == 0) g.fail("count", "missing; expected 'count' (an integer >= 1) or 'step'");
+    const std::string spacing = g.choice("spacing", {"linear", "log"}, "linear");
+    if (spacing == "log" && !(start > 0.0)) g.fail("start", "expected start > 0 for a log grid");
+    for (long i = 0; i < count; ++i) {
+      const double f = count == 1 ? 0.0 : static_cast<double>(i) / static_cast<double>(count - 1);
+      v.push_back(spacing == "log" ? start * std::pow(stop / start, f)
+                                   : start + f * (stop - start));
+    }
+    if (count > 1) v.back() = stop;
+  }
+  g.finish();
+  return v;
 }
-
-// checked reads of one TOML table; errors name file, line and key
-class Keys {
- public:
-  Keys(std::string file, const toml::table& t, std::string prefix)
-      : file_(std::move(file)), t_(t), prefix_(std::move(prefix)), line_(line_of(t)) {}
-
-  const std::string& file() const { return file_; }
-  std::size_t line() const { return line_; }
-  std::string full(std::string_view key) const { return prefix_ + std::string(key); }
-
-  [[noreturn]] void fail(std::string_view key, const std::string& msg) const {
-    const toml::node* n = t_.get(key);
-    const std::size_t at = n ? line_of(*n) : line_;
-    throw InputError(file_ + ":" + (at ? std::to_string(at) + ":" : std::string()) + " key '" +
-                     full(key) + "': " + msg);
-  }
-  [[noreturn]] void expected(std::string_view key, const std::string& what) const {
-    const toml::node* n = t_.get(key);
-    fail(key, "expected " + what + ", got " + (n ? describe(*n) : std::string("nothing")));
-  }
-  const toml::node* node(std::string_view key) {
-    known_.insert(std::string(key));
-    return t_.get(key);
-  }
-  bool has(std::string_view key) { return node(key) != nullptr; }
-  double to_number(const toml::node& n, std::string_view key, const std::string& what) const {
-    double v = 0.0;
-    if (auto i = n.as_integer()) {
-      v = static_cast<double>(i->get());
-    } else if (auto f = n.as_floating_point()) {
-      v = f->get();
-    } else {
-      fail(key, "expected " + what + ", got " + describe(n));
-    }
-    if (!std::isfinite(v)) fail(key, "expected " + what + " (finite), got " + num(v));
-    return v;
-  }
-  std::optional<double> number_opt(std::string_view key, const std::string& what) {
-    const toml::node* n = node(key);
-    if (!n) return std::nullopt;
-    return to_number(*n, key, what);
-  }
-  double positive_or(std::string_view key, double def, const std::string& unit) {
-    const std::string what = "a number > 0 " + unit;
-    const auto v = number_opt(key, what);
-    if (v && !(*v > 0.0)) expected(key, what);
-    return v.value_or(def);
-  }
-  double nonnegative_or(std::string_view key, double def, const std::string& unit) {
-    const std::string what = "a number >= 0 " + unit;
-    const auto v = number_opt(key, what);
-    if (v && !(*v >= 0.0)) expected(key, what);
-    return v.value_or(def);
-  }
-  long integer_or(std::string_view key, long def, long min, const std::string& what) {
-    const toml::node* n = node(key);
-    if (!n) return def;
-    const auto* i = n->as_integer();
-    if (!i || i->get() < min) expected(key, what);
-    return static_cast<long>(i->get());
-  }
-  bool boolean_or(std::string_view key, bool def) {
-    const toml::node* n = node(key);
-    if (!n) return def;
-    if (!n->is_boolean()) expected(key, "true or false");
-    return n->as_boolean()->get();
-  }
-  std::optional<std::string> string_opt(std::string_view key, const std::string& what) {
-    const toml::node* n = node(key);
-    if (!n) return std::nullopt;
-    if (!n->is_string()) expected(key, what);
-    return n->as_string()->get();
-  }
-  std::string string(std::string_view key, const std::string& what) {
-    auto v = string_opt(key, what);
-    if (!v) fail(key, "missing; expected " + what);
-    return *v;
-  }
-  std::string choice(std::string_view key, const std::vector<std::string>& choices,
-                     const std::string& def) {
-    const std::string what = "one of: " + join(choices);
-    const auto v = string_opt(key, "a string, " + what);
-    if (!v) {
-      if (def.empty()) fail(key, "missing; expected " + what);
-      return def;
-    }
-    if (std::find(choices.begin(), choices.end(), *v) != choices.end()) return *v;
-    const std::string hint = closest_key(*v, choices);
-    fail(key, "expected " + what + ", got \"" + *v + "\"" +
-                  (hint.empty() ? "" : " (did you mean \"" + hint + "\"?)"));
-  }
-  // a list of numbers: an array, or a table {start, stop, count[, spacing]} or {start, stop,
-  // step}
-  std::optional<std::vector<double>> grid_opt(std::string_view key, const std::string& unit) {
-    const toml::node* n = node(key);
-    if (!n) return std::nullopt;
-    const std::string what = "an array of numbers " + unit +
-                             " or a table {start, stop, count[, spacing = \"linear\"|\"log\"]} "
-                             "or {start, stop, step}";
-    std::vector<double> v;
-    if (const toml::array* a = n->as_array()) {
-      for (const toml::node& e : *a) v.push_back(to_number(e, key, what));
-      if (v.empty()) expected(key, what + " (not empty)");
-      return v;
-    }
-    const toml::table* t = n->as_table();
-    if (!t) expected(key, what);
-    Keys g(file_, *t, full(key) + ".");
-    const toml::node* s0 = g.node("start");
-    const toml::node* s1 = g.node("stop");
-    if (!s0 || !s1) fail(key, "expected " + what + ": 'start' and 'stop' are required");
-    const double start = g.to_number(*s0, "start", "a number " + unit);
-    const double stop = g.to_number(*s1, "stop", "a number " + unit);
-    if (!(stop >= start)) g.fail("stop", "expected stop >= start (" + num(start) + ")");
-    if (g.has("step")) {
-      if (g.has("count")) g.fail("step", "expected 'step' or 'count', not both");
-      const double step = g.positive_or("step", 1.0, unit);
-      // integer multiples of the step, so that values do not drift; stop included to 1e-9 steps
-      const auto n_steps = static_cast<long>(std::floor((stop - start) / step + 1e-9));
-      for (long i = 0; i <= n_steps; ++i) v.push_back(start + static_cast<double>(i) * step);
-    } else {
-      const long count = g.integer_or("count", 0, 1, "an integer >= 1 (grid points)");
-      if (count == 0) g.fail("count", "missing; expected 'count' (an integer >= 1) or 'step'");
-      const std::string spacing = g.choice("spacing", {"linear", "log"}, "linear");
-      if (spacing == "log" && !(start > 0.0)) g.fail("start", "expected start > 0 for a log grid");
-      for (long i = 0; i < count; ++i) {
-        const double f = count == 1 ? 0.0 : static_cast<double>(i) / static_cast<double>(count - 1);
-        v.push_back(spacing == "log" ? start * std::pow(stop / start, f)
-                                     : start + f * (stop - start));
-      }
-      if (count > 1) v.back() = stop;
-    }
-    g.finish();
-    return v;
-  }
-  std::optional<Keys> table_opt(std::string_view key) {
-    const toml::node* n = node(key);
-    if (!n) return std::nullopt;
-    if (!n->is_table()) expected(key, "a table");
-    return Keys(file_, *n->as_table(), full(key) + ".");
-  }
-  // an array of tables ([[key]])
-  std::vector<Keys> tables(std::string_view key, const std::string& what) {
-    const toml::node* n = node(key);
-    if (!n) {
-      throw InputError(file_ + ": [[" + full(key) + "]]: missing; expected " + what);
-    }
-    const toml::array* a = n->as_array();
-    if (!a || a->empty()) expected(key, "[[" + full(key) + "]] tables: " + what);
-    std::vector<Keys> out;
-    for (const toml::node& e : *a) {
-      if (!e.is_table()) expected(key, "[[" + full(key) + "]] tables: " + what);
-      out.emplace_back(file_, *e.as_table(), full(key) + ".");
-    }
-    return out;
-  }
-  void finish(const std::string& context = {}) const {
-    std::vector<std::string> known(known_.begin(), known_.end());
-    for (const auto& [k, v] : t_) {
-      const std::string key(k.str());
-      if (known_.count(key)) continue;
-      const std::string hint = closest_key(key, known);
-      std::string msg = "unknown key";
-      if (!context.empty()) msg += " " + context;
-      if (!hint.empty()) msg += " (did you mean '" + full(hint) + "'?)";
-      msg += "; expected one of: " + join(known);
-      const std::size_t at = k.source().begin.line ? k.source().begin.line : line_of(v);
-      throw InputError(file_ + ":" + std::to_string(at) + ": key '" + full(key) + "': " + msg);
-    }
-  }
-
- private:
-  std::string file_;
-  const toml::table& t_;
-  std::string prefix_;
-  std::size_t line_ = 0;
-  std::set<std::string> known_;
-};
 
 toml::table parse(const std::string& path, const char* what) {
   if (!fs::exists(path)) throw InputError(path + ": no such " + std::string(what));
@@ -264,27 +125,9 @@ toml::table parse(const std::string& path, const char* what) {
   }
 }
 
-// [solver]: the keys of a case file's [solver] table that make sense for a study
+// [solver]: the keys of a case file's [solver] table that make sense for a study (no t_end)
 void read_solver(Keys& r, SimulationOptions& o) {
-  o.rtol = r.positive_or("rtol", o.rtol, "[-]");
-  if (o.rtol < 1e-14) r.expected("rtol", "a number >= 1e-14 (double precision)");
-  o.atol = r.positive_or("atol", o.atol, "[-]");
-  o.max_step = r.positive_or("max_step", o.max_step, "[s]");
-  o.event_samples = static_cast<int>(
-      r.integer_or("event_samples", o.event_samples, 1, "an integer >= 1 (points a step)"));
-  const std::string crit =
-      r.choice("overturn", {"static_instability", "half_pi"},
-               o.overturn == OverturnCriterion::kHalfPi ? "half_pi" : "static_instability");
-  o.overturn =
-      crit == "half_pi" ? OverturnCriterion::kHalfPi : OverturnCriterion::kStaticInstability;
-  o.chatter_ratio = r.nonnegative_or("chatter_ratio", o.chatter_ratio, "[-]");
-  o.restitution_factor = r.nonnegative_or("restitution_factor", o.restitution_factor, "[-]");
-  if (const auto mu = r.number_opt("friction_coefficient", "a number > 0 [-]")) {
-    if (!(*mu > 0.0)) r.expected("friction_coefficient", "a number > 0 [-]");
-    o.friction_coefficient = *mu;
-  }
-  o.max_steps = r.integer_or("max_steps", o.max_steps, 1, "an integer >= 1");
-  o.max_impacts = r.integer_or("max_impacts", o.max_impacts, 1, "an integer >= 1");
+  detail::read_solver_keys(r, o);
   r.finish("in [solver] (see docs/studies.md)");
 }
 
@@ -393,7 +236,7 @@ SpectrumFile load_spectrum_file(const std::string& path) {
     Keys rk(path, *rn->as_table(), "spectrum.record.");
     const Record rec = read_record(rk, f.record_name, nullptr);
     f.record.motion = rec.to_motion();
-    const auto scales = s.grid_opt("scales", "[-] (factors on the record)");
+    const auto scales = grid_opt(s, "scales", "[-] (factors on the record)");
     if (!scales) s.fail("scales", "missing; expected the scale factors of the record");
     f.record.scales = *scales;
     f.record.free_periods = free_periods;
@@ -420,8 +263,8 @@ SpectrumFile load_spectrum_file(const std::string& path) {
     }
     const std::string au = f.pulse.normalized ? "[-] (a_p / (g tan alpha))" : "(amplitude_units)";
     const std::string wu = f.pulse.normalized ? "[-] (omega_p / p)" : "(frequency_units)";
-    auto amps = s.grid_opt("amplitudes", au);
-    auto freqs = s.grid_opt("frequencies", wu);
+    auto amps = grid_opt(s, "amplitudes", au);
+    auto freqs = grid_opt(s, "frequencies", wu);
     if (!amps) s.fail("amplitudes", "missing; expected the grid of pulse amplitudes " + au);
     if (!freqs) s.fail("frequencies", "missing; expected the grid of pulse frequencies " + wu);
     for (double& a : *amps) a *= a_factor;
@@ -593,12 +436,12 @@ SweepManifest load_sweep_manifest(const std::string& path) {
   if (f == t) sk->fail("factors", "expected exactly one of 'factors' [-] or 'target_pga'");
   if (f) {
     m.spec.scale_kind = study::ScaleKind::kFactor;
-    m.spec.scales = *sk->grid_opt("factors", "[-]");
+    m.spec.scales = *grid_opt(*sk, "factors", "[-]");
     if (sk->has("units")) sk->fail("units", "only with 'target_pga'");
   } else {
     m.spec.scale_kind = study::ScaleKind::kTargetPga;
     const double u = to_si_factor(unit_of(sk->choice("units", kUnits, "g")));
-    m.spec.scales = *sk->grid_opt("target_pga", "(units)");
+    m.spec.scales = *grid_opt(*sk, "target_pga", "(units)");
     for (double& v : m.spec.scales) v *= u;
   }
   for (std::size_t i = 0; i < m.spec.scales.size(); ++i) {

@@ -1,0 +1,303 @@
+// Checked reads of one TOML table, shared by the case-file and study-file loaders: every error
+// names the file, the line and the full key, and says what was expected and what was found;
+// unknown keys are rejected with the closest known one. Internal to flexrock::io.
+#pragma once
+
+#include <toml++/toml.h>
+
+#include <cmath>
+#include <cstdio>
+#include <optional>
+#include <set>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "flexrock/core/error.hpp"
+#include "flexrock/core/types.hpp"
+#include "flexrock/io/case_file.hpp"
+#include "flexrock/sim/simulate.hpp"
+
+namespace flexrock::io::detail {
+
+// a number for messages: shortest form that reads back
+inline std::string num(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.10g", v);
+  return buf;
+}
+
+inline std::string join(const std::vector<std::string>& v) {
+  std::string s;
+  for (std::size_t i = 0; i < v.size(); ++i) s += (i ? ", " : "") + v[i];
+  return s;
+}
+
+// what a TOML node holds, for "got ..."
+inline std::string describe(const toml::node& n) {
+  if (auto s = n.as_string()) return "\"" + s->get() + "\"";
+  if (auto i = n.as_integer()) return std::to_string(i->get());
+  if (auto f = n.as_floating_point()) return num(f->get());
+  if (auto b = n.as_boolean()) return b->get() ? "true" : "false";
+  if (n.is_array()) return "an array";
+  if (n.is_table()) return "a table";
+  return "a date or time";
+}
+
+inline std::size_t line_of(const toml::node& n) { return n.source().begin.line; }
+
+// the keys of one TOML table, read with checks; every error names file, line and key
+class TableReader {
+ public:
+  TableReader(std::string file, const toml::table& table, std::string prefix, std::size_t line = 0)
+      : file_(std::move(file)), t_(table), prefix_(std::move(prefix)), line_(line) {
+    if (line_ == 0) line_ = line_of(table);
+  }
+
+  const std::string& file() const { return file_; }
+  std::size_t line() const { return line_; }
+  std::string full(std::string_view key) const { return prefix_ + std::string(key); }
+
+  [[noreturn]] void fail_at(std::size_t line, std::string_view key, const std::string& msg) const {
+    std::string where = file_ + ":";
+    if (line > 0) where += std::to_string(line) + ":";
+    throw InputError(where + " key '" + full(key) + "': " + msg);
+  }
+  [[noreturn]] void fail(std::string_view key, const std::string& msg) const {
+    const toml::node* n = t_.get(key);
+    fail_at(n ? line_of(*n) : line_, key, msg);
+  }
+  [[noreturn]] void expected(std::string_view key, const std::string& what) const {
+    const toml::node* n = t_.get(key);
+    fail(key, "expected " + what + ", got " + (n ? describe(*n) : std::string("nothing")));
+  }
+
+  bool has(std::string_view key) {
+    known_.insert(std::string(key));
+    return t_.contains(key);
+  }
+  const toml::node* node(std::string_view key) {
+    known_.insert(std::string(key));
+    return t_.get(key);
+  }
+  const toml::node& require(std::string_view key, const std::string& what) {
+    const toml::node* n = node(key);
+    if (!n) {
+      // a misspelt key is the likelier cause than a forgotten one: name it first
+      for (const auto& [k, v] : t_) {
+        const std::string other(k.str());
+        if (known_.count(other) || closest_key(other, {std::string(key)}).empty()) continue;
+        const std::size_t at = k.source().begin.line ? k.source().begin.line : line_of(v);
+        fail_at(at, other,
+                "unknown key (did you mean '" + full(key) + "'?); '" + full(key) +
+                    "' is required: " + what);
+      }
+      fail_at(line_, key, "missing; expected " + what);
+    }
+    return *n;
+  }
+
+  // any finite number (integers too); `allow_inf` admits +-inf
+  std::optional<double> number_opt(std::string_view key, const std::string& what,
+                                   bool allow_inf = false) {
+    const toml::node* n = node(key);
+    if (!n) return std::nullopt;
+    return to_number(*n, key, what, allow_inf);
+  }
+  double number(std::string_view key, const std::string& what) {
+    return to_number(require(key, what), key, what, false);
+  }
+  double number_or(std::string_view key, double def, const std::string& what) {
+    return number_opt(key, what).value_or(def);
+  }
+  double positive(std::string_view key, const std::string& unit) {
+    const std::string what = "a number > 0 " + unit;
+    const double v = number(key, what);
+    if (!(v > 0.0)) expected(key, what);
+    return v;
+  }
+  double positive_or(std::string_view key, double def, const std::string& unit) {
+    return has(key) ? positive(key, unit) : def;
+  }
+  double nonnegative_or(std::string_view key, double def, const std::string& unit) {
+    const std::string what = "a number >= 0 " + unit;
+    const std::optional<double> v = number_opt(key, what);
+    if (v && !(*v >= 0.0)) expected(key, what);
+    return v.value_or(def);
+  }
+  long integer_or(std::string_view key, long def, long min, const std::string& what) {
+    const toml::node* n = node(key);
+    if (!n) return def;
+    const auto* i = n->as_integer();
+    if (!i || i->get() < min) expected(key, what);
+    return static_cast<long>(i->get());
+  }
+  bool boolean_or(std::string_view key, bool def) {
+    const toml::node* n = node(key);
+    if (!n) return def;
+    if (!n->is_boolean()) expected(key, "true or false");
+    return n->as_boolean()->get();
+  }
+  std::optional<std::string> string_opt(std::string_view key, const std::string& what) {
+    const toml::node* n = node(key);
+    if (!n) return std::nullopt;
+    if (!n->is_string()) expected(key, what);
+    return n->as_string()->get();
+  }
+  std::string string(std::string_view key, const std::string& what) {
+    const toml::node& n = require(key, what);
+    if (!n.is_string()) expected(key, what);
+    return n.as_string()->get();
+  }
+  // one of `choices`; `def` empty: required
+  std::string choice(std::string_view key, const std::vector<std::string>& choices,
+                     const std::string& def = {}) {
+    const std::string what = "one of: " + join(choices);
+    std::optional<std::string> v;
+    if (def.empty()) {
+      v = string(key, "a string, " + what);
+    } else {
+      v = string_opt(key, "a string, " + what);
+      if (!v) return def;
+    }
+    if (std::find(choices.begin(), choices.end(), *v) != choices.end()) return *v;
+    const std::string hint = closest_key(*v, choices);
+    fail(key, "expected " + what + ", got \"" + *v + "\"" +
+                  (hint.empty() ? "" : " (did you mean \"" + hint + "\"?)"));
+  }
+  // an array of finite numbers
+  std::optional<std::vector<double>> vector_opt(std::string_view key, const std::string& what) {
+    const toml::node* n = node(key);
+    if (!n) return std::nullopt;
+    const toml::array* a = n->as_array();
+    if (!a) expected(key, what);
+    std::vector<double> v;
+    for (const toml::node& e : *a) v.push_back(to_number(e, key, what, false));
+    return v;
+  }
+  // an array of equally long arrays of finite numbers; `cols` < 0: any
+  std::optional<MatrixX> matrix_opt(std::string_view key, const std::string& what) {
+    const toml::node* n = node(key);
+    if (!n) return std::nullopt;
+    const toml::array* a = n->as_array();
+    if (!a) expected(key, what);
+    MatrixX m;
+    for (std::size_t i = 0; i < a->size(); ++i) {
+      const toml::array* row = (*a)[i].as_array();
+      if (!row)
+        fail_at(
+            line_of((*a)[i]), key,
+            "expected " + what + ", got row " + std::to_string(i + 1) + " = " + describe((*a)[i]));
+      if (i == 0)
+        m.resize(static_cast<Eigen::Index>(a->size()), static_cast<Eigen::Index>(row->size()));
+      if (static_cast<Eigen::Index>(row->size()) != m.cols()) {
+        fail_at(line_of((*a)[i]), key,
+                "expected " + what + ": every row as long as the first (" +
+                    std::to_string(m.cols()) + "), got row " + std::to_string(i + 1) + " with " +
+                    std::to_string(row->size()));
+      }
+      for (std::size_t j = 0; j < row->size(); ++j) {
+        m(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)) =
+            to_number((*row)[j], key, what, false);
+      }
+    }
+    return m;
+  }
+  std::optional<TableReader> table_opt(std::string_view key) {
+    const toml::node* n = node(key);
+    if (!n) return std::nullopt;
+    if (!n->is_table()) expected(key, "a table");
+    return TableReader(file_, *n->as_table(), full(key) + ".", line_of(*n));
+  }
+  TableReader table(std::string_view key) {
+    const toml::node* n = node(key);
+    if (!n) {
+      throw InputError(file_ + ":" + (line_ ? std::to_string(line_) + ":" : std::string()) +
+                       " table [" + full(key) + "]: missing; expected a [" + full(key) +
+                       "] table (see docs/case-file.md)");
+    }
+    if (!n->is_table()) expected(key, "a table");
+    return TableReader(file_, *n->as_table(), full(key) + ".", line_of(*n));
+  }
+
+  // an array of tables ([[key]]), not empty
+  std::vector<TableReader> tables(std::string_view key, const std::string& what) {
+    const toml::node* n = node(key);
+    if (!n) throw InputError(file_ + ": [[" + full(key) + "]]: missing; expected " + what);
+    const toml::array* a = n->as_array();
+    if (!a || a->empty()) expected(key, "[[" + full(key) + "]] tables: " + what);
+    std::vector<TableReader> out;
+    for (const toml::node& e : *a) {
+      if (!e.is_table()) expected(key, "[[" + full(key) + "]] tables: " + what);
+      out.emplace_back(file_, *e.as_table(), full(key) + ".", line_of(e));
+    }
+    return out;
+  }
+
+  // every key of the table must have been asked for; `context` explains the set
+  void finish(const std::string& context = {}) const {
+    std::vector<std::string> known(known_.begin(), known_.end());
+    for (const auto& [k, v] : t_) {
+      const std::string key(k.str());
+      if (known_.count(key)) continue;
+      const std::string hint = closest_key(key, known);
+      std::string msg = "unknown key";
+      if (!context.empty()) msg += " " + context;
+      if (!hint.empty()) msg += " (did you mean '" + full(hint) + "'?)";
+      msg += "; expected one of: " + join(known);
+      const std::size_t line = k.source().begin.line ? k.source().begin.line : line_of(v);
+      fail_at(line, key, msg);
+    }
+  }
+
+  // a number node (integers too); `allow_inf` admits +-inf
+  double to_number(const toml::node& n, std::string_view key, const std::string& what,
+                   bool allow_inf = false) const {
+    double v;
+    if (auto i = n.as_integer()) {
+      v = static_cast<double>(i->get());
+    } else if (auto f = n.as_floating_point()) {
+      v = f->get();
+    } else {
+      fail_at(line_of(n), key, "expected " + what + ", got " + describe(n));
+    }
+    if (std::isnan(v) || (std::isinf(v) && !allow_inf)) {
+      fail_at(line_of(n), key, "expected " + what + " (finite), got " + num(v));
+    }
+    return v;
+  }
+
+ private:
+  std::string file_;
+  const toml::table& t_;
+  std::string prefix_;
+  std::size_t line_;
+  std::set<std::string> known_;
+};
+
+// the solver keys of a [solver] table but t_end (case files and study files); the defaults are
+// those already in `o` (a study starts from overturning at pi/2)
+inline void read_solver_keys(TableReader& r, SimulationOptions& o) {
+  o.rtol = r.positive_or("rtol", o.rtol, "[-]");
+  if (o.rtol < 1e-14) r.expected("rtol", "a number >= 1e-14 (double precision)");
+  o.atol = r.positive_or("atol", o.atol, "[-]");
+  o.max_step = r.positive_or("max_step", o.max_step, "[s]");
+  o.event_samples = static_cast<int>(
+      r.integer_or("event_samples", o.event_samples, 1, "an integer >= 1 (points a step)"));
+  const std::string crit =
+      r.choice("overturn", {"static_instability", "half_pi"},
+               o.overturn == OverturnCriterion::kHalfPi ? "half_pi" : "static_instability");
+  o.overturn =
+      crit == "half_pi" ? OverturnCriterion::kHalfPi : OverturnCriterion::kStaticInstability;
+  o.chatter_ratio = r.nonnegative_or("chatter_ratio", o.chatter_ratio, "[-]");
+  o.restitution_factor = r.nonnegative_or("restitution_factor", o.restitution_factor, "[-]");
+  const std::string fw = "a number > 0 [-] (or inf: no friction limit)";
+  if (const auto mu = r.number_opt("friction_coefficient", fw, true)) {
+    if (!(*mu > 0.0)) r.expected("friction_coefficient", fw);
+    o.friction_coefficient = *mu;
+  }
+  o.max_steps = r.integer_or("max_steps", o.max_steps, 1, "an integer >= 1");
+  o.max_impacts = r.integer_or("max_impacts", o.max_impacts, 1, "an integer >= 1");
+}
+
+}  // namespace flexrock::io::detail
