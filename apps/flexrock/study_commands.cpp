@@ -66,12 +66,14 @@ struct SignalGuard {
 // ---------------------------------------------------------------------------------------------
 // processes: MPI when built with it and started by a launcher, else one process
 
+#ifdef FLEXROCK_HAVE_MPI
 bool launched_by_mpirun() {
   for (const char* v : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "PMIX_RANK"}) {
     if (std::getenv(v)) return true;
   }
   return false;
 }
+#endif
 
 class Processes {
  public:
