@@ -22,3 +22,4 @@ flexrock_add_test(flexrock_sim_tests SOURCES unit/simulate_test.cpp LABEL unit)
 # replaces global operator new to count allocations: its own executable
 flexrock_add_test(flexrock_allocation_tests SOURCES unit/no_allocation_test.cpp LABEL unit)
 flexrock_add_test(flexrock_excitation_motion_tests SOURCES unit/ground_motion_test.cpp LABEL unit)
+flexrock_add_test(flexrock_contact_propagation_tests SOURCES unit/contact_propagation_test.cpp LABEL unit)

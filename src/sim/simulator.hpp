@@ -9,6 +9,7 @@
 #include <numbers>
 #include <string>
 
+#include "contact_propagator.hpp"
 #include "flexrock/contact/impact.hpp"
 #include "flexrock/core/error.hpp"
 #include "flexrock/integrate/dopri5.hpp"
@@ -44,7 +45,13 @@ class Simulator {
   using State = Eigen::Matrix<double, S, 1, Eigen::ColMajor, MaxS, 1>;
 
   Simulator(const Body& body, const GroundMotion& motion, const SimulationOptions& opt)
-      : body_(body), dyn_(body), motion_(motion), opt_(opt), n_(body.modes()) {
+      : body_(body),
+        dyn_(body),
+        motion_(motion),
+        opt_(opt),
+        n_(body.modes()),
+        samples_(std::clamp(opt.event_samples, 1, kMaxSamples)),
+        prop_(dyn_, motion, samples_, opt.max_step, opt.exact_full_contact) {
     q_.resize(n_);
     qd_.resize(n_);
     qdd_.resize(n_);
@@ -61,7 +68,6 @@ class Simulator {
     ctl_.atol = opt.atol;
     ctl_.max_step = opt.max_step;
     ctl_.controlled = 2 * n_ + 2;  // the energy quadratures do not steer the step
-    samples_ = std::clamp(opt.event_samples, 1, kMaxSamples);
     for (State& xk : sample_states_) xk.setZero(2 * n_ + 4);
   }
 
@@ -180,10 +186,14 @@ class Simulator {
       x(ithd()) = 0.0;
     }
     still_ = n_ == 0 && !rocking();
+    exact_ = !still_ && !rocking() && prop_.available();
     if (still_) {
       // a rigid body in full contact does not move: no integration until it uplifts
       x_still_ = x;
       still_t1_ = t;
+    } else if (exact_) {
+      // a flexible body in full contact under a record: exact steps between its samples
+      prop_.start(t, x);
     } else {
       integ_.start([this](double tt, const State& xx, State& dd) { rhs(tt, xx, dd); }, ctl_, t, x);
     }
@@ -214,13 +224,20 @@ class Simulator {
   // one accepted step plus whatever happens in it; false when the run ends
   bool advance(double& t, State& x) {
     if (still_) return advance_still(t, x);
+    if (exact_) return advance_with(prop_, t, x);
+    return advance_with(integ_, t, x);
+  }
+
+  // the step of `integ` (the integrator, or the exact propagator in full contact)
+  template <class Stepper>
+  bool advance_with(Stepper& integ, double& t, State& x) {
     auto sys = [this](double tt, const State& xx, State& dd) { rhs(tt, xx, dd); };
     const double t_stop = std::min(t_end_, motion_.next_breakpoint(t, break_cursor_));
     if (++res_.steps > opt_.max_steps)
       return stop(
           t, x,
           "step limit reached (" + std::to_string(opt_.max_steps) + " steps; raise max_steps)");
-    if (integ_.step(sys, t_stop) != Dopri5<State>::Status::kAccepted) {
+    if (integ.step(sys, t_stop) != Dopri5<State>::Status::kAccepted) {
       // the step limit is relative (min_step x max(1 s, t)); while rocking the usual cause is
       // impacts accumulating with the chatter cut-off disabled, so the message says so
       const double h_min = ctl_.min_step * std::max(1.0, std::abs(t));
@@ -233,7 +250,7 @@ class Simulator {
                   "integration step collapsed below " + short_number(h_min) +
                       " s near t = " + short_number(t) + " s (" + cause + ")");
     }
-    const double t0 = integ_.t0(), t1 = integ_.t1();
+    const double t0 = integ.t0(), t1 = integ.t1();
     if (opt_.progress) opt_.progress->store(t1, std::memory_order_relaxed);
     // sample the event functions across the step, keeping the states for the extremes
     auto& smp = samples_buf_;
@@ -242,9 +259,9 @@ class Simulator {
       const double tk = k == samples_ ? t1 : t0 + (t1 - t0) * k / samples_;
       State& xk = sample_states_[static_cast<std::size_t>(k)];
       if (k == samples_) {
-        xk = integ_.x1();
+        xk = integ.x1();
       } else {
-        integ_.dense(tk, xk);
+        integ.dense(tk, xk);
       }
       evaluate(tk, xk, smp[k]);
     }
@@ -272,21 +289,21 @@ class Simulator {
     if (slot_hit < 0) {
       // an analytic motion may jump at a breakpoint: start the next step from its right limit
       if (t1 == t_stop && t1 < t_end_ && !motion_.is_sampled()) {
-        integ_.refresh_derivative(sys, std::nextafter(t1, t_end_));
+        integ.refresh_derivative(sys, std::nextafter(t1, t_end_));
       }
       emit_rows_until(t1);
       t = t1;
-      x = integ_.x1();
+      x = integ.x1();
       s0_ = smp[samples_];
       zero_start_.fill(false);
       if (s0_.v[kSlotFriction] > 0.0) friction_over_ = false;
       return true;
     }
     // land exactly on the event and act on it
-    if (t_hit > t0) integ_.restep_to(sys, t_hit);
+    if (t_hit > t0) integ.restep_to(sys, t_hit);
     emit_rows_until(t_hit);
     t = t_hit;
-    x = t_hit > t0 ? integ_.x1() : integ_.x0();
+    x = t_hit > t0 ? integ.x1() : integ.x0();
     return act(slot_hit, t, x);
   }
 
@@ -453,6 +470,8 @@ class Simulator {
   void state_at(double t, State& out) const {
     if (still_) {
       out = x_still_;
+    } else if (exact_) {
+      prop_.dense(t, out);
     } else {
       integ_.dense(t, out);
     }
@@ -677,7 +696,7 @@ class Simulator {
     for (;;) {
       const double to = static_cast<double>(next_output_) * opt_.output_dt;
       if (to > t_cut || to > t_end_ * (1.0 + 1e-14)) break;
-      state_at(std::min(to, still_ ? still_t1_ : integ_.t1()), xr_);
+      state_at(std::min(to, still_ ? still_t1_ : (exact_ ? prop_.t1() : integ_.t1())), xr_);
       emit_row(to, xr_);
       ++next_output_;
     }
@@ -753,6 +772,8 @@ class Simulator {
   StepControl ctl_;
   int samples_ = 4;
   Dopri5<State> integ_;
+  ContactPropagator<N, MaxN, State> prop_;
+  bool exact_ = false;  // a flexible body in full contact, stepped by prop_
   Phase phase_ = Phase::kFullContact;
   GroundMotion::Cursor rhs_cursor_, event_cursor_, break_cursor_;
   Vec q_, qd_, qdd_;

@@ -61,6 +61,7 @@ class Dynamics {
   const Mat& mu() const { return mu_; }
   const Mat& mu_inverse() const { return mu_inv_; }
   const Mat& damping() const { return damping_; }
+  const Mat& stiffness() const { return stiffness_; }  // K = (g/h) kappa [1/s^2]
   /// alpha of the pivot when rocking on `edge` (paper: -alpha1 for theta > 0, alpha2 for theta < 0)
   double alpha(int edge) const { return edge == 1 ? -alpha1_ : alpha2_; }
 

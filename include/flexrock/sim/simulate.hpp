@@ -63,8 +63,11 @@ struct SimulationOptions {
   double chatter_ratio = 0.01;  // impacts closer than this times the shortest period end rocking
   double restitution_factor = 1.0;  // factor on theta_dot after an impact (1: the paper's law)
   double friction_coefficient = std::numeric_limits<double>::infinity();  // static friction
-  long max_steps = 50'000'000;              // integrator steps before the run stops
-  long max_impacts = 10'000'000;            // impacts before the run stops
+  long max_steps = 50'000'000;    // integrator steps before the run stops
+  long max_impacts = 10'000'000;  // impacts before the run stops
+  // a flexible body in full contact under a sampled record is propagated exactly between the
+  // samples (docs/theory.md, "Exact propagation in full contact"); false: integrated by DOPRI5
+  bool exact_full_contact = true;
   std::atomic<double>* progress = nullptr;  // if set: the time reached [s], after every step
 };
 
