@@ -18,8 +18,7 @@
 // eigenvalue and reuses those of the usual step length.
 #pragma once
 
-#include <Eigen/Eigenvalues>
-#include <Eigen/LU>
+#include <Eigen/Core>
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -31,6 +30,24 @@
 #include "flexrock/model/dynamics.hpp"
 
 namespace flexrock::detail {
+
+// The modes of the full-contact state matrix A, found once per run on dynamic sizes (one
+// instantiation of the eigensolver for every body size keeps the build short).
+struct ContactModes {
+  Eigen::MatrixXcd v, v_inv;  // eigenvectors of A and their inverse
+  Eigen::VectorXcd lambda;    // eigenvalues of A
+  MatrixX a_inv;              // A^-1
+  Eigen::VectorXcd scratch;   // e^{lambda tau}
+  Eigen::MatrixXcd product;   // V e^{Lambda tau}
+  Eigen::MatrixXcd full;      // V e^{Lambda tau} V^-1
+  MatrixX transition;         // e^{A tau}, real
+};
+
+/// Decomposes A = V Lambda V^-1; false when A is (nearly) defective or singular, where the
+/// body is integrated instead. (src/sim/contact_modes.cpp)
+bool decompose_contact_matrix(const MatrixX& a, ContactModes& out);
+/// out.transition = e^{A tau}; allocates nothing after the decomposition.
+void contact_transition(ContactModes& modes, double tau);
 
 template <int N, int MaxN, class State>
 class ContactPropagator {
@@ -54,31 +71,20 @@ class ContactPropagator {
       : dyn_(dyn), motion_(motion), n_(dyn.modes()), samples_(samples), max_step_(max_step) {
     if (!enabled || n_ == 0 || !motion.is_sampled()) return;
     const int m = 2 * n_;
-    RealMat a = RealMat::Zero(m, m);
+    MatrixX a = MatrixX::Zero(m, m);
     a.topRightCorner(n_, n_).setIdentity();
     a.bottomLeftCorner(n_, n_) = -(dyn.mu_inverse() * dyn.stiffness());
     a.bottomRightCorner(n_, n_) = -(dyn.mu_inverse() * dyn.damping());
-    Eigen::EigenSolver<RealMat> es(a);
-    if (es.info() != Eigen::Success) return;
-    v_ = es.eigenvectors();
-    lambda_ = es.eigenvalues();
-    Eigen::PartialPivLU<CplxMat> lu(v_);
-    v_inv_ = lu.inverse();
-    // a nearly defective A (repeated eigenvalues, critical damping) has nearly parallel
-    // eigenvectors: its exponential from them would lose digits
-    const double cond =
-        v_.cwiseAbs().rowwise().sum().maxCoeff() * v_inv_.cwiseAbs().rowwise().sum().maxCoeff();
-    if (!(cond < 1e6)) return;
-    const CplxMat back = v_ * lambda_.asDiagonal() * v_inv_;
-    if (!((back.real() - a).cwiseAbs().maxCoeff() <= 1e-10 * a.cwiseAbs().maxCoeff())) return;
-    // A is singular only with a zero-frequency mode, which a body cannot have; guard anyway
-    const Eigen::PartialPivLU<RealMat> alu(a);
-    if (!(alu.rcond() > 1e-12)) return;
-    a_inv_ = alu.inverse();
+    if (!decompose_contact_matrix(a, modes_)) return;
+    v_ = modes_.v;
+    v_inv_ = modes_.v_inv;
+    lambda_ = modes_.lambda;
+    a_inv_ = modes_.a_inv;
+    a_ = a;
     h_cap_ = kMaxPhase / lambda_.cwiseAbs().maxCoeff();
     gx_ = -dyn.g_over_h() * (dyn.mu_inverse() * dyn.psi_x()) / dyn.g();
     gy_ = -dyn.g_over_h() * (dyn.mu_inverse() * dyn.psi_y());
-    for (Real* v : {&c0_, &c1_, &z_, &f_, &yt_, &yd_}) v->setZero(m);
+    for (Real* v : {&c0_, &c1_, &z_, &az_, &f_, &yt_, &yd_, &zd_}) v->setZero(m);
     ex_.setZero(m);
     w_.setZero(m);
     cache_.assign(static_cast<std::size_t>(samples_ + 1 + kNodes), RealMat::Zero(m, m));
@@ -99,9 +105,12 @@ class ContactPropagator {
   /// One step from t1() to min(t_stop, t1() + max_step, the phase cap); never fails.
   template <class System>
   typename Dopri5<State>::Status step(System&& /*sys*/, double t_stop) {
+    // equal steps across the rest of the interval, so that a uniform record's steps all have
+    // one length and reuse one cache
     const double t = t1_;
-    double h = std::min(max_step_, h_cap_);
-    if (t + h >= t_stop || t + 1.01 * h >= t_stop) h = t_stop - t;
+    const double rest = t_stop - t, h_max = std::min(max_step_, h_cap_);
+    const double pieces = std::max(1.0, std::ceil(rest / h_max - 1e-9));
+    const double h = pieces == 1.0 ? rest : rest / pieces;
     propagate(t, x1_, h, xn_);
     t0_ = t;
     t1_ = t + h;
@@ -155,16 +164,16 @@ class ContactPropagator {
   // f's lower half for a base acceleration
   Vec lower(BaseAcceleration a) const { return gx_ * a.x + gy_ * (1.0 + a.y / dyn_.g()); }
 
-  // e^{A tau} = Re(V e^{Lambda tau} V^-1), real
-  void transition(double tau, RealMat& e) const {
-    for (int i = 0; i < 2 * n_; ++i) ex_(i) = std::exp(lambda_(i) * tau);
-    e = (v_ * ex_.asDiagonal() * v_inv_).real();
+  void transition(double tau, RealMat& e) {
+    contact_transition(modes_, tau);
+    e = modes_.transition;
   }
 
-  // the usual step length (a record interval, or the cap): e^{A tau} at its event-sample
+  // the usual step length (a record interval, or a part of it): e^{A tau} at its event-sample
   // fractions and quadrature nodes, kept. Steps of a uniform record differ from it by rounding
-  // only (a few ulp of t), which moves the state by |lambda| dh ~ 1e-13 relative.
-  bool usual(double h) const { return std::abs(h - cache_h_) <= 1e-11 * h; }
+  // (a few ulp of t); e^{A (tau + d)} z = e^{A tau} (z + d A z) + O((|lambda| d)^2) corrects that
+  // to ~1e-20.
+  bool usual(double h) const { return std::abs(h - cache_h_) <= 1e-9 * h; }
   void fill_cache(double h) {
     cache_h_ = h;
     for (int k = 0; k <= samples_; ++k)
@@ -179,7 +188,8 @@ class ContactPropagator {
       const double k = tau * samples_ / h_;
       const double kr = std::round(k);
       if (std::abs(k - kr) <= 1e-9 && kr >= 0 && kr <= samples_) {
-        y.noalias() = cache_[static_cast<std::size_t>(kr)] * z_;
+        zd_ = z_ + (tau - kr * cache_h_ / samples_) * az_;
+        y.noalias() = cache_[static_cast<std::size_t>(kr)] * zd_;
         y += c0_ + c1_ * tau;
         return;
       }
@@ -223,6 +233,7 @@ class ContactPropagator {
     // the usual step fills the cache; a short one after an event computes its own
     if (!usual(h) && h >= 0.5 * std::min(max_step_, h_cap_)) fill_cache(h);
     cached_ = usual(h);
+    if (cached_) az_.noalias() = a_ * z_;
     const int iw = 2 * n_ + 2, id = 2 * n_ + 3;
     powers(yt_, a0_, p0_, d0_);
     at(h, yd_);
@@ -235,7 +246,8 @@ class ContactPropagator {
     for (int j = 0; j < kNodes; ++j) {
       const double tau = h * kGaussX[j];
       if (cached_) {
-        yt_.noalias() = cache_[static_cast<std::size_t>(samples_ + 1 + j)] * z_;
+        zd_ = z_ + (h - cache_h_) * kGaussX[j] * az_;
+        yt_.noalias() = cache_[static_cast<std::size_t>(samples_ + 1 + j)] * zd_;
         yt_ += c0_ + c1_ * tau;
       } else {
         from_modes(tau, yt_);
@@ -267,18 +279,19 @@ class ContactPropagator {
   double max_step_ = 0.01;
   double h_cap_ = 0.0;
   bool available_ = false;
+  ContactModes modes_;
   CplxMat v_, v_inv_;
   Cplx lambda_;
   mutable Cplx ex_;
-  RealMat a_inv_;
+  RealMat a_, a_inv_;
   mutable Cplx w_;  // V^-1 z of this step
   mutable bool modal_ready_ = false;
   std::vector<RealMat> cache_;  // e^{A tau} of the usual step: sample fractions, then nodes
   double cache_h_ = -1.0;
   bool cached_ = false;  // this step has the usual length
   Vec gx_, gy_, q_, qd_;
-  Real c0_, c1_, z_, f_, yt_;
-  mutable Real yd_;
+  Real c0_, c1_, z_, az_, f_, yt_;
+  mutable Real yd_, zd_;
   GroundMotion::Cursor cursor_;
   BaseAcceleration a0_, slope_;
   double h_ = 0.0;
