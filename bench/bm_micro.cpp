@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Micro-benchmarks for n = 0, 1, 2, 4 and 10 modes: one right-hand side of the event loop's state
 // (rocking), one DOPRI5 step, one event location on the dense output, one impact map.
 #include <benchmark/benchmark.h>

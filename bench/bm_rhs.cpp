@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // One right-hand-side evaluation of the rocking equations for n modes.
 #include <benchmark/benchmark.h>
 

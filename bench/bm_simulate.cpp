@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Whole runs (docs/performance.md, cases a-d): CPU time per simulation, with steps, right-hand
 // sides and events as counters, and the accuracy of each case's tolerance against a run at
 // rtol = 1e-13 (counters err_*, relative).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The benchmark cases of docs/performance.md (a-d), shared by the Google Benchmark binary and
 // the case runner the peer comparison calls.
 #pragma once

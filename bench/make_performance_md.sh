@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # Regenerates docs/performance.md: builds the benchmarks, runs Google Benchmark (JSON) and the
 # peer comparison, and writes the tables, the commands, the machine and the date.
 # Usage: bench/make_performance_md.sh [--quick]

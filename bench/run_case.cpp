@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Runs one benchmark case at a given tolerance, repeatedly, and prints the median CPU time per
 // run with the quantities the peer comparison judges accuracy by (bench/peers/compare.py).
 //   flexrock_run_case <a|b2|b6|c|d1|d4> <rtol> <repetitions>

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # Times `flexrock spectrum` on a GRID x GRID one-sine-pulse grid (default 256 x 256 = 65,536
 # runs plus the bisection's) for (a) a slender rigid block, b = 0.2 m, h = 1.0 m (alpha = atan
 # 0.2), and (b) an oscillator on a rocking base (examples/studies/oscillator_on_slab.toml), with

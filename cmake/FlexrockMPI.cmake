@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # FLEXROCK_WITH_MPI: AUTO uses MPI when find_package finds it, ON requires it, OFF never uses it.
 # Sets FLEXROCK_HAVE_MPI (a cache entry, so that tests/ sees it) and, with it, the imported
 # target MPI::MPI_CXX in the including directory.

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 option(FLEXROCK_BUILD_TESTS "Build the test suite" ${FLEXROCK_MASTER_PROJECT})
 option(FLEXROCK_BUILD_EXAMPLES "Build the example programs" ${FLEXROCK_MASTER_PROJECT})
 option(FLEXROCK_BUILD_BENCH "Build the benchmarks (Google Benchmark)" OFF)

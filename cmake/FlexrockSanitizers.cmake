@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # applies FLEXROCK_SANITIZE to one target, so third-party code keeps its own flags
 function(flexrock_apply_sanitizers target)
   if(FLEXROCK_SANITIZE)

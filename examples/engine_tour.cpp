@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // A tour of the engine on real cases: Housner's block in free rocking, a museum statue (rigid
 // block) under El Centro 1940, and an elastic oscillator on a rocking base slab under resonant
 // shaking that uplifts although the same body taken rigid would not.

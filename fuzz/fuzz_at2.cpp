@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // libFuzzer entry point: see fuzz_inputs.hpp. Build with the "fuzz" preset (clang).
 #include <cstddef>
 #include <cstdint>

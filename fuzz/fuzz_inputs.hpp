@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The logic of the fuzz targets, shared by the libFuzzer executables (clang) and the regression
 // test that replays fuzz/corpus/ and fuzz/regressions/ in the normal test suite (any compiler).
 //

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # Installs the Debian packages flexrock builds and tests with, only those missing.
 # Usage: scripts/install-deps.sh [--python] [--bench] [--lint] [--mpi] [--fuzz]
 # (the Python module, its tests and the validation checks are part of the release build: their

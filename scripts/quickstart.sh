@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # Builds flexrock (installing missing Debian packages) and runs a real case end to end: a statue
 # under El Centro 1940, and draws its response. Outputs go to build/example/.
 set -euo pipefail

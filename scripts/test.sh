@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # Builds flexrock with every test and runs them all; installs missing Debian packages first.
 set -euo pipefail
 cd "$(dirname "$0")/.."

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # included from tests/CMakeLists.txt; paths are relative to tests/
 
 # builders of body parameters (rigid, lumped model, oscillator on slab, cantilever)

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # included from tests/CMakeLists.txt; paths are relative to tests/
 
 # case files (toml++) and outputs (CSV, summary JSON): flexrock::io

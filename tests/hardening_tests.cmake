@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # included from tests/CMakeLists.txt; paths are relative to tests/
 # Hardening: random soak of the engine, adversarial inputs, fuzz regressions, reproducibility and
 # interrupted runs (docs/reliability.md).

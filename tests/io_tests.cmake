@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # included from tests/CMakeLists.txt; paths are relative to tests/
 
 # record readers (PEER .AT2, single-column, time series, combine): flexrock::io

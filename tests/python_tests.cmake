@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # included from tests/CMakeLists.txt; the Python package's pytest suite (python/tests), one ctest
 # a file so that ctest -j runs them side by side. Needs FLEXROCK_BUILD_PYTHON (on in the release
 # preset); under a minute in all with ctest -j2 on two cores.

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # included from tests/CMakeLists.txt; paths are relative to tests/
 
 # studies (flexrock::study, io/study_files): spectra, sweeps, fragility fits, the thread pool

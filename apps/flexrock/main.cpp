@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // flexrock: the command line. Parses arguments, calls io/ and sim/, maps outcomes and errors to
 // exit codes:
 //   0  the run completed (the body may have overturned or lost contact: physical outcomes)

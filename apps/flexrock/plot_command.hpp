@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // `flexrock plot`: figures of a run or a spectrum, drawn by the Python package (matplotlib).
 #pragma once
 

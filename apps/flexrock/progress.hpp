@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Progress bars of the command line: on a terminal only, after the first second, drawn on stderr
 // with the share done, the rate and the time left. Nothing when stderr is not a terminal or with
 // --quiet / --no-progress (the caller passes `enabled`).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // flexrock spectrum | sweep | fragility: studies over many runs, on every core and (when built
 // with MPI and started by mpirun) over several processes. Outputs are byte-identical whatever
 // the thread and process counts: runs are distributed by index and written in index order.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The study subcommands of `flexrock`: spectrum, sweep, fragility (docs/studies.md).
 #pragma once
 

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: BSD-3-Clause
 """Side-by-side timing and accuracy of flexrock and its peers on the rigid-block cases (a)-(c).
 
 Peers: scipy's solve_ivp (DOP853 and RK45) with event functions, written as a Python user

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: BSD-3-Clause
 """Siconos' event-driven scheme (LsodarOSI + LCP) on the rigid-block cases of compare.py.
 
 The model: generalized coordinates q = (theta, y), theta the rotation (positive pivots on the

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: BSD-3-Clause
 """Writes docs/performance.md from Google Benchmark's JSON and the peer comparison's JSON
 (called by bench/make_performance_md.sh)."""
 import argparse

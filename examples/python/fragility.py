@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: BSD-3-Clause
 """A fragility curve: a statue (rigid block) under two records scaled to a range of PGAs (an
 incremental dynamic analysis), then the lognormal fragility of overturning against PGA fitted by
 maximum likelihood, with its 95 % band.

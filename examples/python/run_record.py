@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: BSD-3-Clause
 """One run on a record: a marble statue (rigid block 0.4 m x 1.8 m, 800 kg) under El Centro 1940
 N-S, as examples/cases/museum_statue.toml but scripted. Prints the outcome and saves the response
 figure and the moment-rotation loop.

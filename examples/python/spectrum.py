@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: BSD-3-Clause
 """An overturning spectrum: a rigid block under one-sine pulses over a grid of normalised
 amplitude a_p/(g tan alpha) x frequency omega_p/p, with the minimum overturning amplitude of
 every frequency refined by bisection. Writes the spectrum CSV (the layout of `flexrock spectrum`)

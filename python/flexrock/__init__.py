@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """flexrock: uplift, rocking, impacts and overturning of free-standing deformable bodies.
 
 The engine is C++ (the private extension ``_flexrock``); this package adds what a Python user

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """CSV text written by flexrock (time histories, event logs, study tables) as numpy columns."""
 
 import numpy as np

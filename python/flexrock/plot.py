@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """``python3 -m flexrock.plot FILE [-o OUT.png|OUT.svg] [--kind ...]``: what ``flexrock plot`` runs.
 
 FILE is a run's time-history CSV (its summary JSON and event log are read when next to it) or a

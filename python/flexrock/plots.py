@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """Figures of flexrock results (matplotlib), as PNG or SVG.
 
 Every function returns a :class:`matplotlib.figure.Figure` built without pyplot, so it needs no

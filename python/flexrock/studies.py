@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """Studies from Python: overturning spectra, sweeps (incremental dynamic analysis) and lognormal
 fragility fits. The engine's thread pool runs them with the GIL released; results and tables are
 those of ``flexrock spectrum|sweep|fragility`` (docs/studies.md)."""

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Ground motions in memory and the synthetic pulses (excitation/ground_motion.hpp, pulses.hpp).
 #include <pybind11/stl.h>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Files (io/records.hpp, io/case_file.hpp, io/outputs.hpp): records, case files and the outputs
 // the command line writes, byte for byte the same.
 #include <pybind11/eigen.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Bodies: the paper's parameters, the validated Body and the builders (model/body.hpp,
 // model/builders.hpp).
 #include <pybind11/eigen.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // One simulation and its result (sim/simulate.hpp). Time histories come out as numpy arrays;
 // the GIL is released while the engine runs, so Python threads simulate in parallel.
 #include <pybind11/eigen.h>

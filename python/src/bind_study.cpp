@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Studies (study/*.hpp, io/study_files.hpp): overturning spectra, sweeps and fragility fits.
 // The GIL is released while a study runs its thread pool.
 #include <pybind11/eigen.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // One bind_<area>.cpp per header group; each only exposes the C++ API (no physics here).
 #pragma once
 

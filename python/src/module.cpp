@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The private extension `_flexrock`; the public API is the pure-Python package `flexrock`.
 #include <pybind11/pybind11.h>
 

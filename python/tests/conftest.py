@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """Shared fixtures: where the sources and the `flexrock` command are.
 
 ctest sets FLEXROCK_SOURCE_DIR and FLEXROCK_CLI (and PYTHONPATH to the build's python dir);

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """The Python API round trip: bodies, motions, simulate, results as numpy arrays and dicts."""
 
 import math

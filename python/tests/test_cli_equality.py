@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """A Python user's results equal the command line's, bit for bit."""
 
 import json

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """Errors: bad input is flexrock.InputError (a ValueError) with the command line's message."""
 
 import subprocess

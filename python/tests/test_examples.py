@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """Every script in examples/python runs (with small sizes) and writes its figures."""
 
 import os

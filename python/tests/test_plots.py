@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """Figures render with the Agg backend and hold the expected artists."""
 
 import subprocess

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """Spectra, sweeps and fragility fits from Python (thin: the library tests the physics)."""
 
 import math

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """The GIL is released while simulating: threads run at once and give the serial results."""
 
 import math

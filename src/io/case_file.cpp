@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "flexrock/io/case_file.hpp"
 
 #include <toml++/toml.h>

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # included from src/CMakeLists.txt; paths are relative to src/
 
 # flexrock::io: record files (PEER .AT2, single-column, time/acceleration text and CSV)

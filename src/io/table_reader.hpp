@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Checked reads of one TOML table, shared by the case-file and study-file loaders: every error
 // names the file, the line and the full key, and says what was expected and what was found;
 // unknown keys are rejected with the closest known one. Internal to flexrock::io.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "flexrock/model/body.hpp"
 
 #include <Eigen/Cholesky>

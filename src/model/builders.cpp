@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Builders of the paper's parameters (Moran & McLennan 1995, KINETICS) from engineering data:
 // every parameter is its integral over the body, here sums over nodes or quadrature along a beam.
 #include "flexrock/model/builders.hpp"

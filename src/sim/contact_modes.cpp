@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The modes of the full-contact state matrix, for the exact propagation (contact_propagator.hpp).
 #include <Eigen/Eigenvalues>
 #include <Eigen/LU>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Exact propagation of a flexible body in full contact under a sampled record. Internal header.
 //
 // In full contact the modal equations are linear with constant coefficients (docs/theory.md,

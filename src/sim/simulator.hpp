@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The event loop: phases, event location on the dense output, impacts, outputs. Internal header.
 #pragma once
 

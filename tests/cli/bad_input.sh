@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # every kind of bad input: exit code 2, a message naming file, line and key, and no output files
 source "$(dirname "$0")/common.sh"
 DATA="$SRC/../shared/data"

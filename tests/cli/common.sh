@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # shared by the CLI tests: FLEXROCK (the binary), SRC (the source tree), a scratch directory
 set -euo pipefail
 FLEXROCK="$1"

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # runs one example case end to end (argument 3: its name) and checks its physics in the summary
 source "$(dirname "$0")/common.sh"
 NAME="$3"

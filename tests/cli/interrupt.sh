@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # Ctrl-C (SIGINT) or SIGTERM during `flexrock run`: during the simulation nothing is written; during
 # the writing of the outputs the temporary is removed, and what is on disk is complete or absent
 source "$(dirname "$0")/common.sh"

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # the same input gives byte-identical outputs: every example run twice, and a spectrum of a
 # flexible body with 1 and 3 threads
 source "$(dirname "$0")/common.sh"

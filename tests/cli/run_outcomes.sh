@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # a run that cannot complete exits 1; piped output and --quiet carry no progress bar; params
 source "$(dirname "$0")/common.sh"
 

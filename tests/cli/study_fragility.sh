@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # flexrock fragility: a fit of a sweep CSV written by flexrock sweep, its outputs and its errors
 source "$(dirname "$0")/common.sh"
 

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # two MPI processes write the same sweep and spectrum files, byte for byte, as threads do
 source "$(dirname "$0")/common.sh"
 MPIEXEC="$3"

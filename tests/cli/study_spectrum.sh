@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # flexrock spectrum: columns, row counts, the same bytes for 1 and 3 threads, the record mode,
 # errors with file:line and exit 2, no outputs after an error
 source "$(dirname "$0")/common.sh"

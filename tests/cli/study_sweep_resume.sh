@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # flexrock sweep is resumable: interrupted by SIGINT and killed by SIGKILL mid-way, the same
 # command continues from the journal, and the final file equals an uninterrupted run byte for
 # byte. A journal of another manifest is refused.

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # --help with examples, --version, usage errors: exit codes and "flexrock: error:" messages
 source "$(dirname "$0")/common.sh"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Random soak of the engine: many random valid cases (0 to 4 modes, parameters over physical
 // ranges, pulses, noise records, vertical shaking up to near -g), each checked for what a tool
 // used for safety decisions must never do: run without end, return NaN or inf, let an impact add

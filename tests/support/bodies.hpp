@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Test bodies built independently of the engine: parameters as sums over point masses (the paper's
 // integral definitions) and the closed-form parameters of an oscillator on a rocking slab.
 #pragma once

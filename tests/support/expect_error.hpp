@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Checks that a call throws flexrock::InputError with every expected fragment in its message.
 #pragma once
 

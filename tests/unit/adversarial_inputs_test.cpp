@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Adversarial inputs: each either is refused with a clear error (the message is checked) or runs
 // to a correct finish with its status. None may crash or hang: ctest gives this executable a
 // TIMEOUT, so a hang fails (docs/reliability.md lists every case and its outcome).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Case files: every body type and excitation kind loads to the right parameters, and each kind of
 // bad input gives an InputError naming the file, the line and the key.
 #include "flexrock/io/case_file.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // A flexible body in full contact under a sampled record: the exact propagation between samples
 // against the integrator at a tight tolerance, on random bodies, damping and records.
 #include <gtest/gtest.h>

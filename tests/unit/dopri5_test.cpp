@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "flexrock/integrate/dopri5.hpp"
 
 #include <gtest/gtest.h>

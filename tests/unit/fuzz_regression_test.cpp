@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Replays the fuzz seed corpus (fuzz/corpus/<target>/) and every input the fuzzers ever found
 // wrong (fuzz/regressions/<target>/) through the fuzz targets' logic, in the normal test suite
 // and with any compiler. Each input must be read or refused with flexrock::InputError: another

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "flexrock/contact/impact.hpp"
 
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The step loop allocates nothing: a run ten times longer makes no more heap allocations.
 #include <gtest/gtest.h>
 

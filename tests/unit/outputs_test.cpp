@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Outputs: the CSV header names every column with its unit, one row per output time; the summary
 // JSON carries the documented keys; files are written atomically and never left half-written.
 #include "flexrock/io/outputs.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Synthetic pulses against their closed forms: peaks, ground velocity and displacement at the
 // pulse end (by quadrature of the motion itself), breakpoints, zero free vibration, checks.
 #include "flexrock/excitation/pulses.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Record readers: the real records of shared/data, every AT2 line-4 form, malformed files with
 // their messages, units and scale factors, and combining horizontal and vertical components.
 #include "flexrock/io/records.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // What a run says when the model's assumptions break or a limit is reached.
 #include "flexrock/sim/simulate.hpp"
 

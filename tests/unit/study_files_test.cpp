@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Study files: manifests and spectrum specs (errors with file:line: key), the sweep journal
 // (resume, torn lines, foreign journals), CSV input of fragility fits.
 #include "flexrock/io/study_files.hpp"

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: BSD-3-Clause
 """`flexrock fragility` against an independent maximum-likelihood fit with scipy.optimize.
 
 A synthetic sweep CSV (seeded) with a known lognormal fragility is fitted by flexrock and by

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Lognormal fragility by maximum likelihood: recovery of known parameters, the score at the
 // estimate, a brute-force likelihood grid, the delta-method errors against a finite-difference
 // Hessian, and clear errors for data without a finite estimate.

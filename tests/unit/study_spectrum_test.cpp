@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Overturning spectra: classification against closed forms and direct simulate() calls, the
 // bisection bracket, and independence from the thread and process counts.
 #include <gtest/gtest.h>

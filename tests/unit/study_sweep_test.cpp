@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Sweeps: rows equal direct runs, the thread count changes no byte, intensity measures against
 // closed forms, target-PGA scaling.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The C++ equations against the machine-checked derivation (tools/derive/derive.py): mass matrix,
 // forces, reaction, resultant, energies and impacts at random states of random point-mass bodies.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """The independent compliant-foundation model of docs/validation.md (tools/validation/compliant.py)
 against closed forms: its static settlement, and its uplift time under a one-sine pulse, which
 must approach the rigid block's asin(1/A)/omega_p as the foundation stiffens."""

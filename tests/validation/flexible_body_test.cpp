@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Deformable bodies against closed forms and conservation laws.
 #include <gtest/gtest.h>
 

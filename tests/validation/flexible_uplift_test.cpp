@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Uplift of an elastic oscillator on a rocking base slab against linear closed forms: the
 // steady-state uplift amplitude over frequency ratio and damping, and the static criterion of
 // Chopra & Yim (1985) under a quasi-static ramp.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Housner's (1963) linearized closed forms against the nonlinear engine: the free-rocking period
 // and the minimum overturning accelerations of rectangular and half-sine pulses. The linearized
 // forms replace sin(alpha - theta) by alpha - theta and cos by 1, so they differ from the exact

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Housner's rigid block against closed forms.
 #include <gtest/gtest.h>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Similarity of rigid rocking (Dimitrakopoulos & DeJong 2012): theta'' = p^2 F(theta, a/g) with
 // a(t) = a_p f(omega_p t), so in tau = p t the equation depends on alpha, omega_p/p and
 // a_p/(g tan alpha) only. Blocks of different size under the same dimensionless pulse must give

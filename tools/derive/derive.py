@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: BSD-3-Clause
 """Derivation and reference values for flexrock (Moran & McLennan 1995 model).
 
 Part (a): symbolic, general body.  A generic material point (rho_x, rho_y,

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """An independent model of docs/validation.md, section 5: a body on a compliant foundation.
 
 The body is a rigid base (a block, or a slab carrying an elastic oscillator) with free planar

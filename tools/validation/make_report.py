@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: BSD-3-Clause
 """Regenerates docs/validation.md and docs/validation/*.png.
 
 Runs the engine driver (flexrock_validate) for the engine's numbers, computes the closed forms

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # Regenerates docs/validation.md and docs/validation/*.png: builds flexrock_validate (Release, in
 # build/validation unless FLEXROCK_VALIDATION_BUILD names another build directory), then runs
 # make_report.py with Debian's python3 (numpy, scipy, matplotlib). Extra arguments go to

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Validation driver: runs the engine on the cases of docs/validation.md and writes its numbers
 // to one JSON file. Closed forms, the exact quadratures and the independent compliant-foundation
 // model live in make_report.py; this program only asks the engine.

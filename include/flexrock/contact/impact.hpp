@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Impact laws at theta = 0 (paper eqs. 6-10, derived in docs/theory.md): pure functions.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Error reporting: InputError for what the user gave, FLEXROCK_DEMAND for our own invariants.
 #pragma once
 

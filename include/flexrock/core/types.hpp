@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Basic types and physical constants shared by every layer.
 #pragma once
 

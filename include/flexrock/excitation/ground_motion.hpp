@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Base accelerations Xddot(t), Yddot(t): sampled records (piecewise linear) or analytic functions.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Synthetic ground motions: harmonic excitation and the idealized pulses of the rocking literature.
 //
 // Every function returns GroundMotion::analytic(...) lasting `duration` [s] (free vibration, zero

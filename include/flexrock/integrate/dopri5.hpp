@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Dormand-Prince 5(4) with its 4th-order dense output (Hairer, Norsett & Wanner, "Solving ODEs I",
 // code DOPRI5). Generic over the state type; knows nothing of bodies or contacts.
 //

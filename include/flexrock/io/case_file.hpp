@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Case files: one TOML file describes a body, its excitation, the solver options and the outputs
 // of one simulation. Every key is documented in docs/case-file.md with its unit and default.
 //

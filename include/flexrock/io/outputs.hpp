@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Results on disk: the time-history CSV, the event log CSV and the summary JSON of one run.
 // Column names and JSON keys are stable and documented in docs/case-file.md. Every file is
 // written atomically: to "PATH.tmp.<pid>", then renamed onto PATH, so a reader never sees half a

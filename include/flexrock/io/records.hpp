@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Ground-motion record files: PEER NGA .AT2, single-column (or several values a line) with a given
 // dt, and two-column time/acceleration text or CSV. The only layer that reads files.
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Files of studies: spectrum specs and sweep manifests (TOML), the spectrum and sweep CSVs, the
 // sweep journal that makes a sweep resumable, and a sweep CSV read back for fragility fits.
 // Every key, column and rule is documented in docs/studies.md. Errors are InputError with

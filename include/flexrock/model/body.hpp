@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The body: the paper's dynamic parameters (Moran & McLennan 1995), validated once, then const.
 #pragma once
 

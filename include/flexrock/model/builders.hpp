@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Bodies from what engineers have: dimensions, a finite-element model's modal output, or a
 // standard idealisation. Each builder returns the paper's parameters (BodyParameters); pass them
 // to Body to validate. No files here: readers live in io/.

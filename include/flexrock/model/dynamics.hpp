@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The equations of motion of the paper's body, as derived in docs/theory.md, on fixed-size types.
 //
 // Physical time t; theta [rad], q [-], theta_dot [rad/s], q_dot [1/s]. Rocking on edge 1 means

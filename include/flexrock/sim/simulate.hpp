@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // One simulation: a body on a moving base, from an initial state to the end of the motion or an
 // outcome (overturned, contact lost, stopped). Outcomes are returned, never thrown.
 #pragma once

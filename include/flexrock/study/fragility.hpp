@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Fragility curves: the lognormal model P(failure | IM = x) = Phi(ln(x / theta) / beta) fitted by
 // maximum likelihood to binary outcomes (Baker 2015). In z = ln x it is a probit regression
 // P = Phi(a + b z) with a = -ln(theta) / beta, b = 1 / beta, whose log-likelihood is concave:

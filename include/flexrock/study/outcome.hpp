@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The outcome of one run of a study, in the classes of the overturning-spectrum literature
 // (Housner 1963; Zhang & Makris 2001): no uplift, rocking, overturned after impacts (their mode 1),
 // overturned without impact (their mode 2).

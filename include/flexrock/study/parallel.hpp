@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Running many independent simulations: an index-based pool of std::jthread workers. Work is
 // handed out by an atomic counter and every result is stored at its index, so the output cannot
 // depend on the thread count or on the order in which runs finish.

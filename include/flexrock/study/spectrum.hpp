@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Overturning spectra: the outcome of a body under a family of pulses over a grid of amplitude x
 // frequency (or one record x scale factors), and the minimum overturning amplitude of every
 // frequency, refined by bisection between grid points. No files here: io/ and the CLI read specs

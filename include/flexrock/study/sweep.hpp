@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Sweeps: bodies x records x scale factors (incremental dynamic analysis), one summary row per
 // run. No files here: io/study_files.hpp reads manifests and journals the rows.
 #pragma once
