@@ -15,7 +15,9 @@ columns x a_p/(g tan alpha) in 1..20, 58 rows = 2146 cells), blocks of R = 1 m, 
    2 sin alpha, height 2 cos alpha), pulse one_sine, the same normalized grid, the study
    defaults (no bisection): the outcome column of its cells CSV.
 
-Prints the count of every outcome per map (outcomes are read by name, so new ones appear).
+Prints the count of every outcome per map, and of every engine status with the overturned cells
+whose status was not "overturned" (reclassified by the study rule). Outcomes and statuses are read
+by name, so new ones appear.
 
     PYTHONPATH=build/release/python /usr/bin/python3 tools/validation/unclassified_cells.py \
         [--alpha 0.25] [--cli build/release/apps/flexrock] [--quick] [--md FILE]
@@ -56,7 +58,7 @@ def validation_maps(alpha, quick):
     ws, As = grid(quick)
     out = {}
     for kind, pulse in (("A", fr.cycloidal_pulse_a), ("B", fr.cycloidal_pulse_b)):
-        rule, study = collections.Counter(), collections.Counter()
+        rule, study, status = collections.Counter(), collections.Counter(), collections.Counter()
         for A in As:
             for w in ws:
                 wp = w * p
@@ -79,8 +81,12 @@ def validation_maps(alpha, quick):
                     rule["safe"] += 1
                 else:
                     rule[st] += 1
-                study[name_of(fr.summarize(body, raw).outcome)] += 1
-        out[f"validation type {kind} (cycloidal_{kind.lower()})"] = (rule, study)
+                outcome = name_of(fr.summarize(body, raw).outcome)
+                study[outcome] += 1
+                status[st] += 1
+                if outcome.startswith("overturned") and st != "overturned":
+                    status[f"overturned by reclassification of {st}"] += 1
+        out[f"validation type {kind} (cycloidal_{kind.lower()})"] = (rule, study, status)
     return out
 
 
@@ -109,11 +115,15 @@ bisect = false
         subprocess.run(cmd, check=True, stdout=subprocess.DEVNULL)
         with open(cells, newline="") as f:
             rows = list(csv.DictReader(r for r in f if not r.startswith("#")))
-    return collections.Counter(r["outcome"] for r in rows), " ".join(cmd[:2] + ["SPEC", "-o", "CELLS", "--no-bisect", "-j", "2"]), text
+    status = collections.Counter(r.get("status", "?") for r in rows)
+    for r in rows:
+        if r["outcome"].startswith("overturned") and r.get("status", "overturned") != "overturned":
+            status[f"overturned by reclassification of {r['status']}"] += 1
+    return collections.Counter(r["outcome"] for r in rows), status, " ".join(cmd[:2] + ["SPEC", "-o", "CELLS", "--no-bisect", "-j", "2"]), text
 
 
 def fmt(counter):
-    total = sum(counter.values())
+    total = sum(v for k, v in counter.items() if not k.startswith("overturned by"))
     return ", ".join(f"{k} {v}" for k, v in sorted(counter.items())) + f" (of {total})"
 
 
@@ -132,14 +142,18 @@ def main(argv=None):
     for alpha in alphas:
         print(f"alpha = {alpha} (b/h = {math.tan(alpha):.4f})")
         if not a.no_validation:
-            for name, (rule, study) in validation_maps(alpha, a.quick).items():
+            for name, (rule, study, status) in validation_maps(alpha, a.quick).items():
                 print(f"  {name}, validation's rule: {fmt(rule)}")
                 print(f"  {name}, study outcome:     {fmt(study)}")
+                print(f"  {name}, engine status:     {fmt(status)}")
                 md.append(f"| {name} | {alpha} | validation's rule | {fmt(rule)} |")
                 md.append(f"| {name} | {alpha} | study outcome | {fmt(study)} |")
-        counts, cmd, _ = spectrum_map(alpha, a.quick, a.cli)
+                md.append(f"| {name} | {alpha} | engine status | {fmt(status)} |")
+        counts, status, cmd, _ = spectrum_map(alpha, a.quick, a.cli)
         print(f"  flexrock spectrum, one_sine ({cmd}): {fmt(counts)}")
+        print(f"  flexrock spectrum, one_sine, engine status: {fmt(status)}")
         md.append(f"| flexrock spectrum one_sine | {alpha} | study outcome | {fmt(counts)} |")
+        md.append(f"| flexrock spectrum one_sine | {alpha} | engine status | {fmt(status)} |")
     if a.md:
         Path(a.md).write_text("\n".join(md) + "\n")
         print(f"wrote {a.md}")
