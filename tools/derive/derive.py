@@ -12,13 +12,20 @@ Sxy_ij); the script checks that they cancel.  Lagrange's equations, the floor
 reaction, the resultant, the impact map, the energy identities and the uplift
 identity are derived and compared with the closed forms used by the C++ code
 ("conventions", implemented in conv_* below) by exact polynomial reduction
-modulo cos^2+sin^2-1.
+modulo cos^2+sin^2-1.  For n <= --symbolic-flight-n (default 2) the same is done
+for free flight in the c.g. coordinates (x_c, y_c, theta, q), for lift-off (the
+rocking and flight descriptions of one motion; rocking = flight + the floor
+reaction at the corner), for plastic landing on a corner at any tilt (general
+alpha_e) and for the flat landing.
 
 Part (b): numeric, realizable bodies.  Random discrete bodies (point masses,
 massless tipping points at base level so phi = 0 there), parameters computed by
 their definitions as sums; T, V, reaction, resultant, impacts computed DIRECTLY
 from the point masses (per-mass Lagrange terms derived symbolically with sin/cos
 and summed) in 30-digit mpmath, compared with the closed forms (assert 1e-12).
+Flight uses its own per-mass kernel in the coordinates (u, v, theta, q) of the
+base point O'; landings are solved from the momentum balances over the masses
+and checked against the closed forms and against A_f dnu = J_e^T Lambda.
 
 Usage:  derive.py --out FILE.json [--seed 12345] [--print]
 """
@@ -159,6 +166,148 @@ def conv_vcm_body(P, alpha, q, thd, qd):
     w = conv_w(P, alpha, q)
     kw = kx(w)
     return (P['h'] * (dot(P['psi_x'], qd) + thd * kw[0]), P['h'] * (dot(P['psi_y'], qd) + thd * kw[1]))
+
+
+# --- flight, lift-off and landing (docs/theory.md, Flight / Landing) -------------------------
+# Flight coordinates: (x_c, y_c) the deformed c.g. relative to the base origin, theta, q.
+# vt = R(theta)^T v_c / h: the c.g. velocity relative to the base, body components, over h.
+
+
+def conv_B(P, alpha, q):
+    """c.g. velocity Jacobian about the point h(alpha, 0) of the base line (body components,
+    over h): v_cm = h B nu.  Rows x, y; columns theta, q_1..q_n."""
+    kw = kx(conv_w(P, alpha, q))
+    return [[kw[0]] + list(P['psi_x']), [kw[1]] + list(P['psi_y'])]
+
+
+def conv_Gamma(P):
+    n = P['n']
+    return [[P['gamma'][i][j] + P['psi_y'][i] * P['psi_x'][j] - P['psi_x'][i] * P['psi_y'][j]
+             for j in range(n)] for i in range(n)]
+
+
+def conv_c_cg(P, q):
+    n = P['n']
+    px, py = dot(P['psi_x'], q), dot(P['psi_y'], q)
+    muq = matvec(P['mu'], q)
+    return [P['delta'][j] + muq[j] - px * P['psi_x'][j] - py * P['psi_y'][j] for j in range(n)]
+
+
+def conv_A_cg(P, q):
+    """inertia about the deformed c.g. over M h^2 (Koenig): [[m_cg, b_cg^T], [b_cg, mu_cg]]."""
+    n = P['n']
+    px, py = dot(P['psi_x'], q), dot(P['psi_y'], q)
+    m = P['zeta2'] + 2 * dot(P['delta'], q) + dot(q, matvec(P['mu'], q)) - px ** 2 - py ** 2
+    Gm = conv_Gamma(P)
+    b = [P['beta'][j] + sum((Gm[i][j] * q[i] for i in range(n)), 0) for j in range(n)]
+    A = [[m] + b]
+    for i in range(n):
+        A.append([b[i]] + [P['mu'][i][j] - P['psi_x'][i] * P['psi_x'][j] - P['psi_y'][i] * P['psi_y'][j]
+                           for j in range(n)])
+    return A
+
+
+def conv_f_flight(P, q, thd, qd, g):
+    """A_cg [thdd; qdd] = f (no gravity: a uniform field does not act on the motion about the c.g.)."""
+    n, h = P['n'], P['h']
+    cc = conv_c_cg(P, q)
+    Gm = conv_Gamma(P)
+    kq = matvec(P['kappa'], q)
+    f = [-2 * dot(cc, qd) * thd]
+    for j in range(n):
+        gq = sum((Gm[i][j] * qd[i] for i in range(n)), 0)
+        f.append(thd * (thd * cc[j] - 2 * gq) - (g / h) * kq[j])
+    return f
+
+
+def conv_cg_acc_flight(Xdd, Ydd, g):
+    """c.g. acceleration relative to the base (inertial components): ballistic."""
+    return (-Xdd, -g - Ydd)
+
+
+def conv_T_flight(P, q, vc, thd, qd):
+    """T_rel = 1/2 M |v_c|^2 + 1/2 M h^2 nu^T A_cg nu (v_c relative to the base)."""
+    A = conv_A_cg(P, q)
+    nu = [thd] + list(qd)
+    return P['M'] * (vc[0] ** 2 + vc[1] ** 2) / 2 + P['M'] * P['h'] ** 2 * dot(nu, matvec(A, nu)) / 2
+
+
+def conv_V_flight(P, yc, q, g):
+    return P['M'] * g * yc + P['M'] * g * P['h'] * dot(q, matvec(P['kappa'], q)) / 2
+
+
+def conv_corner(P, alpha_e, xc, yc, q, s, c):
+    """corner position relative to the base origin: c.g. + h R(theta) [(alpha_e, 0) - w0]."""
+    w0 = conv_w(P, 0, q)
+    r = body_to_inertial((alpha_e - w0[0], -w0[1]), s, c)
+    return (xc + P['h'] * r[0], yc + P['h'] * r[1])
+
+
+def conv_corner_vel(P, alpha_e, q, vc, thd, qd, s, c):
+    """v_e = v_c - h R(theta) B_e nu (B_e = conv_B at alpha_e)."""
+    B = conv_B(P, alpha_e, q)
+    nu = [thd] + list(qd)
+    r = body_to_inertial((dot(B[0], nu), dot(B[1], nu)), s, c)
+    return (vc[0] - P['h'] * r[0], vc[1] - P['h'] * r[1])
+
+
+def conv_corner_acc(P, alpha_e, q, ac, thd, qd, thdd, qdd, s, c):
+    """corner acceleration: y_e = y_c + h [s a - c b], a = alpha_e - psi_x.q, b = 1 + psi_y.q."""
+    h = P['h']
+    a, b = alpha_e - dot(P['psi_x'], q), 1 + dot(P['psi_y'], q)
+    ad, bd = -dot(P['psi_x'], qd), dot(P['psi_y'], qd)
+    add, bdd = -dot(P['psi_x'], qdd), dot(P['psi_y'], qdd)
+    # x_e = x_c + h [c a + s b]
+    ax = ac[0] + h * (thdd * (-s * a + c * b) - thd ** 2 * (c * a + s * b) + 2 * thd * (-s * ad + c * bd)
+                      + c * add + s * bdd)
+    ay = ac[1] + h * (thdd * (c * a + s * b) + thd ** 2 * (-s * a + c * b) + 2 * thd * (c * ad + s * bd)
+                      + s * add - c * bdd)
+    return (ax, ay)
+
+
+def conv_liftoff(P, alpha_e, xP, q, thd, qd, s, c):
+    """rocking on the edge alpha_e with pivot at xP -> flight: (x_c, y_c), v_c (relative to the base)."""
+    h = P['h']
+    w = conv_w(P, alpha_e, q)
+    r = body_to_inertial(w, s, c)
+    v = body_to_inertial(conv_vcm_body(P, alpha_e, q, thd, qd), s, c)
+    return (xP + h * r[0], h * r[1]), v
+
+
+def conv_landing_system(P, alpha_e, q, vt, thd, qd):
+    """plastic landing on the corner alpha_e (sticks): A(alpha_e) nu+ = rhs = A_cg nu- + B_e^T vt-,
+    rhs = [H_P-; p-] / (M h^2): angular momentum about the corner and the modal momenta."""
+    n = P['n']
+    Acg = conv_A_cg(P, q)
+    nu = [thd] + list(qd)
+    rhs = matvec(Acg, nu)
+    B = conv_B(P, alpha_e, q)
+    for i in range(n + 1):
+        rhs[i] += B[0][i] * vt[0] + B[1][i] * vt[1]
+    return conv_A(P, alpha_e, q), rhs
+
+
+def conv_landing_impulse(P, alpha_e, q, vt, thdp, qdp, s, c):
+    """impulse on the body (inertial components): M (v_c+ - v_c-), v_c+ = h R B_e nu+."""
+    B = conv_B(P, alpha_e, q)
+    nu = [thdp] + list(qdp)
+    d = (dot(B[0], nu) - vt[0], dot(B[1], nu) - vt[1])
+    r = body_to_inertial(d, s, c)
+    return (P['M'] * P['h'] * r[0], P['M'] * P['h'] * r[1])
+
+
+def conv_landing_loss(P, q, vt_m, nu_m, vt_p, nu_p):
+    """E = 1/2 M h^2 (|vt- - vt+|^2 + (nu- - nu+)^T A_cg (nu- - nu+)) >= 0 (the jump's own kinetic
+    energy: the impulse does no work on the post-impact velocities)."""
+    Acg = conv_A_cg(P, q)
+    dn = [a - b for a, b in zip(nu_m, nu_p)]
+    dv = (vt_m[0] - vt_p[0], vt_m[1] - vt_p[1])
+    return P['M'] * P['h'] ** 2 * (dv[0] ** 2 + dv[1] ** 2 + dot(dn, matvec(Acg, dn))) / 2
+
+
+def conv_flat_landing_rhs(P, q, vt, thd, qd):
+    """flat landing: theta_dot+ = 0, base stuck, mu qd+ = p- / (M h^2) = psi^T vt + b_cg thd + mu_cg qd."""
+    return conv_landing_system(P, 0, q, vt, thd, qd)[1][1:]
 
 
 # ---------------------------------------------------------------------------
@@ -405,14 +554,147 @@ class General:
         res['static_theta_row'] = is_zero(fst[0] + (g / h) * (w[0] * C - w[1] * S))
         return res
 
+    # flight, lift-off and landing -------------------------------------------------------
+    def derive_flight(self):
+        """Free flight in the c.g. coordinates (x_c, y_c, theta, q); lift-off; landing on a corner
+        (general alpha_e, any theta); flat landing."""
+        n, M, h, g = self.n, self.M, self.h, self.g
+        P, q, qd, thd, thdd = self.P, self.q, self.qd, self.thd, self.thdd
+        res = {}
+        xc, yc, xcd, ycd, xcdd, ycdd = sp.symbols('xc yc xcd ycd xcdd ycdd')
+        psq = (dot(self.psi_x, q), dot(self.psi_y, q))
+        # the point relative to the deformed c.g. (body components); int rho_c dm = 0
+        rho_c = (self.rx + dot(self.fx, q) - h * psq[0], self.ry + dot(self.fy, q) - h * psq[1])
 
-def symbolic_checks(nlist, verbose=False):
+        def u_cg(thd_, qd_):
+            return (-thd_ * rho_c[1] + dot(self.fx, qd_) - h * dot(self.psi_x, qd_),
+                    thd_ * rho_c[0] + dot(self.fy, qd_) - h * dot(self.psi_y, qd_))
+        ub = body_to_inertial(u_cg(thd, qd), S, C)
+        v = (self.Xd + xcd + ub[0], self.Yd + ycd + ub[1])
+        T_in = self.integrate((v[0] ** 2 + v[1] ** 2) / 2)
+        k = [[M * g * h * self.kappa[i][j] for j in range(n)] for i in range(n)]
+        pos_y = body_to_inertial(rho_c, S, C)[1]
+        V = self.integrate(g * (self.Y + yc + pos_y)) + dot(q, matvec(k, q)) / 2
+        res['flight_aux'] = sorted(str(x) for x in (T_in.free_symbols | V.free_symbols) & self.aux)
+
+        def ddt(e):
+            out = self.d_th(e) * thd + sp.diff(e, thd) * thdd
+            for a, b_, c_ in [(xc, xcd, xcdd), (yc, ycd, ycdd)] + list(zip(q, qd, self.qdd)):
+                out += sp.diff(e, a) * b_ + sp.diff(e, b_) * c_
+            return out + sp.diff(e, self.Xd) * self.Xdd + sp.diff(e, self.Yd) * self.Ydd
+        coords = [(xc, xcd), (yc, ycd), (None, thd)] + list(zip(q, qd))
+        EL = []
+        for (x, xd) in coords:
+            dTdx = self.d_th(T_in) if x is None else sp.diff(T_in, x)
+            dVdx = self.d_th(V) if x is None else sp.diff(V, x)
+            EL.append(sp.expand(ddt(sp.diff(T_in, xd)) - dTdx + dVdx))
+        acc = [xcdd, ycdd, thdd] + self.qdd
+        Mfull = [[sp.expand(sp.diff(e, a)) for a in acc] for e in EL]
+        Acg = conv_A_cg(P, q)
+        Mc = [[0] * (n + 3) for _ in range(n + 3)]
+        Mc[0][0] = Mc[1][1] = M
+        for i in range(n + 1):
+            for j in range(n + 1):
+                Mc[i + 2][j + 2] = M * h ** 2 * Acg[i][j]
+        res['flight_mass_matrix'] = all(is_zero(Mfull[i][j] - Mc[i][j])
+                                        for i in range(n + 3) for j in range(n + 3))
+        rest = [sp.expand(EL[i] - dot(Mfull[i], acc)) for i in range(n + 3)]
+        cga = conv_cg_acc_flight(self.Xdd, self.Ydd, g)
+        f_c = conv_f_flight(P, q, thd, qd, g)
+        res['flight_ballistic'] = is_zero(rest[0] + M * cga[0]) and is_zero(rest[1] + M * cga[1])
+        res['flight_forces'] = all(is_zero(rest[i + 2] + M * h ** 2 * f_c[i]) for i in range(n + 1))
+        # Koenig: T_in = 1/2 M |Vb + v_c|^2 + 1/2 M h^2 nu^T A_cg nu, and A_cg = A(alpha) - B^T B any alpha
+        vc = (xcd, ycd)
+        Tf = conv_T_flight(P, q, vc, thd, qd)
+        res['flight_kinetic_energy'] = is_zero(T_in - Tf - M * (self.Xd ** 2 + self.Yd ** 2) / 2
+                                               - M * (self.Xd * xcd + self.Yd * ycd))
+        Aa, Ba = conv_A(P, self.alpha, q), conv_B(P, self.alpha, q)
+        res['flight_koenig'] = all(is_zero(Aa[i][j] - Ba[0][i] * Ba[0][j] - Ba[1][i] * Ba[1][j] - Acg[i][j])
+                                   for i in range(n + 1) for j in range(n + 1))
+        res['flight_potential_energy'] = is_zero(V - M * g * self.Y - conv_V_flight(P, yc, q, g))
+        # energy rate along the flight equations: d/dt(T_rel + V) = -M a_b . v_c
+        nu = [thd] + qd
+        onflight = {xcdd: cga[0], ycdd: cga[1]}
+        dE = (ddt(Tf) + ddt(conv_V_flight(P, yc, q, g))).subs(onflight)
+        dE = sp.expand(dE - M * h ** 2 * dot(nu, matvec(Acg, [thdd] + self.qdd)) + M * h ** 2 * dot(nu, f_c))
+        res['flight_energy_rate'] = is_zero(dE + M * (self.Xdd * xcd + self.Ydd * ycd))
+        ae = sp.Symbol('alpha_e')
+        # lift-off: rocking on alpha_e and flight describe the same motion (positions and velocities)
+        s_e = self.s_body(ae)
+        we = conv_w(P, ae, q)
+        Be = conv_B(P, ae, q)
+        vt_e = (dot(Be[0], nu), dot(Be[1], nu))
+        ur, uf = self.u_body(ae, thd, qd), u_cg(thd, qd)
+        res['liftoff_continuity'] = (all(is_zero(s_e[i] - rho_c[i] - h * we[i]) for i in range(2))
+                                     and all(is_zero(ur[i] - h * vt_e[i] - uf[i]) for i in range(2)))
+        # rocking = flight + the floor reaction at the corner (for any accelerations):
+        #   (A_e acc - f_e) - (A_cg acc - f_cg) = B_e^T F_body / (M h)
+        ax, ay = self.Xdd / g, 1 + self.Ydd / g
+        accn = [thdd] + self.qdd
+        Ae = conv_A(P, ae, q)
+        fe = conv_f(P, ae, q, thd, qd, S, C, ax, ay, g)
+        Fb = conv_F_body(P, ae, q, thd, qd, thdd, self.qdd, S, C, ax, ay, g)
+        res['rocking_is_flight_plus_reaction'] = all(
+            is_zero(dot(Ae[i], accn) - fe[i] - dot(Acg[i], accn) + f_c[i]
+                    - (Be[0][i] * Fb[0] + Be[1][i] * Fb[1]) / (M * h)) for i in range(n + 1))
+        # landing on the corner alpha_e: pre flight (vt, thd-, qd-), post rocking on alpha_e
+        vtx, vty, vbx, vby = sp.symbols('vtx vty vbx vby')  # vt and the base velocity, body comps
+        thm, thp = sp.symbols('thd_m thd_p')
+        qdm = [sp.Symbol('qdm%d' % j) for j in range(1, n + 1)]
+        qdp = [sp.Symbol('qdp%d' % j) for j in range(1, n + 1)]
+        uf = u_cg(thm, qdm)
+        um = (vbx + h * vtx + uf[0], vby + h * vty + uf[1])
+        ur = self.u_body(ae, thp, qdp)
+        up = (vbx + ur[0], vby + ur[1])
+        H = lambda u_: self.integrate(s_e[0] * u_[1] - s_e[1] * u_[0])
+        pm = lambda u_, j: self.integrate(self.fx[j] * u_[0] + self.fy[j] * u_[1])
+        Ae_, rhs = conv_landing_system(P, ae, q, (vtx, vty), thm, qdm)
+        nup = [thp] + qdp
+        resid = [dot(Ae_[i], nup) - rhs[i] for i in range(n + 1)]
+        cons = [H(up) - H(um)] + [pm(up, j) - pm(um, j) for j in range(n)]
+        res['landing_map'] = all(is_zero(cons[i] - M * h ** 2 * resid[i]) for i in range(n + 1))
+        Lam = [self.integrate(up[i] - um[i]) for i in range(2)]
+        Lc = conv_landing_impulse(P, ae, q, (vtx, vty), thp, qdp, 0, 1)  # body components
+        res['landing_impulse'] = all(is_zero(Lam[i] - Lc[i]) for i in range(2))
+        Tin = lambda u_: self.integrate((u_[0] ** 2 + u_[1] ** 2) / 2)
+        E = vbx * Lam[0] + vby * Lam[1] - (Tin(up) - Tin(um))
+        vtp = (dot(Be[0], nup), dot(Be[1], nup))
+        Ec = conv_landing_loss(P, q, (vtx, vty), [thm] + qdm, vtp, nup)
+        # E = E_closed on the map (E - E_closed = -M h^2 nu+ . residual identically)
+        res['landing_energy_loss'] = is_zero(E - Ec + M * h ** 2 * dot(nup, resid))
+        # key check: flight state taken from rocking on alpha_pre at theta = 0 gives the impact map
+        apre = sp.Symbol('alpha_pre')
+        Bp = conv_B(P, apre, q)
+        num_ = [thm] + qdm
+        _, rhs_r = conv_landing_system(P, ae, q, (dot(Bp[0], num_), dot(Bp[1], num_)), thm, qdm)
+        _, rhs8 = conv_impact_system(P, apre, ae, q, thm, qdm)
+        res['landing_reduces_to_impact_map'] = all(is_zero(rhs_r[i] - rhs8[i]) for i in range(n + 1))
+        # flat landing: theta_dot+ = 0, base stuck, modal momenta conserved
+        if n:
+            upf = (vbx + dot(self.fx, qdp), vby + dot(self.fy, qdp))
+            prhs = conv_flat_landing_rhs(P, q, (vtx, vty), thm, qdm)
+            residf = [dot(self.mu[j], qdp) - prhs[j] for j in range(n)]
+            res['flat_landing_modal'] = all(is_zero(pm(upf, j) - pm(um, j) - M * h ** 2 * residf[j])
+                                            for j in range(n))
+            Lf = [self.integrate(upf[i] - um[i]) for i in range(2)]
+            Lfc = conv_landing_impulse(P, 0, q, (vtx, vty), 0, qdp, 0, 1)
+            res['flat_landing_impulse'] = all(is_zero(Lf[i] - Lfc[i]) for i in range(2))
+            Ef = vbx * Lf[0] + vby * Lf[1] - (Tin(upf) - Tin(um))
+            vtf = (dot(self.psi_x, qdp), dot(self.psi_y, qdp))
+            Efc = conv_landing_loss(P, q, (vtx, vty), [thm] + qdm, vtf, [0] + qdp)
+            res['flat_landing_energy_loss'] = is_zero(Ef - Efc + M * h ** 2 * dot(qdp, residf))
+        return res
+
+
+def symbolic_checks(nlist, verbose=False, flight_n=2):
     allres = {}
     gens = {}
     for n in nlist:
         t0 = time.time()
         G = General(n)
         r = G.derive()
+        if n <= flight_n:
+            r.update(G.derive_flight())
         allres[n] = r
         gens[n] = G
         if verbose:
@@ -535,7 +817,9 @@ class Checker:
         self.where = ''
 
     def eq(self, a, b, what):
+        a, b = (list(x) if isinstance(x, mp.matrix) else x for x in (a, b))
         if isinstance(a, (list, tuple)):
+            assert len(a) == len(b), what
             for x, y in zip(a, b):
                 self.eq(x, y, what)
             return
@@ -779,6 +1063,441 @@ def tipping_angles(K, body, chk):
     return out
 
 
+# --- flight, lift-off, landing: direct point-mass mechanics -------------------------------------
+
+class FlightKernel:
+    """Per-point-mass mechanics of the free body in the coordinates (u, v, theta, q): (u, v) is the
+    base point O' (below the undeformed c.g.) relative to the base origin.  Independent of the
+    closed forms: the c.g. and its velocity are sums over the masses."""
+
+    def __init__(self, n):
+        self.n = n
+        u, v, th, ud, vd, thd, udd, vdd, thdd = sp.symbols('u v th ud vd thd udd vdd thdd')
+        Xd, Yd, Xdd, Ydd, g = sp.symbols('Xd Yd Xdd Ydd g')
+        m, sx, sy = sp.symbols('m sx sy')  # undeformed position relative to O'
+        q = list(sp.symbols('q1:%d' % (n + 1))) if n else []
+        qd = list(sp.symbols('qd1:%d' % (n + 1))) if n else []
+        qdd = list(sp.symbols('qdd1:%d' % (n + 1))) if n else []
+        fx = list(sp.symbols('fx1:%d' % (n + 1))) if n else []
+        fy = list(sp.symbols('fy1:%d' % (n + 1))) if n else []
+        X, Y = sp.symbols('X Y')
+        bx = sx + sum((fx[k] * q[k] for k in range(n)), 0)
+        by = sy + sum((fy[k] * q[k] for k in range(n)), 0)
+        R = sp.Matrix([X + u + sp.cos(th) * bx - sp.sin(th) * by, Y + v + sp.sin(th) * bx + sp.cos(th) * by])
+        xs, xds, xdds = [u, v, th] + q, [ud, vd, thd] + qd, [udd, vdd, thdd] + qdd
+
+        def ddt(e):
+            out = sp.diff(e, X) * Xd + sp.diff(e, Y) * Yd + sp.diff(e, Xd) * Xdd + sp.diff(e, Yd) * Ydd
+            for a, b_, c_ in zip(xs, xds, xdds):
+                out += sp.diff(e, a) * b_ + sp.diff(e, b_) * c_
+            return out
+        Rd = R.applyfunc(ddt)
+        Rdd = Rd.applyfunc(ddt)
+        T = m * (Rd[0] ** 2 + Rd[1] ** 2) / 2
+        V = m * g * (R[1] - Y)
+        EL = [ddt(sp.diff(T, xd)) - sp.diff(T, x) + sp.diff(V, x) for x, xd in zip(xs, xds)]
+        args = [m, sx, sy] + fx + fy + xs + xds + xdds + [Xd, Yd, Xdd, Ydd, g]
+        lam = lambda e: sp.lambdify(args, e, modules='mpmath')
+        zero_acc = {a: 0 for a in xdds}
+        self.EL0 = lam(sp.Matrix([e.subs(zero_acc) for e in EL]))
+        self.ELA = lam(sp.Matrix([[sp.diff(e, a) for a in xdds] for e in EL]))
+        self.Rd = lam(Rd.subs({X: 0, Y: 0}))
+        self.Rdd = lam(Rdd)
+        self.Rrel = lam(R.subs({X: 0, Y: 0}))
+        self.Jac = lam(R.jacobian(sp.Matrix(xs)))
+
+    def call(self, fn, pt, x, xd, xdd, base):
+        m, px, py, phx, phy = pt
+        return fn(*([m, px, py] + list(phx) + list(phy) + list(x) + list(xd) + list(xdd) + list(base)))
+
+
+def kcall(K, fn, pt, sx_off, ex, th, q, thd, qd, thdd, qdd, base):
+    """rocking kernel with the pivot at body abscissa sx_off (relative to O') and at ex on the floor."""
+    m, px, py, phx, phy = pt
+    return fn(*([m, px - sx_off, py, ex] + list(phx) + list(phy) + [th] + list(q) + [thd] + list(qd)
+                + [thdd] + list(qdd) + list(base)))
+
+
+def rot(v, th):
+    return body_to_inertial(v, mp.sin(th), mp.cos(th))
+
+
+def rotT(v, th):
+    s, c = mp.sin(th), mp.cos(th)
+    return (c * v[0] + s * v[1], -s * v[0] + c * v[1])
+
+
+def alpha_of(body, edge):
+    return -body.alpha1 if edge == 1 else body.alpha2
+
+
+def flight_direct(FK, body, x, xd, base):
+    """accelerations (u, v, theta, q) and c.g. position / velocity / acceleration from the masses."""
+    n, M = body.n, body.M
+    zero = [0] * (n + 3)
+    b = [base[0], base[1], base[2], base[3], G]
+    EL0 = mp.matrix(n + 3, 1)
+    ELA = mp.matrix(n + 3, n + 3)
+    for pt in body.pts():
+        EL0 += FK.call(FK.EL0, pt, x, xd, zero, b)
+        ELA += FK.call(FK.ELA, pt, x, xd, zero, b)
+    q = x[3:]
+    for j in range(n):
+        EL0[j + 3] += sum(body.k[j][i] * q[i] for i in range(n))
+    acc = solve_lin(ELA, -EL0)
+    acc = [acc[i] for i in range(n + 3)]
+    rc, vc, ac = [mp.mpf(0)] * 2, [mp.mpf(0)] * 2, [mp.mpf(0)] * 2
+    for pt in body.pts():
+        m = pt[0]
+        r_ = FK.call(FK.Rrel, pt, x, xd, acc, b)
+        v_ = FK.call(FK.Rd, pt, x, xd, acc, b)
+        a_ = FK.call(FK.Rdd, pt, x, xd, acc, b)
+        for i in range(2):
+            rc[i] += m * r_[i] / M
+            vc[i] += m * (v_[i] - base[i]) / M  # relative to the base
+            ac[i] += m * (a_[i] - base[2 + i]) / M
+    return acc, ELA, rc, vc, ac
+
+
+def flight_state(FK, body, th, q, u, v, ud, vd, thd, qd, base, chk):
+    """base = (Xd, Yd, Xdd, Ydd)."""
+    n, P, M, h = body.n, body.P, body.M, body.h
+    x, xd = [u, v, th] + list(q), [ud, vd, thd] + list(qd)
+    acc, ELA, rc, vc, ac = flight_direct(FK, body, x, xd, base)
+    s, c = mp.sin(th), mp.cos(th)
+    nu = [thd] + list(qd)
+    # c.g. position / velocity from O' (closed form) vs the masses
+    w0 = conv_w(P, 0, q)
+    B0 = conv_B(P, 0, q)
+    r0 = rot(w0, th)
+    chk.eq(rc, [u + h * r0[0], v + h * r0[1]], 'flight c.g. position')
+    vb = rot((dot(B0[0], nu), dot(B0[1], nu)), th)
+    chk.eq(vc, [ud + h * vb[0], vd + h * vb[1]], 'flight c.g. velocity')
+    # ballistic c.g.; theta, q from the closed form
+    chk.eq(ac, conv_cg_acc_flight(base[2], base[3], G), 'flight c.g. acceleration')
+    Acg = conv_A_cg(P, q)
+    f = conv_f_flight(P, q, thd, qd, G)
+    nudd = solve_lin(mp.matrix(Acg), mp.matrix(f))
+    chk.eq(acc[2:], [nudd[i] for i in range(n + 1)], 'flight accelerations')
+    # mass matrix about the c.g. = Schur complement of the translation block of the direct one
+    Mt = mp.matrix([[ELA[i, j] for j in range(2)] for i in range(2)])
+    for i in range(n + 1):
+        for j in range(n + 1):
+            corr = sum(ELA[i + 2, a] * (mp.inverse(Mt))[a, b_] * ELA[b_, j + 2] for a in range(2) for b_ in range(2))
+            chk.eq((ELA[i + 2, j + 2] - corr) / (M * h * h), Acg[i][j], 'A_cg')
+    # energies and input power, directly
+    b = [base[0], base[1], base[2], base[3], G]
+    T = mp.mpf(0)
+    V = sum(q[i] * body.k[i][j] * q[j] for i in range(n) for j in range(n)) / 2
+    pw = mp.mpf(0)
+    dE = sum(q[i] * body.k[i][j] * qd[j] for i in range(n) for j in range(n))
+    for pt in body.pts():
+        m = pt[0]
+        Rd = FK.call(FK.Rd, pt, x, xd, acc, b)
+        Rdd = FK.call(FK.Rdd, pt, x, xd, acc, b)
+        Rr = FK.call(FK.Rrel, pt, x, xd, acc, b)
+        vr = (Rd[0] - base[0], Rd[1] - base[1])
+        T += m * (vr[0] ** 2 + vr[1] ** 2) / 2
+        V += m * G * Rr[1]
+        pw -= m * (base[2] * vr[0] + base[3] * vr[1])
+        dE += m * (vr[0] * (Rdd[0] - base[2]) + vr[1] * (Rdd[1] - base[3]) + G * vr[1])
+    chk.eq(T, conv_T_flight(P, q, vc, thd, qd), 'flight T_rel')
+    chk.eq(V, conv_V_flight(P, rc[1], q, G), 'flight V')
+    chk.eq(dE, pw, 'flight energy rate (direct)')
+    chk.eq(pw, -M * (base[2] * vc[0] + base[3] * vc[1]), 'flight input power')
+    corners = []
+    for edge in (1, 2):
+        ae = alpha_of(body, edge)
+        # the corner is the massless body point h(alpha_e, 0) from O'
+        ce = rot((h * ae, 0), th)
+        pos = (u + ce[0], v + ce[1])
+        vel = (ud - thd * ce[1], vd + thd * ce[0])
+        a_ = (acc[0] - acc[2] * ce[1] - thd ** 2 * ce[0], acc[1] + acc[2] * ce[0] - thd ** 2 * ce[1])
+        chk.eq(pos, conv_corner(P, ae, rc[0], rc[1], q, s, c), 'corner position')
+        chk.eq(vel, conv_corner_vel(P, ae, q, vc, thd, qd, s, c), 'corner velocity')
+        chk.eq(a_, conv_corner_acc(P, ae, q, ac, thd, qd, acc[2], acc[3:], s, c), 'corner acceleration')
+        corners.append(dict(position=pos, velocity=vel, acceleration=a_))
+    return dict(theta=th, q=q, theta_dot=thd, q_dot=qd, base=list(base), cg=rc, cg_velocity=vc,
+                cg_acceleration=ac, accelerations=acc[2:], mass_matrix_cg=Acg, kinetic_energy=T,
+                potential_energy=V, input_power=pw, corners=corners)
+
+
+def W_corner(P, alpha_e, q, th):
+    """2x2 inverse effective mass of the corner (inertial components): a_e = a_free + W F."""
+    n, M = P['n'], P['M']
+    Acg = mp.matrix(conv_A_cg(P, q))
+    B = conv_B(P, alpha_e, q)
+    Bm = mp.matrix([[B[i][j] for j in range(n + 1)] for i in range(2)])
+    Wb = mp.eye(2) + Bm * mp.inverse(Acg) * Bm.T
+    s, c = mp.sin(th), mp.cos(th)
+    R = mp.matrix([[c, -s], [s, c]])
+    return (R * Wb * R.T) / M
+
+
+def liftoff(K, FK, body, edge, d, th, q, thd, qd, base, chk, stats):
+    """rocking on `edge`, its pivot d to the right of where it stood -> flight; base = (Xdd, Ydd)."""
+    n, P, M, h = body.n, body.P, body.M, body.h
+    ae = alpha_of(body, edge)
+    x0 = h * ae  # the edge's abscissa from O'
+    xP = x0 + d
+    b = [0, 0, base[0], base[1], G]
+    ELA, EL0 = direct_dynamics(K, body, x0, th, q, thd, qd, base, G)
+    acc_r = solve_lin(ELA, -EL0)
+    acc_r = [acc_r[i] for i in range(n + 1)]
+    rc, vc, F = [mp.mpf(0)] * 2, [mp.mpf(0)] * 2, [mp.mpf(0), M * G]
+    for pt in body.pts():
+        m = pt[0]
+        r_ = kcall(K, K.Rrel, pt, x0, xP, th, q, thd, qd, acc_r[0], acc_r[1:], b)
+        v_ = kcall(K, K.Rd, pt, x0, xP, th, q, thd, qd, acc_r[0], acc_r[1:], b)
+        a_ = kcall(K, K.Rdd, pt, x0, xP, th, q, thd, qd, acc_r[0], acc_r[1:], b)
+        for i in range(2):
+            rc[i] += m * r_[i] / M
+            vc[i] += m * v_[i] / M
+            F[i] += m * a_[i]
+    s, c = mp.sin(th), mp.cos(th)
+    pos, vel = conv_liftoff(P, ae, xP, q, thd, qd, s, c)
+    chk.eq(rc, pos, 'lift-off c.g. position')
+    chk.eq(vc, vel, 'lift-off c.g. velocity')
+    # the same state in the flight coordinates (O' = pivot - R h(alpha_e, 0))
+    ce = rot((x0, 0), th)
+    x = [xP - ce[0], -ce[1], th] + list(q)
+    xd = [thd * ce[1], -thd * ce[0], thd] + list(qd)
+    for pt in body.pts():
+        chk.eq(FK.call(FK.Rd, pt, x, xd, [0] * (n + 3), b),
+               kcall(K, K.Rd, pt, x0, xP, th, q, thd, qd, 0, [0] * n, b), 'lift-off point velocity')
+    acc_f, _, rcf, vcf, acf = flight_direct(FK, body, x, xd, [0, 0, base[0], base[1]])
+    # rocking = flight + the floor reaction at the corner
+    Acg = conv_A_cg(P, q)
+    Be = conv_B(P, ae, q)
+    Fb = rotT(F, th)
+    corr = solve_lin(mp.matrix(Acg), mp.matrix([-(Be[0][i] * Fb[0] + Be[1][i] * Fb[1]) / (M * h)
+                                                  for i in range(n + 1)]))
+    chk.eq(acc_r, [acc_f[2 + i] + corr[i] for i in range(n + 1)], 'rocking = flight + reaction')
+    ac_r = [sum(pt[0] * kcall(K, K.Rdd, pt, x0, xP, th, q, thd, qd, acc_r[0], acc_r[1:], b)[i]
+                for pt in body.pts()) / M - base[i] for i in range(2)]
+    chk.eq(ac_r, [acf[i] + F[i] / M for i in range(2)], 'rocking c.g. = flight + F/M')
+    # the corner's acceleration in flight at this state: a_e = -W F
+    ae_f = conv_corner_acc(P, ae, q, acf, thd, qd, acc_f[2], acc_f[3:], s, c)
+    W = W_corner(P, ae, q, th)
+    chk.eq(ae_f, [-(W[i, 0] * F[0] + W[i, 1] * F[1]) for i in range(2)], 'flight corner acc = -W F')
+    # the closed-form reaction (theory 5) is the F here
+    ax, ay = base[0] / G, 1 + base[1] / G
+    Fc = body_to_inertial(conv_F_body(P, ae, q, thd, qd, acc_r[0], acc_r[1:], s, c, ax, ay, G), s, c)
+    chk.eq(F, Fc, 'lift-off reaction')
+    stats['liftoff'] += 1
+    # at F_J = 0 the corner's flight acceleration is -W_yx F_I: record its sign for the tilt range
+    return dict(edge=edge, pivot_x=xP, theta=th, q=q, theta_dot=thd, q_dot=qd, base_acc=list(base),
+                cg=rc, cg_velocity=vc, reaction=F, rocking_accelerations=acc_r,
+                flight_accelerations=acc_f[2:], flight_cg_acceleration=acf, flight_corner_acceleration=ae_f,
+                W=[[W[0, 0], W[0, 1]], [W[1, 0], W[1, 1]]])
+
+
+def landing(K, FK, body, edge, d, th, q, x, xd, vb, chk, stats, what='landing'):
+    """flight state (x, xd) in (u, v, theta, q) with the corner `edge` on the floor at d + ...;
+    plastic landing, the corner sticks; post state rocking on `edge`.  vb: base velocity."""
+    n, P, M, h = body.n, body.P, body.M, body.h
+    ae = alpha_of(body, edge)
+    x0 = h * ae
+    ce = rot((x0, 0), th)
+    xe = x[0] + ce[0]
+    assert abs(x[1] + ce[1]) < mp.mpf('1e-25')
+    b = [vb[0], vb[1], 0, 0, G]
+    pts = list(body.pts())
+    s, c = mp.sin(th), mp.cos(th)
+
+    def phi_in(pt, j):
+        return rot((pt[3][j], pt[4][j]), th)
+
+    def conserved(vels):
+        out = [mp.mpf(0)] * (n + 1)
+        for pt, v_ in zip(pts, vels):
+            m = pt[0]
+            r = FK.call(FK.Rrel, pt, x, xd, [0] * (n + 3), b)
+            out[0] += m * ((r[0] - xe) * v_[1] - r[1] * v_[0])
+            for j in range(n):
+                ph = phi_in(pt, j)
+                out[j + 1] += m * (ph[0] * v_[0] + ph[1] * v_[1])
+        return out
+    vm = [FK.call(FK.Rd, pt, x, xd, [0] * (n + 3), b) for pt in pts]
+    post_v = lambda thd_, qd_: [kcall(K, K.Rd, pt, x0, xe, th, q, thd_, qd_, 0, [0] * n, b) for pt in pts]
+    pre = conserved(vm)
+    base0 = conserved(post_v(0, [0] * n))
+    cols = []
+    for kk in range(n + 1):
+        e = [0] * (n + 1)
+        e[kk] = 1
+        ck = conserved(post_v(e[0], e[1:]))
+        cols.append([ck[i] - base0[i] for i in range(n + 1)])
+    A = mp.matrix([[cols[j][i] for j in range(n + 1)] for i in range(n + 1)])
+    sol = solve_lin(A, mp.matrix([pre[i] - base0[i] for i in range(n + 1)]))
+    thdp, qdp = sol[0], [sol[i + 1] for i in range(n)]
+    # closed form from the flight state (c.g. velocity from the masses)
+    vc = [sum(pt[0] * (v_[i] - vb[i]) for pt, v_ in zip(pts, vm)) / M for i in range(2)]
+    vt = tuple(a / h for a in rotT(vc, th))
+    thdm, qdm = xd[2], xd[3:]
+    Ae, rhs = conv_landing_system(P, ae, q, vt, thdm, qdm)
+    solc = solve_lin(mp.matrix(Ae), mp.matrix(rhs))
+    chk.eq([thdp] + qdp, [solc[i] for i in range(n + 1)], what + ' map')
+    # H_P- relative to the base (the base velocity's share, M (r_c - r_P) x V_b, is the same after)
+    rc = [sum(pt[0] * FK.call(FK.Rrel, pt, x, xd, [0] * (n + 3), b)[i] for pt in pts) / M for i in range(2)]
+    chk.eq(pre[0] - M * ((rc[0] - xe) * vb[1] - rc[1] * vb[0]), M * h * h * rhs[0], what + ' H_P-')
+    vp = post_v(thdp, qdp)
+    Lam = [sum(pt[0] * (vp_[i] - vm_[i]) for pt, vp_, vm_ in zip(pts, vp, vm)) for i in range(2)]
+    dT = sum(pt[0] * (vp_[0] ** 2 + vp_[1] ** 2 - vm_[0] ** 2 - vm_[1] ** 2) / 2 for pt, vp_, vm_ in zip(pts, vp, vm))
+    E = vb[0] * Lam[0] + vb[1] * Lam[1] - dT
+    chk.eq(Lam, conv_landing_impulse(P, ae, q, vt, thdp, qdp, s, c), what + ' impulse')
+    Be = conv_B(P, ae, q)
+    nup = [thdp] + qdp
+    vtp = (dot(Be[0], nup), dot(Be[1], nup))
+    chk.eq(E, conv_landing_loss(P, q, vt, [thdm] + list(qdm), vtp, nup), what + ' energy loss')
+    assert E > -mp.mpf('1e-20') * M * G * h, 'negative landing loss'
+    # the generic form: the generalized momenta of the flight coordinates jump by J_e^T Lambda
+    xdp = [thdp * ce[1], -thdp * ce[0], thdp] + qdp
+    for pt, v_ in zip(pts, vp):
+        chk.eq(FK.call(FK.Rd, pt, x, xdp, [0] * (n + 3), b), v_, what + ' post velocity (flight coords)')
+    dpi = [mp.mpf(0)] * (n + 3)
+    for pt, vp_, vm_ in zip(pts, vp, vm):
+        Jm = FK.call(FK.Jac, pt, x, xd, [0] * (n + 3), b)
+        for i in range(n + 3):
+            dpi[i] += pt[0] * ((vp_[0] - vm_[0]) * Jm[0, i] + (vp_[1] - vm_[1]) * Jm[1, i])
+    JT = [Lam[0], Lam[1], -ce[1] * Lam[0] + ce[0] * Lam[1]] + [0] * n
+    chk.eq(dpi, JT, what + ' A_f dnu = J_e^T Lambda')
+    # Schur form: S_e thd+ = H^_e = rhs_0 - b_e^T mu^-1 rhs_q
+    be = conv_b(P, ae, q)
+    Hhat = rhs[0] - (dot(be, mu_solve(P, rhs[1:])) if n else 0)
+    chk.eq(thdp * schur(P, ae, q), Hhat, what + ' Schur form')
+    stats['landings'] += 1
+    if Lam[1] < 0:
+        stats['tensile_landing'] += 1
+    return dict(edge=edge, theta=th, q=q, cg_velocity=vc, theta_dot_minus=thdm, q_dot_minus=list(qdm),
+                base_velocity=list(vb), theta_dot_plus=thdp, q_dot_plus=qdp, impulse=Lam, energy_loss=E)
+
+
+def flat_landing(K, FK, body, d, q, vd_, thd, qd, vb, chk, stats):
+    """flight at theta = 0 with both corners on the floor; O' at (d, 0); vd_ = (ud, vd)."""
+    n, P, M, h = body.n, body.P, body.M, body.h
+    x, xd = [d, 0, 0] + list(q), [vd_[0], vd_[1], thd] + list(qd)
+    b = [vb[0], vb[1], 0, 0, G]
+    pts = list(body.pts())
+    vm = [FK.call(FK.Rd, pt, x, xd, [0] * (n + 3), b) for pt in pts]
+    pvel = lambda qd_: [FK.call(FK.Rd, pt, x, [0, 0, 0] + list(qd_), [0] * (n + 3), b) for pt in pts]
+
+    def moms(vels, xe):
+        out = [mp.mpf(0)] * (n + 1)
+        for pt, v_ in zip(pts, vels):
+            m = pt[0]
+            r = FK.call(FK.Rrel, pt, x, xd, [0] * (n + 3), b)
+            out[0] += m * ((r[0] - xe) * v_[1] - r[1] * v_[0])
+            for j in range(n):
+                out[j + 1] += m * (pt[3][j] * v_[0] + pt[4][j] * v_[1])
+        return out
+    vc = [sum(pt[0] * (v_[i] - vb[i]) for pt, v_ in zip(pts, vm)) / M for i in range(2)]
+    vt = (vc[0] / h, vc[1] / h)
+    prhs = conv_flat_landing_rhs(P, q, vt, thd, qd)
+    if n:
+        pre = moms(vm, 0)
+        b0 = moms(pvel([0] * n), 0)
+        cols = []
+        for kk in range(n):
+            e = [0] * n
+            e[kk] = 1
+            ck = moms(pvel(e), 0)
+            cols.append([ck[i + 1] - b0[i + 1] for i in range(n)])
+        A = mp.matrix([[cols[j][i] for j in range(n)] for i in range(n)])
+        sol = solve_lin(A, mp.matrix([pre[i + 1] - b0[i + 1] for i in range(n)]))
+        qdp = [sol[i] for i in range(n)]
+        chk.eq(qdp, mu_solve(P, prhs), 'flat landing qd+')
+    else:
+        qdp = []
+    vp = pvel(qdp)
+    Lam = [sum(pt[0] * (vp_[i] - vm_[i]) for pt, vp_, vm_ in zip(pts, vp, vm)) for i in range(2)]
+    dT = sum(pt[0] * (vp_[0] ** 2 + vp_[1] ** 2 - vm_[0] ** 2 - vm_[1] ** 2) / 2 for pt, vp_, vm_ in zip(pts, vp, vm))
+    E = vb[0] * Lam[0] + vb[1] * Lam[1] - dT
+    chk.eq(Lam, conv_landing_impulse(P, 0, q, vt, 0, qdp, 0, 1), 'flat landing impulse')
+    vtp = (dot(P['psi_x'], qdp), dot(P['psi_y'], qdp))
+    chk.eq(E, conv_landing_loss(P, q, vt, [thd] + list(qd), vtp, [0] + qdp), 'flat landing loss')
+    assert E > -mp.mpf('1e-20') * M * G * h, 'negative flat landing loss'
+    # split of the vertical impulse: moments about each corner
+    Hh = {}
+    for e in (1, 2):
+        ae = alpha_of(body, e)
+        Ae, rhs = conv_landing_system(P, ae, q, vt, thd, qd)
+        Hh[e] = rhs[0] - (dot(conv_b(P, ae, q), mu_solve(P, rhs[1:])) if n else 0)
+    L = {}
+    for e, o in ((1, 2), (2, 1)):
+        xe, xo = d + h * alpha_of(body, e), d + h * alpha_of(body, o)
+        L[o] = (moms(vp, xe)[0] - moms(vm, xe)[0]) / (xo - xe)  # vertical impulse at corner o
+        chk.eq(L[o], -M * h * Hh[e] / (alpha_of(body, o) - alpha_of(body, e)), 'flat landing corner impulse')
+    chk.eq(L[1] + L[2], Lam[1], 'flat landing vertical impulse split')
+    both_comp = L[1] >= 0 and L[2] >= 0
+    assert both_comp == (Hh[1] <= 0 <= Hh[2]), 'flat landing rule'
+    stats['flat'] += 1
+    if both_comp:
+        stats['flat_compressive'] += 1
+    if Hh[1] > 0 and Hh[2] < 0:
+        stats['both_single_admissible'] += 1
+    return dict(d=d, q=q, cg_velocity=vc, theta_dot_minus=thd, q_dot_minus=list(qd), base_velocity=list(vb),
+                q_dot_plus=qdp, impulse=Lam, corner_impulse_y=[L[1], L[2]], H_hat=[Hh[1], Hh[2]],
+                energy_loss=E)
+
+
+def flight_cases(K, FK, body, rng, chk, stats):
+    n, P, h = body.n, body.P, body.h
+    u = lambda a, b: mpf(rng.uniform(a, b))
+    sgh = mp.sqrt(G * h)
+    fl, lo, la, fla = [], [], [], []
+    for i in range(3):
+        q = [mpf(0.05 * rng.normal()) for _ in range(n)]
+        qd = [mpf(rng.normal()) for _ in range(n)]
+        fl.append(flight_state(FK, body, u(-0.5, 0.5), q, u(-0.3, 0.3) * h, u(0, 0.2) * h, u(-0.5, 0.5) * sgh,
+                               u(-0.5, 0.5) * sgh, u(-1.5, 1.5), qd,
+                               [u(-0.5, 0.5), u(-0.5, 0.5), u(-0.3, 0.3) * G, u(-0.3, 0.3) * G], chk))
+    for edge in (1, 2):
+        q = [mpf(0.05 * rng.normal()) for _ in range(n)]
+        qd = [mpf(rng.normal()) for _ in range(n)]
+        th = u(0.005, 0.6) * (1 if edge == 1 else -1)
+        lo.append(liftoff(K, FK, body, edge, u(-0.2, 0.2) * h, th, q, u(-1.5, 1.5), qd,
+                          [u(-0.3, 0.3) * G, u(-0.3, 0.3) * G], chk, stats))
+    for i in range(4):
+        edge = 1 + i % 2
+        sg = 1 if edge == 1 else -1
+        ae = alpha_of(body, edge)
+        q = [mpf(0.05 * rng.normal()) for _ in range(n)]
+        qd = [mpf(rng.normal()) for _ in range(n)]
+        vb = [u(-0.5, 0.5), u(-0.5, 0.5)]
+        if i < 2:  # a free landing at a tilt, the corner coming down
+            th = u(0.0, 0.4) * sg
+            thd = u(-1.5, 1.5)
+            ce = rot((h * ae, 0), th)
+            vd = -thd * ce[0] - u(0.05, 1.0) * sgh
+            x = [u(-0.2, 0.2) * h - ce[0], -ce[1], th] + q
+            xd = [u(-0.5, 0.5) * sgh, vd, thd] + qd
+            la.append(landing(K, FK, body, edge, 0, th, q, x, xd, vb, chk, stats))
+        else:  # rocking on the other edge at theta = 0 -> the impact map of theory 8
+            other = 2 if edge == 1 else 1
+            thdm = u(0.05, 1.5) * sg
+            d = u(-0.2, 0.2) * h
+            ao = alpha_of(body, other)
+            (xc, yc), vc = conv_liftoff(P, ao, d + h * ao, q, thdm, qd, 0, 1)
+            x = [d, 0, 0] + q
+            xd = [thdm * 0, -thdm * h * ao, thdm] + qd
+            r = landing(K, FK, body, edge, d, 0, q, x, xd, vb, chk, stats, 'landing at theta=0')
+            chk.eq(r['cg_velocity'], vc, 'rocking state as flight state')
+            Ai, rhs = conv_impact_system(P, ao, ae, q, thdm, qd)
+            s8 = solve_lin(mp.matrix(Ai), mp.matrix(rhs))
+            chk.eq([r['theta_dot_plus']] + r['q_dot_plus'], [s8[k] for k in range(n + 1)],
+                   'landing = impact map of theory 8')
+            la.append(r)
+    for i in range(2):
+        q = [mpf(0.05 * rng.normal()) for _ in range(n)]
+        qd = [mpf(rng.normal()) for _ in range(n)]
+        thd = u(-1.0, 1.0)
+        vd = min(h * body.alpha1 * thd, -h * body.alpha2 * thd) - u(0.05, 1.0) * sgh
+        fla.append(flat_landing(K, FK, body, u(-0.2, 0.2) * h, q, (u(-0.5, 0.5) * sgh, vd), thd, qd,
+                                [u(-0.5, 0.5), u(-0.5, 0.5)], chk, stats))
+    return dict(flight=fl, liftoff=lo, landings=la, flat_landings=fla)
+
+
 # ---------------------------------------------------------------------------
 # body generation
 # ---------------------------------------------------------------------------
@@ -907,9 +1626,11 @@ def main():
     ap.add_argument('--seed', type=int, default=12345)
     ap.add_argument('--print', action='store_true', dest='do_print')
     ap.add_argument('--symbolic-n', type=int, default=3, help='largest n for the symbolic checks')
+    ap.add_argument('--symbolic-flight-n', type=int, default=2,
+                    help='largest n for the symbolic flight / landing checks')
     args = ap.parse_args()
     t0 = time.time()
-    sres, gens = symbolic_checks(range(0, args.symbolic_n + 1), verbose=True)
+    sres, gens = symbolic_checks(range(0, args.symbolic_n + 1), verbose=True, flight_n=args.symbolic_flight_n)
     failed = [(n, k) for n, r in sres.items() for k, v in r.items()
               if (isinstance(v, bool) and not v) or (isinstance(v, list) and v)]
     print('symbolic checks (n=0..%d): %s  [%.1f s]' % (args.symbolic_n, 'ALL PASS' if not failed else
@@ -921,15 +1642,22 @@ def main():
     rng = np.random.RandomState(args.seed)
     chk = Checker()
     stats = dict(impacts=0, both_applies=0, both_negative=[], min_ratio=1e9)
+    fstats = dict(liftoff=0, landings=0, tensile_landing=0, flat=0, flat_compressive=0,
+                  both_single_admissible=0)
     cases = []
-    kernels = {}
+    kernels, fkernels = {}, {}
     for n in range(4):
         K = kernels.setdefault(n, PointMassKernel(n))
+        FK = fkernels.setdefault(n, FlightKernel(n))
         bodies = [random_body(rng, n, 'random n=%d #%d' % (n, i)) for i in range(3)]
         if n == 0:
             bodies.append(squat_block())
         for b in bodies:
             cases.append(case_json(b, K, rng, chk, stats))
+        # flight, lift-off and landings: a separate random stream, so the cases above stay as they were
+        frng = np.random.RandomState(args.seed + 1 + n)
+        for b, c in zip(bodies, cases[-len(bodies):]):
+            c.update(flight_cases(K, FK, b, frng, chk, fstats))
     # extra impacts (not written): wide-base flexible bodies, large modal rates, to exercise
     # the both-edges rule and check that both edge impulses are compressive where it applies
     st2 = dict(impacts=0, both_applies=0, both_negative=[], min_ratio=1e9)
@@ -945,6 +1673,28 @@ def main():
                 land = 1 + k % 2
                 thdm = mpf(rng.uniform(0.05, 1.5)) * (1 if land == 1 else -1)
                 impact(K, b, land, q, thdm, qd, [0, 0], chk, st2)
+    # extra landings (not written): fast horizontal corner velocities, as after a flight over a base
+    # that kept accelerating; a sticking corner can then need a tensile normal impulse
+    fst2 = dict(liftoff=0, landings=0, tensile_landing=0)
+    for n in (0, 1, 2):
+        K, FK = kernels[n], fkernels[n]
+        for i in range(2):
+            b = random_body(rng, n, 'landing stress n=%d #%d' % (n, i))
+            h = b.h
+            for k in range(6):
+                edge = 1 + k % 2
+                sg = 1 if edge == 1 else -1
+                q = [mpf(0.05 * rng.normal()) for _ in range(n)]
+                qd = [mpf(rng.normal()) for _ in range(n)]
+                th = mpf(rng.uniform(0.0, 0.4)) * sg
+                thd = mpf(rng.uniform(-1.5, 1.5))
+                ce = rot((h * alpha_of(b, edge), 0), th)
+                sgh = mp.sqrt(G * h)
+                x = [-ce[0], -ce[1], th] + q
+                xd = [mpf(rng.uniform(-2, 2)) * sgh, -thd * ce[0] - mpf(rng.uniform(0.02, 0.5)) * sgh, thd] + qd
+                landing(K, FK, b, edge, 0, th, q, x, xd, [0, 0], chk, fst2, 'stress landing')
+    print('stress landings: %d, tensile normal impulse with a sticking corner in %d' %
+          (fst2['landings'], fst2['tensile_landing']), file=sys.stderr)
     print('stress impacts: %d, both-edges rule applies in %d, negative edge impulse in: %s' %
           (st2['impacts'], st2['both_applies'], st2['both_negative'] or 'none'), file=sys.stderr)
     sq = cases[3]
@@ -960,6 +1710,10 @@ def main():
     print('impacts: %d, both-edges rule applies in %d, negative edge impulse in: %s; min thd+/thd- = %.4f' %
           (stats['impacts'], stats['both_applies'], stats['both_negative'] or 'none', stats['min_ratio']),
           file=sys.stderr)
+    print('flight: lift-offs %d, landings %d (tensile normal impulse with a sticking corner in %d), flat landings '
+          '%d (both corners compressive in %d, both single-corner maps admissible in %d)' %
+          (fstats['liftoff'], fstats['landings'], fstats['tensile_landing'], fstats['flat'],
+           fstats['flat_compressive'], fstats['both_single_admissible']), file=sys.stderr)
     print('total %.1f s' % (time.time() - t0), file=sys.stderr)
     return 1 if failed else 0
 
