@@ -1441,6 +1441,30 @@ def flat_landing(K, FK, body, d, q, vd_, thd, qd, vb, chk, stats):
                 energy_loss=E)
 
 
+def rigid_liftoff_condition(K, FK, chk):
+    """a rigid block rocking on edge 1 with F_J = 0: the corner's flight acceleration is
+    h thdd_rock X = -g X (X a_y - Y a_x) / (1 + zeta2 + alpha1^2), (X, Y) = R(theta) w_1;
+    <= 0 under gravity alone (no consistent lift-off with a sticking corner)."""
+    sq = squat_block()
+    b = Body(0, sq.m, [(p[0] / 4, p[1]) for p in sq.pos], [[] for _ in range(4)], [], sq.b1 / 4, sq.b2 / 4,
+             'rigid block b/h=0.5')
+    st = dict(liftoff=0)
+    out = []
+    for th, ax in ((mp.mpf('0.6'), mp.mpf('-0.3')), (mp.mpf('1.0'), mp.mpf(0)), (mp.mpf('1.4'), mp.mpf(0))):
+        base = [ax * G, 0]
+        FJ = lambda thd: liftoff(K, FK, b, 1, 0, th, [], thd, [], base, chk, st)['reaction'][1] / (b.M * G)
+        thd = mp.findroot(FJ, mp.mpf(3))
+        r = liftoff(K, FK, b, 1, 0, th, [], thd, [], base, chk, st)
+        w = rot(conv_w(b.P, -b.alpha1, []), th)
+        k_ = 1 + b.P['zeta2'] + b.alpha1 ** 2
+        yddot = r['flight_corner_acceleration'][1]
+        chk.eq(yddot, b.h * r['rocking_accelerations'][0] * w[0], 'rigid lift-off: h thdd X')
+        chk.eq(yddot, -G * w[0] * (w[0] - w[1] * ax) / k_, 'rigid lift-off corner acceleration')
+        assert (yddot < 0) == (ax == 0), 'rigid lift-off sign'
+        out.append((float(th), float(ax), float(yddot)))
+    return out
+
+
 def flight_cases(K, FK, body, rng, chk, stats):
     n, P, h = body.n, body.P, body.h
     u = lambda a, b: mpf(rng.uniform(a, b))
@@ -1693,6 +1717,9 @@ def main():
                 x = [-ce[0], -ce[1], th] + q
                 xd = [mpf(rng.uniform(-2, 2)) * sgh, -thd * ce[0] - mpf(rng.uniform(0.02, 0.5)) * sgh, thd] + qd
                 landing(K, FK, b, edge, 0, th, q, x, xd, [0, 0], chk, fst2, 'stress landing')
+    rl = rigid_liftoff_condition(kernels[0], fkernels[0], chk)
+    print('rigid lift-off at F_J = 0 (theta, a_x/g, corner ydd in flight): %s' %
+          ', '.join('(%.1f, %+.1f, %+.3f)' % x for x in rl), file=sys.stderr)
     print('stress landings: %d, tensile normal impulse with a sticking corner in %d' %
           (fst2['landings'], fst2['tensile_landing']), file=sys.stderr)
     print('stress impacts: %d, both-edges rule applies in %d, negative edge impulse in: %s' %
