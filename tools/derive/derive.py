@@ -1366,6 +1366,9 @@ def landing(K, FK, body, edge, d, th, q, x, xd, vb, chk, stats, what='landing'):
     be = conv_b(P, ae, q)
     Hhat = rhs[0] - (dot(be, mu_solve(P, rhs[1:])) if n else 0)
     chk.eq(thdp * schur(P, ae, q), Hhat, what + ' Schur form')
+    # sticking: the impulse stops the corner, Lambda = -W^-1 v_e- (v_e- relative to the base)
+    ve = conv_corner_vel(P, ae, q, vc, thdm, qdm, s, c)
+    chk.eq(solve_lin(W_corner(P, ae, q, th), mp.matrix([-ve[0], -ve[1]])), Lam, what + ' Lambda = -W^-1 v_e')
     stats['landings'] += 1
     if Lam[1] < 0:
         stats['tensile_landing'] += 1
@@ -1429,6 +1432,9 @@ def flat_landing(K, FK, body, d, q, vd_, thd, qd, vb, chk, stats):
         L[o] = (moms(vp, xe)[0] - moms(vm, xe)[0]) / (xo - xe)  # vertical impulse at corner o
         chk.eq(L[o], -M * h * Hh[e] / (alpha_of(body, o) - alpha_of(body, e)), 'flat landing corner impulse')
     chk.eq(L[1] + L[2], Lam[1], 'flat landing vertical impulse split')
+    Vhat = vt[1] - (dot(P['psi_y'], mu_solve(P, prhs)) if n else 0)
+    chk.eq(Lam[1], -M * h * Vhat, 'flat landing vertical impulse = -M h Vhat')
+    chk.eq(Hh[1] - Hh[2], (body.alpha1 + body.alpha2) * Vhat, 'H^_1 - H^_2 = (alpha1 + alpha2) Vhat')
     both_comp = L[1] >= 0 and L[2] >= 0
     assert both_comp == (Hh[1] <= 0 <= Hh[2]), 'flat landing rule'
     stats['flat'] += 1
