@@ -7,6 +7,7 @@
 #include <fmt/core.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <csignal>
@@ -542,12 +543,19 @@ int StudyCommands::Impl::run_fragility() {
   const std::string what = outcome == "overturned" ? "overturning"
                            : outcome == "theta"    ? fmt::format("max theta/alpha > {}", level)
                                                    : fmt::format("energy lost > {} J", level);
-  const std::string unit = im == "pga" ? "m/s^2" : im == "pga_g" ? "g" : im == "pgv" ? "m/s" : "-";
+  std::string unit = im == "pga" ? "m/s^2" : im == "pga_g" ? "g" : im == "pgv" ? "m/s" : "-";
+  if (im == "requested_level" && !table.rows.empty()) {
+    const std::size_t c = std::find(table.columns.begin(), table.columns.end(), "requested_units") -
+                          table.columns.begin();
+    if (c < table.columns.size()) unit = table.rows.front()[c];
+  }
   for (std::size_t k = 0; k < data.size(); ++k) {
     const study::FragilityFit& f = fits[k];
     fmt::print("{}: P({} | {}) = Phi(ln(x/theta)/beta), {} runs ({} with the outcome{})\n",
                data[k].body, what, im, f.samples, f.failures,
-               data[k].excluded ? fmt::format(", {} stopped runs left out", data[k].excluded) : "");
+               data[k].excluded
+                   ? fmt::format(", {} runs stopped or lost contact: left out", data[k].excluded)
+                   : "");
     fmt::print("  theta = {:.5g} {}  [{:.5g}, {:.5g}] ({:.0f}% bounds)\n", f.theta, unit,
                f.theta_lower, f.theta_upper, 100.0 * confidence);
     fmt::print("  beta  = {:.5g}  [{:.5g}, {:.5g}]\n", f.beta, f.beta_lower, f.beta_upper);
@@ -616,8 +624,11 @@ StudyCommands::StudyCommands(CLI::App& app) : impl_(std::make_unique<Impl>()) {
                          "Lognormal fragility fit (maximum likelihood) from a sweep CSV, with "
                          "confidence bounds");
   s.fragility->add_option("SWEEP_CSV", s.input, "CSV written by flexrock sweep")->required();
-  s.fragility->add_option("--im", s.im, "intensity measure: pga (m/s^2), pga_g, pgv (m/s), scale")
-      ->check(CLI::IsMember({"pga", "pga_g", "pgv", "scale"}));
+  s.fragility
+      ->add_option("--im", s.im,
+                   "intensity measure: pga (m/s^2), pga_g, pgv (m/s), scale, requested_level "
+                   "(the sweep's levels as its manifest wrote them)")
+      ->check(CLI::IsMember({"pga", "pga_g", "pgv", "scale", "requested_level"}));
   s.fragility
       ->add_option("--outcome", s.outcome,
                    "failure: overturned, theta (max theta/alpha > level), energy (energy lost > "

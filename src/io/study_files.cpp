@@ -441,8 +441,10 @@ SweepManifest load_sweep_manifest(const std::string& path) {
     if (sk->has("units")) sk->fail("units", "only with 'target_pga'");
   } else {
     m.spec.scale_kind = study::ScaleKind::kTargetPga;
-    const double u = to_si_factor(unit_of(sk->choice("units", kUnits, "g")));
+    m.spec.level_units = sk->choice("units", kUnits, "g");
+    const double u = to_si_factor(unit_of(m.spec.level_units));
     m.spec.scales = *grid_opt(*sk, "target_pga", "(units)");
+    m.spec.levels = m.spec.scales;  // as written, for the CSV's level column
     for (double& v : m.spec.scales) v *= u;
   }
   for (std::size_t i = 0; i < m.spec.scales.size(); ++i) {
@@ -459,17 +461,18 @@ SweepManifest load_sweep_manifest(const std::string& path) {
 }
 
 std::vector<std::string> sweep_columns() {
-  return {"index",         "body",
-          "record",        "scale",
-          "pga_m_per_s2",  "pga_g",
-          "pgv_m_per_s",   "duration_s",
-          "outcome",       "overturned",
-          "overturn_edge", "overturn_time_s",
-          "max_theta_rad", "max_theta_over_alpha",
-          "impacts",       "first_uplift_time_s",
-          "max_uplift_m",  "max_impulse_N_s",
-          "energy_lost_J", "max_friction_demand",
-          "status",        "message"};
+  return {"index",           "body",
+          "record",          "requested_level",
+          "requested_units", "scale",
+          "pga_m_per_s2",    "pga_g",
+          "pgv_m_per_s",     "duration_s",
+          "outcome",         "overturned",
+          "overturn_edge",   "overturn_time_s",
+          "max_theta_rad",   "max_theta_over_alpha",
+          "impacts",         "first_uplift_time_s",
+          "max_uplift_m",    "max_impulse_N_s",
+          "energy_lost_J",   "max_friction_demand",
+          "status",          "message"};
 }
 
 std::string sweep_row(const study::SweepSpec& spec, const study::SweepRow& row) {
@@ -481,6 +484,14 @@ std::string sweep_row(const study::SweepSpec& spec, const study::SweepRow& row) 
   }
   std::string s = std::to_string(row.index) + "," + spec.bodies.at(row.body).name + "," +
                   spec.records.at(row.record).name + ",";
+  // the level as requested: the same number for every record at that level (pga_g is not)
+  const bool factor = spec.scale_kind == study::ScaleKind::kFactor;
+  const std::vector<double>& levels = spec.levels.empty() ? spec.scales : spec.levels;
+  s += num(levels.at(row.scale_index)) + "," +
+       (factor                     ? std::string("-")
+        : spec.level_units.empty() ? "m/s^2"
+                                   : spec.level_units) +
+       ",";
   s += num(row.scale) + "," + num(row.pga) + "," + num(row.pga / kStandardGravity) + "," +
        num(row.pgv) + "," + num(row.duration) + ",";
   s += std::string(study::to_string(r.outcome)) + "," + (study::overturned(r.outcome) ? "1" : "0");
@@ -495,7 +506,7 @@ std::string sweep_row(const study::SweepSpec& spec, const study::SweepRow& row) 
 std::string journal_header(std::uint64_t hash, std::size_t runs) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(hash));
-  return "# flexrock sweep journal v1 manifest=" + std::string(buf) +
+  return "# flexrock sweep journal v2 manifest=" + std::string(buf) +
          " runs=" + std::to_string(runs);
 }
 
@@ -626,7 +637,7 @@ CsvTable read_csv_table(const std::string& path) {
 }
 
 std::vector<FragilityData> fragility_data(const CsvTable& t, const FragilityQuery& q) {
-  const std::vector<std::string> ims = {"pga", "pga_g", "pgv", "scale"};
+  const std::vector<std::string> ims = {"pga", "pga_g", "pgv", "scale", "requested_level"};
   if (std::find(ims.begin(), ims.end(), q.im) == ims.end()) {
     throw InputError("fragility: intensity measure '" + q.im + "': expected one of: " + join(ims));
   }

@@ -66,6 +66,10 @@ void validate(const SweepSpec& spec) {
                               "]: expected a finite number > 0, got " +
                               std::to_string(spec.scales[i]));
   }
+  FLEXROCK_THROW_UNLESS(spec.levels.empty() || spec.levels.size() == spec.scales.size(),
+                        "sweep: levels: expected one requested level per scale (" +
+                            std::to_string(spec.scales.size()) + "), got " +
+                            std::to_string(spec.levels.size()));
   FLEXROCK_THROW_UNLESS(std::isfinite(spec.free_periods) && spec.free_periods >= 0.0,
                         "sweep: free_periods: expected a number >= 0");
   for (const SweepBody& b : spec.bodies) {

@@ -6,8 +6,17 @@ cd "$WORK"
 run "$FLEXROCK" sweep "$SRC/examples/studies/sweep.toml" -o sweep.csv -q
 expect_rc 0 "example sweep"
 [ "$(wc -l <sweep.csv)" -eq 33 ] || fail "expected 32 rows + header"
-head -1 sweep.csv | grep -q "^index,body,record,scale,pga_m_per_s2,pga_g,pgv_m_per_s,duration_s,outcome,overturned," ||
+head -1 sweep.csv | grep -q "^index,body,record,requested_level,requested_units,scale,pga_m_per_s2,pga_g,pgv_m_per_s,duration_s,outcome,overturned," ||
   fail "sweep columns: $(head -1 sweep.csv)"
+# the requested level is one number per level of the manifest (8), whatever the record; it is
+# the value pandas can group by (pga_g is computed from each record and differs in the last bits)
+[ "$(tail -n +2 sweep.csv | cut -d, -f4 | sort -u | wc -l)" -eq 8 ] ||
+  fail "requested levels: $(tail -n +2 sweep.csv | cut -d, -f4 | sort -u | tr '\n' ' ')"
+[ "$(tail -n +2 sweep.csv | cut -d, -f5 | sort -u)" = "g" ] || fail "requested units"
+run "$FLEXROCK" fragility sweep.csv --im requested_level --body statue
+expect_rc 0 "fragility against the requested level"
+expect_in "$WORK/out" "statue: P(overturning | requested_level)"
+expect_in "$WORK/out" " g  ["
 
 run "$FLEXROCK" fragility sweep.csv --im pga_g -o fit.csv --curve curve.csv --curve-points 20
 expect_rc 0 "fragility of the example sweep"

@@ -76,7 +76,7 @@ for sig in INT KILL; do
 done
 
 # a journal of another manifest (or another run count) is an error, not a mix
-printf '# flexrock sweep journal v1 manifest=0000000000000001 runs=60\n0%s\n' "$(printf ',%.0s' $(seq 21))" \
+printf '# flexrock sweep journal v2 manifest=0000000000000001 runs=60\n0%s\n' "$(printf ',%.0s' $(seq 23))" \
   >"$WORK/mix.csv.partial"
 run "$FLEXROCK" sweep "$WORK/m.toml" -o "$WORK/mix.csv"
 expect_rc 2 "foreign journal"

@@ -57,6 +57,17 @@ TEST_F(StudyFiles, ManifestLoadsBodiesRecordsAndScales) {
   EXPECT_EQ(sm.spec.bodies[0].name, "b");
   EXPECT_EQ(sm.spec.records[0].name, "rec");
   EXPECT_EQ(sm.spec.scales, (std::vector<double>{0.5, 1.0, 1.5, 2.0}));
+  EXPECT_TRUE(sm.spec.levels.empty());  // factors: the levels are the scales
+  // target PGAs: scales in m/s^2, the levels as written, for the CSV's requested_level
+  const std::string t = write("t.toml",
+                              "[[body]]\nfile = \"b.toml\"\n"
+                              "[[record]]\nfile = \"r.dat\"\nformat = \"single_column\"\n"
+                              "dt = 0.01\nunits = \"g\"\n"
+                              "[scales]\ntarget_pga = [0.1, 0.3]\nunits = \"cm/s^2\"\n");
+  const SweepManifest st = load_sweep_manifest(t);
+  EXPECT_EQ(st.spec.levels, (std::vector<double>{0.1, 0.3}));
+  EXPECT_EQ(st.spec.level_units, "cm/s^2");
+  EXPECT_EQ(st.spec.scales, (std::vector<double>{0.1 * 0.01, 0.3 * 0.01}));
   // the hash follows the files the manifest names
   write("r.dat", "0.0\n0.1\n-0.2\n0.3\n0.01\n");
   EXPECT_NE(load_sweep_manifest(m).hash, sm.hash);

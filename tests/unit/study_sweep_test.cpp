@@ -3,8 +3,11 @@
 // closed forms, target-PGA scaling.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <string>
+#include <vector>
 
 #include "flexrock/excitation/pulses.hpp"
 #include "flexrock/io/study_files.hpp"
@@ -122,6 +125,40 @@ TEST(StudySweep, TargetPgaScalesEachRecordToIt) {
     const SweepRow row = run_sweep_one(s, run);
     EXPECT_NEAR(row.pga, s.scales[run.scale_index], 1e-12);
   }
+}
+
+// the CSV's requested_level: the level as given, one value a level whatever the record (the
+// computed pga_g differs between records in its last bits: no key for a pivot)
+TEST(StudySweep, RequestedLevelIsTheSameNumberForEveryRecord) {
+  SweepSpec s = small_sweep();
+  s.bodies.resize(1);
+  s.scale_kind = ScaleKind::kTargetPga;
+  s.levels = {0.1, 0.3, 0.7};
+  s.level_units = "g";
+  s.scales.clear();
+  for (double v : s.levels) s.scales.push_back(v * 9.80665);
+  const auto cols = io::sweep_columns();
+  const auto at = [&](const std::string& row, const std::string& name) {
+    std::size_t k = std::find(cols.begin(), cols.end(), name) - cols.begin(), start = 0;
+    for (std::size_t i = 0; i < k; ++i) start = row.find(',', start) + 1;
+    return row.substr(start, row.find(',', start) - start);
+  };
+  for (const SweepRow& r : run_sweep(s, {}, {.threads = 2})) {
+    const std::string line = io::sweep_row(s, r);
+    EXPECT_EQ(at(line, "requested_level"),
+              std::vector<std::string>({"0.1", "0.3", "0.7"})[r.scale_index]);
+    EXPECT_EQ(at(line, "requested_units"), "g");
+    EXPECT_NEAR(std::stod(at(line, "pga_g")), s.levels[r.scale_index], 1e-12);
+  }
+  // factors: the factor itself, unit "-"
+  const SweepSpec f = small_sweep();
+  const SweepRow r = run_sweep_one(f, sweep_runs(f)[2]);
+  const std::string line = io::sweep_row(f, r);
+  EXPECT_EQ(at(line, "requested_level"), "4");
+  EXPECT_EQ(at(line, "requested_units"), "-");
+  // one level a scale
+  s.levels.pop_back();
+  test::expect_input_error([&] { validate(s); }, {"levels", "one requested level per scale"});
 }
 
 TEST(StudySweep, BadSpecsAreInputErrors) {

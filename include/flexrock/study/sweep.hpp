@@ -51,6 +51,10 @@ struct SweepSpec {
   double free_periods = 2.0;   // [-] free motion after the record, in rocking periods 2 pi / p
   // tolerances etc. (overturning at pi/2); t_end and output_dt are set per run
   SimulationOptions solver = study_solver_defaults();
+  // the scales as requested, for the CSV's level column (exact where a unit change of scales
+  // is not): factors [-] or target PGAs in level_units; empty: scales, in their own units
+  std::vector<double> levels;
+  std::string level_units;  // "g", "m/s^2" or "cm/s^2" for target PGAs; empty: m/s^2
 };
 
 /// One run of a sweep. Run indices are body-major: index = (body * records + record) * scales
