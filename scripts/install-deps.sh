@@ -10,10 +10,12 @@ pkgs=(build-essential cmake ninja-build pkg-config
       libeigen3-dev libboost-dev libboost-math-dev
       libtomlplusplus-dev nlohmann-json3-dev libcli11-dev libfmt-dev
       libgtest-dev libgmock-dev python3 python3-sympy
-      pybind11-dev python3-dev python3-numpy python3-scipy python3-matplotlib python3-pytest)
+      pybind11-dev python3-dev python3-numpy python3-scipy python3-matplotlib python3-pytest
+      python3-pandas)
 for arg in "$@"; do
   case "$arg" in
-    --python) pkgs+=(pybind11-dev python3-dev python3-numpy python3-matplotlib python3-pytest) ;;
+    --python) pkgs+=(pybind11-dev python3-dev python3-numpy python3-matplotlib python3-pytest
+                     python3-pandas) ;;
     --bench) pkgs+=(libbenchmark-dev python3-scipy python3-numpy python3-matplotlib
                     python3-siconos valgrind) ;;
     --lint) pkgs+=(clang-format) ;;

@@ -16,6 +16,7 @@ import csv
 import functools
 import io
 import json
+import math
 from typing import Optional, Sequence, Union
 
 import numpy as np
@@ -190,29 +191,120 @@ def _unit_name(rec: Record) -> str:
     return {AccelUnit.g: "g", AccelUnit.m_per_s2: "m/s^2", AccelUnit.cm_per_s2: "cm/s^2"}[rec.units]
 
 
-def _synthetic(fn, type_name: str):
-    # a pulse builder that notes its type and amplitude (the first argument) for the summary
+_OLD_ARGS = {  # the engine's arguments of each pulse, in order (SI: m/s^2, rad/s, s)
+    "harmonic": ("amplitude", "omega", "duration", "phase", "component"),
+    "harmonic_cycles": ("amplitude", "omega", "cycles", "duration", "phase", "component"),
+    "ricker": ("a_p", "omega_p", "t_c", "duration", "component"),
+    "rectangular": ("a_p", "t_1", "duration", "component"),
+    "cycloidal_c": ("a_p", "omega_p", "duration", "n", "component"),
+}
+_TOML_KEYS = {"center": "t_c", "length": "t_1"}  # a case file's names of the engine's arguments
+
+
+def _synthetic(fn, type_name: str, args=("a_p", "omega_p", "duration", "component")):
+    # a pulse builder taking the case file's keys and units (amplitude= with units=, or
+    # amplitude_g= / amplitude_m_per_s2=; frequency_hz= or period=) as well as the engine's
+    # SI arguments; it notes its type and amplitude [m/s^2] for the summary
+    amp, omega = args[0], (args[1] if args[1].startswith("omega") else None)
+
     @functools.wraps(fn)
-    def make(*args, **kwargs):
-        m = fn(*args, **kwargs)
-        amplitude = args[0] if args else kwargs.get("amplitude", kwargs.get("a_p"))
-        comp = {"type": type_name, "amplitude_m_per_s2": float(amplitude)}
-        if kwargs.get("component") == Component.vertical:
+    def make(*pos, amplitude=None, units=None, amplitude_g=None, amplitude_m_per_s2=None,
+             frequency_hz=None, period=None, **kwargs):
+        for key, arg in _TOML_KEYS.items():
+            if key in kwargs:
+                if arg not in args:
+                    raise InputError(f"{type_name}: unknown argument {key!r}")
+                kwargs[arg] = kwargs.pop(key)
+        given = [k for k, v in (("amplitude", amplitude if units is not None else None),
+                                ("amplitude_g", amplitude_g),
+                                ("amplitude_m_per_s2", amplitude_m_per_s2)) if v is not None]
+        new_freq = [k for k, v in (("frequency_hz", frequency_hz), ("period", period)) if v is not None]
+        if units is not None and amplitude is None:
+            raise InputError(f"{type_name}: units={units!r} without amplitude=")
+        if len(given) > 1:
+            raise InputError(f"{type_name}: give one of {', '.join(given)}")
+        if len(new_freq) > 1:
+            raise InputError(f"{type_name}: give one of frequency_hz [Hz] or period [s], not both")
+        if new_freq and omega is None:
+            raise InputError(f"{type_name}: no frequency (it takes {', '.join(args[1:-1])})")
+        if amplitude is not None and units is None and amp != "amplitude":
+            raise InputError(
+                f"{type_name}: amplitude={amplitude!r} needs its units, as in a case file: "
+                f"amplitude={amplitude!r}, units=\"g\" (or \"m/s^2\", \"cm/s^2\"), or "
+                f"amplitude_g= / amplitude_m_per_s2="
+            )
+        if given or new_freq:
+            # the case file's spelling: no positional SI values beside it
+            if pos:
+                raise InputError(
+                    f"{type_name}: positional arguments {pos!r} with keywords in a case file's "
+                    f"units: give every value by keyword, e.g. {type_name}_pulse(amplitude=0.3, "
+                    f"units=\"g\", frequency_hz=2.0, duration=4.0)"
+                )
+            for old in (amp, omega):
+                if old is not None and old in kwargs:
+                    raise InputError(
+                        f"{type_name}: {old}= is in SI units ({'m/s^2' if old == amp else 'rad/s'}); "
+                        "do not mix it with amplitude=/units=, amplitude_g=, frequency_hz= or period="
+                    )
+            if amplitude_g is not None:
+                a = float(amplitude_g) * STANDARD_GRAVITY
+            elif amplitude_m_per_s2 is not None:
+                a = float(amplitude_m_per_s2)
+            elif amplitude is not None:
+                a = float(amplitude) * _unit(units)[1]
+            else:
+                raise InputError(
+                    f"{type_name}: amplitude: missing; give amplitude= with units=, or amplitude_g="
+                )
+            kwargs[amp] = a
+            if omega is not None:
+                if not new_freq:
+                    raise InputError(f"{type_name}: frequency: missing; give frequency_hz= [Hz] or period= [s]")
+                f = float(frequency_hz) if frequency_hz is not None else 1.0 / float(period)
+                kwargs[omega] = 2.0 * math.pi * f
+        elif amplitude is not None:  # the engine's own keyword (harmonic): m/s^2
+            kwargs[amp] = amplitude
+        m = fn(*pos, **kwargs)
+        a_si = pos[0] if pos else kwargs.get(amp)
+        comp = {"type": type_name, "amplitude_m_per_s2": float(a_si)}
+        if kwargs.get("component") == Component.vertical or (
+            len(pos) == len(args) and pos[-1] == Component.vertical
+        ):
             return _note(m, {"type": "none"}, comp)
         return _note(m, comp)
 
+    make.__doc__ = (
+        f"A ``{type_name}`` motion, as a case file's ``type = \"{type_name}\"`` makes it.\n\n"
+        "Parameters\n----------\n"
+        "amplitude : float\n    Peak acceleration in ``units``; or ``amplitude_g`` [g] or\n"
+        "    ``amplitude_m_per_s2`` [m/s^2].\n"
+        "units : {\"g\", \"m/s^2\", \"cm/s^2\"}\n"
+        + ("frequency_hz : float\n    [Hz]; or ``period`` [s].\n" if omega else "")
+        + "duration : float\n    [s] length of the motion (free vibration after the pulse).\n"
+        + "".join(f"{_key_name(k)} : float\n    As the case file's key.\n"
+                  for k in args[2:-1] if k != "duration")
+        + "component : Component\n    horizontal (default) or vertical.\n\n"
+        f"The engine's SI form ``{fn.__name__}({', '.join(args)})`` (m/s^2, rad/s, s) is\n"
+        "accepted too, positionally or by those names.\n\n"
+        "Returns\n-------\nGroundMotion\n"
+    )
     return make
 
 
-harmonic = _synthetic(_flexrock.harmonic, "harmonic")
-harmonic_cycles = _synthetic(_flexrock.harmonic_cycles, "harmonic")
+def _key_name(arg: str) -> str:
+    return {v: k for k, v in _TOML_KEYS.items()}.get(arg, arg)
+
+
+harmonic = _synthetic(_flexrock.harmonic, "harmonic", _OLD_ARGS["harmonic"])
+harmonic_cycles = _synthetic(_flexrock.harmonic_cycles, "harmonic", _OLD_ARGS["harmonic_cycles"])
 one_sine_pulse = _synthetic(_flexrock.one_sine_pulse, "one_sine")
 half_sine_pulse = _synthetic(_flexrock.half_sine_pulse, "half_sine")
 cycloidal_pulse_a = _synthetic(_flexrock.cycloidal_pulse_a, "cycloidal_a")
 cycloidal_pulse_b = _synthetic(_flexrock.cycloidal_pulse_b, "cycloidal_b")
-cycloidal_pulse_c = _synthetic(_flexrock.cycloidal_pulse_c, "cycloidal_c")
-ricker_wavelet = _synthetic(_flexrock.ricker_wavelet, "ricker")
-rectangular_pulse = _synthetic(_flexrock.rectangular_pulse, "rectangular")
+cycloidal_pulse_c = _synthetic(_flexrock.cycloidal_pulse_c, "cycloidal_c", _OLD_ARGS["cycloidal_c"])
+ricker_wavelet = _synthetic(_flexrock.ricker_wavelet, "ricker", _OLD_ARGS["ricker"])
+rectangular_pulse = _synthetic(_flexrock.rectangular_pulse, "rectangular", _OLD_ARGS["rectangular"])
 __all__ += [
     "harmonic",
     "harmonic_cycles",
@@ -302,16 +394,55 @@ class Result:
         return json.loads(self.summary_json())
 
     def time_history(self) -> dict:
-        """Columns of the time-history CSV (docs/case-file.md) as numpy arrays, by column name:
-        time_s, phase, theta_rad, ..., uplift_m, q1..., impact_loss_J. Equal to the CSV's values
-        bit for bit."""
+        """The time history as numpy arrays, by the CSV's column names.
+
+        Returns
+        -------
+        dict of str to numpy.ndarray
+            ``time_s`` [s], ``phase`` (0 full contact, 1 and 2 rocking on edge 1 and 2),
+            ``theta_rad`` [rad], ``theta_dot_rad_per_s`` [rad/s], ``uplift_m`` [m], ``q1``...
+            [-], ``q1_dot_per_s``... [1/s], ``base_acc_x_m_per_s2``, ``base_acc_y_m_per_s2``
+            [m/s^2], ``reaction_x_N``, ``reaction_y_N`` [N], ``resultant_m`` [m],
+            ``friction_demand`` [-], ``kinetic_J``, ``potential_J``, ``input_work_J``,
+            ``damping_loss_J``, ``impact_loss_J`` [J] (docs/case-file.md). Built from the
+            engine's arrays, equal bit for bit to the CSV's values.
+        """
         if self._time_history is None:
-            self._time_history = _parse_csv(self.time_history_csv())
+            self._time_history = _flexrock.time_history_arrays(self.raw, self.body)
         return self._time_history
 
+    def to_dataframe(self):
+        """The time history as a pandas DataFrame (needs pandas: Debian's python3-pandas).
+
+        Returns
+        -------
+        pandas.DataFrame
+            One row per output time, the columns of :meth:`time_history` with their unit
+            suffixes (``time_s``, ``theta_rad``, ...), as ``pandas.read_csv`` reads the CSV.
+        """
+        try:
+            import pandas as pd
+        except ImportError as e:
+            raise ImportError(
+                f"Result.to_dataframe needs pandas ({e}): install python3-pandas "
+                "(scripts/install-deps.sh)"
+            ) from None
+        return pd.DataFrame(self.time_history(), copy=False)
+
     def events_table(self) -> dict:
-        """Columns of the event log (``event`` holds the kind's name)."""
-        return _parse_csv(self.events_csv())
+        """The event log as columns (docs/case-file.md): ``time_s`` [s], ``event`` (the
+        kind's name), ``edge``, ``theta_rad`` [rad], ``theta_dot_before_rad_per_s``,
+        ``theta_dot_after_rad_per_s`` [rad/s], ``energy_loss_J`` [J], ``impulse_x_N_s``,
+        ``impulse_y_N_s`` [N s], ``friction_demand`` [-]; numbers as float arrays."""
+        ev = self.raw.events
+        fields = ("time", "edge", "theta", "theta_dot_before", "theta_dot_after", "energy_loss",
+                  "impulse_x", "impulse_y", "friction_demand")
+        values = {f: np.array([getattr(e, f) for e in ev], dtype=float) for f in fields}
+        names = event_columns()
+        out = {names[0]: values["time"], names[1]: np.array([e.kind.name for e in ev], dtype=object)}
+        for name, f in zip(names[2:], fields[1:]):
+            out[name] = values[f]
+        return out
 
     def write(
         self,

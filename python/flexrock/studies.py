@@ -72,32 +72,111 @@ def _body(body):
     return Body(body) if isinstance(body, BodyParameters) else body
 
 
+_ACCEL_UNITS = {"g": None, "m/s^2": 1.0, "cm/s^2": 0.01}  # g: the body's gravity
+_FREQ_UNITS = {"rad/s": 1.0, "Hz": 2.0 * 3.141592653589793}
+
+
+def unit_suffix(unit: str) -> str:
+    """The column-name suffix of a unit: "g" -> "g", "m/s^2" -> "m_per_s2", "Hz" -> "hz", ..."""
+    return {"m/s^2": "m_per_s2", "cm/s^2": "cm_per_s2", "rad/s": "rad_per_s", "Hz": "hz"}.get(unit, unit)
+
+
+def _choice(key: str, value: str, allowed) -> str:
+    from . import InputError
+
+    if value not in allowed:
+        raise InputError(f"{key}: expected one of {', '.join(repr(a) for a in allowed)}, got {value!r}")
+    return value
+
+
 def spectrum(
     body,
     amplitudes: Sequence[float],
     frequencies: Sequence[float],
     pulse: Union[str, PulseType] = "one_sine",
     *,
-    normalized: bool = True,
+    axes: Optional[str] = None,
+    amplitude_units: Optional[str] = None,
+    frequency_units: Optional[str] = None,
+    normalized: Optional[bool] = None,
     bisect: bool = True,
     free_periods: float = 4.0,
     bisection_tolerance: float = 1e-3,
     threads: int = 0,
     **solver,
 ) -> SpectrumResult:
-    """The overturning spectrum of ``body`` under a pulse family over amplitudes x frequencies.
-    Normalised (default): amplitudes a_p/(g tan alpha), frequencies omega_p/p; otherwise m/s^2
-    and rad/s. ``threads=0``: every core. Solver options as keywords (rtol=...)."""
+    """The overturning spectrum of a body under a pulse family: amplitudes x frequencies.
+
+    The keywords are those of a spectrum file's ``[spectrum]`` table (docs/studies.md).
+
+    Parameters
+    ----------
+    body : Body or BodyParameters
+    amplitudes : array_like
+        Strictly increasing pulse amplitudes: a_p/(g tan alpha) [-] with
+        ``axes="normalized"`` (default), otherwise in ``amplitude_units``.
+    frequencies : array_like
+        Pulse frequencies: omega_p/p [-] normalised, otherwise in ``frequency_units``.
+    pulse : str or PulseType
+        "one_sine", "half_sine", "cycloidal_a", "cycloidal_b", "cycloidal_c" or "ricker".
+    axes : {"normalized", "physical"}, optional
+        Default "normalized"; giving a unit implies "physical".
+    amplitude_units : {"g", "m/s^2", "cm/s^2"}, optional
+        Physical axes only; default "m/s^2".
+    frequency_units : {"Hz", "rad/s"}, optional
+        Physical axes only; default "rad/s".
+    normalized : bool, optional
+        The older spelling of ``axes`` (True: "normalized", False: "physical" in m/s^2, rad/s).
+    bisect : bool
+        Bisect each column for its minimum overturning amplitude.
+    free_periods : float
+        [-] free motion after the pulse, in rocking periods 2 pi/p.
+    bisection_tolerance : float
+        [-] relative.
+    threads : int
+        0: every core. The GIL is released while it runs.
+    **solver
+        Solver options (``rtol=...``, see :class:`SimulationOptions`).
+
+    Returns
+    -------
+    SpectrumResult
+        Cells and boundary in SI (m/s^2, rad/s) or normalised; it remembers the units asked for:
+        :func:`spectrum_table`, :func:`boundary_table` and :func:`flexrock.plots.spectrum_map`
+        give and draw them (e.g. columns ``a_p_g`` and ``f_p_hz``).
+    """
+    from . import InputError
+
+    if axes is None:
+        physical = amplitude_units is not None or frequency_units is not None
+        axes = "physical" if (physical or normalized is False) else "normalized"
+    _choice("axes", axes, ("normalized", "physical"))
+    if normalized is not None and normalized != (axes == "normalized"):
+        raise InputError(f"normalized={normalized} contradicts axes={axes!r}: give axes only")
+    a_unit = w_unit = None
+    a_factor = w_factor = 1.0
+    b = _body(body)
+    if axes == "physical":
+        a_unit = _choice("amplitude_units", amplitude_units or "m/s^2", tuple(_ACCEL_UNITS))
+        w_unit = _choice("frequency_units", frequency_units or "rad/s", tuple(_FREQ_UNITS))
+        a_factor = _ACCEL_UNITS[a_unit] or b.g
+        w_factor = _FREQ_UNITS[w_unit]
+    elif amplitude_units is not None or frequency_units is not None:
+        raise InputError("amplitude_units, frequency_units: only with axes=\"physical\"")
     spec = SpectrumSpec()
     spec.pulse = _flexrock.pulse_type_from_string(pulse) if isinstance(pulse, str) else pulse
-    spec.normalized = normalized
-    spec.amplitudes = [float(a) for a in amplitudes]
-    spec.frequencies = [float(f) for f in frequencies]
+    spec.normalized = axes == "normalized"
+    spec.amplitudes = [float(a) * a_factor for a in amplitudes]
+    spec.frequencies = [float(f) * w_factor for f in frequencies]
     spec.bisect = bisect
     spec.free_periods = free_periods
     spec.bisection_tolerance = bisection_tolerance
     spec.solver = _solver(solver)
-    return compute_spectrum(_body(body), spec, threads)
+    result = compute_spectrum(b, spec, threads)
+    if a_unit is not None:
+        result._flexrock_units = (a_unit, w_unit)
+        result._flexrock_g = b.g
+    return result
 
 
 def record_spectrum(
@@ -111,8 +190,31 @@ def record_spectrum(
     threads: int = 0,
     **solver,
 ) -> SpectrumResult:
-    """One record (a GroundMotion at scale 1) x scale factors: outcomes and the minimum
-    overturning scale."""
+    """One record times scale factors: the outcome at each and the minimum overturning scale.
+
+    Parameters
+    ----------
+    body : Body or BodyParameters
+    motion : GroundMotion
+        The record at scale 1 (accelerations [m/s^2]).
+    scales : array_like
+        [-] strictly increasing factors on the record.
+    bisect : bool
+        Bisect for the minimum overturning scale.
+    free_periods : float
+        [-] free motion after the record, in rocking periods 2 pi/p.
+    bisection_tolerance : float
+        [-] relative.
+    threads : int
+        0: every core.
+    **solver
+        Solver options.
+
+    Returns
+    -------
+    SpectrumResult
+        One column; ``boundary[0].overturning`` is the bisected minimum overturning scale.
+    """
     spec = RecordSpectrumSpec()
     spec.motion = motion
     spec.scales = [float(s) for s in scales]
@@ -123,11 +225,76 @@ def record_spectrum(
     return compute_record_spectrum(_body(body), spec, threads)
 
 
+def _with_units(cols: dict, result, amplitude_columns, frequency_columns) -> dict:
+    # the columns of the units the spectrum was asked for, next to the SI ones
+    units = getattr(result, "_flexrock_units", None)
+    if units is None:
+        return cols
+    import numpy as np
+
+    a_unit, w_unit = units
+    g = getattr(result, "_flexrock_g", 9.80665)
+    a_div = g if a_unit == "g" else _ACCEL_UNITS[a_unit]
+    out = {}
+    for name, v in cols.items():
+        out[name] = v
+        if name in amplitude_columns:
+            new = amplitude_columns[name] + "_" + unit_suffix(a_unit)
+            if new != name:
+                out[new] = np.asarray(v, dtype=float) / a_div
+        if name in frequency_columns:
+            prefix = "f_p" if w_unit == "Hz" else "omega_p"
+            new = prefix + "_" + unit_suffix(w_unit)
+            if new != name:
+                out[new] = np.asarray(v, dtype=float) / _FREQ_UNITS[w_unit]
+    return out
+
+
 def spectrum_table(result: SpectrumResult, g: float = 9.80665) -> dict:
-    """The spectrum CSV's columns (one row per cell) as numpy arrays."""
+    """The spectrum CSV's columns, one row per cell, as numpy arrays.
+
+    Parameters
+    ----------
+    result : SpectrumResult
+    g : float
+        [m/s^2] gravity for the normalised columns.
+
+    Returns
+    -------
+    dict of str to numpy.ndarray
+        The columns of ``flexrock spectrum`` (``a_p_m_per_s2``, ``omega_p_rad_per_s``, ...);
+        for a spectrum asked for in other units, also those: ``a_p_g`` [g] or
+        ``a_p_cm_per_s2``, and ``f_p_hz`` [Hz].
+    """
     from . import _parse_csv
 
-    return _parse_csv(_flexrock.spectrum_csv(result, g))
+    cols = _parse_csv(_flexrock.spectrum_csv(result, g))
+    return _with_units(cols, result, {"a_p_m_per_s2": "a_p"}, {"omega_p_rad_per_s": "f_p"})
+
+
+def boundary_table(result: SpectrumResult, g: float = 9.80665) -> dict:
+    """The minimum-overturning CSV's columns, one row per frequency column.
+
+    Parameters
+    ----------
+    result : SpectrumResult
+    g : float
+        [m/s^2] gravity for the normalised columns.
+
+    Returns
+    -------
+    dict of str to numpy.ndarray
+        The columns of the boundary CSV (``min_overturning_m_per_s2``, ``omega_p_rad_per_s``,
+        ...); for a spectrum asked for in other units, also ``min_overturning_g`` [g] and
+        ``f_p_hz`` [Hz].
+    """
+    from . import _parse_csv
+
+    normalized = getattr(result, "_flexrock_units", None) is None
+    cols = _parse_csv(_flexrock.boundary_csv(result, normalized, g))
+    return _with_units(
+        cols, result, {"min_overturning_m_per_s2": "min_overturning"}, {"omega_p_rad_per_s": "f_p"}
+    )
 
 
 def write_spectrum(
@@ -163,25 +330,84 @@ def write_spectrum(
 def sweep(
     bodies: Union[Mapping[str, object], Iterable[Tuple[str, object]]],
     records: Union[Mapping[str, object], Iterable[Tuple[str, object]]],
-    scales: Sequence[float],
+    scales: Optional[Sequence[float]] = None,
     *,
-    target_pga: bool = False,
+    factors: Optional[Sequence[float]] = None,
+    target_pga=None,
+    units: Optional[str] = None,
     free_periods: float = 2.0,
     threads: int = 0,
     **solver,
 ) -> dict:
-    """Bodies (name -> BodyParameters) x records (name -> GroundMotion at scale 1) x scales
-    (factors, or target PGAs [m/s^2] with ``target_pga=True``). Returns the sweep CSV's columns
-    (one row per run, in run order) as numpy arrays, the table ``flexrock sweep`` writes."""
-    from . import _parse_csv
+    """Bodies x records x levels: an incremental dynamic analysis, as ``flexrock sweep`` runs it.
+
+    The levels are given as in a sweep manifest's ``[scales]`` table: ``factors=[...]`` on the
+    records, or ``target_pga=[...]`` in ``units`` (default "g", as the manifest's).
+
+    Parameters
+    ----------
+    bodies : mapping or iterable of (str, BodyParameters)
+        Name -> body.
+    records : mapping or iterable of (str, GroundMotion)
+        Name -> record at scale 1 (accelerations [m/s^2]).
+    scales : array_like, optional
+        The older spelling of ``factors`` (with ``target_pga=True``: target PGAs in m/s^2).
+    factors : array_like, optional
+        [-] factors on each record.
+    target_pga : array_like, optional
+        Target PGAs in ``units``: each record is scaled to each.
+    units : {"g", "m/s^2", "cm/s^2"}, optional
+        Units of ``target_pga``; default "g".
+    free_periods : float
+        [-] free motion after each record, in rocking periods 2 pi/p.
+    threads : int
+        0: every core. The GIL is released while it runs.
+    **solver
+        Solver options.
+
+    Returns
+    -------
+    dict of str to numpy.ndarray
+        The sweep CSV's columns, one row per run in run order: ``requested_level`` (the level
+        as given, equal for every record at that level), ``requested_units``, ``scale``,
+        ``pga_m_per_s2``, ``pga_g``, ``outcome``, ``overturned``, ...
+    """
+    from . import InputError, _parse_csv
 
     spec = SweepSpec()
     items = bodies.items() if isinstance(bodies, Mapping) else bodies
     spec.bodies = [SweepBody(name, getattr(b, "params", b)) for name, b in items]
     items = records.items() if isinstance(records, Mapping) else records
     spec.records = [SweepRecord(name, m) for name, m in items]
-    spec.scale_kind = ScaleKind.target_pga if target_pga else ScaleKind.factor
-    spec.scales = [float(s) for s in scales]
+    if isinstance(target_pga, bool):  # the older spelling: scales in m/s^2
+        if scales is None or factors is not None:
+            raise InputError("sweep: target_pga=True needs scales=[...] in m/s^2; "
+                             "better: target_pga=[...], units=\"m/s^2\"")
+        if units is not None:
+            raise InputError("sweep: units: only with target_pga=[...]")
+        if target_pga:
+            target_pga, units = scales, "m/s^2"
+        else:
+            target_pga, factors = None, scales
+    elif scales is not None:
+        if factors is not None or target_pga is not None:
+            raise InputError("sweep: give one of factors=[...] or target_pga=[...], not scales as well")
+        factors = scales
+    if (factors is None) == (target_pga is None):
+        raise InputError("sweep: expected exactly one of factors=[...] [-] or target_pga=[...] "
+                         "(in units, default \"g\")")
+    if factors is not None:
+        if units is not None:
+            raise InputError("sweep: units: only with target_pga=[...] (factors have no unit)")
+        spec.scale_kind = ScaleKind.factor
+        spec.scales = [float(s) for s in factors]
+    else:
+        unit = _choice("units", units or "g", tuple(_ACCEL_UNITS))
+        factor = _ACCEL_UNITS[unit] or 9.80665  # the manifest's g: standard gravity
+        spec.scale_kind = ScaleKind.target_pga
+        spec.levels = [float(s) for s in target_pga]
+        spec.level_units = unit
+        spec.scales = [v * factor for v in spec.levels]
     spec.free_periods = free_periods
     spec.solver = _solver(solver)
     rows = run_sweep(spec, [], threads)
@@ -190,15 +416,50 @@ def sweep(
 
 
 def fragility(im: Sequence[float], failed: Sequence[int], confidence: float = 0.95) -> FragilityFit:
-    """Maximum-likelihood lognormal fragility P(failure | IM = x) = Phi(ln(x/theta)/beta)."""
+    """Maximum-likelihood lognormal fragility P(failure | IM = x) = Phi(ln(x/theta)/beta).
+
+    Parameters
+    ----------
+    im : array_like
+        Intensity measure of each run (> 0, any unit: theta comes out in it).
+    failed : array_like of int
+        1 where the run failed, else 0.
+    confidence : float
+        Level of the bounds, in (0, 1).
+
+    Returns
+    -------
+    FragilityFit
+        theta (the median, in the IM's unit), beta [-], their bounds and covariance.
+    """
     return fit_lognormal([float(x) for x in im], [int(f) for f in failed], confidence)
 
 
 def fragility_from_sweep(
     path: str, im: str = "pga", outcome: str = "overturned", level: float = 0.0, body: str = ""
 ):
-    """Fits a sweep CSV as ``flexrock fragility`` does: a list of (FragilityData, FragilityFit),
-    one per body."""
+    """Fits a sweep CSV as ``flexrock fragility`` does.
+
+    Parameters
+    ----------
+    path : str
+        A sweep CSV.
+    im : {"pga", "pga_g", "pgv", "scale", "requested_level"}
+        Intensity measure: PGA [m/s^2] or [g], PGV [m/s], the scale factor [-] or the level as
+        the manifest requested it.
+    outcome : {"overturned", "theta", "energy"}
+        Failure: overturning, max theta/alpha > ``level``, energy lost > ``level`` [J].
+    level : float
+        Threshold of "theta" [-] or "energy" [J].
+    body : str
+        Only this body (default: each).
+
+    Returns
+    -------
+    list of (FragilityData, FragilityFit)
+        One per body; rows whose outcome is ``stopped`` or ``contact_lost`` are left out and
+        counted in ``FragilityData.excluded``.
+    """
     q = FragilityQuery()
     q.im, q.outcome, q.level, q.body = im, outcome, level, body
     table = _flexrock.read_csv_table(os.fspath(path))

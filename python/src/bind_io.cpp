@@ -2,8 +2,11 @@
 // Files (io/records.hpp, io/case_file.hpp, io/outputs.hpp): records, case files and the outputs
 // the command line writes, byte for byte the same.
 #include <pybind11/eigen.h>
+#include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
+#include <algorithm>
+#include <cmath>
 #include <sstream>
 #include <string>
 
@@ -33,19 +36,75 @@ void bind_io(py::module_& m) {
       .def_property_readonly("duration", &io::Record::duration)
       .def("to_si", &io::Record::to_si, py::arg("scale") = 1.0)
       .def("to_motion", &io::Record::to_motion, py::arg("scale") = 1.0,
-           "The record as a horizontal ground motion [m/s^2] times `scale`.");
-  m.def("read_at2", &io::read_at2, py::arg("path"), "Reads a PEER NGA .AT2 file.");
+           "The record as a horizontal ground motion [m/s^2] times `scale`.")
+      .def("__repr__", [](const io::Record& r) {
+        static const char* names[] = {"g", "m/s^2", "cm/s^2"};
+        double peak = 0.0;
+        for (double v : r.values) peak = std::max(peak, std::abs(v));
+        std::ostringstream o;
+        o.precision(4);
+        o << "<Record " << r.source << ": " << r.npts() << " samples";
+        if (r.dt > 0.0) o << " every " << r.dt << " s";
+        o << ", " << r.duration() << " s, peak " << peak << " " << names[static_cast<int>(r.units)]
+          << ">";
+        return o.str();
+      });
+  m.def("read_at2", &io::read_at2, py::arg("path"), R"doc(Reads a PEER NGA .AT2 record.
+
+Parameters
+----------
+path : str
+
+Returns
+-------
+Record
+    Values in g, as the file states, with its dt [s].)doc");
   m.def("read_single_column", &io::read_single_column, py::arg("path"), py::arg("dt"),
-        py::arg("units"), "Reads values sampled every dt [s].");
+        py::arg("units"), R"doc(Reads a record of one value a line, sampled every dt.
+
+Parameters
+----------
+path : str
+dt : float
+    [s] sample spacing.
+units : AccelUnit
+    Units of the file's values.
+
+Returns
+-------
+Record)doc");
   m.def("read_time_series", &io::read_time_series, py::arg("path"), py::arg("units"),
-        "Reads time/acceleration pairs.");
+        R"doc(Reads time/acceleration pairs, one a line.
+
+Parameters
+----------
+path : str
+units : AccelUnit
+    Units of the accelerations (times in s).
+
+Returns
+-------
+Record)doc");
   m.def(
       "combine",
       [](const io::Record& h, const io::Record* v, double scale) {
         return io::combine(h, v, scale);
       },
       py::arg("horizontal"), py::arg("vertical") = nullptr, py::arg("scale") = 1.0,
-      "A horizontal record with an optional vertical one, as a ground motion [m/s^2].");
+      R"doc(A horizontal record and an optional vertical one as one ground motion.
+
+Parameters
+----------
+horizontal : Record
+vertical : Record, optional
+    Resampled onto the horizontal's times.
+scale : float
+    [-] factor on both.
+
+Returns
+-------
+GroundMotion
+    Accelerations in m/s^2.)doc");
 
   py::class_<io::ExcitationComponent>(m, "ExcitationComponent",
                                       "One component of the excitation, as a case describes it.")
@@ -80,7 +139,18 @@ void bind_io(py::module_& m) {
       .def_readwrite("initial", &io::Case::initial)
       .def_readwrite("options", &io::Case::options)
       .def_readwrite("output", &io::Case::output);
-  m.def("load_case", &io::load_case, py::arg("path"), "Reads and checks a case file (TOML).");
+  m.def("load_case", &io::load_case, py::arg("path"),
+        R"doc(Reads and checks a case file (TOML, docs/case-file.md).
+
+Parameters
+----------
+path : str
+
+Returns
+-------
+Case
+    Body, motion (m/s^2), initial state, solver options and outputs; bad input raises
+    InputError naming file, line and key.)doc");
   m.def(
       "load_body",
       [](const std::string& path) {
@@ -88,7 +158,16 @@ void bind_io(py::module_& m) {
         BodyParameters p = io::load_body(path, &type);
         return py::make_tuple(std::move(p), type);
       },
-      py::arg("path"), "The [body] table of a case or body file: (BodyParameters, type).");
+      py::arg("path"), R"doc(The [body] table of a case or body file.
+
+Parameters
+----------
+path : str
+
+Returns
+-------
+(BodyParameters, str)
+    The parameters (SI) and the body's type name.)doc");
 
   py::class_<io::OutputPaths>(m, "OutputPaths")
       .def(py::init<>())
@@ -96,8 +175,26 @@ void bind_io(py::module_& m) {
       .def_readwrite("summary", &io::OutputPaths::summary)
       .def_readwrite("events", &io::OutputPaths::events);
 
-  m.def("time_history_columns", &io::time_history_columns, py::arg("modes"));
-  m.def("event_columns", &io::event_columns);
+  m.def("time_history_columns", &io::time_history_columns, py::arg("modes"),
+        R"doc(Column names of the time history, each with its unit suffix.
+
+Parameters
+----------
+modes : int
+    Deformation modes of the body.
+
+Returns
+-------
+list of str
+    time_s, phase, theta_rad, theta_dot_rad_per_s, uplift_m, q1..., q1_dot_per_s...,
+    base_acc_x_m_per_s2, ..., impact_loss_J.)doc");
+  m.def("event_columns", &io::event_columns, R"doc(Column names of the event log.
+
+Returns
+-------
+list of str
+    time_s, event, edge, theta_rad, theta_dot_before_rad_per_s, theta_dot_after_rad_per_s,
+    energy_loss_J, impulse_x_N_s, impulse_y_N_s, friction_demand.)doc");
   m.def(
       "time_history_csv",
       [](const SimulationResult& r, const Body& body) {
@@ -105,7 +202,47 @@ void bind_io(py::module_& m) {
         io::write_time_history(out, r, body);
         return out.str();
       },
-      py::arg("result"), py::arg("body"), "The time-history CSV text the command line writes.");
+      py::arg("result"), py::arg("body"), R"doc(The time-history CSV text ``flexrock run`` writes.
+
+Parameters
+----------
+result : SimulationResult
+body : Body
+
+Returns
+-------
+str)doc");
+  m.def(
+      "time_history_arrays",
+      [](const SimulationResult& r, const Body& body) {
+        const std::vector<std::string> names = io::time_history_columns(r.history.modes);
+        std::vector<std::vector<double>> values = io::time_history_values(r, body);
+        py::dict out;
+        for (std::size_t j = 0; j < names.size(); ++j) {
+          // the numpy array owns the column: no copy
+          auto* v = new std::vector<double>(std::move(values[j]));
+          py::capsule owner(v, [](void* p) { delete static_cast<std::vector<double>*>(p); });
+          out[py::str(names[j])] =
+              py::array_t<double>(static_cast<py::ssize_t>(v->size()), v->data(), owner);
+        }
+        return out;
+      },
+      py::arg("result"), py::arg("body"),
+      R"doc(The time history as numpy arrays, by the CSV's column names.
+
+Parameters
+----------
+result : SimulationResult
+    A finished simulation.
+body : Body
+    The body it simulated (for the uplift column).
+
+Returns
+-------
+dict of str to numpy.ndarray
+    One float64 array per column of :func:`time_history_columns` (``time_s`` [s], ``phase``,
+    ``theta_rad`` [rad], ..., ``impact_loss_J`` [J]), equal bit for bit to the values of
+    :func:`time_history_csv`.)doc");
   m.def(
       "events_csv",
       [](const SimulationResult& r) {
@@ -113,12 +250,45 @@ void bind_io(py::module_& m) {
         io::write_events(out, r);
         return out.str();
       },
-      py::arg("result"), "The event-log CSV text the command line writes.");
+      py::arg("result"), R"doc(The event-log CSV text ``flexrock run`` writes.
+
+Parameters
+----------
+result : SimulationResult
+
+Returns
+-------
+str)doc");
   m.def("summary_json", &io::summary_json, py::arg("case"), py::arg("body"), py::arg("result"),
-        py::arg("paths") = io::OutputPaths{}, "The summary JSON text the command line writes.");
+        py::arg("paths") = io::OutputPaths{},
+        R"doc(The summary JSON text ``flexrock run`` writes (SI units, docs/case-file.md).
+
+Parameters
+----------
+case : Case
+body : Body
+result : SimulationResult
+paths : OutputPaths
+    Where the outputs went, for the summary's ``outputs``.
+
+Returns
+-------
+str)doc");
   m.def("write_outputs", &io::write_outputs, py::arg("case"), py::arg("body"), py::arg("result"),
         py::arg("output_dir") = std::string(),
-        "Writes the outputs the case asks for, as the command line does; returns the paths.");
+        R"doc(Writes the outputs the case's [output] table asks for, atomically, summary last.
+
+Parameters
+----------
+case : Case
+body : Body
+result : SimulationResult
+output_dir : str
+    Relative names are relative to it.
+
+Returns
+-------
+OutputPaths)doc");
 }
 
 }  // namespace flexrock::python

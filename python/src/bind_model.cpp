@@ -4,6 +4,10 @@
 #include <pybind11/eigen.h>
 #include <pybind11/stl.h>
 
+#include <numbers>
+#include <sstream>
+#include <string>
+
 #include "bindings.hpp"
 #include "flexrock/model/body.hpp"
 #include "flexrock/model/builders.hpp"
@@ -49,7 +53,17 @@ void bind_model(py::module_& m) {
       .def_static("rigid", &BodyParameters::rigid, py::arg("mass"), py::arg("height"),
                   py::arg("b1"), py::arg("b2"), py::arg("zeta2"))
       .def_static("rectangular_block", &BodyParameters::rectangular_block, py::arg("mass"),
-                  py::arg("half_width"), py::arg("half_height"));
+                  py::arg("half_width"), py::arg("half_height"))
+      .def("__repr__", [](const BodyParameters& p) {
+        std::ostringstream o;
+        o.precision(4);
+        o << "<BodyParameters M = " << p.mass << " kg, h = " << p.height << " m, b1 = " << p.b1
+          << " m, b2 = " << p.b2 << " m, zeta2 = " << p.zeta2 << ", "
+          << (p.kappa.rows() == 0 ? std::string("rigid")
+                                  : std::to_string(p.kappa.rows()) + " mode(s)")
+          << ">";
+        return o.str();
+      });
 
   py::class_<Body>(m, "Body", "A validated body; bad parameters raise InputError.")
       .def(py::init<BodyParameters>(), py::arg("params"))
@@ -67,19 +81,108 @@ void bind_model(py::module_& m) {
       .def_property_readonly("static_deformation", &Body::static_deformation)
       .def_property_readonly("rocking_frequency", &Body::rocking_frequency, "p [rad/s]")
       .def("tipping_angle", &Body::tipping_angle, py::arg("edge"),
-           "static overturning angle about edge 1 or 2 [rad], positive");
+           "static overturning angle about edge 1 or 2 [rad], positive")
+      .def("__repr__", [](const Body& b) {
+        const BodyParameters& p = b.params();
+        std::ostringstream o;
+        o.precision(4);
+        o << "<Body M = " << p.mass << " kg, h = " << p.height << " m, b1 = " << p.b1
+          << " m, b2 = " << p.b2 << " m, alpha1 = " << b.alpha1() << ", alpha2 = " << b.alpha2()
+          << ", p = " << b.rocking_frequency() << " rad/s, ";
+        if (b.modes() == 0) {
+          o << "rigid";
+        } else {
+          o << b.modes() << " mode(s) at";
+          const VectorX w = b.natural_frequencies();
+          for (Eigen::Index i = 0; i < w.size(); ++i) {
+            o << (i ? ", " : " ") << w(i) / (2.0 * std::numbers::pi);
+          }
+          o << " Hz";
+        }
+        o << ">";
+        return o.str();
+      });
 
   m.def("rigid_block", &rigid_block, py::arg("width"), py::arg("height"), py::arg("mass"),
-        "Uniform rigid rectangular block of full width and height [m], mass [kg].");
+        R"doc(A uniform rigid rectangular block.
+
+Parameters
+----------
+width : float
+    [m] full width of the footprint (2 b).
+height : float
+    [m] full height (2 h).
+mass : float
+    [kg]
+
+Returns
+-------
+BodyParameters)doc");
   m.def("rigid_body", &rigid_body, py::arg("mass"), py::arg("inertia_cg"), py::arg("height"),
-        py::arg("b1"), py::arg("b2"), "General rigid body.");
+        py::arg("b1"), py::arg("b2"), R"doc(A general rigid body on two tipping points.
+
+Parameters
+----------
+mass : float
+    [kg]
+inertia_cg : float
+    [kg m^2] moment of inertia about the c.g.
+height : float
+    [m] c.g. above the base.
+b1, b2 : float
+    [m] c.g. to tipping points 1 (left) and 2 (right).
+
+Returns
+-------
+BodyParameters)doc");
   m.def("oscillator_on_slab", &oscillator_on_slab, py::arg("top_mass"), py::arg("frequency_hz"),
         py::arg("base_mass"), py::arg("height"), py::arg("base_width"),
-        py::arg("damping_ratio") = 0.0, "An elastic oscillator on a rocking base slab.");
+        py::arg("damping_ratio") = 0.0,
+        R"doc(An elastic single-degree-of-freedom oscillator on a rocking base slab.
+
+Parameters
+----------
+top_mass : float
+    [kg] the oscillator's mass.
+frequency_hz : float
+    [Hz] its natural frequency on a fixed base.
+base_mass : float
+    [kg] the slab's mass.
+height : float
+    [m] of the top mass above the base.
+base_width : float
+    [m] full width of the slab.
+damping_ratio : float
+    [-] of the mode.
+
+Returns
+-------
+BodyParameters)doc");
   m.def("uniform_cantilever", &uniform_cantilever, py::arg("height"), py::arg("width"),
         py::arg("mass_per_length"), py::arg("bending_stiffness"), py::arg("modes"),
         py::arg("base_mass") = 0.0, py::arg("damping_ratio") = 0.0,
-        "A uniform flexible cantilever on a rigid base plate.");
+        R"doc(A uniform flexible cantilever on a rigid base plate.
+
+Parameters
+----------
+height : float
+    [m]
+width : float
+    [m] of the base (tipping points at -+ width/2).
+mass_per_length : float
+    [kg/m]
+bending_stiffness : float
+    [N m^2] EI.
+modes : int
+    Bending modes kept.
+base_mass : float
+    [kg] of the base plate.
+damping_ratio : float
+    [-] of every mode.
+
+Returns
+-------
+BodyParameters)doc");
 
   py::class_<LumpedNode>(m, "LumpedNode")
       .def(py::init([](double x, double y, double mass, double rotary_inertia) {
@@ -105,7 +208,16 @@ void bind_model(py::module_& m) {
       .def_readwrite("damping", &LumpedModel::damping)
       .def_readwrite("gravity", &LumpedModel::gravity);
   m.def("from_lumped_model", &from_lumped_model, py::arg("model"),
-        "The paper's parameters from a lumped-mass modal model.");
+        R"doc(The paper's parameters of a lumped-mass modal model (e.g. from an FE program).
+
+Parameters
+----------
+model : LumpedModel
+    Nodes [m, kg], pinned-base mode shapes [m] and frequencies [rad/s] or stiffness [N m].
+
+Returns
+-------
+BodyParameters)doc");
 }
 
 }  // namespace flexrock::python

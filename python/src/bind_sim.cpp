@@ -172,7 +172,23 @@ void bind_sim(py::module_& m) {
   m.def("simulate", &simulate, py::arg("body"), py::arg("motion"),
         py::arg("initial") = InitialState{}, py::arg("options") = SimulationOptions{},
         py::call_guard<py::gil_scoped_release>(),
-        "Simulates `body` on a base moving with `motion`; the outcome is in the result's status.");
+        R"doc(Simulates a body on a base moving with a ground motion.
+
+Parameters
+----------
+body : Body
+motion : GroundMotion
+    Base accelerations [m/s^2].
+initial : InitialState
+    theta [rad], theta_dot [rad/s], q, q_dot; default at rest.
+options : SimulationOptions
+    Solver options (SI).
+
+Returns
+-------
+SimulationResult
+    Overturning, loss of contact and a stopped run are its ``status``, not exceptions. The
+    GIL is released while it runs.)doc");
 }
 
 }  // namespace flexrock::python

@@ -2,8 +2,10 @@
 // Studies (study/*.hpp, io/study_files.hpp): overturning spectra, sweeps and fragility fits.
 // The GIL is released while a study runs its thread pool.
 #include <pybind11/eigen.h>
+#include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
+#include <algorithm>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -40,7 +42,16 @@ void bind_study(py::module_& m) {
       .value("overturned_without_impact", Outcome::kOverturnedWithoutImpact)
       .value("contact_lost", Outcome::kContactLost)
       .value("stopped", Outcome::kStopped);
-  m.def("overturned", &overturned, py::arg("outcome"), "True for both overturning classes.");
+  m.def("overturned", &overturned, py::arg("outcome"),
+        R"doc(Whether an outcome is one of the two overturning classes.
+
+Parameters
+----------
+outcome : Outcome
+
+Returns
+-------
+bool)doc");
 
   py::class_<RunSummary>(m, "RunSummary", "What a study keeps of one simulation.")
       .def_readonly("outcome", &RunSummary::outcome)
@@ -57,7 +68,16 @@ void bind_study(py::module_& m) {
       .def_readonly("max_uplift", &RunSummary::max_uplift)
       .def_readonly("t_end", &RunSummary::t_end);
   m.def("summarize", &summarize, py::arg("body"), py::arg("result"),
-        "The study outcome class of a finished simulation.");
+        R"doc(The study outcome class and peaks of a finished simulation.
+
+Parameters
+----------
+body : Body
+result : SimulationResult
+
+Returns
+-------
+RunSummary)doc");
 
   // spectra
   py::enum_<PulseType>(m, "PulseType")
@@ -67,7 +87,17 @@ void bind_study(py::module_& m) {
       .value("cycloidal_b", PulseType::kCycloidalB)
       .value("cycloidal_c", PulseType::kCycloidalC)
       .value("ricker", PulseType::kRicker);
-  m.def("pulse_type_from_string", &pulse_type_from_string, py::arg("name"));
+  m.def("pulse_type_from_string", &pulse_type_from_string, py::arg("name"),
+        R"doc(The pulse family of a name.
+
+Parameters
+----------
+name : str
+    one_sine, half_sine, cycloidal_a, cycloidal_b, cycloidal_c or ricker.
+
+Returns
+-------
+PulseType)doc");
 
   py::class_<SpectrumSpec>(m, "SpectrumSpec", "A pulse spectrum: pulse x amplitude x frequency.")
       .def(py::init<>())
@@ -109,12 +139,27 @@ void bind_study(py::module_& m) {
       .def_readonly("bisection_runs", &OverturnBoundary::bisection_runs)
       .def_readonly("computed", &OverturnBoundary::computed)
       .def_readonly("mode", &OverturnBoundary::mode);
-  py::class_<SpectrumResult>(m, "SpectrumResult")
+  // dynamic_attr: the Python package notes the units a spectrum was asked for
+  py::class_<SpectrumResult>(m, "SpectrumResult", py::dynamic_attr(),
+                             "Every cell of a spectrum and the minimum overturning of each column.")
       .def_readonly("alpha", &SpectrumResult::alpha)
       .def_readonly("tan_alpha", &SpectrumResult::tan_alpha)
       .def_readonly("p", &SpectrumResult::p)
       .def_readonly("cells", &SpectrumResult::cells)
-      .def_readonly("boundary", &SpectrumResult::boundary);
+      .def_readonly("boundary", &SpectrumResult::boundary)
+      .def("__repr__", [](const SpectrumResult& r) {
+        std::size_t rows = 0, cols = 0, over = 0;
+        for (const SpectrumCell& c : r.cells) {
+          rows = std::max(rows, c.row + 1);
+          cols = std::max(cols, c.column + 1);
+          if (overturned(c.run.outcome)) ++over;
+        }
+        std::ostringstream o;
+        o << "<SpectrumResult " << rows << " x " << cols << " cells (" << over << " overturned), "
+          << r.boundary.size() << " boundary column(s), alpha = " << r.alpha << " rad, p = " << r.p
+          << " rad/s>";
+        return o.str();
+      });
   m.def(
       "compute_spectrum",
       [](const Body& body, const SpectrumSpec& spec, int threads) {
@@ -122,28 +167,114 @@ void bind_study(py::module_& m) {
       },
       py::arg("body"), py::arg("spec"), py::arg("threads") = 0,
       py::call_guard<py::gil_scoped_release>(),
-      "Every cell of a pulse spectrum, then the minimum overturning amplitude of each column.");
+      R"doc(Every cell of a pulse spectrum, then the minimum overturning amplitude of each column.
+
+Parameters
+----------
+body : Body
+spec : SpectrumSpec
+    Amplitudes and frequencies normalised (a_p/(g tan alpha), omega_p/p) or in m/s^2 and rad/s.
+threads : int
+    0: every core. The GIL is released.
+
+Returns
+-------
+SpectrumResult)doc");
   m.def(
       "compute_record_spectrum",
       [](const Body& body, const RecordSpectrumSpec& spec, int threads) {
         return compute_record_spectrum(body, spec, threads_only(threads));
       },
       py::arg("body"), py::arg("spec"), py::arg("threads") = 0,
-      py::call_guard<py::gil_scoped_release>(), "One record x scale factors.");
+      py::call_guard<py::gil_scoped_release>(),
+      R"doc(One record times scale factors, and the minimum overturning scale.
+
+Parameters
+----------
+body : Body
+spec : RecordSpectrumSpec
+threads : int
+    0: every core.
+
+Returns
+-------
+SpectrumResult)doc");
   m.def("run_pulse_cell", &run_pulse_cell, py::arg("body"), py::arg("spec"), py::arg("a_p"),
         py::arg("omega_p"), py::call_guard<py::gil_scoped_release>(),
-        "One pulse-spectrum cell (a_p [m/s^2], omega_p [rad/s]) as compute_spectrum runs it.");
+        R"doc(One pulse-spectrum cell, as compute_spectrum runs it.
+
+Parameters
+----------
+body : Body
+spec : SpectrumSpec
+a_p : float
+    [m/s^2] amplitude.
+omega_p : float
+    [rad/s] frequency.
+
+Returns
+-------
+RunSummary)doc");
   m.def("run_record_cell", &run_record_cell, py::arg("body"), py::arg("spec"), py::arg("scale"),
-        py::call_guard<py::gil_scoped_release>(), "One record-spectrum cell.");
+        py::call_guard<py::gil_scoped_release>(), R"doc(One record-spectrum cell.
+
+Parameters
+----------
+body : Body
+spec : RecordSpectrumSpec
+scale : float
+    [-] factor on the record.
+
+Returns
+-------
+RunSummary)doc");
   m.def("pulse_motion", &pulse_motion, py::arg("type"), py::arg("a_p"), py::arg("omega_p"),
-        py::arg("duration"));
-  m.def("pulse_length", &pulse_length, py::arg("type"), py::arg("omega_p"));
+        py::arg("duration"), R"doc(A pulse of a family as a ground motion.
+
+Parameters
+----------
+type : PulseType
+a_p : float
+    [m/s^2]
+omega_p : float
+    [rad/s]
+duration : float
+    [s]
+
+Returns
+-------
+GroundMotion)doc");
+  m.def("pulse_length", &pulse_length, py::arg("type"), py::arg("omega_p"),
+        R"doc(The length of one pulse of a family.
+
+Parameters
+----------
+type : PulseType
+omega_p : float
+    [rad/s]
+
+Returns
+-------
+float
+    [s])doc");
 
   // sweeps
   py::class_<Intensity>(m, "Intensity")
       .def_readonly("pga", &Intensity::pga, "[m/s^2]")
       .def_readonly("pgv", &Intensity::pgv, "[m/s]");
-  m.def("intensity", &intensity, py::arg("motion"), py::arg("analytic_dt") = 1e-3);
+  m.def("intensity", &intensity, py::arg("motion"), py::arg("analytic_dt") = 1e-3,
+        R"doc(Peak ground acceleration and velocity of a motion's horizontal component.
+
+Parameters
+----------
+motion : GroundMotion
+analytic_dt : float
+    [s] sampling of an analytic motion (plus its breakpoints).
+
+Returns
+-------
+Intensity
+    pga [m/s^2], pgv [m/s] (trapezoidal integral from 0).)doc");
   py::class_<SweepBody>(m, "SweepBody")
       .def(py::init([](std::string name, BodyParameters body) {
              return SweepBody{std::move(name), std::move(body)};
@@ -168,7 +299,11 @@ void bind_study(py::module_& m) {
       .def_readwrite("scale_kind", &SweepSpec::scale_kind)
       .def_readwrite("scales", &SweepSpec::scales)
       .def_readwrite("free_periods", &SweepSpec::free_periods)
-      .def_readwrite("solver", &SweepSpec::solver);
+      .def_readwrite("solver", &SweepSpec::solver)
+      .def_readwrite("levels", &SweepSpec::levels,
+                     "the levels as requested (CSV column requested_level); empty: scales")
+      .def_readwrite("level_units", &SweepSpec::level_units,
+                     "units of target-PGA levels: \"g\", \"m/s^2\" or \"cm/s^2\"");
   py::class_<SweepRow>(m, "SweepRow")
       .def_readonly("index", &SweepRow::index)
       .def_readonly("body", &SweepRow::body)
@@ -187,7 +322,20 @@ void bind_study(py::module_& m) {
       },
       py::arg("spec"), py::arg("indices") = std::vector<std::size_t>{}, py::arg("threads") = 0,
       py::call_guard<py::gil_scoped_release>(),
-      "Runs the sweep (or the given run indices); rows in index order.");
+      R"doc(Runs a sweep (bodies x records x scales), or the given run indices.
+
+Parameters
+----------
+spec : SweepSpec
+indices : list of int
+    Empty: every run.
+threads : int
+    0: every core. The GIL is released.
+
+Returns
+-------
+list of SweepRow
+    In index order.)doc");
 
   // fragility
   py::class_<FragilityFit>(m, "FragilityFit", "Lognormal fragility P = Phi(ln(x/theta)/beta).")
@@ -208,20 +356,102 @@ void bind_study(py::module_& m) {
       .def_readonly("log_likelihood", &FragilityFit::log_likelihood)
       .def_readonly("iterations", &FragilityFit::iterations)
       .def_readonly("samples", &FragilityFit::samples)
-      .def_readonly("failures", &FragilityFit::failures);
+      .def_readonly("failures", &FragilityFit::failures)
+      .def("__repr__", [](const FragilityFit& f) {
+        std::ostringstream o;
+        o.precision(4);
+        o << "<FragilityFit theta = " << f.theta << " [" << f.theta_lower << ", " << f.theta_upper
+          << "], beta = " << f.beta << " [" << f.beta_lower << ", " << f.beta_upper << "] ("
+          << 100.0 * f.confidence << "% bounds), " << f.failures << " failures in " << f.samples
+          << " runs>";
+        return o.str();
+      });
   m.def("fit_lognormal", &fit_lognormal, py::arg("im"), py::arg("failed"),
-        py::arg("confidence") = 0.95, "Maximum-likelihood lognormal fragility.");
-  m.def("fragility_probability", &fragility_probability, py::arg("fit"), py::arg("x"));
+        py::arg("confidence") = 0.95,
+        R"doc(Maximum-likelihood lognormal fragility P(failure | IM = x) = Phi(ln(x/theta)/beta).
+
+Parameters
+----------
+im : list of float
+    Intensity measures, > 0 (theta comes out in their unit).
+failed : list of int
+    0 or 1 per run.
+confidence : float
+    Level of the bounds, in (0, 1).
+
+Returns
+-------
+FragilityFit)doc");
+  m.def(
+      "fragility_probability",
+      [](const FragilityFit& fit,
+         const py::array_t<double, py::array::c_style | py::array::forcecast>& x) -> py::object {
+        py::array_t<double> p(std::vector<py::ssize_t>(x.shape(), x.shape() + x.ndim()));
+        const double* in = x.data();
+        double* out = p.mutable_data();
+        for (py::ssize_t i = 0; i < x.size(); ++i) out[i] = fragility_probability(fit, in[i]);
+        if (x.ndim() == 0) return py::float_(out[0]);
+        return p;
+      },
+      py::arg("fit"), py::arg("x"),
+      R"doc(The fitted probability of failure P(failure | IM = x) = Phi(ln(x/theta)/beta).
+
+Parameters
+----------
+fit : FragilityFit
+x : float or array_like
+    Intensity measure, in the units of the IM the fit was made with (e.g. [g] for pga_g);
+    arrays of any shape broadcast elementwise. x <= 0 gives 0.
+
+Returns
+-------
+float or numpy.ndarray
+    [-] of the shape of ``x``.)doc");
   m.def(
       "fragility_band",
-      [](const FragilityFit& fit, double x) {
-        double lo = 0.0, hi = 0.0;
-        fragility_band(fit, x, lo, hi);
+      [](const FragilityFit& fit,
+         const py::array_t<double, py::array::c_style | py::array::forcecast>& x) -> py::object {
+        const std::vector<py::ssize_t> shape(x.shape(), x.shape() + x.ndim());
+        py::array_t<double> lo(shape), hi(shape);
+        const double* in = x.data();
+        double* l = lo.mutable_data();
+        double* u = hi.mutable_data();
+        for (py::ssize_t i = 0; i < x.size(); ++i) fragility_band(fit, in[i], l[i], u[i]);
+        if (x.ndim() == 0) return py::make_tuple(l[0], u[0]);
         return py::make_tuple(lo, hi);
       },
-      py::arg("fit"), py::arg("x"), "(lower, upper) pointwise confidence band at x.");
+      py::arg("fit"), py::arg("x"),
+      R"doc(The pointwise confidence band of the fitted curve (delta method).
+
+Parameters
+----------
+fit : FragilityFit
+    Its ``confidence`` is the level of the band.
+x : float or array_like
+    Intensity measure in the fit's units; arrays of any shape broadcast elementwise.
+
+Returns
+-------
+(lower, upper) : tuple of float or of numpy.ndarray
+    [-] probabilities, each of the shape of ``x``.)doc");
   m.def("lognormal_log_likelihood", &lognormal_log_likelihood, py::arg("im"), py::arg("failed"),
-        py::arg("theta"), py::arg("beta"));
+        py::arg("theta"), py::arg("beta"),
+        R"doc(The log-likelihood of lognormal fragility parameters.
+
+Parameters
+----------
+im : list of float
+    Intensity measures, > 0.
+failed : list of int
+    0 or 1.
+theta : float
+    Median, in the IM's unit.
+beta : float
+    [-] lognormal standard deviation.
+
+Returns
+-------
+float)doc");
 
   // study files
   py::class_<io::SpectrumFile>(m, "SpectrumFile", "A spectrum spec file, loaded and checked.")
@@ -233,9 +463,28 @@ void bind_study(py::module_& m) {
       .def_readonly("pulse", &io::SpectrumFile::pulse)
       .def_readonly("record", &io::SpectrumFile::record)
       .def_readonly("record_name", &io::SpectrumFile::record_name);
-  m.def("load_spectrum_file", &io::load_spectrum_file, py::arg("path"));
-  m.def("spectrum_columns", &io::spectrum_columns);
-  m.def("boundary_columns", &io::boundary_columns);
+  m.def("load_spectrum_file", &io::load_spectrum_file, py::arg("path"),
+        R"doc(Reads and checks a spectrum file (TOML, docs/studies.md).
+
+Parameters
+----------
+path : str
+
+Returns
+-------
+SpectrumFile
+    Grids converted to SI (m/s^2, rad/s) unless normalised.)doc");
+  m.def("spectrum_columns", &io::spectrum_columns,
+        R"doc(Columns of the spectrum CSV (unit-suffixed).
+
+Returns
+-------
+list of str)doc");
+  m.def("boundary_columns", &io::boundary_columns, R"doc(Columns of the minimum-overturning CSV.
+
+Returns
+-------
+list of str)doc");
   m.def(
       "spectrum_csv",
       [](const SpectrumResult& r, double g) {
@@ -243,7 +492,17 @@ void bind_study(py::module_& m) {
         io::write_spectrum_csv(out, r, g);
         return out.str();
       },
-      py::arg("result"), py::arg("g"), "The spectrum CSV text (one row per cell).");
+      py::arg("result"), py::arg("g"), R"doc(The spectrum CSV text (one row per cell).
+
+Parameters
+----------
+result : SpectrumResult
+g : float
+    [m/s^2] gravity for the normalised columns.
+
+Returns
+-------
+str)doc");
   m.def(
       "boundary_csv",
       [](const SpectrumResult& r, bool normalized, double g) {
@@ -252,22 +511,67 @@ void bind_study(py::module_& m) {
         return out.str();
       },
       py::arg("result"), py::arg("normalized"), py::arg("g"),
-      "The minimum-overturning CSV text (one row per frequency column).");
+      R"doc(The minimum-overturning CSV text (one row per frequency column).
+
+Parameters
+----------
+result : SpectrumResult
+normalized : bool
+    Whether the spectrum's grid was normalised (the units of ``frequency``, ``min_overturning``).
+g : float
+    [m/s^2]
+
+Returns
+-------
+str)doc");
 
   py::class_<io::SweepManifest>(m, "SweepManifest")
       .def_readonly("source", &io::SweepManifest::source)
       .def_readonly("spec", &io::SweepManifest::spec)
       .def_readonly("hash", &io::SweepManifest::hash);
-  m.def("load_sweep_manifest", &io::load_sweep_manifest, py::arg("path"));
-  m.def("sweep_columns", &io::sweep_columns);
+  m.def("load_sweep_manifest", &io::load_sweep_manifest, py::arg("path"),
+        R"doc(Reads and checks a sweep manifest (TOML, docs/studies.md).
+
+Parameters
+----------
+path : str
+
+Returns
+-------
+SweepManifest
+    Its spec (target PGAs in m/s^2, the levels as written in ``spec.levels``) and hash.)doc");
+  m.def("sweep_columns", &io::sweep_columns, R"doc(Columns of the sweep CSV.
+
+Returns
+-------
+list of str
+    index, body, record, requested_level, requested_units, scale, pga_m_per_s2, pga_g, ...)doc");
   m.def("sweep_row", &io::sweep_row, py::arg("spec"), py::arg("row"),
-        "One line of the sweep CSV (no line end).");
+        R"doc(One line of the sweep CSV (no line end).
+
+Parameters
+----------
+spec : SweepSpec
+row : SweepRow
+
+Returns
+-------
+str)doc");
 
   py::class_<io::CsvTable>(m, "CsvTable")
       .def_readonly("source", &io::CsvTable::source)
       .def_readonly("columns", &io::CsvTable::columns)
       .def_readonly("rows", &io::CsvTable::rows);
-  m.def("read_csv_table", &io::read_csv_table, py::arg("path"));
+  m.def("read_csv_table", &io::read_csv_table, py::arg("path"),
+        R"doc(Reads a CSV file as text fields (a sweep CSV for a fragility fit).
+
+Parameters
+----------
+path : str
+
+Returns
+-------
+CsvTable)doc");
   py::class_<io::FragilityQuery>(m, "FragilityQuery")
       .def(py::init<>())
       .def_readwrite("im", &io::FragilityQuery::im)
@@ -279,9 +583,37 @@ void bind_study(py::module_& m) {
       .def_readonly("im", &io::FragilityData::im)
       .def_readonly("failed", &io::FragilityData::failed)
       .def_readonly("excluded", &io::FragilityData::excluded);
-  m.def("fragility_data", &io::fragility_data, py::arg("table"), py::arg("query"));
-  m.def("fragility_columns", &io::fragility_columns);
-  m.def("fragility_row", &io::fragility_row, py::arg("data"), py::arg("fit"));
+  m.def("fragility_data", &io::fragility_data, py::arg("table"), py::arg("query"),
+        R"doc(The (IM, failed) observations of each body of a sweep CSV.
+
+Parameters
+----------
+table : CsvTable
+query : FragilityQuery
+    im: pga [m/s^2], pga_g [g], pgv [m/s], scale [-] or requested_level; outcome:
+    overturned, theta or energy, with its level.
+
+Returns
+-------
+list of FragilityData
+    Rows whose outcome is stopped or contact_lost are left out and counted (``excluded``).)doc");
+  m.def("fragility_columns", &io::fragility_columns,
+        R"doc(Columns of the fit CSV of ``flexrock fragility``.
+
+Returns
+-------
+list of str)doc");
+  m.def("fragility_row", &io::fragility_row, py::arg("data"), py::arg("fit"),
+        R"doc(One line of the fit CSV.
+
+Parameters
+----------
+data : FragilityData
+fit : FragilityFit
+
+Returns
+-------
+str)doc");
 }
 
 }  // namespace flexrock::python

@@ -208,28 +208,47 @@ std::vector<std::string> time_history_columns(int modes) {
   return c;
 }
 
-void write_time_history(std::ostream& out, const SimulationResult& r, const Body& body) {
+std::vector<std::vector<double>> time_history_values(const SimulationResult& r, const Body& body) {
   const History& h = r.history;
   const int n = h.modes;
-  put_header(out, time_history_columns(n));
+  const std::size_t rows = h.size();
+  const auto modes = static_cast<std::size_t>(n);
+  std::vector<std::vector<double>> cols;
+  cols.reserve(5 + 2 * modes + 11);
+  cols.push_back(h.time);
+  cols.emplace_back(h.phase.begin(), h.phase.end());
+  cols.push_back(h.theta);
+  cols.push_back(h.theta_dot);
+  // the lift of the raised edge: the base width swung through |theta| while rocking
   const double width = body.params().b1 + body.params().b2;
-  std::vector<double> row;
-  for (std::size_t k = 0; k < h.size(); ++k) {
-    row.clear();
-    row.push_back(h.time[k]);
-    row.push_back(h.phase[k]);
-    row.push_back(h.theta[k]);
-    row.push_back(h.theta_dot[k]);
-    row.push_back(h.phase[k] != 0 ? width * std::sin(std::abs(h.theta[k])) : 0.0);
-    const auto base = k * static_cast<std::size_t>(n);
-    for (int i = 0; i < n; ++i) row.push_back(h.q[base + static_cast<std::size_t>(i)]);
-    for (int i = 0; i < n; ++i) row.push_back(h.q_dot[base + static_cast<std::size_t>(i)]);
-    for (const std::vector<double>* col :
-         {&h.base_acc_x, &h.base_acc_y, &h.reaction_x, &h.reaction_y, &h.resultant,
-          &h.friction_demand, &h.kinetic, &h.potential, &h.input_work, &h.damping_loss,
-          &h.impact_loss}) {
-      row.push_back(k < col->size() ? (*col)[k] : std::nan(""));
+  std::vector<double> uplift(rows, 0.0);
+  for (std::size_t k = 0; k < rows; ++k) {
+    if (h.phase[k] != 0) uplift[k] = width * std::sin(std::abs(h.theta[k]));
+  }
+  cols.push_back(std::move(uplift));
+  for (const std::vector<double>* v : {&h.q, &h.q_dot}) {
+    for (std::size_t i = 0; i < modes; ++i) {
+      std::vector<double> c(rows);
+      for (std::size_t k = 0; k < rows; ++k) c[k] = (*v)[k * modes + i];
+      cols.push_back(std::move(c));
     }
+  }
+  for (const std::vector<double>* col : {&h.base_acc_x, &h.base_acc_y, &h.reaction_x, &h.reaction_y,
+                                         &h.resultant, &h.friction_demand, &h.kinetic, &h.potential,
+                                         &h.input_work, &h.damping_loss, &h.impact_loss}) {
+    std::vector<double> c(*col);
+    c.resize(rows, std::nan(""));  // a column the engine did not fill is not a number
+    cols.push_back(std::move(c));
+  }
+  return cols;
+}
+
+void write_time_history(std::ostream& out, const SimulationResult& r, const Body& body) {
+  put_header(out, time_history_columns(r.history.modes));
+  const std::vector<std::vector<double>> cols = time_history_values(r, body);
+  std::vector<double> row(cols.size());
+  for (std::size_t k = 0; k < r.history.size(); ++k) {
+    for (std::size_t j = 0; j < cols.size(); ++j) row[j] = cols[j][k];
     put_row(out, row);
   }
 }

@@ -32,6 +32,11 @@ void write_atomically(const std::string& path, const std::function<void(std::ost
 /// friction_demand, kinetic_J, potential_J, input_work_J, damping_loss_J, impact_loss_J.
 std::vector<std::string> time_history_columns(int modes);
 
+/// The time history's values, one vector per column of time_history_columns(modes), one
+/// element per output time: what write_time_history prints (the Python module's arrays).
+std::vector<std::vector<double>> time_history_values(const SimulationResult& result,
+                                                     const Body& body);
+
 /// The time history as CSV text (a header row, then one row per output time).
 void write_time_history(std::ostream& out, const SimulationResult& result, const Body& body);
 
