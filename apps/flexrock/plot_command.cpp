@@ -26,16 +26,22 @@ namespace flexrock::cli {
 CLI::App* add_plot_command(CLI::App& app, PlotOptions& options) {
   CLI::App* plot = app.add_subcommand(
       "plot",
-      "Plot a run's time-history CSV (response figure or moment-rotation loop) or a spectrum "
-      "CSV as PNG or SVG (needs Python 3 with matplotlib)");
-  plot->add_option("RESULT_OR_SPECTRUM", options.file,
+      "Plot a run's time-history CSV (response figure or moment-rotation loop), a spectrum CSV, "
+      "or a fragility (a sweep CSV, or the fit or curve CSV of flexrock fragility) as PNG, SVG "
+      "or PDF (needs Python 3 with matplotlib)");
+  plot->add_option("CSV", options.file,
                    "time-history CSV of `flexrock run` (its summary JSON and event log are read "
-                   "from next to it) or spectrum CSV")
+                   "from next to it), spectrum CSV, sweep CSV or fragility CSV")
       ->required();
   plot->add_option("-o,--output", options.output,
-                   "figure file, .png or .svg (default: the CSV's name with .png)");
-  plot->add_option("--kind", options.kind, "auto (by the CSV header), response, loop, spectrum")
-      ->check(CLI::IsMember({"auto", "response", "loop", "spectrum"}));
+                   "figure file, .png, .svg or .pdf (default: the CSV's name with .png)");
+  plot->add_option("--kind", options.kind,
+                   "auto (by the CSV header), response, loop, spectrum, fragility")
+      ->check(CLI::IsMember({"auto", "response", "loop", "spectrum", "fragility"}));
+  plot->add_option("--im", options.im,
+                   "intensity measure of a sweep's fragility: pga (m/s^2), pga_g (default), pgv "
+                   "(m/s), scale, requested_level")
+      ->check(CLI::IsMember({"pga", "pga_g", "pgv", "scale", "requested_level"}));
   plot->add_option("--dpi", options.dpi, "PNG resolution")->check(CLI::Range(10, 1200));
   return plot;
 }
@@ -61,7 +67,8 @@ int run_plot(const PlotOptions& options) {
   }
   std::vector<std::string> args = {
       python,   "-m",         "flexrock.plot", options.file,
-      "--kind", options.kind, "--dpi",         std::to_string(options.dpi)};
+      "--kind", options.kind, "--dpi",         std::to_string(options.dpi),
+      "--im",   options.im};
   if (!options.output.empty()) {
     args.push_back("--output");
     args.push_back(options.output);

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// `flexrock plot`: figures of a run or a spectrum, drawn by the Python package (matplotlib).
+// `flexrock plot`: figures of a run, a spectrum or a fragility, drawn by the Python package
+// (matplotlib).
 #pragma once
 
 #include <CLI/CLI.hpp>
@@ -8,9 +9,10 @@
 namespace flexrock::cli {
 
 struct PlotOptions {
-  std::string file;           // a run's time-history CSV or a spectrum CSV
-  std::string output;         // .png or .svg; empty: next to `file`
-  std::string kind = "auto";  // auto, response, loop, spectrum
+  std::string file;           // a run's time-history, spectrum, sweep or fragility CSV
+  std::string output;         // .png, .svg or .pdf; empty: next to `file`
+  std::string kind = "auto";  // auto, response, loop, spectrum, fragility
+  std::string im = "pga_g";   // intensity measure of a sweep's fragility
   int dpi = 110;              // [1/inch] PNG resolution
 };
 

@@ -41,28 +41,21 @@ records = {
     "kobe": cut(fr.motion_from_file(str(DATA / "kobe_1995_nishi_akashi_090.AT2"))),
 }
 
-# every record scaled to target PGAs from 0.1 g to 1.2 g
-pga = np.linspace(0.1, 1.2, args.levels) * 9.80665
-table = fr.sweep({"statue": body}, records, pga, target_pga=True, threads=args.threads)
+# every record scaled to target PGAs from 0.1 g to 1.2 g, as a manifest's [scales] says it
+levels = np.round(np.linspace(0.1, 1.2, args.levels), 6)
+table = fr.sweep({"statue": body}, records, target_pga=levels, units="g", threads=args.threads)
 failed = table["overturned"].astype(int)
 print(f"{len(failed)} runs, {failed.sum()} overturned")
 
-fit = fr.fragility(table["pga_m_per_s2"] / 9.80665, failed)
+fit = fr.fragility(table["pga_g"], failed)
 print(f"median PGA to overturn theta = {fit.theta:.3f} g "
       f"[{fit.theta_lower:.3f}, {fit.theta_upper:.3f}], beta = {fit.beta:.3f}")
+x = np.array([0.25, 0.5, 1.0])
+print("P(overturning) at", x, "g:", np.round(fr.fragility_probability(fit, x), 3))
 
-# the fitted curve, its band and the runs
-x = np.linspace(0.02, 1.3, 200)
-p = [fr.fragility_probability(fit, v) for v in x]
-band = np.array([fr.fragility_band(fit, v) for v in x])
+# the fitted curve, its band and the observed fraction at each level
 fig = Figure(figsize=(6, 4), layout="constrained")
-ax = fig.subplots()
-ax.fill_between(x, band[:, 0], band[:, 1], color="tab:blue", alpha=0.2, label="95 % band")
-ax.plot(x, p, color="tab:blue", label=f"lognormal fit: theta = {fit.theta:.2f} g, beta = {fit.beta:.2f}")
-ax.plot(table["pga_m_per_s2"] / 9.80665, failed, "k|", ms=12, label="runs (1: overturned)")
-ax.set_xlabel("PGA [g]")
-ax.set_ylabel("P(overturning)")
-ax.legend(loc="lower right", fontsize="small")
+plots.fragility_curve(fit, table["pga_g"], failed, fig=fig)
 out = pathlib.Path(args.output_dir)
 out.mkdir(parents=True, exist_ok=True)
 print("wrote", plots.save(fig, out / "statue_fragility.png"))

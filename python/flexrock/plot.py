@@ -1,9 +1,11 @@
 # SPDX-License-Identifier: BSD-3-Clause
-"""``python3 -m flexrock.plot FILE [-o OUT.png|OUT.svg] [--kind ...]``: what ``flexrock plot`` runs.
+"""``python3 -m flexrock.plot FILE [-o OUT.png|.svg|.pdf] [--kind ...]``: what ``flexrock plot`` runs.
 
-FILE is a run's time-history CSV (its summary JSON and event log are read when next to it) or a
-spectrum CSV; the kind is told by the header. Exit codes as the command line's: 0 ok, 1 the
-figure could not be made or written, 2 bad input.
+FILE is a run's time-history CSV (its summary JSON and event log are read when next to it), a
+spectrum CSV, a sweep CSV (its fragility: fit, band and observed fractions) or an output of
+``flexrock fragility`` (the fit CSV or the curve CSV); the kind is told by the header. Exit codes
+as the command line's: 0 ok, 1 the figure could not be made or written, 2 bad input. Rows that
+are not whole, or nan where a figure needs a number, are drawn around with a warning.
 """
 
 from __future__ import annotations
@@ -11,6 +13,9 @@ from __future__ import annotations
 import argparse
 import os
 import sys
+import warnings
+
+_FORMATS = (".png", ".svg", ".pdf")
 
 
 def _error(message: str, code: int) -> int:
@@ -23,32 +28,57 @@ def _kind_of(path: str) -> str:
         header = f.readline().strip().split(",")
     if "time_s" in header and "theta_rad" in header:
         return "response"
+    if "overturned" in header and "pga_m_per_s2" in header:
+        return "fragility"  # a sweep CSV
+    if {"theta", "beta", "samples"} <= set(header) or {"probability", "lower", "upper"} <= set(header):
+        return "fragility"
     return "spectrum"
+
+
+# columns a figure needs as numbers, by kind: nan there is drawn as a gap, with a warning
+_NEEDED = {
+    "response": ("time_s", "theta_rad"),
+    "loop": ("theta_rad", "reaction_y_N", "resultant_m"),
+    "spectrum": ("a_p_over_g_tan_alpha", "omega_p_over_p"),
+}
 
 
 def main(argv=None) -> int:
     parser = argparse.ArgumentParser(
         prog="flexrock plot",
-        description="Plot a run's time history (response figure or moment-rotation loop) or an "
-        "overturning spectrum, as PNG or SVG.",
+        description="Plot a run's time history (response figure or moment-rotation loop), an "
+        "overturning spectrum, or a fragility (from a sweep CSV or a flexrock fragility output) "
+        "as PNG, SVG or PDF.",
     )
-    parser.add_argument("file", metavar="RESULT_OR_SPECTRUM", help="time-history CSV or spectrum CSV")
+    parser.add_argument("file", metavar="CSV", help="time-history, spectrum, sweep or fragility CSV")
     parser.add_argument(
         "-o",
         "--output",
-        help="output file, .png or .svg (default: FILE with .png, or .loop.png for --kind loop)",
+        help="output file, .png, .svg or .pdf (default: FILE with .png, or .loop.png for --kind "
+        "loop, .fragility.png for a sweep)",
     )
     parser.add_argument(
         "--kind",
-        choices=["auto", "response", "loop", "spectrum"],
+        choices=["auto", "response", "loop", "spectrum", "fragility"],
         default="auto",
-        help="figure: auto (by the header), response, loop (moment vs theta), spectrum",
+        help="figure: auto (by the header), response, loop (moment vs theta), spectrum, fragility",
+    )
+    parser.add_argument(
+        "--im",
+        choices=["pga", "pga_g", "pgv", "scale", "requested_level"],
+        default="pga_g",
+        help="intensity measure of a sweep's fragility (default pga_g)",
     )
     parser.add_argument("--dpi", type=int, default=110, help="PNG resolution (default 110)")
     args = parser.parse_args(argv)
 
     try:
-        from . import plots
+        import matplotlib
+
+        matplotlib.use("Agg")  # a file, never a window
+        from matplotlib.figure import Figure
+
+        from . import _csv, plots
     except ImportError as e:
         return _error(
             f"flexrock plot needs matplotlib and numpy for /usr/bin/python3 ({e}); "
@@ -63,19 +93,39 @@ def main(argv=None) -> int:
     except (OSError, UnicodeDecodeError) as e:
         return _error(f"{args.file}: cannot read: {e}", 2)
     stem = args.file[:-4] if args.file.endswith(".csv") else args.file
-    out = args.output or (stem + (".loop.png" if kind == "loop" else ".png"))
-    if os.path.splitext(out)[1].lower() not in (".png", ".svg"):
-        return _error(f"{out}: expected an output name ending in .png or .svg", 2)
-    try:
-        if kind == "response":
-            fig = plots.response_figure(args.file)
-        elif kind == "loop":
-            fig = plots.moment_rotation_loop(args.file)
-        else:
-            fig = plots.spectrum_map(args.file)
-    except (ValueError, KeyError) as e:
-        detail = f"missing column {e}" if isinstance(e, KeyError) else str(e)
-        return _error(f"{args.file}: {detail}", 2)
+    suffix = {"loop": ".loop.png", "fragility": ".fragility.png"}.get(kind, ".png")
+    out = args.output or (stem + suffix)
+    if os.path.splitext(out)[1].lower() not in _FORMATS:
+        return _error(f"{out}: expected an output name ending in .png, .svg or .pdf", 2)
+    fig = Figure(layout="constrained")
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always", _csv.CsvWarning)
+        try:
+            if kind == "response":
+                fig.set_size_inches(9, 11)
+                plots.response_figure(args.file, fig=fig)
+            elif kind == "loop":
+                fig.set_size_inches(6, 5)
+                plots.moment_rotation_loop(args.file, fig=fig)
+            elif kind == "spectrum":
+                fig.set_size_inches(7, 5)
+                plots.spectrum_map(args.file, fig=fig)
+            else:
+                fig.set_size_inches(6, 4.5)
+                plots.fragility_curve(args.file, im=args.im, fig=fig)
+            if kind in _NEEDED:
+                with open(args.file, newline="") as f:
+                    import csv
+
+                    cols = _csv.columns(list(csv.reader(f)), args.file)
+                _csv.warn_nan(cols, _NEEDED[kind], args.file)
+        except (ValueError, KeyError, IndexError) as e:
+            detail = f"missing column {e}" if isinstance(e, KeyError) else str(e)
+            if not detail.startswith(args.file):
+                detail = f"{args.file}: {detail}"
+            return _error(detail, 2)
+    for message in dict.fromkeys(str(w.message) for w in caught if issubclass(w.category, _csv.CsvWarning)):
+        print(f"flexrock: warning: {message}", file=sys.stderr)
     # write to a temporary name, then rename: no half-written figure
     tmp = f"{out}.tmp.{os.getpid()}{os.path.splitext(out)[1]}"
     try:

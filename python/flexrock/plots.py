@@ -1,11 +1,17 @@
 # SPDX-License-Identifier: BSD-3-Clause
-"""Figures of flexrock results (matplotlib), as PNG or SVG.
+"""Figures of flexrock results (matplotlib): PNG, SVG or PDF.
 
-Every function returns a :class:`matplotlib.figure.Figure` built without pyplot, so it needs no
-display and is safe in threads; :func:`save` writes it by extension. In Jupyter a returned figure
-shows inline. Inputs are a :class:`flexrock.Result`, a time-history CSV written by
-``flexrock run`` (its summary JSON and event log are found next to it) or, for
-:func:`spectrum_map`, the CSV ``flexrock spectrum`` writes.
+Every function draws into the ``ax=`` (an :class:`~matplotlib.axes.Axes`) or ``fig=`` (a
+:class:`~matplotlib.figure.Figure`) it is given and returns what it drew: the Axes, or the Figure
+for the six-panel :func:`response_figure`. Given neither, it makes a new figure with pyplot, so
+``plt.show()`` shows it and Jupyter shows it inline; pass ``fig=matplotlib.figure.Figure()`` to
+draw without pyplot (no display, safe in threads). :func:`save` writes a figure by extension.
+
+Inputs are a :class:`flexrock.Result`, a time-history CSV written by ``flexrock run`` (its summary
+JSON and event log are found next to it), the spectrum CSV of ``flexrock spectrum`` or a
+:class:`flexrock.SpectrumResult`, and for :func:`fragility_curve` a sweep CSV, the output of
+``flexrock fragility`` or a fit. Units are those of the column names (SI unless the name says
+``_g`` or ``_hz``).
 """
 
 from __future__ import annotations
@@ -29,8 +35,25 @@ __all__ = [
     "moment_rotation_loop",
     "spectrum_map",
     "read_spectrum",
+    "fragility_curve",
     "save",
 ]
+
+STANDARD_GRAVITY = 9.80665  # [m/s^2]
+
+
+def _axes(ax, fig, figsize):
+    # the Axes to draw into: the caller's, one on the caller's figure, or a new pyplot figure
+    if ax is not None:
+        return ax
+    if fig is None:
+        import matplotlib.pyplot as plt
+
+        fig = plt.figure(figsize=figsize, layout="constrained")
+    elif figsize is not None and not fig.axes:
+        fig.set_size_inches(*figsize)
+    return fig.add_subplot()
+
 
 # rocking on edge 1 / edge 2: the same colours in every figure
 _EDGE_COLOURS = {1: "tab:orange", 2: "tab:purple"}
@@ -39,16 +62,16 @@ _EDGE_COLOURS = {1: "tab:orange", 2: "tab:purple"}
 # --- inputs ------------------------------------------------------------------------------------
 
 
-def _read_columns(path: str) -> dict:
+def _read_columns(path: str, require_rows: bool = False) -> dict:
     with open(path, newline="") as f:
-        return _columns(list(csv.reader(f)), path)
+        return _columns(list(csv.reader(f)), path, require_rows=require_rows)
 
 
 def load_run(path: str):
     """A run's outputs from its time-history CSV: (columns, events, summary). The summary JSON
     "<stem>.summary.json" and the event log (the summary's outputs.events, or
     "<stem>.events.csv") are read when they lie next to the CSV; otherwise they are None."""
-    cols = _read_columns(path)
+    cols = _read_columns(path, require_rows=True)
     if "time_s" not in cols or "theta_rad" not in cols:
         raise ValueError(
             f"{path}: not a flexrock time history: expected the columns time_s, theta_rad, ..."
@@ -110,15 +133,51 @@ def _event_times(events, kind: str) -> np.ndarray:
 
 
 def response_figure(
-    source, events=None, summary=None, *, title: Optional[str] = None, xlim=None, figsize=(9, 11)
+    source,
+    events=None,
+    summary=None,
+    *,
+    title: Optional[str] = None,
+    xlim=None,
+    figsize=(9, 11),
+    fig: Optional[Figure] = None,
 ) -> Figure:
-    """Six panels against time: base accelerations; theta with the rocking phases shaded (edge 1
-    and edge 2 in two colours), impacts marked and the overturning angles dashed (theta/alpha on
-    the right axis); deformation q; floor reactions; friction demand; energy budget
-    (input work = stored + dissipated + residual). ``xlim=(t0, t1)`` shows a time window."""
+    """The response of one run against time, in six panels.
+
+    Base accelerations [m/s^2]; theta [rad] with the rocking phases shaded (edge 1 and edge 2 in
+    two colours), the landings marked (``impact`` events as red crosses; ``rocking_ended``, a
+    landing that ends rocking, as green circles; ``chatter_cutoff`` as blue diamonds) and the
+    overturning angles dashed (theta/alpha on the right axis); deformation q [-]; floor
+    reactions [N]; friction demand [-]; energy budget [J] (input work = stored + dissipated +
+    residual).
+
+    Parameters
+    ----------
+    source : flexrock.Result, str or dict
+        A result, a time-history CSV path (its ``.summary.json`` and event log are read from
+        next to it) or a dict of the CSV's columns.
+    events, summary : dict, optional
+        The event log's columns and the summary, overriding what ``source`` brings.
+    title : str, optional
+        Default: the case name and outcome.
+    xlim : (float, float), optional
+        A time window [s].
+    figsize : (float, float)
+        [in], for a new figure.
+    fig : matplotlib.figure.Figure, optional
+        An empty figure to draw into; default a new pyplot figure.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        The figure; its six Axes are ``fig.axes``.
+    """
     cols, events, summary = _run_data(source, events, summary)
     t = np.asarray(cols["time_s"], dtype=float)
-    fig = Figure(figsize=figsize, layout="constrained")
+    if fig is None:
+        import matplotlib.pyplot as plt
+
+        fig = plt.figure(figsize=figsize, layout="constrained")
     axes = fig.subplots(6, 1, sharex=True)
     ax_acc, ax_th, ax_q, ax_r, ax_f, ax_e = axes
 
@@ -143,6 +202,14 @@ def response_figure(
         impacts = t[1:][switch]
     if impacts.size:
         ax_th.plot(impacts, np.zeros_like(impacts), "x", color="tab:red", ms=5, label="impact", gid="impacts")
+    # landings that end rocking (a flexible body settles rather than bounces): marked apart
+    for kind, style, colour, label in (
+        ("rocking_ended", "o", "tab:green", "rocking ended"),
+        ("chatter_cutoff", "D", "tab:blue", "chatter cut off"),
+    ):
+        times = _event_times(events, kind)
+        if times.size:
+            ax_th.plot(times, np.zeros_like(times), style, mfc="none", color=colour, ms=5, label=label, gid=kind)
     overturn = _event_times(events, "overturn")
     if overturn.size:
         ax_th.plot(overturn, np.interp(overturn, t, theta), "*", color="tab:red", ms=10, label="overturn")
@@ -210,23 +277,45 @@ def response_figure(
     return fig
 
 
-def moment_rotation_loop(source, events=None, summary=None, *, figsize=(6, 5)) -> Figure:
-    """The base moment (moment of the floor reaction about the c.g. projection,
-    reaction_y x resultant [N m]) against theta [rad]: the rocking hysteresis loop. With a
-    summary, the static uplift moments M g b1 and -M g b2 are dashed."""
+def moment_rotation_loop(
+    source, events=None, summary=None, *, figsize=(6, 5), ax=None, fig: Optional[Figure] = None
+):
+    """The base moment against theta: the rocking hysteresis loop.
+
+    The base moment [N m] is the moment of the floor reaction about the c.g. projection,
+    ``reaction_y_N * resultant_m``. While the body rocks on edge 1 (theta > 0) the reaction acts
+    at the pivot x = -b1, so the moment is about -M g b1; on edge 2 about +M g b2. With a summary
+    both are dashed (``gid`` "uplift_moment_edge1" and "uplift_moment_edge2").
+
+    Parameters
+    ----------
+    source, events, summary
+        As for :func:`response_figure`.
+    figsize : (float, float)
+        [in], for a new figure.
+    ax : matplotlib.axes.Axes, optional
+        Where to draw; otherwise a new Axes on ``fig`` or on a new pyplot figure.
+    fig : matplotlib.figure.Figure, optional
+
+    Returns
+    -------
+    matplotlib.axes.Axes
+    """
     cols, events, summary = _run_data(source, events, summary)
     theta = np.asarray(cols["theta_rad"], dtype=float)
     moment = np.asarray(cols["reaction_y_N"], dtype=float) * np.asarray(cols["resultant_m"], dtype=float)
-    fig = Figure(figsize=figsize, layout="constrained")
-    ax = fig.subplots()
-    ax.plot(theta, moment, lw=0.7, color="k", label="base moment")
+    ax = _axes(ax, fig, figsize)
+    ax.plot(theta, moment, lw=0.7, color="k", label="base moment", gid="loop")
     if summary:
         b = summary.get("body", {})
         g = b.get("uplift_acceleration_edge1_m_per_s2", 0.0) / max(b.get("alpha1") or 1.0, 1e-300)
         m_kg = b.get("mass_kg")
         if m_kg and b.get("b1_m") is not None:
-            ax.axhline(m_kg * g * b["b1_m"], color="tab:red", ls="--", lw=0.7, label="$M g b_1$")
-            ax.axhline(-m_kg * g * b["b2_m"], color="tab:red", ls="-.", lw=0.7, label="$-M g b_2$")
+            # the pivot of edge 1 is left of the c.g.: a negative moment, and edge 2 positive
+            ax.axhline(-m_kg * g * b["b1_m"], color="tab:orange", ls="--", lw=0.7,
+                       label="$-M g b_1$ (edge 1)", gid="uplift_moment_edge1")
+            ax.axhline(m_kg * g * b["b2_m"], color="tab:purple", ls="-.", lw=0.7,
+                       label="$M g b_2$ (edge 2)", gid="uplift_moment_edge2")
     ax.axhline(0.0, color="0.7", lw=0.5)
     ax.axvline(0.0, color="0.7", lw=0.5)
     ax.set_xlabel("θ [rad]")
@@ -234,7 +323,7 @@ def moment_rotation_loop(source, events=None, summary=None, *, figsize=(6, 5)) -
     ax.legend(loc="best", fontsize="small")
     name = ((summary or {}).get("case") or {}).get("name")
     ax.set_title(f"{name}: moment-rotation loop" if name else "moment-rotation loop")
-    return fig
+    return ax
 
 
 # --- the overturning spectrum ------------------------------------------------------------------
@@ -252,7 +341,7 @@ _OUTCOME_COLOURS = {
 
 def read_spectrum(path: str) -> dict:
     """The columns of a spectrum CSV as numpy arrays (text columns as object arrays)."""
-    cols = _read_columns(path)
+    cols = _read_columns(path, require_rows=True)
     if "outcome" not in cols or "a_p_over_g_tan_alpha" not in cols:
         raise ValueError(
             f"{path}: not a spectrum CSV: expected the columns of `flexrock spectrum` "
@@ -273,7 +362,8 @@ def _boundary_next_to(path: str):
 
 
 def _spectrum_data(source, boundary, g):
-    # (cells, boundary) from a CSV path, a dict of columns or a flexrock.SpectrumResult
+    # (cells, boundary, units) from a CSV path, a dict of columns or a flexrock.SpectrumResult;
+    # units: (amplitude, frequency) the spectrum was asked for in, None for the normalised axes
     if isinstance(source, (str, os.PathLike)):
         path = os.fspath(source)
         cols = read_spectrum(path)
@@ -281,37 +371,76 @@ def _spectrum_data(source, boundary, g):
             boundary = _boundary_next_to(path)
         elif isinstance(boundary, (str, os.PathLike)):
             boundary = _read_columns(os.fspath(boundary))
-        return cols, boundary
+        return cols, boundary, None
     if hasattr(source, "cells") and hasattr(source, "boundary"):
-        from . import _flexrock  # the CSV text the command line writes, as columns
+        from .studies import boundary_table, spectrum_table
 
-        def parse(text):
-            return _columns(list(csv.reader(text.splitlines())), "spectrum")
+        b = boundary_table(source, g=g) if len(source.boundary) else None
+        return spectrum_table(source, g=g), b, getattr(source, "_flexrock_units", None)
+    return source, boundary, None
 
-        cols = parse(_flexrock.spectrum_csv(source, g))
-        b = parse(_flexrock.boundary_csv(source, True, g)) if len(source.boundary) else None
-        return cols, b
-    return source, boundary
+
+def _unit_column(prefix: str, unit: str) -> str:
+    from .studies import unit_suffix
+
+    return f"{prefix}_{unit_suffix(unit)}"
 
 
 def spectrum_map(
-    source, boundary=None, *, g: float = 9.80665, figsize=(7, 5), title: Optional[str] = None
-) -> Figure:
-    """The overturning-spectrum map: one cell per (omega_p/p, a_p/(g tan alpha)) point of the
-    spectrum, coloured by its outcome (no uplift, rocking, overturning without impact = mode 2,
-    overturning after impacts = mode 1), and the minimum overturning curve: the bisection's
-    boundary CSV when given or found next to the spectrum ("<stem>.boundary.csv"), otherwise the
-    lowest overturning cell of each column. A record spectrum (one record x scales) is drawn as
-    one column against the scale factor. ``source`` may also be a :class:`flexrock.SpectrumResult`
-    (then ``g`` is the body's gravity, for the normalised columns)."""
-    cols, bnd = _spectrum_data(source, boundary, g)
+    source,
+    boundary=None,
+    *,
+    g: float = STANDARD_GRAVITY,
+    figsize=(7, 5),
+    title: Optional[str] = None,
+    ax=None,
+    fig: Optional[Figure] = None,
+):
+    """The overturning-spectrum map.
+
+    One cell per grid point of the spectrum, coloured by its outcome (no uplift, rocking,
+    overturning without impact = mode 2, overturning after impacts = mode 1), and the minimum
+    overturning curve: the bisection's boundary (its CSV when given or found next to the
+    spectrum, "<stem>.boundary.csv"), otherwise the lowest overturning cell of each column. A
+    record spectrum (one record x scales) is one column against the scale factor, with the
+    bisected minimum overturning scale as a line.
+
+    Parameters
+    ----------
+    source : str, dict or flexrock.SpectrumResult
+        A spectrum CSV, its columns, or a result of :func:`flexrock.spectrum` (axes then as the
+        spectrum was asked for: a_p/(g tan alpha) and omega_p/p when normalised, otherwise the
+        amplitude and frequency units given, e.g. [g] and [Hz]).
+    boundary : str or dict, optional
+        The minimum-overturning CSV or its columns.
+    g : float
+        [m/s^2] gravity of the body, for the normalised columns of a result.
+    figsize : (float, float)
+        [in], for a new figure.
+    title : str, optional
+    ax : matplotlib.axes.Axes, optional
+        Where to draw; otherwise a new Axes on ``fig`` or on a new pyplot figure.
+    fig : matplotlib.figure.Figure, optional
+
+    Returns
+    -------
+    matplotlib.axes.Axes
+    """
+    cols, bnd, units = _spectrum_data(source, boundary, g)
     record = "omega_p_over_p" not in cols or np.all(np.asarray(cols["omega_p_over_p"], dtype=float) == 0.0)
     if record:
         xk, yk = None, "scale"
         x = np.zeros(len(cols[yk]))
+        xlabel, ylabel = "record", "scale factor [-]"
+    elif units is not None:
+        xk, yk = _unit_column("f_p" if units[1] == "Hz" else "omega_p", units[1]), _unit_column("a_p", units[0])
+        x = np.asarray(cols[xk], dtype=float)
+        xlabel = f"pulse frequency [{units[1]}]"
+        ylabel = f"pulse amplitude [{units[0]}]"
     else:
         xk, yk = "omega_p_over_p", "a_p_over_g_tan_alpha"
         x = np.asarray(cols[xk], dtype=float)
+        xlabel, ylabel = "$\\omega_p / p$", "$a_p / (g \\tan\\alpha)$"
     y = np.asarray(cols[yk], dtype=float)
     outcome = np.array([str(o) for o in cols["outcome"]], dtype=object)
     xs, ys = np.unique(x), np.unique(y)
@@ -324,8 +453,7 @@ def spectrum_map(
     from matplotlib.colors import BoundaryNorm, ListedColormap
 
     colours = [_OUTCOME_COLOURS.get(k, "C%d" % i) for i, k in enumerate(kinds)]
-    fig = Figure(figsize=figsize, layout="constrained")
-    ax = fig.subplots()
+    ax = _axes(ax, fig, figsize)
 
     def edges(v):
         if len(v) == 1:
@@ -342,10 +470,17 @@ def spectrum_map(
         shading="flat",
         gid="outcome_cells",
     )
-    # minimum overturning curve
+    # minimum overturning curve: the bisected values where there are some
     cx, cy = [], []
-    if bnd is not None and "kind" in bnd and not record:
-        for xv, kind, v in zip(bnd["omega_p_over_p"], bnd["kind"], bnd["min_overturning_over_g_tan_alpha"]):
+    if bnd is not None and "kind" in bnd:
+        if record:
+            bx, by = np.zeros(len(bnd["kind"])), bnd["min_overturning"]
+        elif units is not None:
+            bx = bnd[_unit_column("f_p" if units[1] == "Hz" else "omega_p", units[1])]
+            by = bnd[_unit_column("min_overturning", units[0])]
+        else:
+            bx, by = bnd["omega_p_over_p"], bnd["min_overturning_over_g_tan_alpha"]
+        for xv, kind, v in zip(bx, bnd["kind"], by):
             if str(kind) != "none" and np.isfinite(float(v)):
                 cx.append(float(xv))
                 cy.append(float(v))
@@ -361,26 +496,204 @@ def spectrum_map(
         handles.append(Line2D([], [], color="k", lw=1.6, marker=".", label="minimum overturning"))
     elif cy:
         ax.axhline(cy[0], color="k", lw=1.6, label="minimum overturning", gid="min_overturning")
-        handles.append(Line2D([], [], color="k", lw=1.6, label="minimum overturning"))
+        handles.append(Line2D([], [], color="k", lw=1.6, label=f"minimum overturning ({cy[0]:.4g})"))
     ax.legend(handles=handles, loc="upper left", fontsize="small", framealpha=0.9)
     if record:
         ax.set_xticks([])
-        ax.set_xlabel("record")
-        ax.set_ylabel("scale factor [-]")
-    else:
-        ax.set_xlabel("$\\omega_p / p$")
-        ax.set_ylabel("$a_p / (g \\tan\\alpha)$")
+    ax.set_xlabel(xlabel)
+    ax.set_ylabel(ylabel)
     ax.set_title(title or "overturning spectrum")
-    return fig
+    return ax
+
+
+# --- fragility ---------------------------------------------------------------------------------
+
+_IM_LABELS = {
+    "pga": "PGA [m/s²]",
+    "pga_g": "PGA [g]",
+    "pgv": "PGV [m/s]",
+    "scale": "scale factor [-]",
+    "requested_level": "requested level",
+}
+
+
+def _observed(im, failed, groups=None):
+    # (level, fraction, count): the observed failure fraction at each level; rows of one level
+    # share a group key (the sweep's requested level) or, without one, an IM value to 12 digits
+    im = np.asarray(im, dtype=float)
+    failed = np.asarray(failed, dtype=float)
+    keys = np.asarray(groups if groups is not None else [float(f"{v:.12g}") for v in im])
+    out = []
+    for k in np.unique(keys):
+        sel = keys == k
+        out.append((float(np.mean(im[sel])), float(np.mean(failed[sel])), int(np.count_nonzero(sel))))
+    out.sort()
+    return np.array([o[0] for o in out]), np.array([o[1] for o in out]), np.array([o[2] for o in out])
+
+
+def _fragility_sources(source, im, body):
+    # [(label, fit or None, im values, failed flags, group keys, curve or None, theta, beta)]
+    from . import studies
+
+    items = []
+    if isinstance(source, (str, os.PathLike)):
+        path = os.fspath(source)
+        cols = _read_columns(path, require_rows=True)
+        if {"probability", "lower", "upper", "im"} <= set(cols):  # flexrock fragility --curve
+            for b in dict.fromkeys(str(v) for v in cols["body"]):
+                if body and b != body:
+                    continue
+                sel = np.array([str(v) == b for v in cols["body"]])
+                curve = (cols["im"][sel], cols["probability"][sel], cols["lower"][sel], cols["upper"][sel])
+                items.append((b, None, None, None, None, curve, None, None))
+            return items
+        if {"theta", "beta", "samples"} <= set(cols):  # flexrock fragility -o
+            for k, b in enumerate(str(v) for v in cols["body"]):
+                if not body or b == body:
+                    items.append((b, None, None, None, None, None, float(cols["theta"][k]), float(cols["beta"][k])))
+            return items
+        if "overturned" not in cols:
+            raise ValueError(
+                f"{path}: not a sweep CSV nor a fragility output: expected the columns of "
+                "`flexrock sweep` or `flexrock fragility` (-o or --curve), got " + ", ".join(cols)
+            )
+        for data, fit in studies.fragility_from_sweep(path, im=im, body=body or ""):
+            groups = None
+            if "requested_level" in cols:
+                sel = np.array([str(v) == data.body for v in cols["body"]])
+                keep = np.array([str(o) not in ("stopped", "contact_lost") for o in cols["outcome"]])
+                groups = np.asarray(cols["requested_level"])[sel & keep]
+                if len(groups) != len(data.im):
+                    groups = None
+            items.append((data.body, fit, np.asarray(data.im), np.asarray(data.failed), groups, None, fit.theta, fit.beta))
+        return items
+    if hasattr(source, "theta") and hasattr(source, "beta"):  # a FragilityFit
+        return [("", source, None, None, None, None, source.theta, source.beta)]
+    if isinstance(source, tuple) and len(source) == 2 and hasattr(source[1], "theta"):
+        source = [source]
+    for data, fit in source:  # what fragility_from_sweep returns
+        items.append((data.body, fit, np.asarray(data.im), np.asarray(data.failed), None, None, fit.theta, fit.beta))
+    return items
+
+
+def fragility_curve(
+    source,
+    im_values=None,
+    failed=None,
+    *,
+    im: str = "pga_g",
+    body: str = "",
+    band: bool = True,
+    xlabel: Optional[str] = None,
+    figsize=(6, 4.5),
+    ax=None,
+    fig: Optional[Figure] = None,
+):
+    """A lognormal fragility curve with its confidence band and the observed fractions.
+
+    Draws, for each body, the fitted P(failure | IM = x) = Phi(ln(x/theta)/beta) (``gid``
+    "fit"), its pointwise confidence band (``gid`` "band", the delta method of
+    :func:`flexrock.fragility_band`) and the observed fraction of failures at each level of the
+    sweep (``gid`` "observed", marker area growing with the number of runs).
+
+    Parameters
+    ----------
+    source : str, FragilityFit or list of (FragilityData, FragilityFit)
+        A sweep CSV (fitted as ``flexrock fragility`` fits it; levels grouped by its
+        ``requested_level`` column), the fit CSV (``flexrock fragility -o``: the curve only) or
+        the curve CSV (``--curve``: curve and band) of ``flexrock fragility``, what
+        :func:`flexrock.fragility_from_sweep` returns, or one fit.
+    im_values, failed : array_like, optional
+        With a bare fit: the observations to draw (IM in the fit's units, 0/1 failures).
+    im : str
+        The intensity measure of a sweep CSV: "pga" [m/s^2], "pga_g" [g], "pgv" [m/s],
+        "scale" [-] or "requested_level" (the manifest's levels).
+    body : str
+        Only this body of a sweep or fragility CSV.
+    band : bool
+        Draw the confidence band.
+    xlabel : str, optional
+        Default: the IM and its unit.
+    figsize : (float, float)
+        [in], for a new figure.
+    ax : matplotlib.axes.Axes, optional
+        Where to draw; otherwise a new Axes on ``fig`` or on a new pyplot figure.
+    fig : matplotlib.figure.Figure, optional
+
+    Returns
+    -------
+    matplotlib.axes.Axes
+    """
+    from . import studies
+
+    items = _fragility_sources(source, im, body)
+    if not items:
+        raise ValueError(f"no fragility to draw{' for body ' + repr(body) if body else ''}")
+    ax = _axes(ax, fig, figsize)
+    for k, (label, fit, xs, ys, groups, curve, theta, beta) in enumerate(items):
+        colour = f"C{k}"
+        if xs is None and im_values is not None:
+            xs, ys = np.asarray(im_values, dtype=float), np.asarray(failed, dtype=float)
+        if curve is not None:
+            x, p, lo, hi = (np.asarray(c, dtype=float) for c in curve)
+        else:
+            top = max(theta * math.exp(3.0 * beta), float(np.max(xs)) if xs is not None and len(xs) else 0.0)
+            x = np.linspace(0.0, top, 200)[1:]
+            if fit is not None:
+                p = studies.fragility_probability(fit, x)
+            else:  # a fit CSV: theta and beta only
+                from statistics import NormalDist
+
+                nd = NormalDist()
+                p = np.array([nd.cdf(math.log(v / theta) / beta) for v in x])
+            lo = hi = None
+            if fit is not None and band:
+                lo, hi = studies.fragility_band(fit, x)
+        name = f"{label}: " if label and len(items) > 1 else ""
+        ax.plot(x, p, color=colour, lw=1.5, gid="fit",
+                label=f"{name}fit, θ = {theta:.3g}, β = {beta:.3g}" if theta is not None else f"{name}fit")
+        if band and lo is not None:
+            conf = getattr(fit, "confidence", None)
+            ax.fill_between(x, lo, hi, color=colour, alpha=0.2, lw=0, gid="band",
+                            label=f"{name}{100 * conf:.0f}% band" if conf else f"{name}band")
+        if xs is not None and len(xs):
+            lx, frac, n = _observed(xs, ys, groups)
+            ax.scatter(lx, frac, s=12 + 60 * n / max(n.max(), 1), color=colour, edgecolor="k", lw=0.5,
+                       zorder=3, gid="observed", label=f"{name}observed fraction")
+    ax.set_ylim(-0.02, 1.02)
+    ax.set_xlim(left=0.0)
+    ax.set_xlabel(xlabel or _IM_LABELS.get(im, im))
+    ax.set_ylabel("probability of failure [-]")
+    ax.legend(loc="lower right", fontsize="small")
+    ax.set_title("fragility")
+    return ax
 
 
 # --- files -------------------------------------------------------------------------------------
 
+_FORMATS = (".png", ".svg", ".pdf")
 
-def save(fig: Figure, path: str, *, dpi: int = 110) -> str:
-    """Writes ``fig`` as PNG or SVG, chosen by the extension of ``path``."""
+
+def save(fig, path: str, *, dpi: int = 110) -> str:
+    """Writes a figure as PNG, SVG or PDF, chosen by the extension of ``path``.
+
+    Parameters
+    ----------
+    fig : matplotlib.figure.Figure or matplotlib.axes.Axes
+        What a plotting function returned (an Axes is saved with its figure).
+    path : str or os.PathLike
+        Ends in .png, .svg or .pdf.
+    dpi : int
+        [dots per inch] of a PNG.
+
+    Returns
+    -------
+    str
+        ``path``.
+    """
     ext = os.path.splitext(os.fspath(path))[1].lower()
-    if ext not in (".png", ".svg"):
-        raise ValueError(f"{path}: expected a .png or .svg file name, got {ext or 'no extension'!r}")
-    fig.savefig(os.fspath(path), dpi=dpi, format=ext[1:])
+    if ext not in _FORMATS:
+        raise ValueError(f"{path}: expected a .png, .svg or .pdf file name, got {ext or 'no extension'!r}")
+    figure = fig if isinstance(fig, Figure) else fig.get_figure()
+    figure.savefig(os.fspath(path), dpi=dpi, format=ext[1:])
     return os.fspath(path)

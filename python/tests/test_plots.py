@@ -6,6 +6,7 @@ import subprocess
 import numpy as np
 import pytest
 from matplotlib.collections import QuadMesh
+from matplotlib.figure import Figure
 
 import flexrock as fr
 from flexrock import plots
@@ -26,7 +27,7 @@ def _gid(artists, gid):
 def test_response_figure_from_the_cli_outputs(statue):
     cols, events, summary = plots.load_run(str(statue))
     assert events is not None and summary is not None
-    fig = plots.response_figure(str(statue))
+    fig = plots.response_figure(str(statue), fig=Figure())
     assert len(fig.axes) == 6
     acc, th, q, r, f, e = fig.axes
     # one shaded span per stretch of rocking, on each edge it rocked on
@@ -52,15 +53,14 @@ def test_response_figure_from_a_python_result_with_modes_and_vertical():
     t = np.arange(0.0, 3.0, 0.01)
     m = fr.motion_from_array(3.0 * np.sin(9.0 * t), dt=0.01, vertical=1.0 * np.sin(20.0 * t))
     r = fr.simulate(p, m)
-    fig = plots.response_figure(r)
+    fig = plots.response_figure(r, fig=Figure())
     assert len(fig.axes) == 6
     assert len(fig.axes[0].lines) == 2  # horizontal and vertical
     assert len(fig.axes[2].lines) == 2  # q1, q2
 
 
 def test_moment_rotation_loop(statue):
-    fig = plots.moment_rotation_loop(str(statue))
-    (ax,) = fig.axes
+    ax = plots.moment_rotation_loop(str(statue), fig=Figure())
     loop = ax.lines[0]
     cols, _, summary = plots.load_run(str(statue))
     np.testing.assert_array_equal(loop.get_xdata(), cols["theta_rad"])
@@ -90,8 +90,7 @@ def _toy_spectrum(path):
 def test_spectrum_map_cells_and_minimum_overturning_curve(tmp_path):
     f = tmp_path / "toy.csv"
     _toy_spectrum(f)
-    fig = plots.spectrum_map(str(f))
-    (ax,) = fig.axes
+    ax = plots.spectrum_map(str(f), fig=Figure())
     (mesh,) = [c for c in ax.collections if isinstance(c, QuadMesh)]
     assert mesh.get_array().size == 6
     (curve,) = _gid(ax.lines, "min_overturning")
@@ -107,10 +106,10 @@ def test_spectrum_map_cells_and_minimum_overturning_curve(tmp_path):
 @pytest.mark.parametrize("ext,magic", [("png", b"\x89PNG"), ("svg", b"<?xml")])
 def test_save_png_and_svg(statue, tmp_path, ext, magic):
     out = tmp_path / f"fig.{ext}"
-    plots.save(plots.moment_rotation_loop(str(statue)), str(out))
+    plots.save(plots.moment_rotation_loop(str(statue), fig=Figure()), str(out))
     assert out.read_bytes().startswith(magic)
-    with pytest.raises(ValueError, match=r"\.png or \.svg"):
-        plots.save(plots.moment_rotation_loop(str(statue)), str(tmp_path / "fig.pdf"))
+    with pytest.raises(ValueError, match=r"\.png, \.svg or \.pdf"):
+        plots.save(plots.moment_rotation_loop(str(statue), fig=Figure()), str(tmp_path / "fig.jpg"))
 
 
 def test_flexrock_plot_command(cli, statue, tmp_path):
@@ -159,7 +158,7 @@ def test_response_figure_from_a_lone_csv_marks_pivot_changes(statue, tmp_path):
     shutil.copy(statue, lone)
     cols, events, summary = plots.load_run(str(lone))
     assert events is None and summary is None
-    fig = plots.response_figure(str(lone))
+    fig = plots.response_figure(str(lone), fig=Figure())
     (marks,) = _gid(fig.axes[1].lines, "impacts")
     phase = cols["phase"]
     switches = np.count_nonzero((phase[1:] != phase[:-1]) & (phase[1:] > 0) & (phase[:-1] > 0))

@@ -5,6 +5,7 @@ import math
 
 import numpy as np
 import pytest
+from matplotlib.figure import Figure
 
 import flexrock as fr
 
@@ -40,10 +41,10 @@ def test_spectrum_table_has_the_cli_columns_and_the_map_draws_it(block, tmp_path
     assert boundary is not None
     from flexrock import plots
 
-    fig = plots.spectrum_map(csv)
-    assert len(fig.axes) == 1
-    fig2 = plots.spectrum_map(r, g=block.g)
-    assert len(fig2.axes) == 1
+    ax = plots.spectrum_map(csv, fig=Figure())
+    assert ax.figure.axes == [ax]
+    ax2 = plots.spectrum_map(r, g=block.g, fig=Figure())
+    assert ax2.figure.axes == [ax2]
 
 
 def test_threads_do_not_change_a_spectrum(block):
@@ -100,8 +101,8 @@ def test_spectrum_file_from_python_equals_flexrock_spectrum(cli, source_dir, tmp
 
     from flexrock import plots
 
-    fig = plots.spectrum_map(str(cells))
-    (curve,) = [ln for ln in fig.axes[0].lines if ln.get_gid() == "min_overturning"]
+    ax = plots.spectrum_map(str(cells), fig=Figure())
+    (curve,) = [ln for ln in ax.lines if ln.get_gid() == "min_overturning"]
     found = [k != "none" for k in plots._read_columns(str(tmp_path / "block.boundary.csv"))["kind"]]
     assert len(curve.get_xdata()) == sum(found) > 0
     p = subprocess.run([str(cli), "plot", str(cells), "-o", str(tmp_path / "map.svg")],
