@@ -65,7 +65,7 @@ from ._flexrock import (  # noqa: F401  (re-exported API)
     uniform_cantilever,
 )
 
-__all__ = [name for name in dir() if not name.startswith("_")] + [
+__all__ = [name for name in dir() if not name.startswith("_") and name not in ("Optional", "Sequence", "Union", "annotations")] + [
     "Result",
     "motion_from_array",
     "motion_from_file",
@@ -111,8 +111,28 @@ def motion_from_array(
     units: str = "m/s^2",
     scale: float = 1.0,
 ) -> GroundMotion:
-    """A sampled ground motion from numpy arrays: either every ``dt`` [s] from t = 0, or at the
-    given ``time`` [s]. Values are in ``units`` ("g", "m/s^2", "cm/s^2") times ``scale``."""
+    """A sampled ground motion from numpy arrays.
+
+    Parameters
+    ----------
+    horizontal : array_like
+        Horizontal base accelerations, in ``units``.
+    dt : float, optional
+        [s] sample spacing from t = 0; or give ``time``.
+    time : array_like, optional
+        [s] sample times, increasing.
+    vertical : array_like, optional
+        Vertical base accelerations (upward positive), in ``units``.
+    units : {"m/s^2", "g", "cm/s^2"}
+        Units of the values, as a case file's ``units``.
+    scale : float
+        [-] factor on the values.
+
+    Returns
+    -------
+    GroundMotion
+        Accelerations [m/s^2], linear between samples.
+    """
     _, factor = _unit(units)
     f = factor * scale
     ax = (np.asarray(horizontal, dtype=float) * f).tolist()
@@ -130,9 +150,23 @@ def motion_from_array(
 def read_record(
     path: str, format: Optional[str] = None, *, dt: Optional[float] = None, units: Optional[str] = None
 ) -> Record:
-    """Reads a record file as a case file's ``[excitation.horizontal]`` would: ``format`` is
-    "at2" (default for names ending in .AT2), "single_column" (needs ``dt``) or "time_series";
-    ``units`` is required unless AT2 (the file states them)."""
+    """Reads a record file as a case file's ``[excitation.horizontal]`` would.
+
+    Parameters
+    ----------
+    path : str
+    format : {"at2", "single_column", "time_series"}, optional
+        Default "at2" for names ending in .AT2.
+    dt : float, optional
+        [s] sample spacing; "single_column" only.
+    units : {"g", "m/s^2", "cm/s^2"}, optional
+        Units of the file's values; required unless AT2 (the file states them).
+
+    Returns
+    -------
+    Record
+        Values in the file's units (``Record.to_motion(scale)`` gives m/s^2).
+    """
     if format is None:
         if str(path).lower().endswith(".at2"):
             format = "at2"
@@ -169,8 +203,22 @@ def motion_from_file(
     vertical_dt: Optional[float] = None,
     vertical_units: Optional[str] = None,
 ) -> GroundMotion:
-    """A ground motion from a record file (see :func:`read_record`), times ``scale``; with an
-    optional vertical record, combined on the horizontal's time grid as the case file does."""
+    """A ground motion from a record file, as a case file's ``[excitation]`` makes it.
+
+    Parameters
+    ----------
+    path, format, dt, units
+        As for :func:`read_record`.
+    scale : float
+        [-] factor on the record (and the vertical one).
+    vertical, vertical_format, vertical_dt, vertical_units : optional
+        A vertical record, combined on the horizontal's time grid.
+
+    Returns
+    -------
+    GroundMotion
+        Accelerations [m/s^2].
+    """
     rec = read_record(path, format, dt=dt, units=units)
     fmt = format or "at2"
     comp = {"type": "record", "file": str(path), "format": fmt, "units": _unit_name(rec), "scale": 1.0}
@@ -320,7 +368,17 @@ __all__ += [
 
 
 def free_rocking(duration: float) -> GroundMotion:
-    """No base motion, lasting ``duration`` [s] (start from an initial tilt or rate)."""
+    """No base motion (free rocking from an initial tilt or rate).
+
+    Parameters
+    ----------
+    duration : float
+        [s]
+
+    Returns
+    -------
+    GroundMotion
+    """
     return _note(GroundMotion.none(duration), {"type": "none"})
 
 
@@ -494,12 +552,29 @@ def simulate(
     body_type: str = "python",
     **option_values,
 ) -> Result:
-    """Simulates ``body`` (a Body or BodyParameters) on a base moving with ``motion``.
+    """Simulates a body on a base moving with a ground motion.
 
-    Solver options come as a :class:`SimulationOptions` or as keywords (``rtol=1e-10``,
-    ``output_dt=0.005``, ``overturn="half_pi"``, ``t_end=...``); without either, the time history
-    is kept every 0.01 s as in a case file. ``name``, ``description`` and ``body_type`` only fill
-    the summary. The GIL is released while the engine runs."""
+    Parameters
+    ----------
+    body : Body or BodyParameters
+    motion : GroundMotion
+        Base accelerations [m/s^2].
+    initial : InitialState, optional
+        theta [rad], theta_dot [rad/s], q [-], q_dot [1/s]; default at rest, statically deformed.
+    options : SimulationOptions, optional
+        Solver options; or give them as keywords.
+    name, description, body_type : str
+        Only fill the summary.
+    **option_values
+        ``rtol=1e-10``, ``output_dt=0.005`` [s], ``overturn="half_pi"``, ``t_end=...`` [s], ...
+        Without options or keywords the time history is kept every 0.01 s, as in a case file.
+
+    Returns
+    -------
+    Result
+        Overturning, loss of contact and a stopped run are its ``status``. The GIL is released
+        while the engine runs.
+    """
     if isinstance(body, BodyParameters):
         body = Body(body)
     initial = initial if initial is not None else InitialState()
@@ -532,8 +607,18 @@ def simulate(
 
 
 def simulate_case(case: Case) -> Result:
-    """Runs a loaded case (:func:`load_case`) without writing anything; the result's
-    :meth:`Result.write` writes what the case's [output] table asks for."""
+    """Runs a loaded case without writing anything.
+
+    Parameters
+    ----------
+    case : Case
+        From :func:`load_case`.
+
+    Returns
+    -------
+    Result
+        :meth:`Result.write` writes what the case's [output] table asks for.
+    """
     body = Body(case.body)
     try:
         raw = _flexrock.simulate(body, case.motion, case.initial, case.options)
@@ -543,9 +628,21 @@ def simulate_case(case: Case) -> Result:
 
 
 def run_case(path: str, output_dir: Optional[str] = "") -> Result:
-    """``flexrock run PATH -o OUTPUT_DIR`` from Python: loads the case, simulates it and writes
-    the same files, byte for byte (``output_dir=None``: write nothing). Errors raise
-    InputError/RuntimeError with the command line's messages."""
+    """``flexrock run PATH -o OUTPUT_DIR`` from Python.
+
+    Parameters
+    ----------
+    path : str
+        A case file (TOML).
+    output_dir : str or None
+        Where the outputs go, the same files byte for byte as the command line's; None writes
+        nothing.
+
+    Returns
+    -------
+    Result
+        Errors raise InputError or RuntimeError with the command line's messages.
+    """
     r = simulate_case(load_case(str(path)))
     if output_dir is not None:
         r.write(str(output_dir))

@@ -68,9 +68,21 @@ def _read_columns(path: str, require_rows: bool = False) -> dict:
 
 
 def load_run(path: str):
-    """A run's outputs from its time-history CSV: (columns, events, summary). The summary JSON
-    "<stem>.summary.json" and the event log (the summary's outputs.events, or
-    "<stem>.events.csv") are read when they lie next to the CSV; otherwise they are None."""
+    """A run's outputs from its time-history CSV.
+
+    Parameters
+    ----------
+    path : str
+        A time-history CSV of ``flexrock run``.
+
+    Returns
+    -------
+    (dict, dict or None, dict or None)
+        Its columns (numpy arrays, SI units as the names say), the event log's columns and the
+        summary: the summary JSON "<stem>.summary.json" and the event log (the summary's
+        outputs.events, or "<stem>.events.csv") when they lie next to the CSV, else None. A
+        header without rows is a ValueError.
+    """
     cols = _read_columns(path, require_rows=True)
     if "time_s" not in cols or "theta_rad" not in cols:
         raise ValueError(
@@ -340,7 +352,19 @@ _OUTCOME_COLOURS = {
 
 
 def read_spectrum(path: str) -> dict:
-    """The columns of a spectrum CSV as numpy arrays (text columns as object arrays)."""
+    """The columns of a spectrum CSV.
+
+    Parameters
+    ----------
+    path : str
+        A cells CSV of ``flexrock spectrum``.
+
+    Returns
+    -------
+    dict of str to numpy.ndarray
+        Numbers as float arrays, text as object arrays; a file that is not a spectrum, or a
+        header without rows, is a ValueError.
+    """
     cols = _read_columns(path, require_rows=True)
     if "outcome" not in cols or "a_p_over_g_tan_alpha" not in cols:
         raise ValueError(

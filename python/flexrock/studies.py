@@ -77,7 +77,18 @@ _FREQ_UNITS = {"rad/s": 1.0, "Hz": 2.0 * 3.141592653589793}
 
 
 def unit_suffix(unit: str) -> str:
-    """The column-name suffix of a unit: "g" -> "g", "m/s^2" -> "m_per_s2", "Hz" -> "hz", ..."""
+    """The column-name suffix of a unit.
+
+    Parameters
+    ----------
+    unit : str
+        "g", "m/s^2", "cm/s^2", "rad/s" or "Hz".
+
+    Returns
+    -------
+    str
+        "g", "m_per_s2", "cm_per_s2", "rad_per_s" or "hz".
+    """
     return {"m/s^2": "m_per_s2", "cm/s^2": "cm_per_s2", "rad/s": "rad_per_s", "Hz": "hz"}.get(unit, unit)
 
 
@@ -305,9 +316,27 @@ def write_spectrum(
     g: float = 9.80665,
     boundary_path: Optional[str] = None,
 ) -> Tuple[str, Optional[str]]:
-    """Writes the spectrum CSV (and, with a bisection, the minimum-overturning CSV, by default
-    "<stem>.boundary.csv", a ".spectrum" suffix of the stem dropped) as ``flexrock spectrum``
-    lays them out; returns the paths."""
+    """Writes the spectrum CSVs as ``flexrock spectrum`` lays them out.
+
+    Parameters
+    ----------
+    result : SpectrumResult
+    path : str
+        The cells CSV.
+    normalized : bool
+        Whether the grid was normalised (the units of the boundary's ``frequency`` and
+        ``min_overturning``).
+    g : float
+        [m/s^2] gravity for the normalised columns.
+    boundary_path : str, optional
+        The minimum-overturning CSV (with a bisection); default "<stem>.boundary.csv", a
+        ".spectrum" suffix of the stem dropped.
+
+    Returns
+    -------
+    (str, str or None)
+        The paths written.
+    """
     path = os.fspath(path)
 
     def put(p, text):
