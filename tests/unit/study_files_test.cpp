@@ -110,8 +110,8 @@ TEST_F(StudyFiles, SpectrumFileWithInlineBodyAndPhysicalAxes) {
 
 TEST_F(StudyFiles, JournalResumesDropsATornLineAndRejectsAForeignOne) {
   const std::string p = (dir_ / "out.csv.partial").string();
-  const std::string row5 = "5" + std::string(21, ',');
-  const std::string row2 = "2" + std::string(21, ',');
+  const std::string row5 = "5" + std::string(23, ',');
+  const std::string row2 = "2" + std::string(23, ',');
   {
     SweepJournal j(p, 42, 10);
     j.append(5, row5);
@@ -124,7 +124,7 @@ TEST_F(StudyFiles, JournalResumesDropsATornLineAndRejectsAForeignOne) {
     ASSERT_EQ(j.finished().size(), 2u);
     EXPECT_EQ(j.finished().at(5), row5);
     EXPECT_EQ(read(p), journal_header(42, 10) + "\n" + row5 + "\n" + row2 + "\n");
-    j.append(7, "7" + std::string(21, ','));
+    j.append(7, "7" + std::string(23, ','));
   }
   EXPECT_EQ(SweepJournal(p, 42, 10).finished().size(), 3u);
   test::expect_input_error([&] { SweepJournal(p, 43, 10); }, {"another manifest", "delete it"});
@@ -138,12 +138,15 @@ TEST_F(StudyFiles, FragilityDataFromASweepCsv) {
   for (std::size_t i = 0; i < sweep_columns().size(); ++i)
     csv += (i ? "," : "") + sweep_columns()[i];
   csv += "\n";
-  // index body record scale pga pga_g pgv duration outcome overturned edge t_over theta
-  // theta/alpha impacts t_up uplift impulse energy friction status message
-  csv += "0,a,r,1,1.5,0.15,0.2,10,rocking,0,0,-1,0.1,0.5,3,1,0,0,2.5,0.1,completed,\n";
-  csv += "1,a,r,2,3.0,0.3,0.4,10,overturned_after_impacts,1,1,4,1,1,3,1,0,0,1.0,0.1,overturned,\n";
-  csv += "2,a,r,3,4.5,0.45,0.6,10,stopped,0,0,-1,0,0,0,-1,0,0,0,0,stopped,step collapse\n";
-  csv += "3,b,r,1,1.5,0.15,0.2,10,no_uplift,0,0,-1,0,0,0,-1,0,0,0,0.1,completed,\n";
+  // index body record requested_level requested_units scale pga pga_g pgv duration outcome
+  // overturned edge t_over theta theta/alpha impacts t_up uplift impulse energy friction status
+  // message
+  csv += "0,a,r,1,-,1,1.5,0.15,0.2,10,rocking,0,0,-1,0.1,0.5,3,1,0,0,2.5,0.1,completed,\n";
+  csv +=
+      "1,a,r,2,-,2,3.0,0.3,0.4,10,overturned_after_impacts,1,1,4,1,1,3,1,0,0,1.0,0.1,"
+      "overturned,\n";
+  csv += "2,a,r,3,-,3,4.5,0.45,0.6,10,stopped,0,0,-1,0,0,0,-1,0,0,0,0,stopped,step collapse\n";
+  csv += "3,b,r,1,-,1,1.5,0.15,0.2,10,no_uplift,0,0,-1,0,0,0,-1,0,0,0,0.1,completed,\n";
   const std::string p = write("s.csv", csv);
   const CsvTable t = read_csv_table(p);
   FragilityQuery q;
@@ -161,6 +164,9 @@ TEST_F(StudyFiles, FragilityDataFromASweepCsv) {
   ASSERT_EQ(d.size(), 1u);
   EXPECT_EQ(d[0].failed, (std::vector<int>{1, 1}));
   EXPECT_EQ(d[0].im, (std::vector<double>{0.2, 0.4}));
+  q.im = "requested_level";
+  q.outcome = "overturned";
+  EXPECT_EQ(fragility_data(t, q)[0].im, (std::vector<double>{1.0, 2.0}));
   q.im = "sa";
   test::expect_input_error([&] { fragility_data(t, q); }, {"'sa'", "pga, pga_g, pgv, scale"});
   const std::string bad = write("bad.csv", "index,body\n1,a,b\n");
