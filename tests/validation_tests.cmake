@@ -6,6 +6,9 @@ flexrock_add_test(flexrock_housner_closed_form_tests SOURCES validation/housner_
 flexrock_add_test(flexrock_similarity_tests SOURCES validation/similarity_test.cpp LABEL validation)
 flexrock_add_test(flexrock_flexible_uplift_tests SOURCES validation/flexible_uplift_test.cpp
                   LABEL validation)
+# every run ends with an answer: the flexible-body grid, chatter convergence, the toppling block
+flexrock_add_test(flexrock_contact_modes_tests SOURCES validation/contact_modes_test.cpp
+                  LIBS flexrock::study flexrock::io LABEL validation)
 # the independent compliant-foundation model (Python, scipy) against closed forms; ~20 s
 set(FLEXROCK_VALIDATION_PYTHON /usr/bin/python3 CACHE FILEPATH
     "Python with numpy and scipy (Debian python3-numpy, python3-scipy)")

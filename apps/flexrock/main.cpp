@@ -89,9 +89,6 @@ void print_summary(const io::Case& c, const Body& body, const SimulationResult& 
       fmt::print("outcome: OVERTURNED about edge {} at t = {:.4f} s\n", x.overturn_edge,
                  x.overturn_time);
       break;
-    case Status::kContactLost:
-      fmt::print("outcome: CONTACT LOST at t = {:.4f} s: {}\n", r.t_end, r.message);
-      break;
     case Status::kStopped:
       fmt::print("outcome: STOPPED at t = {:.4f} s: {}\n", r.t_end, r.message);
       break;
@@ -111,7 +108,14 @@ void print_summary(const io::Case& c, const Body& body, const SimulationResult& 
   } else {
     fmt::print("overturning: none\n");
   }
-  fmt::print("impacts: {}\n", x.impacts);
+  fmt::print("impacts: {} (chatter cut-offs {})\n", x.impacts, x.chatter_cutoffs);
+  if (x.lift_offs > 0) {
+    fmt::print(
+        "flight: {} lift-off(s), {:.4g} s in the air, up to {:.4g} mm; offset max {:.4g} mm, "
+        "final {:.4g} mm\n",
+        x.lift_offs, x.flight_time, 1e3 * x.max_flight_height, 1e3 * x.max_offset,
+        1e3 * r.final_offset);
+  }
   fmt::print("energy lost: {:.6g} J (impacts {:.6g} J, chatter {:.6g} J, damping {:.6g} J)\n",
              e.impact_loss + e.chatter_loss + e.damping_loss, e.impact_loss, e.chatter_loss,
              e.damping_loss);
@@ -129,7 +133,13 @@ void print_summary(const io::Case& c, const Body& body, const SimulationResult& 
         "slide, which this model does not follow\n");
   }
   if (r.chatter_cut_off) {
-    fmt::print("warning: the chatter criterion ended rocking (impacts too close together)\n");
+    fmt::print("note: the chatter criterion ended rocking {} time(s), removing {:.3g} J\n",
+               x.chatter_cutoffs, e.chatter_loss);
+  }
+  if (r.pivot_tension) {
+    fmt::print(
+        "warning: the pivot force vanished where the body could only leave its sticking pivot "
+        "by sliding; the floor pulled on the pivot (events: pivot_tension)\n");
   }
   if (r.impact_gained_energy) {
     fmt::print("warning: an impact gained energy (check restitution_factor)\n");

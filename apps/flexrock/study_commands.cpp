@@ -329,7 +329,7 @@ int StudyCommands::Impl::run_spectrum(const Processes& procs) {
       for (study::Outcome o :
            {study::Outcome::kNoUplift, study::Outcome::kRocking,
             study::Outcome::kOverturnedAfterImpacts, study::Outcome::kOverturnedWithoutImpact,
-            study::Outcome::kContactLost, study::Outcome::kStopped}) {
+            study::Outcome::kStopped}) {
         if (fields.at(7) == study::to_string(o)) res.cells[i].run.outcome = o;
       }
     }
@@ -490,10 +490,8 @@ int StudyCommands::Impl::run_sweep(const Processes& procs) {
   std::size_t over = 0, stopped = 0;
   for (const auto& [i, line] : journal->finished()) {
     if (line.find(",overturned_") != std::string::npos) ++over;
-    // the outcome column, followed by overturned = 0 (the status column may say contact_lost
-    // for a body that left the floor past its overturning angle: that one is overturned)
-    if (line.find(",stopped,0,") != std::string::npos ||
-        line.find(",contact_lost,0,") != std::string::npos) {
+    // the outcome column, followed by overturned = 0
+    if (line.find(",stopped,0,") != std::string::npos) {
       ++stopped;
     }
   }

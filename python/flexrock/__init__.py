@@ -427,7 +427,7 @@ class Result:
 
     @property
     def status(self) -> str:
-        """"completed", "overturned", "contact_lost" or "stopped"."""
+        """"completed", "overturned" or "stopped"."""
         return self.raw.status.name
 
     @property

@@ -346,7 +346,6 @@ _OUTCOME_COLOURS = {
     "rocking": "#9ecae1",
     "overturned_without_impact": "#d62728",  # mode 2: on the first uplift
     "overturned_after_impacts": "#ff9f4a",  # mode 1: after one or more impacts
-    "contact_lost": "#8c564b",
     "stopped": "#7f7f7f",
 }
 

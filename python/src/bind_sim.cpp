@@ -38,11 +38,11 @@ void bind_sim(py::module_& m) {
   py::enum_<Phase>(m, "Phase")
       .value("full_contact", Phase::kFullContact)
       .value("rocking_edge1", Phase::kRockingEdge1)
-      .value("rocking_edge2", Phase::kRockingEdge2);
+      .value("rocking_edge2", Phase::kRockingEdge2)
+      .value("flight", Phase::kFlight);
   py::enum_<Status>(m, "Status")
       .value("completed", Status::kCompleted)
       .value("overturned", Status::kOverturned)
-      .value("contact_lost", Status::kContactLost)
       .value("stopped", Status::kStopped);
   py::enum_<EventKind>(m, "EventKind")
       .value("uplift", EventKind::kUplift)
@@ -51,7 +51,10 @@ void bind_sim(py::module_& m) {
       .value("chatter_cutoff", EventKind::kChatterCutoff)
       .value("peak", EventKind::kPeak)
       .value("overturn", EventKind::kOverturn)
-      .value("contact_lost", EventKind::kContactLost)
+      .value("lift_off", EventKind::kLiftOff)
+      .value("landing", EventKind::kLanding)
+      .value("tensile_landing", EventKind::kTensileLanding)
+      .value("pivot_tension", EventKind::kPivotTension)
       .value("friction_exceeded", EventKind::kFrictionExceeded)
       .value("impact_gained_energy", EventKind::kImpactGainedEnergy)
       .value("stopped", EventKind::kStopped);
@@ -96,6 +99,7 @@ void bind_sim(py::module_& m) {
       .def_readonly("impulse_x", &Event::impulse_x)
       .def_readonly("impulse_y", &Event::impulse_y)
       .def_readonly("friction_demand", &Event::friction_demand)
+      .def_readonly("offset", &Event::offset, "[m] horizontal offset of the base centre")
       .def("__repr__", [](const Event& e) {
         return "<Event " + std::string(to_string(e.kind)) + " t=" + std::to_string(e.time) + ">";
       });
@@ -121,7 +125,9 @@ void bind_sim(py::module_& m) {
       .def_property_readonly("input_work", [](const History& h) { return column(h.input_work); })
       .def_property_readonly("damping_loss",
                              [](const History& h) { return column(h.damping_loss); })
-      .def_property_readonly("impact_loss", [](const History& h) { return column(h.impact_loss); });
+      .def_property_readonly("impact_loss", [](const History& h) { return column(h.impact_loss); })
+      .def_property_readonly("offset", [](const History& h) { return column(h.offset); })
+      .def_property_readonly("lift", [](const History& h) { return column(h.lift); });
 
   py::class_<Extremes>(m, "Extremes")
       .def_readonly("max_theta_edge1", &Extremes::max_theta_edge1)
@@ -137,7 +143,12 @@ void bind_sim(py::module_& m) {
       .def_readonly("first_uplift_time", &Extremes::first_uplift_time)
       .def_readonly("first_uplift_edge", &Extremes::first_uplift_edge)
       .def_readonly("overturn_time", &Extremes::overturn_time)
-      .def_readonly("overturn_edge", &Extremes::overturn_edge);
+      .def_readonly("overturn_edge", &Extremes::overturn_edge)
+      .def_readonly("chatter_cutoffs", &Extremes::chatter_cutoffs)
+      .def_readonly("lift_offs", &Extremes::lift_offs)
+      .def_readonly("flight_time", &Extremes::flight_time, "[s]")
+      .def_readonly("max_flight_height", &Extremes::max_flight_height, "[m]")
+      .def_readonly("max_offset", &Extremes::max_offset, "[m]");
 
   py::class_<EnergyBalance>(m, "EnergyBalance")
       .def_readonly("input_work", &EnergyBalance::input_work)
@@ -161,6 +172,8 @@ void bind_sim(py::module_& m) {
       .def_readonly("friction_exceeded", &SimulationResult::friction_exceeded)
       .def_readonly("chatter_cut_off", &SimulationResult::chatter_cut_off)
       .def_readonly("impact_gained_energy", &SimulationResult::impact_gained_energy)
+      .def_readonly("pivot_tension", &SimulationResult::pivot_tension)
+      .def_readonly("final_offset", &SimulationResult::final_offset, "[m]")
       .def_readonly("history", &SimulationResult::history)
       .def_readonly("extremes", &SimulationResult::extremes)
       .def_readonly("energy", &SimulationResult::energy)

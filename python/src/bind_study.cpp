@@ -40,7 +40,6 @@ void bind_study(py::module_& m) {
       .value("rocking", Outcome::kRocking)
       .value("overturned_after_impacts", Outcome::kOverturnedAfterImpacts)
       .value("overturned_without_impact", Outcome::kOverturnedWithoutImpact)
-      .value("contact_lost", Outcome::kContactLost)
       .value("stopped", Outcome::kStopped);
   m.def("overturned", &overturned, py::arg("outcome"),
         R"doc(Whether an outcome is one of the two overturning classes.

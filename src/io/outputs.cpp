@@ -200,9 +200,10 @@ std::vector<std::string> time_history_columns(int modes) {
   for (int i = 1; i <= modes; ++i) {
     c.push_back(std::string("q").append(std::to_string(i)).append("_dot_per_s"));
   }
-  for (const char* s : {"base_acc_x_m_per_s2", "base_acc_y_m_per_s2", "reaction_x_N",
-                        "reaction_y_N", "resultant_m", "friction_demand", "kinetic_J",
-                        "potential_J", "input_work_J", "damping_loss_J", "impact_loss_J"}) {
+  for (const char* s :
+       {"base_acc_x_m_per_s2", "base_acc_y_m_per_s2", "reaction_x_N", "reaction_y_N", "resultant_m",
+        "friction_demand", "kinetic_J", "potential_J", "input_work_J", "damping_loss_J",
+        "impact_loss_J", "offset_m", "lift_m"}) {
     c.push_back(s);
   }
   return c;
@@ -214,16 +215,18 @@ std::vector<std::vector<double>> time_history_values(const SimulationResult& r, 
   const std::size_t rows = h.size();
   const auto modes = static_cast<std::size_t>(n);
   std::vector<std::vector<double>> cols;
-  cols.reserve(5 + 2 * modes + 11);
+  cols.reserve(5 + 2 * modes + 13);
   cols.push_back(h.time);
   cols.emplace_back(h.phase.begin(), h.phase.end());
   cols.push_back(h.theta);
   cols.push_back(h.theta_dot);
-  // the lift of the raised edge: the base width swung through |theta| while rocking
+  // the height of the raised edge: the base width swung through |theta|, plus the lower
+  // edge's height in flight
   const double width = body.params().b1 + body.params().b2;
   std::vector<double> uplift(rows, 0.0);
   for (std::size_t k = 0; k < rows; ++k) {
-    if (h.phase[k] != 0) uplift[k] = width * std::sin(std::abs(h.theta[k]));
+    const double lift = k < h.lift.size() ? h.lift[k] : 0.0;
+    if (h.phase[k] != 0) uplift[k] = lift + width * std::sin(std::abs(h.theta[k]));
   }
   cols.push_back(std::move(uplift));
   for (const std::vector<double>* v : {&h.q, &h.q_dot}) {
@@ -233,9 +236,10 @@ std::vector<std::vector<double>> time_history_values(const SimulationResult& r, 
       cols.push_back(std::move(c));
     }
   }
-  for (const std::vector<double>* col : {&h.base_acc_x, &h.base_acc_y, &h.reaction_x, &h.reaction_y,
-                                         &h.resultant, &h.friction_demand, &h.kinetic, &h.potential,
-                                         &h.input_work, &h.damping_loss, &h.impact_loss}) {
+  for (const std::vector<double>* col :
+       {&h.base_acc_x, &h.base_acc_y, &h.reaction_x, &h.reaction_y, &h.resultant,
+        &h.friction_demand, &h.kinetic, &h.potential, &h.input_work, &h.damping_loss,
+        &h.impact_loss, &h.offset, &h.lift}) {
     std::vector<double> c(*col);
     c.resize(rows, std::nan(""));  // a column the engine did not fill is not a number
     cols.push_back(std::move(c));
@@ -325,7 +329,10 @@ std::string summary_json(const Case& c, const Body& body, const SimulationResult
                   {"first_uplift_edge", x.first_uplift_edge},
                   {"overturned", r.status == Status::kOverturned},
                   {"overturn_time_s", jtime(x.overturn_time)},
-                  {"overturn_edge", x.overturn_edge}};
+                  {"overturn_edge", x.overturn_edge},
+                  {"lift_offs", x.lift_offs},
+                  {"flight_time_s", x.flight_time},
+                  {"final_offset_m", r.final_offset}};
   j["peaks"] = {{"max_theta_rad", std::max(x.max_theta_edge1, x.max_theta_edge2)},
                 {"max_theta_edge1_rad", x.max_theta_edge1},
                 {"max_theta_edge2_rad", x.max_theta_edge2},
@@ -336,7 +343,10 @@ std::string summary_json(const Case& c, const Body& body, const SimulationResult
                 {"max_friction_demand", x.max_friction_demand},
                 {"impacts", x.impacts},
                 {"max_impulse_N_s", x.max_impulse},
-                {"max_impact_energy_loss_J", x.max_impact_energy_loss}};
+                {"max_impact_energy_loss_J", x.max_impact_energy_loss},
+                {"max_offset_m", x.max_offset},
+                {"max_flight_height_m", x.max_flight_height},
+                {"chatter_cutoffs", x.chatter_cutoffs}};
   j["energy"] = {{"input_work_J", e.input_work},
                  {"kinetic_change_J", e.kinetic_change},
                  {"potential_change_J", e.potential_change},
@@ -349,7 +359,8 @@ std::string summary_json(const Case& c, const Body& body, const SimulationResult
                  {"relative_residual", e.scale > 0.0 ? e.residual / e.scale : 0.0}};
   j["warnings"] = {{"friction_exceeded", r.friction_exceeded},
                    {"chatter_cut_off", r.chatter_cut_off},
-                   {"impact_gained_energy", r.impact_gained_energy}};
+                   {"impact_gained_energy", r.impact_gained_energy},
+                   {"pivot_tension", r.pivot_tension}};
   const SimulationOptions& o = c.options;
   j["solver"] = {
       {"rtol", o.rtol},

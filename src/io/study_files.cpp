@@ -675,9 +675,9 @@ std::vector<FragilityData> fragility_data(const CsvTable& t, const FragilityQuer
       out.push_back({body, {}, {}, 0});
       it = out.end() - 1;
     }
-    // not classified (a body that left the floor past its overturning angle is classified)
+    // not classified: the run could not go on
     const std::string& outcome = t.rows[r][cs];
-    if (outcome == "stopped" || outcome == "contact_lost") {
+    if (outcome == "stopped") {
       ++it->excluded;
       continue;
     }

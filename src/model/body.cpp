@@ -115,6 +115,19 @@ Body::Body(BodyParameters params) : p_(std::move(params)) {
 
   const double gh = p_.gravity / p_.height;
   mu_inv_ = n_ > 0 ? MatrixX(p_.mu.llt().solve(MatrixX::Identity(n_, n_))) : MatrixX(0, 0);
+  // the modal mass about the deformed c.g., for flight: the modes less their c.g. shift. It is
+  // positive definite unless a mode moves the whole body as a rigid translation
+  if (n_ > 0) {
+    const MatrixX mu_cg = p_.mu - p_.psi_x * p_.psi_x.transpose() - p_.psi_y * p_.psi_y.transpose();
+    const Eigen::LLT<MatrixX> llt(mu_cg);
+    FLEXROCK_THROW_UNLESS(llt.info() == Eigen::Success,
+                          "body: mu - psi_x psi_x^T - psi_y psi_y^T (the modal mass about the "
+                          "centre of mass) is not positive definite: a mode moves the body as a "
+                          "rigid translation; give modes that deform it");
+    mu_cg_inv_ = llt.solve(MatrixX::Identity(n_, n_));
+  } else {
+    mu_cg_inv_ = MatrixX(0, 0);
+  }
   stiffness_ = gh * p_.kappa;
 
   // pinned-base modes: K phi = omega^2 mu phi, phi mass-normalised

@@ -4,8 +4,9 @@
 #include <cmath>
 #include <string>
 
+#include "automaton.hpp"
 #include "flexrock/core/error.hpp"
-#include "simulator.hpp"
+#include "simulator_instances.hpp"
 
 namespace flexrock {
 
@@ -15,8 +16,6 @@ const char* to_string(Status s) {
       return "completed";
     case Status::kOverturned:
       return "overturned";
-    case Status::kContactLost:
-      return "contact_lost";
     case Status::kStopped:
       return "stopped";
   }
@@ -37,8 +36,14 @@ const char* to_string(EventKind k) {
       return "peak";
     case EventKind::kOverturn:
       return "overturn";
-    case EventKind::kContactLost:
-      return "contact_lost";
+    case EventKind::kLiftOff:
+      return "lift_off";
+    case EventKind::kLanding:
+      return "landing";
+    case EventKind::kTensileLanding:
+      return "tensile_landing";
+    case EventKind::kPivotTension:
+      return "pivot_tension";
     case EventKind::kFrictionExceeded:
       return "friction_exceeded";
     case EventKind::kImpactGainedEnergy:
@@ -49,17 +54,7 @@ const char* to_string(EventKind k) {
   return "?";
 }
 
-const char* to_string(Phase p) {
-  switch (p) {
-    case Phase::kFullContact:
-      return "full_contact";
-    case Phase::kRockingEdge1:
-      return "rocking_edge1";
-    case Phase::kRockingEdge2:
-      return "rocking_edge2";
-  }
-  return "?";
-}
+const char* to_string(ContactMode m) { return detail::mode_spec(m).name; }
 
 namespace {
 

@@ -1,32 +1,31 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// The event loop: phases, event location on the dense output, impacts, outputs. Internal header.
+// The event loop as a hybrid automaton: each contact mode's equations of motion and guard
+// functions, the reset maps between modes, and the loop that integrates the current mode, locates
+// the earliest guard crossing and applies its reset. Which modes exist and which guard leads where
+// is the table in automaton.cpp (docs/theory.md, "Contact modes and transitions"); event location
+// and recording are ordinary code (event_location.cpp, recorder.cpp). Internal header; explicit
+// instantiations in simulator_n*.cpp.
 #pragma once
 
 #include <algorithm>
 #include <array>
-#include <boost/math/tools/roots.hpp>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <numbers>
 #include <string>
 
+#include "automaton.hpp"
 #include "contact_propagator.hpp"
+#include "event_location.hpp"
 #include "flexrock/contact/impact.hpp"
 #include "flexrock/core/error.hpp"
 #include "flexrock/integrate/dopri5.hpp"
 #include "flexrock/model/dynamics.hpp"
 #include "flexrock/sim/simulate.hpp"
+#include "recorder.hpp"
 
 namespace flexrock::detail {
-
-// event functions, positive while nothing happens; the slot meaning depends on the phase:
-//   full contact: uplift about edge 1, uplift about edge 2, vertical reaction, friction margin
-//   rocking:      impact (s theta), overturn margin, vertical reaction, friction margin, peak (s
-//   theta_dot)
-inline constexpr int kEventSlots = 5;
-inline constexpr int kSlotFriction = 3;
-inline constexpr int kSlotPeak = 4;
-inline constexpr int kMaxSamples = 32;
 
 // a number for a message: 6 significant digits, no trailing zeros (std::to_string prints 1e-13 as
 // "0.000000")
@@ -36,734 +35,84 @@ inline std::string short_number(double v) {
   return buf;
 }
 
+// The stepper interface the loop uses (Dopri5 and ContactPropagator both provide it):
+//   step(sys, t_stop) -> Status       one accepted step from t1() toward t_stop (ends on it)
+//   restep_to(sys, t)                 redo the last step from t0() to t (an event time)
+//   dense(t, x)                       the state at t in [t0(), t1()]
+//   refresh_derivative(sys, t)        restart from the right-hand limit of a jump at t
+//   t0(), t1(), x0(), x1()            the last step's ends
+
 template <int N, int MaxN>
-class Simulator {
+class Simulator final : private GuardProbe {
  public:
-  static constexpr int S = N == Eigen::Dynamic ? Eigen::Dynamic : 2 * N + 4;
-  static constexpr int MaxS = MaxN == Eigen::Dynamic ? Eigen::Dynamic : 2 * MaxN + 4;
+  static constexpr int S = N == Eigen::Dynamic ? Eigen::Dynamic : 2 * N + 8;
+  static constexpr int MaxS = MaxN == Eigen::Dynamic ? Eigen::Dynamic : 2 * MaxN + 8;
   using Dyn = Dynamics<N, MaxN>;
   using Vec = typename Dyn::Vec;
+  // theta, q[n], theta_dot, q_dot[n], input work, damping loss, then the flight coordinates
+  // x_c, y_c, xc_dot, yc_dot of the c.g. relative to the base (used in flight only)
   using State = Eigen::Matrix<double, S, 1, Eigen::ColMajor, MaxS, 1>;
 
-  Simulator(const Body& body, const GroundMotion& motion, const SimulationOptions& opt)
-      : body_(body),
-        dyn_(body),
-        motion_(motion),
-        opt_(opt),
-        n_(body.modes()),
-        samples_(std::clamp(opt.event_samples, 1, kMaxSamples)),
-        prop_(dyn_, motion, samples_, opt.max_step, opt.exact_full_contact) {
-    q_.resize(n_);
-    qd_.resize(n_);
-    qdd_.resize(n_);
-    // shortest period among the pinned-base modes and the rigid rocking motion
-    double shortest = 2.0 * std::numbers::pi / body.rocking_frequency();
-    if (n_ > 0)
-      shortest = std::min(shortest, 2.0 * std::numbers::pi / body.natural_frequencies().maxCoeff());
-    chatter_interval_ = opt.chatter_ratio * shortest;
-    overturn_limit_[0] =
-        opt.overturn == OverturnCriterion::kHalfPi ? 0.5 * std::numbers::pi : body.tipping_angle(1);
-    overturn_limit_[1] =
-        opt.overturn == OverturnCriterion::kHalfPi ? 0.5 * std::numbers::pi : body.tipping_angle(2);
-    ctl_.rtol = opt.rtol;
-    ctl_.atol = opt.atol;
-    ctl_.max_step = opt.max_step;
-    ctl_.controlled = 2 * n_ + 2;  // the energy quadratures do not steer the step
-    for (State& xk : sample_states_) xk.setZero(2 * n_ + 4);
-  }
-
-  SimulationResult run(const InitialState& init) {
-    State x(2 * n_ + 4);
-    x.setZero();
-    x(0) = init.theta;
-    x(n_ + 1) = init.theta_dot;
-    x.segment(1, n_) = init.q.size() == n_ ? init.q : VectorX(body_.static_deformation());
-    if (init.q_dot.size() == n_) x.segment(n_ + 2, n_) = init.q_dot;
-    if (init.theta > 0.0 || (init.theta == 0.0 && init.theta_dot > 0.0)) {
-      phase_ = Phase::kRockingEdge1;
-    } else if (init.theta < 0.0 || init.theta_dot < 0.0) {
-      phase_ = Phase::kRockingEdge2;
-    }
-    t_end_ = opt_.t_end >= 0.0 ? opt_.t_end : motion_.duration();
-    res_.extremes.max_abs_q = VectorX::Zero(n_);
-    res_.history.modes = n_;
-    energy0_ = mechanical_energy(x);
-    kinetic0_ = energy0_ - dyn_.potential_energy(rocking() ? dyn_.alpha(edge()) : 0.0, x(0), q_);
-    last_contact_change_ = -std::numeric_limits<double>::infinity();
-
-    double t = 0.0;
-    bool running = start_phase(t, x);
-    if (opt_.output_dt > 0.0) emit_row(t, x);
-    next_output_ = 1;
-    while (running && t < t_end_) {
-      running = advance(t, x);
-    }
-    finish(t, x);
-    return std::move(res_);
-  }
+  Simulator(const Body& body, const GroundMotion& motion, const SimulationOptions& opt);
+  SimulationResult run(const InitialState& init);
 
  private:
-  // ---- state layout: theta, q[n], theta_dot, q_dot[n], input work, damping loss
+  // ---- state layout
   int iq() const { return 1; }
   int ithd() const { return n_ + 1; }
   int iqd() const { return n_ + 2; }
   int iw() const { return 2 * n_ + 2; }
   int id() const { return 2 * n_ + 3; }
-  int edge() const { return static_cast<int>(phase_); }
-  bool rocking() const { return phase_ != Phase::kFullContact; }
+  int ixc() const { return 2 * n_ + 4; }  // x_c, y_c, then their rates
+  int edge() const { return mode_ == ContactMode::kRockingEdge2 ? 2 : 1; }
+  bool rocking() const {
+    return mode_ == ContactMode::kRockingEdge1 || mode_ == ContactMode::kRockingEdge2;
+  }
+  bool flying() const { return mode_ == ContactMode::kFlight; }
+  Eigen::Vector2d cg_velocity(const State& x) const { return {x(ixc() + 2), x(ixc() + 3)}; }
 
   void unpack(const State& x) {
     q_ = x.segment(iq(), n_);
     qd_ = x.segment(iqd(), n_);
   }
 
-  // the right-hand side of the current phase
-  void rhs(double t, const State& x, State& dx) {
-    const BaseAcceleration a = motion_.at(t, rhs_cursor_);
-    unpack(x);
-    dx.resize(x.size());
-    double thdd = 0.0;
-    if (rocking()) {
-      const double sn = std::sin(x(0)), cs = std::cos(x(0));
-      dyn_.rocking_acceleration_sc(edge(), sn, cs, q_, x(ithd()), qd_, a, thdd, qdd_);
-      dx(0) = x(ithd());
-      dx(iw()) = dyn_.input_power_sc(dyn_.alpha(edge()), sn, cs, q_, x(ithd()), qd_, a);
-    } else {
-      dyn_.full_contact_acceleration(q_, qd_, a, qdd_);
-      dx(0) = 0.0;
-      dx(iw()) = dyn_.input_power(0.0, 0.0, q_, 0.0, qd_, a);
-    }
-    dx.segment(iq(), n_) = qd_;
-    dx(ithd()) = thdd;
-    dx.segment(iqd(), n_) = qdd_;
-    dx(id()) = dyn_.damping_power(qd_);
-  }
+  // ---- equations of motion of the current mode
+  void rhs(double t, const State& x, State& dx);
+  // ---- guard functions of the current mode, in its slot order, with the floor reaction
+  void evaluate(double t, const State& x, GuardSample& s);
+  double guard_value(int slot, double t) override;
 
-  struct Sample {
-    double t = 0.0;
-    std::array<double, kEventSlots> v{};
-    Eigen::Vector2d reaction{0.0, 0.0};  // over M g
-    double moment = 0.0;                 // overturning moment over M g h
-  };
-
-  // event functions (and the reaction, for the extremes) at (t, x)
-  void evaluate(double t, const State& x, Sample& s) {
-    const BaseAcceleration a = motion_.at(t, event_cursor_);
-    unpack(x);
-    s.t = t;
-    if (rocking()) {
-      const double sg = edge_sign(edge());
-      double thdd = 0.0;
-      const double sn = std::sin(x(0)), cs = std::cos(x(0));
-      dyn_.rocking_acceleration_sc(edge(), sn, cs, q_, x(ithd()), qd_, a, thdd, qdd_);
-      s.reaction = dyn_.rocking_reaction_sc(edge(), sn, cs, q_, x(ithd()), qd_, thdd, qdd_, a);
-      s.v[0] = sg * x(0);
-      s.v[1] = overturn_limit_[edge() - 1] - sg * x(0);
-      s.v[kSlotPeak] = sg * x(ithd());
-      // reaction at the pivot, moment about the c.g. projection: alpha h F_j(body)
-      const double fy_body = -s.reaction(0) * sn + s.reaction(1) * cs;
-      s.moment = dyn_.alpha(edge()) * fy_body;
-    } else {
-      dyn_.full_contact_acceleration(q_, qd_, a, qdd_);
-      s.reaction = dyn_.full_contact_reaction(qdd_, a);
-      const Eigen::Vector2d u = dyn_.uplift_functions(q_, qdd_, a);
-      s.v[0] = u(0);
-      s.v[1] = u(1);
-      s.v[kSlotPeak] = 1.0;
-      s.moment = dyn_.contact_moment(0.0, q_, qdd_, a);
-    }
-    s.v[2] = s.reaction(1);
-    s.v[kSlotFriction] = std::isfinite(opt_.friction_coefficient)
-                             ? opt_.friction_coefficient * s.reaction(1) - std::abs(s.reaction(0))
-                             : 1.0;
-  }
-
-  static bool terminal(int slot) { return slot < kSlotFriction; }
-
-  // starts the integrator in the current phase at (t, x); false when the run ends here
-  bool start_phase(double t, State& x) {
-    if (!rocking()) {
-      x(0) = 0.0;
-      x(ithd()) = 0.0;
-    }
-    still_ = n_ == 0 && !rocking();
-    exact_ = !still_ && !rocking() && prop_.available();
-    if (still_) {
-      // a rigid body in full contact does not move: no integration until it uplifts
-      x_still_ = x;
-      still_t1_ = t;
-    } else if (exact_) {
-      // a flexible body in full contact under a record: exact steps between its samples
-      prop_.start(t, x);
-    } else {
-      integ_.start([this](double tt, const State& xx, State& dd) { rhs(tt, xx, dd); }, ctl_, t, x);
-    }
-    evaluate(t, x, s0_);
-    observe(s0_, x);
-    // after an uplift or impact theta = 0 and it must grow: the impact (and, after an uplift,
-    // the peak) function starts at zero and is known to turn positive
-    zero_start_.fill(false);
-    if (rocking() && entered_by_contact_change_) {
-      zero_start_[0] = s0_.v[0] == 0.0;
-      zero_start_[kSlotPeak] = s0_.v[kSlotPeak] == 0.0;
-    }
-    entered_by_contact_change_ = false;
-    if (s0_.v[2] <= 0.0) return contact_lost(t, x);
-    if (rocking() && s0_.v[1] <= 0.0) return overturned(t, x);
-    if (s0_.v[kSlotFriction] <= 0.0 && !friction_over_) friction_exceeded(t, s0_);
-    if (s0_.v[kSlotFriction] > 0.0) friction_over_ = false;
-    if (!rocking() && !suppress_uplift_at_start_) {
-      if (s0_.v[0] <= 0.0 || s0_.v[1] <= 0.0) {
-        const int e = s0_.v[0] <= s0_.v[1] ? 1 : 2;
-        return uplift(t, x, e);
-      }
-    }
-    suppress_uplift_at_start_ = false;
-    return true;
-  }
-
-  // one accepted step plus whatever happens in it; false when the run ends
-  bool advance(double& t, State& x) {
-    if (still_) return advance_still(t, x);
-    if (exact_) return advance_with(prop_, t, x);
-    return advance_with(integ_, t, x);
-  }
-
-  // the step of `integ` (the integrator, or the exact propagator in full contact)
+  // ---- the loop
+  bool enter_mode(double t, State& x);
+  bool advance(double& t, State& x);
   template <class Stepper>
-  bool advance_with(Stepper& integ, double& t, State& x) {
-    auto sys = [this](double tt, const State& xx, State& dd) { rhs(tt, xx, dd); };
-    const double t_stop = std::min(t_end_, motion_.next_breakpoint(t, break_cursor_));
-    if (++res_.steps > opt_.max_steps)
-      return stop(
-          t, x,
-          "step limit reached (" + std::to_string(opt_.max_steps) + " steps; raise max_steps)");
-    if (integ.step(sys, t_stop) != Dopri5<State>::Status::kAccepted) {
-      // the step limit is relative (min_step x max(1 s, t)); while rocking the usual cause is
-      // impacts accumulating with the chatter cut-off disabled, so the message says so
-      const double h_min = ctl_.min_step * std::max(1.0, std::abs(t));
-      const std::string cause =
-          rocking() && opt_.chatter_ratio <= 0.0
-              ? "impacts accumulating while rocking with the chatter cut-off disabled "
-                "(chatter_ratio = 0); set chatter_ratio > 0"
-              : "the equations became too stiff or singular; loosen rtol/atol or check the body";
-      return stop(t, x,
-                  "integration step collapsed below " + short_number(h_min) +
-                      " s near t = " + short_number(t) + " s (" + cause + ")");
-    }
-    const double t0 = integ.t0(), t1 = integ.t1();
-    if (opt_.progress) opt_.progress->store(t1, std::memory_order_relaxed);
-    // sample the event functions across the step, keeping the states for the extremes
-    auto& smp = samples_buf_;
-    smp[0] = s0_;
-    for (int k = 1; k <= samples_; ++k) {
-      const double tk = k == samples_ ? t1 : t0 + (t1 - t0) * k / samples_;
-      State& xk = sample_states_[static_cast<std::size_t>(k)];
-      if (k == samples_) {
-        xk = integ.x1();
-      } else {
-        integ.dense(tk, xk);
-      }
-      evaluate(tk, xk, smp[k]);
-    }
-    // earliest crossing per slot
-    double t_hit = std::numeric_limits<double>::infinity();
-    int slot_hit = -1;
-    std::array<double, kEventSlots> when;
-    when.fill(std::numeric_limits<double>::infinity());
-    for (int j = 0; j < kEventSlots; ++j) {
-      when[j] = find_crossing(j, smp, samples_);
-      if (terminal(j) && when[j] < t_hit) {
-        t_hit = when[j];
-        slot_hit = j;
-      }
-    }
-    // non-terminal events before the terminal one (or the step end)
-    for (int j : {kSlotPeak, kSlotFriction}) {
-      if (when[j] <= std::min(t_hit, t1)) record_nonterminal(j, when[j]);
-    }
-    // extremes from the samples that precede any state change
-    for (int k = 1; k <= samples_; ++k) {
-      if (smp[k].t >= t_hit) break;
-      observe(smp[k], sample_states_[static_cast<std::size_t>(k)]);
-    }
-    if (slot_hit < 0) {
-      // an analytic motion may jump at a breakpoint: start the next step from its right limit
-      if (t1 == t_stop && t1 < t_end_ && !motion_.is_sampled()) {
-        integ.refresh_derivative(sys, std::nextafter(t1, t_end_));
-      }
-      emit_rows_until(t1);
-      t = t1;
-      x = integ.x1();
-      s0_ = smp[samples_];
-      zero_start_.fill(false);
-      if (s0_.v[kSlotFriction] > 0.0) friction_over_ = false;
-      return true;
-    }
-    // land exactly on the event and act on it
-    if (t_hit > t0) integ.restep_to(sys, t_hit);
-    emit_rows_until(t_hit);
-    t = t_hit;
-    x = t_hit > t0 ? integ.x1() : integ.x0();
-    return act(slot_hit, t, x);
-  }
+  bool advance_with(Stepper& integ, double& t, State& x);
+  bool advance_still(double& t, State& x);
+  double scan_record(double t);
+  bool step_guards(int samples, double t1, double& t_hit, int& slot_hit);
+  void state_at(double t, State& out) const;
 
-  // a rigid body in full contact does not move, and its event functions (uplift about either edge,
-  // vertical reaction, friction margin) depend on the base acceleration alone, linearly
-  // (docs/theory.md, "A rigid body in full contact"). Under a sampled record they are linear
-  // between samples, so a sign check at each sample finds every crossing and the state jumps from
-  // sample to sample; an analytic motion is checked at event_samples points per max_step.
-  bool advance_still(double& t, State& x) {
-    // each span checked counts as a step toward max_steps
-    if (++res_.steps > opt_.max_steps)
-      return stop(
-          t, x,
-          "step limit reached (" + std::to_string(opt_.max_steps) + " steps; raise max_steps)");
-    double ta = t, tb = t;
-    int samples = 1;
-    if (motion_.is_sampled()) {
-      tb = scan_record(t);
-    } else if (t >= motion_.duration()) {
-      tb = t_end_;  // the motion is over (zero): nothing can change any more
-    } else {
-      tb = std::min({t_end_, motion_.next_breakpoint(t, break_cursor_), t + opt_.max_step});
-      samples = samples_;
-    }
-    auto& smp = samples_buf_;
-    smp[0] = s0_;
-    if (motion_.is_sampled() && scan_from_ > ta) {
-      // the scan passed samples with no event on them: start from the last of them
-      ta = scan_from_;
-      evaluate(ta, x_still_, smp[0]);
-    }
-    for (int k = 1; k <= samples; ++k) {
-      const double tk = k == samples ? tb : ta + (tb - ta) * k / samples;
-      evaluate(tk, x_still_, smp[k]);
-    }
-    still_t1_ = tb;
-    if (opt_.progress) opt_.progress->store(tb, std::memory_order_relaxed);
-    double t_hit = std::numeric_limits<double>::infinity();
-    int slot_hit = -1;
-    std::array<double, kEventSlots> when;
-    when.fill(std::numeric_limits<double>::infinity());
-    for (int j = 0; j < kEventSlots; ++j) {
-      when[j] = find_crossing(j, smp, samples);
-      if (terminal(j) && when[j] < t_hit) {
-        t_hit = when[j];
-        slot_hit = j;
-      }
-    }
-    if (when[kSlotFriction] <= std::min(t_hit, tb))
-      record_nonterminal(kSlotFriction, when[kSlotFriction]);
-    for (int k = 1; k <= samples; ++k) {
-      if (smp[k].t >= t_hit) break;
-      observe(smp[k], x_still_);
-    }
-    if (slot_hit < 0) {
-      emit_rows_until(tb);
-      t = tb;
-      s0_ = smp[samples];
-      if (s0_.v[kSlotFriction] > 0.0) friction_over_ = false;
-      return true;
-    }
-    emit_rows_until(t_hit);
-    t = t_hit;
-    x = x_still_;
-    return act(slot_hit, t, x);
-  }
-
-  // walks the record's samples after t while every event function stays positive there, folding
-  // their reactions into the extremes; returns the end of the first span that may hold a crossing
-  // (a sample where some function is <= 0), or the end time. scan_from_ is the span's start.
-  double scan_record(double t) {
-    const std::vector<double>& ts = motion_.times();
-    const std::vector<double>& hx = motion_.horizontal();
-    const std::vector<double>& vy = motion_.vertical();
-    const bool vertical = vy.size() == ts.size();
-    const double g = dyn_.g();
-    const double a1 = dyn_.alpha1(), a2 = dyn_.alpha2();
-    const double fc = opt_.friction_coefficient;
-    const bool friction = std::isfinite(fc);
-    std::size_t i = scan_index_;
-    while (i > 0 && ts[i - 1] > t) --i;
-    while (i < ts.size() && ts[i] <= t) ++i;
-    scan_from_ = t;
-    double shear = 0.0, demand = 0.0;
-    // uplift about edge 1 / edge 2, vertical reaction, friction margin, over M g (rigid body)
-    for (; i < ts.size() && ts[i] < t_end_; ++i) {
-      const double ax = hx[i] / g, ay = 1.0 + (vertical ? vy[i] / g : 0.0);
-      const double u1 = a1 * ay - ax, u2 = a2 * ay + ax;
-      if (!(u1 > 0.0 && u2 > 0.0 && ay > 0.0)) break;
-      if (friction) {
-        // an exceedance is reported once, and again only after the margin has turned positive
-        if (fc * ay - std::abs(ax) > 0.0) {
-          friction_over_ = false;
-        } else if (!friction_over_) {
-          break;
-        }
-      }
-      shear = std::max(shear, std::abs(ax));
-      demand = std::max(demand, std::abs(ax) / ay);
-      scan_from_ = ts[i];
-    }
-    scan_index_ = i;
-    Extremes& ex = res_.extremes;
-    const double mg = dyn_.mass() * g;
-    ex.max_base_shear = std::max(ex.max_base_shear, mg * shear);
-    ex.max_overturning_moment = std::max(ex.max_overturning_moment, mg * dyn_.height() * shear);
-    ex.max_friction_demand = std::max(ex.max_friction_demand, demand);
-    return i < ts.size() ? std::min(ts[i], t_end_) : t_end_;
-  }
-
-  // time of the first crossing of slot j in the step, or +inf
-  double find_crossing(int j, const std::array<Sample, kMaxSamples + 1>& smp, int samples) {
-    constexpr double kInf = std::numeric_limits<double>::infinity();
-    if (!rocking() && j == kSlotPeak) return kInf;
-    if (j == kSlotFriction && friction_over_) return kInf;
-    double prev = smp[0].v[j];
-    double t_prev = smp[0].t;
-    bool armed = prev > 0.0 || zero_start_[j];
-    for (int k = 1; k <= samples; ++k) {
-      const double cur = smp[k].v[j];
-      if (armed && cur <= 0.0) {
-        double tl = t_prev, gl = prev;
-        if (!(gl > 0.0)) {
-          // a phase that starts at zero: find a point inside where the function is positive
-          bool found = false;
-          double span = smp[k].t - t_prev;
-          for (int i = 1; i <= 60 && !found; ++i) {
-            span *= 0.5;
-            tl = t_prev + span;
-            gl = value_at(j, tl);
-            found = gl > 0.0;
-          }
-          // the excursion is below resolution: an impact at the start, no peak
-          if (!found) return j == 0 ? t_prev : kInf;
-        }
-        return locate(j, tl, smp[k].t, gl, cur);
-      }
-      // a dip between samples: parabola through three positive values with a vertex below zero
-      if (armed && k + 1 <= samples && cur > 0.0 && prev > 0.0 && smp[k + 1].v[j] > 0.0) {
-        const double g0 = prev, g1 = cur, g2 = smp[k + 1].v[j];
-        const double curv = g0 - 2.0 * g1 + g2;
-        if (curv > 0.0) {
-          const double u = 0.5 * (g0 - g2) / curv;  // vertex, in sample spacings from sample k
-          const double gmin = g1 - 0.25 * (g0 - g2) * u;
-          if (u > -1.0 && u < 1.0 && gmin < 0.25 * std::min(g0, g2)) {
-            const double tv = smp[k].t + u * (smp[k + 1].t - smp[k].t);
-            const double gv = value_at(j, tv);
-            if (gv <= 0.0) {
-              const double tl = u > 0 ? smp[k].t : smp[k - 1].t;
-              const double gl = u > 0 ? g1 : g0;
-              return locate(j, tl, tv, gl, gv);
-            }
-          }
-        }
-      }
-      if (cur > 0.0) armed = true;
-      prev = cur;
-      t_prev = smp[k].t;
-    }
-    return kInf;
-  }
-
-  // the state at t within the last step (or the still state)
-  void state_at(double t, State& out) const {
-    if (still_) {
-      out = x_still_;
-    } else if (exact_) {
-      prop_.dense(t, out);
-    } else {
-      integ_.dense(t, out);
-    }
-  }
-
-  double value_at(int j, double t) {
-    Sample s;
-    state_at(t, xr_);
-    evaluate(t, xr_, s);
-    return s.v[j];
-  }
-
-  double locate(int j, double tl, double tr, double gl, double gr) {
-    auto g = [&](double tt) { return value_at(j, tt); };
-    auto tol = [](double a, double b) {
-      return std::abs(b - a) <= 2e-15 * std::max(1.0, std::abs(a));
-    };
-    std::uintmax_t iters = 100;
-    const auto r = boost::math::tools::toms748_solve(g, tl, tr, gl, gr, tol, iters);
-    return r.second;  // the side where the function is <= 0
-  }
-
-  void record_nonterminal(int slot, double t) {
-    state_at(t, xr_);
-    Sample s;
-    evaluate(t, xr_, s);
-    if (slot == kSlotPeak) {
-      Event e;
-      e.time = t;
-      e.kind = EventKind::kPeak;
-      e.edge = edge();
-      e.theta = xr_(0);
-      res_.events.push_back(e);
-      observe_theta(xr_(0));
-    } else {
-      friction_exceeded(t, s);
-    }
-  }
-
-  void friction_exceeded(double t, const Sample& s) {
-    friction_over_ = true;
-    res_.friction_exceeded = true;
-    Event e;
-    e.time = t;
-    e.kind = EventKind::kFrictionExceeded;
-    e.edge = rocking() ? edge() : 0;
-    e.friction_demand = s.reaction(1) > 0.0 ? std::abs(s.reaction(0)) / s.reaction(1)
-                                            : std::numeric_limits<double>::infinity();
-    res_.events.push_back(e);
-  }
-
-  // a state-changing event at (t, x) in slot j; false when the run ends
-  bool act(int slot, double t, State& x) {
-    // events piling up at one instant would loop forever: stop instead
-    if (t - zeno_time_ < 1e-9 * std::max(1.0, t)) {
-      if (++same_time_events_ > 64) {
-        return stop(t, x,
-                    "events accumulate at t = " + std::to_string(t) +
-                        " s without time advancing (Zeno behaviour)");
-      }
-    } else {
-      zeno_time_ = t;
-      same_time_events_ = 0;
-    }
-    if (slot == 2) return contact_lost(t, x);
-    if (!rocking()) return uplift(t, x, slot == 0 ? 1 : 2);
-    if (slot == 1) return overturned(t, x);
-    return impact(t, x);
-  }
-
-  bool uplift(double t, State& x, int e) {
-    Event ev;
-    ev.time = t;
-    ev.kind = EventKind::kUplift;
-    ev.edge = e;
-    res_.events.push_back(ev);
-    if (res_.extremes.first_uplift_time < 0.0) {
-      res_.extremes.first_uplift_time = t;
-      res_.extremes.first_uplift_edge = e;
-    }
-    phase_ = e == 1 ? Phase::kRockingEdge1 : Phase::kRockingEdge2;
-    entered_by_contact_change_ = true;
-    x(0) = 0.0;
-    x(ithd()) = 0.0;
-    last_contact_change_ = t;
-    return start_phase(t, x);
-  }
-
-  bool impact(double t, State& x) {
-    const int pre = edge();
-    const int landing = pre == 1 ? 2 : 1;
-    unpack(x);
-    const double thd_minus = x(ithd());
-    const bool chatter = t - last_contact_change_ < chatter_interval_;
-    const auto out =
-        resolve_impact(dyn_, landing, q_, thd_minus, qd_, opt_.restitution_factor, chatter);
-    Event ev;
-    ev.time = t;
-    ev.kind = chatter ? EventKind::kChatterCutoff
-                      : (out.both_edges ? EventKind::kRockingEnded : EventKind::kImpact);
-    ev.edge = landing;
-    ev.theta_dot_before = thd_minus;
-    ev.theta_dot_after = out.theta_dot;
-    ev.energy_loss = out.energy_loss;
-    ev.impulse_x = out.impulse(0);
-    ev.impulse_y = out.impulse(1);
-    ev.friction_demand = out.impulse(1) > 0.0 ? std::abs(out.impulse(0)) / out.impulse(1)
-                                              : std::numeric_limits<double>::infinity();
-    res_.events.push_back(ev);
-    Extremes& ex = res_.extremes;
-    ++ex.impacts;
-    if (chatter) {
-      res_.chatter_cut_off = true;
-      chatter_loss_ += out.energy_loss;
-    } else {
-      impact_loss_ += out.energy_loss;
-    }
-    ex.max_impulse = std::max(ex.max_impulse, out.impulse(1));
-    ex.max_impact_energy_loss = std::max(ex.max_impact_energy_loss, out.energy_loss);
-    // the cut-off is a numerical device on a vanishing impulse (its ratio is 1/alpha for a rigid
-    // block whatever the speed): it sets no friction demand
-    if (!chatter) ex.max_friction_demand = std::max(ex.max_friction_demand, ev.friction_demand);
-    if (!chatter && std::isfinite(opt_.friction_coefficient) &&
-        ev.friction_demand > opt_.friction_coefficient) {
-      res_.friction_exceeded = true;
-      Event fe = ev;
-      fe.kind = EventKind::kFrictionExceeded;
-      res_.events.push_back(fe);
-    }
-    if (out.energy_loss < -1e-12 * std::max(1.0, energy_scale_)) {
-      res_.impact_gained_energy = true;
-      Event ge = ev;
-      ge.kind = EventKind::kImpactGainedEnergy;
-      res_.events.push_back(ge);
-    }
-    x(0) = 0.0;
-    x(ithd()) = out.theta_dot;
-    x.segment(iqd(), n_) = out.q_dot;
-    phase_ = out.both_edges ? Phase::kFullContact
-                            : (landing == 1 ? Phase::kRockingEdge1 : Phase::kRockingEdge2);
-    entered_by_contact_change_ = true;
-    // a degenerate excursion (no time since uplift) must not uplift again at once
-    if (out.both_edges && t == last_contact_change_) suppress_uplift_at_start_ = true;
-    last_contact_change_ = t;
-    if (ex.impacts > opt_.max_impacts) {
-      return stop(t, x, "impact limit reached (" + std::to_string(opt_.max_impacts) + ")");
-    }
-    return start_phase(t, x);
-  }
-
-  bool overturned(double t, State& x) {
-    res_.status = Status::kOverturned;
-    res_.extremes.overturn_time = t;
-    res_.extremes.overturn_edge = edge();
-    observe_theta(x(0));
-    Event ev;
-    ev.time = t;
-    ev.kind = EventKind::kOverturn;
-    ev.edge = edge();
-    ev.theta = x(0);
-    res_.events.push_back(ev);
-    res_.message = std::string("overturned about edge ") + std::to_string(edge()) +
-                   " at t = " + std::to_string(t) + " s";
-    return false;
-  }
-
-  bool contact_lost(double t, State& /*x*/) {
-    res_.status = Status::kContactLost;
-    Event ev;
-    ev.time = t;
-    ev.kind = EventKind::kContactLost;
-    ev.edge = rocking() ? edge() : 0;
-    res_.events.push_back(ev);
-    res_.message = "contact lost at t = " + std::to_string(t) +
-                   " s: the floor would have to pull the body down (vertical reaction <= 0; "
-                   "e.g. the base accelerates downward faster than g); the model does not "
-                   "follow a body in flight";
-    return false;
-  }
-
-  bool stop(double t, State& /*x*/, std::string why) {
-    res_.status = Status::kStopped;
-    Event ev;
-    ev.time = t;
-    ev.kind = EventKind::kStopped;
-    res_.events.push_back(ev);
-    res_.message = std::move(why);
-    return false;
-  }
+  // ---- resets (the automaton's edges)
+  bool fire(int slot, double t, State& x);
+  bool uplift(double t, State& x, int e);
+  bool impact(double t, State& x);
+  bool lift_off(double t, State& x);
+  bool land(double t, State& x, int e);
+  bool overturned(double t, State& x);
+  bool stop(double t, std::string why);
+  void record(int slot, double t);
+  void friction_exceeded(double t, const GuardSample& s);
+  void count_impact(const Event& ev, double impulse_y, double loss, bool chatter);
 
   // ---- outputs
-  double mechanical_energy(const State& x) {
-    unpack(x);
-    const double a = rocking() ? dyn_.alpha(edge()) : 0.0;
-    return dyn_.kinetic_energy(a, q_, x(ithd()), qd_) + dyn_.potential_energy(a, x(0), q_);
-  }
-
-  void observe_theta(double theta) {
-    Extremes& ex = res_.extremes;
-    if (theta > 0.0) ex.max_theta_edge1 = std::max(ex.max_theta_edge1, theta);
-    if (theta < 0.0) ex.max_theta_edge2 = std::max(ex.max_theta_edge2, -theta);
-    const double b = body_.params().b1 + body_.params().b2;
-    ex.max_uplift = std::max(ex.max_uplift, b * std::sin(std::abs(theta)));
-  }
-
-  void observe(const Sample& s, const State& x) {
-    Extremes& ex = res_.extremes;
-    observe_theta(x(0));
-    for (int i = 0; i < n_; ++i) ex.max_abs_q(i) = std::max(ex.max_abs_q(i), std::abs(x(iq() + i)));
-    const double mg = dyn_.mass() * dyn_.g();
-    ex.max_base_shear = std::max(ex.max_base_shear, mg * std::abs(s.reaction(0)));
-    ex.max_overturning_moment =
-        std::max(ex.max_overturning_moment, mg * dyn_.height() * std::abs(s.moment));
-    if (s.reaction(1) > 0.0)
-      ex.max_friction_demand =
-          std::max(ex.max_friction_demand, std::abs(s.reaction(0)) / s.reaction(1));
-    energy_scale_ = std::max({energy_scale_, std::abs(x(iw())), std::abs(x(id()))});
-  }
-
-  void emit_rows_until(double t_cut) {
-    if (opt_.output_dt <= 0.0) return;
-    for (;;) {
-      const double to = static_cast<double>(next_output_) * opt_.output_dt;
-      if (to > t_cut || to > t_end_ * (1.0 + 1e-14)) break;
-      state_at(std::min(to, still_ ? still_t1_ : (exact_ ? prop_.t1() : integ_.t1())), xr_);
-      emit_row(to, xr_);
-      ++next_output_;
-    }
-  }
-
-  void emit_row(double t, const State& x) {
-    History& h = res_.history;
-    Sample s;
-    evaluate(t, x, s);
-    const BaseAcceleration a = motion_.at(t, event_cursor_);
-    unpack(x);
-    const double mg = dyn_.mass() * dyn_.g();
-    const double alpha = rocking() ? dyn_.alpha(edge()) : 0.0;
-    h.time.push_back(t);
-    h.phase.push_back(static_cast<int>(phase_));
-    h.theta.push_back(x(0));
-    h.theta_dot.push_back(x(ithd()));
-    for (int i = 0; i < n_; ++i) {
-      h.q.push_back(x(iq() + i));
-      h.q_dot.push_back(x(iqd() + i));
-    }
-    h.base_acc_x.push_back(a.x);
-    h.base_acc_y.push_back(a.y);
-    h.reaction_x.push_back(mg * s.reaction(0));
-    h.reaction_y.push_back(mg * s.reaction(1));
-    h.resultant.push_back(dyn_.height() * (rocking() ? alpha : s.moment / s.reaction(1)));
-    h.friction_demand.push_back(s.reaction(1) > 0.0 ? std::abs(s.reaction(0)) / s.reaction(1)
-                                                    : std::numeric_limits<double>::infinity());
-    h.kinetic.push_back(dyn_.kinetic_energy(alpha, q_, x(ithd()), qd_));
-    h.potential.push_back(dyn_.potential_energy(alpha, x(0), q_));
-    h.input_work.push_back(x(iw()));
-    h.damping_loss.push_back(x(id()));
-    h.impact_loss.push_back(impact_loss_ + chatter_loss_);
-  }
-
-  void finish(double t, const State& x) {
-    res_.t_end = t;
-    if (opt_.progress) opt_.progress->store(t, std::memory_order_relaxed);
-    if (opt_.output_dt > 0.0 &&
-        (res_.history.time.empty() || res_.history.time.back() < t - 1e-12)) {
-      emit_row(t, x);
-    }
-    res_.final_phase = phase_;
-    res_.final_theta = x(0);
-    res_.final_theta_dot = x(ithd());
-    res_.final_q = x.segment(iq(), n_);
-    res_.final_q_dot = x.segment(iqd(), n_);
-    unpack(x);
-    const double a = rocking() ? dyn_.alpha(edge()) : 0.0;
-    EnergyBalance& e = res_.energy;
-    const double kin = dyn_.kinetic_energy(a, q_, x(ithd()), qd_);
-    const double pot = dyn_.potential_energy(a, x(0), q_);
-    e.input_work = x(iw());
-    e.damping_loss = x(id());
-    e.impact_loss = impact_loss_;
-    e.chatter_loss = chatter_loss_;
-    e.kinetic_change = kin - kinetic0_;
-    e.potential_change = pot - (energy0_ - kinetic0_);
-    e.residual = e.input_work - (e.kinetic_change + e.potential_change + e.damping_loss +
-                                 e.impact_loss + e.chatter_loss);
-    e.scale = std::max({energy_scale_, std::abs(energy0_ - pot), std::abs(kin), kinetic0_,
-                        impact_loss_ + chatter_loss_});
-    res_.rejected_steps = integ_.rejected_steps();
-    res_.rhs_evaluations = integ_.rhs_evaluations();
-    if (res_.status == Status::kCompleted) res_.message = "completed";
-  }
+  Observation observation(double t, const State& x, const GuardSample& s);
+  double kinetic_energy(const State& x);
+  double potential_energy(const State& x);
+  double offset_of(const State& x);
+  void observe(const GuardSample& s, const State& x) { rec_.observe(observation(s.t, x, s)); }
+  void emit_rows_until(double t_cut);
+  void emit_row(double t, const State& x);
+  void finish(double t, const State& x);
 
   const Body& body_;
   Dyn dyn_;
@@ -774,33 +123,950 @@ class Simulator {
   int samples_ = 4;
   Dopri5<State> integ_;
   ContactPropagator<N, MaxN, State> prop_;
+  SimulationResult res_;
+  Recorder rec_;
+  ContactMode mode_ = ContactMode::kFullContact;
   bool exact_ = false;  // a flexible body in full contact, stepped by prop_
-  Phase phase_ = Phase::kFullContact;
+  bool still_ = false;  // a rigid body in full contact: the state is x_still_, nothing integrates
   GroundMotion::Cursor rhs_cursor_, event_cursor_, break_cursor_;
   Vec q_, qd_, qdd_;
   State xr_;
-  std::array<Sample, kMaxSamples + 1> samples_buf_;   // event functions at this step's samples
-  std::array<State, kMaxSamples + 1> sample_states_;  // the states there (sized once)
-  Sample s0_;
+  std::array<GuardSample, kMaxSamples + 1> samples_buf_;  // guards at this step's samples
+  std::array<State, kMaxSamples + 1> sample_states_;      // the states there (sized once)
+  GuardSample s0_;
   std::size_t scan_index_ = 0;  // the record sample the last scan stopped at
   double scan_from_ = 0.0;      // [s] the last sample the scan passed with no event
-  bool still_ = false;  // a rigid body in full contact: the state is x_still_, nothing integrates
   State x_still_;
-  double still_t1_ = 0.0;  // [s] end of the span checked last while still
-  std::array<bool, kEventSlots> zero_start_{};
-  std::array<double, 2> overturn_limit_{};
+  double still_t1_ = 0.0;                      // [s] end of the span checked last while still
+  std::array<bool, kMaxGuards> zero_start_{};  // guards known to turn positive from zero
+  std::array<double, 2> overturn_limit_{};     // [rad] on edge 1 (theta > 0) and edge 2
+  double offset_ = 0.0;  // [m] horizontal offset of the base centre while in contact
   bool friction_over_ = false;
-  bool entered_by_contact_change_ = false;
+  bool tension_ = false;  // the floor pulls (pivot_tension): lift-off disarmed until it presses
   bool suppress_uplift_at_start_ = false;
   double chatter_interval_ = 0.0;
   double last_contact_change_ = 0.0;
+  double flight_start_ = 0.0;
   double t_end_ = 0.0;
   long next_output_ = 0;
   double energy0_ = 0.0, kinetic0_ = 0.0;
-  double impact_loss_ = 0.0, chatter_loss_ = 0.0, energy_scale_ = 0.0;
+  double impact_loss_ = 0.0, chatter_loss_ = 0.0;
   double zeno_time_ = -1.0;
   int same_time_events_ = 0;
-  SimulationResult res_;
 };
+
+// ------------------------------------------------------------------------------------------------
+
+template <int N, int MaxN>
+Simulator<N, MaxN>::Simulator(const Body& body, const GroundMotion& motion,
+                              const SimulationOptions& opt)
+    : body_(body),
+      dyn_(body),
+      motion_(motion),
+      opt_(opt),
+      n_(body.modes()),
+      samples_(std::clamp(opt.event_samples, 1, kMaxSamples)),
+      prop_(dyn_, motion, samples_, opt.max_step, opt.exact_full_contact),
+      rec_(res_, body.params().mass, body.g(), body.params().height, body.modes()) {
+  q_.resize(n_);
+  qd_.resize(n_);
+  qdd_.resize(n_);
+  // shortest period among the pinned-base modes and the rigid rocking motion
+  double shortest = 2.0 * std::numbers::pi / body.rocking_frequency();
+  if (n_ > 0)
+    shortest = std::min(shortest, 2.0 * std::numbers::pi / body.natural_frequencies().maxCoeff());
+  chatter_interval_ = opt.chatter_ratio * shortest;
+  const bool half_pi = opt.overturn == OverturnCriterion::kHalfPi;
+  overturn_limit_[0] = half_pi ? 0.5 * std::numbers::pi : body.tipping_angle(1);
+  overturn_limit_[1] = half_pi ? 0.5 * std::numbers::pi : body.tipping_angle(2);
+  ctl_.rtol = opt.rtol;
+  ctl_.atol = opt.atol;
+  ctl_.max_step = opt.max_step;
+  for (State& xk : sample_states_) xk.setZero(2 * n_ + 8);
+}
+
+template <int N, int MaxN>
+SimulationResult Simulator<N, MaxN>::run(const InitialState& init) {
+  State x(2 * n_ + 8);
+  x.setZero();
+  x(0) = init.theta;
+  x(ithd()) = init.theta_dot;
+  x.segment(iq(), n_) = init.q.size() == n_ ? init.q : VectorX(body_.static_deformation());
+  if (init.q_dot.size() == n_) x.segment(iqd(), n_) = init.q_dot;
+  if (init.theta > 0.0 || (init.theta == 0.0 && init.theta_dot > 0.0)) {
+    mode_ = ContactMode::kRockingEdge1;
+  } else if (init.theta < 0.0 || init.theta_dot < 0.0) {
+    mode_ = ContactMode::kRockingEdge2;
+  }
+  t_end_ = opt_.t_end >= 0.0 ? opt_.t_end : motion_.duration();
+  energy0_ = kinetic_energy(x) + potential_energy(x);
+  kinetic0_ = kinetic_energy(x);
+  last_contact_change_ = -std::numeric_limits<double>::infinity();
+
+  double t = 0.0;
+  bool running = enter_mode(t, x);
+  if (opt_.output_dt > 0.0) emit_row(t, x);
+  next_output_ = 1;
+  while (running && t < t_end_) running = advance(t, x);
+  finish(t, x);
+  return std::move(res_);
+}
+
+// ---- equations of motion
+// -------------------------------------------------------------------------
+
+template <int N, int MaxN>
+void Simulator<N, MaxN>::rhs(double t, const State& x, State& dx) {
+  const BaseAcceleration a = motion_.at(t, rhs_cursor_);
+  unpack(x);
+  dx.setZero(x.size());
+  double thdd = 0.0;
+  switch (mode_) {
+    case ContactMode::kFullContact:
+      // theory §4, theta = 0
+      dyn_.full_contact_acceleration(q_, qd_, a, qdd_);
+      dx(iw()) = dyn_.input_power(0.0, 0.0, q_, 0.0, qd_, a);
+      break;
+    case ContactMode::kRockingEdge1:
+    case ContactMode::kRockingEdge2: {
+      // theory §4
+      const double sn = std::sin(x(0)), cs = std::cos(x(0));
+      dyn_.rocking_acceleration_sc(edge(), sn, cs, q_, x(ithd()), qd_, a, thdd, qdd_);
+      dx(0) = x(ithd());
+      dx(iw()) = dyn_.input_power_sc(dyn_.alpha(edge()), sn, cs, q_, x(ithd()), qd_, a);
+      break;
+    }
+    case ContactMode::kFlight: {
+      // theory "Flight": the c.g. is ballistic relative to the base, the rest feels no gravity
+      dyn_.flight_acceleration(q_, x(ithd()), qd_, thdd, qdd_);
+      dx(0) = x(ithd());
+      dx(ixc()) = x(ixc() + 2);
+      dx(ixc() + 1) = x(ixc() + 3);
+      dx(ixc() + 2) = -a.x;
+      dx(ixc() + 3) = -dyn_.g() - a.y;
+      dx(iw()) = dyn_.flight_input_power(cg_velocity(x), a);
+      break;
+    }
+  }
+  dx.segment(iq(), n_) = qd_;
+  dx(ithd()) = thdd;
+  dx.segment(iqd(), n_) = qdd_;
+  dx(id()) = dyn_.damping_power(qd_);
+}
+
+// ---- guard functions
+// -----------------------------------------------------------------------------
+
+template <int N, int MaxN>
+void Simulator<N, MaxN>::evaluate(double t, const State& x, GuardSample& s) {
+  const BaseAcceleration a = motion_.at(t, event_cursor_);
+  unpack(x);
+  s.t = t;
+  const ModeSpec& spec = mode_spec(mode_);
+  double u1 = 0.0, u2 = 0.0, y1 = 0.0, y2 = 0.0, sg = 1.0;
+  switch (mode_) {
+    case ContactMode::kFullContact: {
+      dyn_.full_contact_acceleration(q_, qd_, a, qdd_);
+      const Eigen::Vector2d r = dyn_.full_contact_reaction(qdd_, a);
+      const Eigen::Vector2d u = dyn_.uplift_functions(q_, qdd_, a);
+      s.fi = r(0);
+      s.fj = r(1);
+      u1 = u(0);
+      u2 = u(1);
+      s.moment = dyn_.contact_moment(0.0, q_, qdd_, a);
+      break;
+    }
+    case ContactMode::kRockingEdge1:
+    case ContactMode::kRockingEdge2: {
+      sg = edge_sign(edge());
+      double thdd = 0.0;
+      const double sn = std::sin(x(0)), cs = std::cos(x(0));
+      dyn_.rocking_acceleration_sc(edge(), sn, cs, q_, x(ithd()), qd_, a, thdd, qdd_);
+      const Eigen::Vector2d r =
+          dyn_.rocking_reaction_sc(edge(), sn, cs, q_, x(ithd()), qd_, thdd, qdd_, a);
+      s.fi = r(0);
+      s.fj = r(1);
+      // reaction at the pivot, moment about the c.g. projection: alpha h F_j(body)
+      s.moment = dyn_.alpha(edge()) * (-r(0) * sn + r(1) * cs);
+      break;
+    }
+    case ContactMode::kFlight: {
+      const double sn = std::sin(x(0)), cs = std::cos(x(0)), h = dyn_.height();
+      y1 = dyn_.corner_height(1, sn, cs, q_, x(ixc() + 1)) / h;
+      y2 = dyn_.corner_height(2, sn, cs, q_, x(ixc() + 1)) / h;
+      s.fi = s.fj = s.moment = 0.0;
+      break;
+    }
+  }
+  for (int j = 0; j < spec.count; ++j) {
+    double v = 1.0;
+    switch (spec.guards[static_cast<std::size_t>(j)]) {
+      case Guard::kUpliftEdge1:
+        v = u1;
+        break;
+      case Guard::kUpliftEdge2:
+        v = u2;
+        break;
+      case Guard::kLiftOff:
+        v = s.fj;
+        break;
+      case Guard::kFrictionLimit:
+        v = std::isfinite(opt_.friction_coefficient)
+                ? opt_.friction_coefficient * s.fj - std::abs(s.fi)
+                : 1.0;
+        break;
+      case Guard::kImpact:
+        v = sg * x(0);
+        break;
+      case Guard::kOverturn:
+        v = flying() ? std::min(overturn_limit_[0] - x(0), overturn_limit_[1] + x(0))
+                     : overturn_limit_[edge() - 1] - sg * x(0);
+        break;
+      case Guard::kPeak:
+        v = sg * x(ithd());
+        break;
+      case Guard::kLandingEdge1:
+        v = y1;
+        break;
+      case Guard::kLandingEdge2:
+        v = y2;
+        break;
+    }
+    s.v[static_cast<std::size_t>(j)] = v;
+  }
+}
+
+template <int N, int MaxN>
+double Simulator<N, MaxN>::guard_value(int slot, double t) {
+  GuardSample s;
+  state_at(t, xr_);
+  evaluate(t, xr_, s);
+  return s.v[static_cast<std::size_t>(slot)];
+}
+
+// ---- the loop
+// ------------------------------------------------------------------------------------
+
+// starts the current mode at (t, x); false when the run ends here. A guard already at or below
+// zero on entry fires at once (an uplift or lift-off that the entry state already calls for).
+template <int N, int MaxN>
+bool Simulator<N, MaxN>::enter_mode(double t, State& x) {
+  if (mode_ == ContactMode::kFullContact) {
+    x(0) = 0.0;
+    x(ithd()) = 0.0;
+  }
+  still_ = n_ == 0 && mode_ == ContactMode::kFullContact;
+  exact_ = !still_ && mode_ == ContactMode::kFullContact && prop_.available();
+  ctl_.controlled = flying() ? -1 : 2 * n_ + 2;  // quadratures steer no step outside flight
+  if (still_) {
+    // a rigid body in full contact does not move: no integration until it uplifts
+    x_still_ = x;
+    still_t1_ = t;
+  } else if (exact_) {
+    // a flexible body in full contact under a record: exact steps between its samples
+    prop_.start(t, x);
+  } else {
+    integ_.start([this](double tt, const State& xx, State& dd) { rhs(tt, xx, dd); }, ctl_, t, x);
+  }
+  evaluate(t, x, s0_);
+  observe(s0_, x);
+  const ModeSpec& spec = mode_spec(mode_);
+  for (int j = 0; j < spec.count; ++j) {
+    const auto k = static_cast<std::size_t>(j);
+    if (zero_start_[k] && s0_.v[k] != 0.0) zero_start_[k] = false;
+  }
+  auto at_or_below = [&](Guard g) {
+    const int j = guard_slot(mode_, g);
+    return j >= 0 && !zero_start_[static_cast<std::size_t>(j)] &&
+           s0_.v[static_cast<std::size_t>(j)] <= 0.0;
+  };
+  const int lift = guard_slot(mode_, Guard::kLiftOff);
+  if (lift < 0 || s0_.v[static_cast<std::size_t>(lift)] > 0.0) tension_ = false;
+  const int friction = guard_slot(mode_, Guard::kFrictionLimit);
+  if (friction >= 0) {
+    const double m = s0_.v[static_cast<std::size_t>(friction)];
+    if (m <= 0.0 && !friction_over_) friction_exceeded(t, s0_);
+    if (m > 0.0) friction_over_ = false;
+  }
+  if (at_or_below(Guard::kOverturn)) return overturned(t, x);
+  if (!tension_ && at_or_below(Guard::kLiftOff)) return lift_off(t, x);
+  if (mode_ == ContactMode::kFullContact && !suppress_uplift_at_start_) {
+    const bool up1 = at_or_below(Guard::kUpliftEdge1), up2 = at_or_below(Guard::kUpliftEdge2);
+    if (up1 || up2) return uplift(t, x, up1 && (!up2 || s0_.v[0] <= s0_.v[1]) ? 1 : 2);
+  }
+  suppress_uplift_at_start_ = false;
+  if (flying()) {
+    for (int e : {1, 2}) {
+      if (at_or_below(e == 1 ? Guard::kLandingEdge1 : Guard::kLandingEdge2)) return land(t, x, e);
+    }
+  }
+  return true;
+}
+
+// one accepted step plus whatever happens in it; false when the run ends
+template <int N, int MaxN>
+bool Simulator<N, MaxN>::advance(double& t, State& x) {
+  if (still_) return advance_still(t, x);
+  if (exact_) return advance_with(prop_, t, x);
+  return advance_with(integ_, t, x);
+}
+
+// the earliest crossing of a resetting guard among the step's samples, after recording the
+// non-resetting ones before it; false when none
+template <int N, int MaxN>
+bool Simulator<N, MaxN>::step_guards(int samples, double t1, double& t_hit, int& slot_hit) {
+  const ModeSpec& spec = mode_spec(mode_);
+  t_hit = std::numeric_limits<double>::infinity();
+  slot_hit = -1;
+  std::array<double, kMaxGuards> when;
+  when.fill(std::numeric_limits<double>::infinity());
+  for (int j = 0; j < spec.count; ++j) {
+    const auto k = static_cast<std::size_t>(j);
+    const GuardSpec& g = guard_spec(spec.guards[k]);
+    if (g.guard == Guard::kPeak && !rocking()) continue;
+    if (g.guard == Guard::kFrictionLimit && friction_over_) continue;
+    if (g.guard == Guard::kLiftOff && tension_) continue;
+    when[k] = first_crossing(j, samples_buf_.data(), samples, zero_start_[k], g.fires_if_unresolved,
+                             *this);
+    if (g.reset != Reset::kRecord && when[k] < t_hit) {
+      t_hit = when[k];
+      slot_hit = j;
+    }
+  }
+  for (int j = 0; j < spec.count; ++j) {
+    const auto k = static_cast<std::size_t>(j);
+    if (guard_spec(spec.guards[k]).reset == Reset::kRecord && when[k] <= std::min(t_hit, t1))
+      record(j, when[k]);
+  }
+  return slot_hit >= 0;
+}
+
+// the step of `integ` (the integrator, or the exact propagator in full contact)
+template <int N, int MaxN>
+template <class Stepper>
+bool Simulator<N, MaxN>::advance_with(Stepper& integ, double& t, State& x) {
+  auto sys = [this](double tt, const State& xx, State& dd) { rhs(tt, xx, dd); };
+  const double t_stop = std::min(t_end_, motion_.next_breakpoint(t, break_cursor_));
+  if (++res_.steps > opt_.max_steps)
+    return stop(
+        t, "step limit reached (" + std::to_string(opt_.max_steps) + " steps; raise max_steps)");
+  if (integ.step(sys, t_stop) != Dopri5<State>::Status::kAccepted) {
+    // the step limit is relative (min_step x max(1 s, t)); while rocking the usual cause is
+    // impacts accumulating with the chatter cut-off disabled, so the message says so
+    const double h_min = ctl_.min_step * std::max(1.0, std::abs(t));
+    const std::string cause =
+        rocking() && opt_.chatter_ratio <= 0.0
+            ? "impacts accumulating while rocking with the chatter cut-off disabled "
+              "(chatter_ratio = 0); set chatter_ratio > 0"
+            : "the equations became too stiff or singular; loosen rtol/atol or check the body";
+    return stop(t, "integration step collapsed below " + short_number(h_min) + " s near t = " +
+                       short_number(t) + " s in " + to_string(mode_) + " (" + cause + ")");
+  }
+  const double t0 = integ.t0(), t1 = integ.t1();
+  if (opt_.progress) opt_.progress->store(t1, std::memory_order_relaxed);
+  // sample the guards across the step, keeping the states for the extremes
+  auto& smp = samples_buf_;
+  smp[0] = s0_;
+  for (int k = 1; k <= samples_; ++k) {
+    const double tk = k == samples_ ? t1 : t0 + (t1 - t0) * k / samples_;
+    State& xk = sample_states_[static_cast<std::size_t>(k)];
+    if (k == samples_) {
+      xk = integ.x1();
+    } else {
+      integ.dense(tk, xk);
+    }
+    evaluate(tk, xk, smp[static_cast<std::size_t>(k)]);
+  }
+  double t_hit = 0.0;
+  int slot_hit = -1;
+  const bool hit = step_guards(samples_, t1, t_hit, slot_hit);
+  // extremes from the samples that precede any state change
+  for (int k = 1; k <= samples_; ++k) {
+    const auto kk = static_cast<std::size_t>(k);
+    if (smp[kk].t >= t_hit) break;
+    observe(smp[kk], sample_states_[kk]);
+  }
+  if (!hit) {
+    // an analytic motion may jump at a breakpoint: start the next step from its right limit
+    if (t1 == t_stop && t1 < t_end_ && !motion_.is_sampled()) {
+      integ.refresh_derivative(sys, std::nextafter(t1, t_end_));
+    }
+    emit_rows_until(t1);
+    t = t1;
+    x = integ.x1();
+    s0_ = smp[static_cast<std::size_t>(samples_)];
+    zero_start_.fill(false);
+    const int friction = guard_slot(mode_, Guard::kFrictionLimit);
+    if (friction >= 0 && s0_.v[static_cast<std::size_t>(friction)] > 0.0) friction_over_ = false;
+    const int lift = guard_slot(mode_, Guard::kLiftOff);
+    if (lift >= 0 && s0_.v[static_cast<std::size_t>(lift)] > 0.0) tension_ = false;
+    return true;
+  }
+  // land exactly on the event and act on it
+  if (t_hit > t0) integ.restep_to(sys, t_hit);
+  emit_rows_until(t_hit);
+  t = t_hit;
+  x = t_hit > t0 ? integ.x1() : integ.x0();
+  return fire(slot_hit, t, x);
+}
+
+// a rigid body in full contact does not move, and its guards (uplift about either edge, lift-off,
+// friction margin) depend on the base acceleration alone, linearly (docs/theory.md, "A rigid body
+// in full contact"). Under a sampled record they are linear between samples, so a sign check at
+// each sample finds every crossing and the state jumps from sample to sample; an analytic motion
+// is checked at event_samples points per max_step.
+template <int N, int MaxN>
+bool Simulator<N, MaxN>::advance_still(double& t, State& x) {
+  // each span checked counts as a step toward max_steps
+  if (++res_.steps > opt_.max_steps)
+    return stop(
+        t, "step limit reached (" + std::to_string(opt_.max_steps) + " steps; raise max_steps)");
+  double ta = t, tb = t;
+  int samples = 1;
+  if (motion_.is_sampled()) {
+    tb = scan_record(t);
+  } else if (t >= motion_.duration()) {
+    tb = t_end_;  // the motion is over (zero): nothing can change any more
+  } else {
+    tb = std::min({t_end_, motion_.next_breakpoint(t, break_cursor_), t + opt_.max_step});
+    samples = samples_;
+  }
+  auto& smp = samples_buf_;
+  smp[0] = s0_;
+  if (motion_.is_sampled() && scan_from_ > ta) {
+    // the scan passed samples with no event on them: start from the last of them
+    ta = scan_from_;
+    evaluate(ta, x_still_, smp[0]);
+  }
+  for (int k = 1; k <= samples; ++k) {
+    const double tk = k == samples ? tb : ta + (tb - ta) * k / samples;
+    evaluate(tk, x_still_, smp[static_cast<std::size_t>(k)]);
+  }
+  still_t1_ = tb;
+  if (opt_.progress) opt_.progress->store(tb, std::memory_order_relaxed);
+  double t_hit = 0.0;
+  int slot_hit = -1;
+  const bool hit = step_guards(samples, tb, t_hit, slot_hit);
+  for (int k = 1; k <= samples; ++k) {
+    const auto kk = static_cast<std::size_t>(k);
+    if (smp[kk].t >= t_hit) break;
+    observe(smp[kk], x_still_);
+  }
+  if (!hit) {
+    emit_rows_until(tb);
+    t = tb;
+    s0_ = smp[static_cast<std::size_t>(samples)];
+    if (s0_.v[3] > 0.0) friction_over_ = false;  // slot 3: the friction margin
+    if (s0_.v[2] > 0.0) tension_ = false;        // slot 2: the vertical reaction
+    return true;
+  }
+  emit_rows_until(t_hit);
+  t = t_hit;
+  x = x_still_;
+  return fire(slot_hit, t, x);
+}
+
+// walks the record's samples after t while every guard stays positive there, folding their
+// reactions into the extremes; returns the end of the first span that may hold a crossing (a
+// sample where some guard is <= 0), or the end time. scan_from_ is the span's start.
+template <int N, int MaxN>
+double Simulator<N, MaxN>::scan_record(double t) {
+  const std::vector<double>& ts = motion_.times();
+  const std::vector<double>& hx = motion_.horizontal();
+  const std::vector<double>& vy = motion_.vertical();
+  const bool vertical = vy.size() == ts.size();
+  const double g = dyn_.g();
+  const double a1 = dyn_.alpha1(), a2 = dyn_.alpha2();
+  const double fc = opt_.friction_coefficient;
+  const bool friction = std::isfinite(fc);
+  std::size_t i = scan_index_;
+  while (i > 0 && ts[i - 1] > t) --i;
+  while (i < ts.size() && ts[i] <= t) ++i;
+  scan_from_ = t;
+  double shear = 0.0, demand = 0.0;
+  // uplift about edge 1 / edge 2, lift-off, friction margin, over M g (rigid body)
+  for (; i < ts.size() && ts[i] < t_end_; ++i) {
+    const double ax = hx[i] / g, ay = 1.0 + (vertical ? vy[i] / g : 0.0);
+    const double u1 = a1 * ay - ax, u2 = a2 * ay + ax;
+    if (!(u1 > 0.0 && u2 > 0.0 && ay > 0.0)) break;
+    if (friction) {
+      // an exceedance is reported once, and again only after the margin has turned positive
+      if (fc * ay - std::abs(ax) > 0.0) {
+        friction_over_ = false;
+      } else if (!friction_over_) {
+        break;
+      }
+    }
+    shear = std::max(shear, std::abs(ax));
+    if (ay >= kPressingFraction) demand = std::max(demand, std::abs(ax) / ay);
+    scan_from_ = ts[i];
+  }
+  scan_index_ = i;
+  Extremes& ex = res_.extremes;
+  const double mg = dyn_.mass() * g;
+  ex.max_base_shear = std::max(ex.max_base_shear, mg * shear);
+  ex.max_overturning_moment = std::max(ex.max_overturning_moment, mg * dyn_.height() * shear);
+  ex.max_friction_demand = std::max(ex.max_friction_demand, demand);
+  return i < ts.size() ? std::min(ts[i], t_end_) : t_end_;
+}
+
+// the state at t within the last step (or the still state)
+template <int N, int MaxN>
+void Simulator<N, MaxN>::state_at(double t, State& out) const {
+  if (still_) {
+    out = x_still_;
+  } else if (exact_) {
+    prop_.dense(t, out);
+  } else {
+    integ_.dense(t, out);
+  }
+}
+
+// ---- resets
+// --------------------------------------------------------------------------------------
+
+// a resetting guard of the current mode fired at (t, x); false when the run ends
+template <int N, int MaxN>
+bool Simulator<N, MaxN>::fire(int slot, double t, State& x) {
+  // resets piling up at one instant would loop forever: stop instead
+  if (t - zeno_time_ < 1e-9 * std::max(1.0, t)) {
+    if (++same_time_events_ > 64) {
+      return stop(t, "contact changes accumulate at t = " + short_number(t) +
+                         " s without time advancing (Zeno behaviour) in " + to_string(mode_));
+    }
+  } else {
+    zeno_time_ = t;
+    same_time_events_ = 0;
+  }
+  const GuardSpec& g = guard_spec(mode_spec(mode_).guards[static_cast<std::size_t>(slot)]);
+  switch (g.reset) {
+    case Reset::kUplift:
+      return uplift(t, x, g.edge);
+    case Reset::kLiftOff:
+      return lift_off(t, x);
+    case Reset::kImpact:
+      return impact(t, x);
+    case Reset::kOverturn:
+      return overturned(t, x);
+    case Reset::kLanding:
+      return land(t, x, g.edge);
+    case Reset::kRecord:
+      break;
+  }
+  return true;
+}
+
+template <int N, int MaxN>
+bool Simulator<N, MaxN>::uplift(double t, State& x, int e) {
+  Event ev;
+  ev.time = t;
+  ev.kind = EventKind::kUplift;
+  ev.edge = e;
+  ev.offset = offset_;
+  rec_.event(ev);
+  if (res_.extremes.first_uplift_time < 0.0) {
+    res_.extremes.first_uplift_time = t;
+    res_.extremes.first_uplift_edge = e;
+  }
+  mode_ = e == 1 ? ContactMode::kRockingEdge1 : ContactMode::kRockingEdge2;
+  x(0) = 0.0;
+  x(ithd()) = 0.0;
+  last_contact_change_ = t;
+  // theta = 0 and it must grow: the impact and peak functions start at zero, known to turn
+  // positive
+  zero_start_.fill(false);
+  zero_start_[static_cast<std::size_t>(guard_slot(mode_, Guard::kImpact))] = true;
+  zero_start_[static_cast<std::size_t>(guard_slot(mode_, Guard::kPeak))] = true;
+  return enter_mode(t, x);
+}
+
+template <int N, int MaxN>
+void Simulator<N, MaxN>::count_impact(const Event& ev, double impulse_y, double loss,
+                                      bool chatter) {
+  rec_.event(ev);
+  Extremes& ex = res_.extremes;
+  ++ex.impacts;
+  if (chatter) {
+    ++ex.chatter_cutoffs;
+    res_.chatter_cut_off = true;
+    chatter_loss_ += loss;
+  } else {
+    impact_loss_ += loss;
+  }
+  ex.max_impulse = std::max(ex.max_impulse, impulse_y);
+  ex.max_impact_energy_loss = std::max(ex.max_impact_energy_loss, loss);
+  // the cut-off is a numerical device on a vanishing impulse (its ratio is 1/alpha for a rigid
+  // block whatever the speed): it sets no friction demand
+  if (!chatter && impulse_y > 0.0)
+    ex.max_friction_demand = std::max(ex.max_friction_demand, ev.friction_demand);
+  if (!chatter && std::isfinite(opt_.friction_coefficient) &&
+      ev.friction_demand > opt_.friction_coefficient) {
+    res_.friction_exceeded = true;
+    Event fe = ev;
+    fe.kind = EventKind::kFrictionExceeded;
+    rec_.event(fe);
+  }
+  if (loss < -1e-12 * std::max(1.0, rec_.energy_scale())) {
+    res_.impact_gained_energy = true;
+    Event ge = ev;
+    ge.kind = EventKind::kImpactGainedEnergy;
+    rec_.event(ge);
+  }
+}
+
+// rocking reaches theta = 0: the impact law of theory §8-§10
+template <int N, int MaxN>
+bool Simulator<N, MaxN>::impact(double t, State& x) {
+  const int landing = edge() == 1 ? 2 : 1;
+  unpack(x);
+  const double thd_minus = x(ithd());
+  const bool chatter = t - last_contact_change_ < chatter_interval_;
+  const auto out =
+      resolve_impact(dyn_, landing, q_, thd_minus, qd_, opt_.restitution_factor, chatter);
+  Event ev;
+  ev.time = t;
+  ev.kind = chatter ? EventKind::kChatterCutoff
+                    : (out.both_edges ? EventKind::kRockingEnded : EventKind::kImpact);
+  ev.edge = landing;
+  ev.theta_dot_before = thd_minus;
+  ev.theta_dot_after = out.theta_dot;
+  ev.energy_loss = out.energy_loss;
+  ev.impulse_x = out.impulse(0);
+  ev.impulse_y = out.impulse(1);
+  ev.friction_demand = out.impulse(1) > 0.0 ? std::abs(out.impulse(0)) / out.impulse(1)
+                                            : std::numeric_limits<double>::infinity();
+  ev.offset = offset_;
+  count_impact(ev, out.impulse(1), out.energy_loss, chatter);
+  x(0) = 0.0;
+  x(ithd()) = out.theta_dot;
+  x.segment(iqd(), n_) = out.q_dot;
+  mode_ = out.both_edges ? ContactMode::kFullContact
+                         : (landing == 1 ? ContactMode::kRockingEdge1 : ContactMode::kRockingEdge2);
+  // a degenerate excursion (no time since uplift) must not uplift again at once
+  if (out.both_edges && t == last_contact_change_) suppress_uplift_at_start_ = true;
+  last_contact_change_ = t;
+  zero_start_.fill(false);
+  if (!out.both_edges)
+    zero_start_[static_cast<std::size_t>(guard_slot(mode_, Guard::kImpact))] = true;
+  if (res_.extremes.impacts > opt_.max_impacts)
+    return stop(t, "impact limit reached (" + std::to_string(opt_.max_impacts) + ")");
+  return enter_mode(t, x);
+}
+
+// the floor stops pressing: the body flies, with no impulse (theory "Flight", lift-off map)
+template <int N, int MaxN>
+bool Simulator<N, MaxN>::lift_off(double t, State& x) {
+  unpack(x);
+  const int e = edge();  // in full contact theta = 0 and either edge gives the same c.g.
+  const double sn = std::sin(x(0)), cs = std::cos(x(0));
+  // a free body must move its touching tipping points up: otherwise the sticking pivot is pulled
+  // sideways as its force vanishes and the body could only leave it by sliding, which is not
+  // modelled here; the floor is let pull (flagged) until it presses again (theory "Lift-off")
+  const BaseAcceleration a = motion_.at(t, event_cursor_);
+  const bool dives = (mode_ != ContactMode::kRockingEdge2 &&
+                      dyn_.free_corner_acceleration(1, sn, cs, q_, x(ithd()), qd_, a) < 0.0) ||
+                     (mode_ != ContactMode::kRockingEdge1 &&
+                      dyn_.free_corner_acceleration(2, sn, cs, q_, x(ithd()), qd_, a) < 0.0);
+  if (dives) {
+    tension_ = true;
+    res_.pivot_tension = true;
+    Event ev;
+    ev.time = t;
+    ev.kind = EventKind::kPivotTension;
+    ev.edge = rocking() ? e : 0;
+    ev.theta = x(0);
+    ev.theta_dot_before = ev.theta_dot_after = x(ithd());
+    ev.offset = offset_;
+    rec_.event(ev);
+    return enter_mode(t, x);
+  }
+  Eigen::Vector2d r, v;
+  dyn_.cg_from_pivot(e, sn, cs, q_, x(ithd()), qd_, r, v);
+  x(ixc()) = offset_ + dyn_.height() * dyn_.alpha(e) + r(0);
+  x(ixc() + 1) = r(1);
+  x(ixc() + 2) = v(0);
+  x(ixc() + 3) = v(1);
+  Event ev;
+  ev.time = t;
+  ev.kind = EventKind::kLiftOff;
+  ev.edge = mode_ == ContactMode::kFullContact ? 0 : e;
+  ev.theta = x(0);
+  ev.theta_dot_before = ev.theta_dot_after = x(ithd());
+  ev.offset = offset_;
+  rec_.event(ev);
+  ++res_.extremes.lift_offs;
+  const ContactMode from = mode_;
+  mode_ = ContactMode::kFlight;
+  flight_start_ = t;
+  last_contact_change_ = t;
+  // the tipping points that touched the floor start at zero height and rise
+  zero_start_.fill(false);
+  if (from != ContactMode::kRockingEdge2)
+    zero_start_[static_cast<std::size_t>(guard_slot(mode_, Guard::kLandingEdge1))] = true;
+  if (from != ContactMode::kRockingEdge1)
+    zero_start_[static_cast<std::size_t>(guard_slot(mode_, Guard::kLandingEdge2))] = true;
+  return enter_mode(t, x);
+}
+
+// tipping point e lands after a flight: the plastic corner impact (theory "Landing"); at theta = 0
+// with the body turning into the floor about e, both edges land (flat)
+template <int N, int MaxN>
+bool Simulator<N, MaxN>::land(double t, State& x, int e) {
+  unpack(x);
+  const double th = x(0), thd_minus = x(ithd());
+  const double sn = std::sin(th), cs = std::cos(th), h = dyn_.height();
+  const Eigen::Vector2d v_c = cg_velocity(x);
+  const double kinetic_before = dyn_.flight_kinetic_energy(q_, thd_minus, qd_, v_c);
+  const Eigen::Vector2d v_corner = dyn_.corner_velocity_body(e, sn, cs, q_, thd_minus, qd_, v_c);
+  double thd_plus = 0.0;
+  Vec qd_plus(n_);
+  dyn_.corner_impact(e, q_, thd_minus, qd_, v_corner, thd_plus, qd_plus);
+  bool flat = false;
+  if (th == 0.0 && edge_sign(e) * thd_plus <= 0.0) {
+    // level: the body rocks on the other tipping point if its map turns it up about that one,
+    // else both land (both vertical impulses are then compressive; theory "Landing")
+    const int o = e == 1 ? 2 : 1;
+    const Eigen::Vector2d v_other = dyn_.corner_velocity_body(o, sn, cs, q_, thd_minus, qd_, v_c);
+    double thd_o = 0.0;
+    Vec qd_o(n_);
+    dyn_.corner_impact(o, q_, thd_minus, qd_, v_other, thd_o, qd_o);
+    if (edge_sign(o) * thd_o > 0.0) {
+      e = o;
+      thd_plus = thd_o;
+      qd_plus = qd_o;
+    } else {
+      flat = true;
+    }
+  }
+  const double x_corner = dyn_.corner_x(e, sn, cs, q_, x(ixc()));
+  if (flat) {
+    // both edges on the floor: theta_dot = 0, the modal momenta are conserved
+    thd_plus = 0.0;
+    const Vec p = dyn_.flight_modal_momenta(e, q_, thd_minus, qd_, v_corner);
+    qd_plus = dyn_.mu_inverse() * p;
+  }
+  x(ithd()) = thd_plus;
+  x.segment(iqd(), n_) = qd_plus;
+  // the c.g. velocity after, for the impulse
+  Eigen::Vector2d r, v_after;
+  dyn_.cg_from_pivot(e, sn, cs, q_, thd_plus, qd_plus, r, v_after);
+  offset_ = x_corner - h * dyn_.alpha(e);
+  mode_ = flat ? ContactMode::kFullContact
+               : (e == 1 ? ContactMode::kRockingEdge1 : ContactMode::kRockingEdge2);
+  const double kinetic_after = kinetic_energy(x);
+  const Eigen::Vector2d impulse = dyn_.mass() * (v_after - v_c);
+  Event ev;
+  ev.time = t;
+  ev.kind = EventKind::kLanding;
+  ev.edge = flat ? 0 : e;
+  ev.theta = th;
+  ev.theta_dot_before = thd_minus;
+  ev.theta_dot_after = thd_plus;
+  ev.energy_loss = kinetic_before - kinetic_after;
+  ev.impulse_x = impulse(0);
+  ev.impulse_y = impulse(1);
+  ev.friction_demand = impulse(1) > 0.0 ? std::abs(impulse(0)) / impulse(1)
+                                        : std::numeric_limits<double>::infinity();
+  ev.offset = offset_;
+  res_.extremes.flight_time += t - flight_start_;
+  count_impact(ev, impulse(1), ev.energy_loss, false);
+  if (impulse(1) < 0.0) {
+    // the sticking tipping point would need the floor to pull: say so
+    Event te = ev;
+    te.kind = EventKind::kTensileLanding;
+    rec_.event(te);
+  }
+  last_contact_change_ = t;
+  zero_start_.fill(false);
+  if (rocking() && th == 0.0)
+    zero_start_[static_cast<std::size_t>(guard_slot(mode_, Guard::kImpact))] = true;
+  if (res_.extremes.impacts > opt_.max_impacts)
+    return stop(t, "impact limit reached (" + std::to_string(opt_.max_impacts) + ")");
+  return enter_mode(t, x);
+}
+
+template <int N, int MaxN>
+bool Simulator<N, MaxN>::overturned(double t, State& x) {
+  const int side = flying() ? (x(0) >= 0.0 ? 1 : 2) : edge();
+  res_.status = Status::kOverturned;
+  res_.extremes.overturn_time = t;
+  res_.extremes.overturn_edge = side;
+  if (flying()) res_.extremes.flight_time += t - flight_start_;
+  Event ev;
+  ev.time = t;
+  ev.kind = EventKind::kOverturn;
+  ev.edge = side;
+  ev.theta = x(0);
+  ev.offset = offset_of(x);
+  rec_.event(ev);
+  res_.message = std::string("overturned about edge ") + std::to_string(side) +
+                 " at t = " + short_number(t) + " s" + (flying() ? " (in flight)" : "");
+  return false;
+}
+
+template <int N, int MaxN>
+bool Simulator<N, MaxN>::stop(double t, std::string why) {
+  res_.status = Status::kStopped;
+  Event ev;
+  ev.time = t;
+  ev.kind = EventKind::kStopped;
+  rec_.event(ev);
+  res_.message = std::move(why);
+  return false;
+}
+
+// a non-resetting guard crossed at t: record it
+template <int N, int MaxN>
+void Simulator<N, MaxN>::record(int slot, double t) {
+  state_at(t, xr_);
+  GuardSample s;
+  evaluate(t, xr_, s);
+  if (mode_spec(mode_).guards[static_cast<std::size_t>(slot)] == Guard::kPeak) {
+    Event e;
+    e.time = t;
+    e.kind = EventKind::kPeak;
+    e.edge = edge();
+    e.theta = xr_(0);
+    e.offset = offset_;
+    rec_.event(e);
+    Observation o = observation(t, xr_, s);
+    rec_.observe(o);
+  } else {
+    friction_exceeded(t, s);
+  }
+}
+
+template <int N, int MaxN>
+void Simulator<N, MaxN>::friction_exceeded(double t, const GuardSample& s) {
+  friction_over_ = true;
+  res_.friction_exceeded = true;
+  Event e;
+  e.time = t;
+  e.kind = EventKind::kFrictionExceeded;
+  e.edge = rocking() ? edge() : 0;
+  e.friction_demand = s.fj > 0.0 ? std::abs(s.fi) / s.fj : std::numeric_limits<double>::infinity();
+  e.offset = offset_;
+  rec_.event(e);
+}
+
+// ---- outputs
+// -------------------------------------------------------------------------------------
+
+template <int N, int MaxN>
+double Simulator<N, MaxN>::kinetic_energy(const State& x) {
+  unpack(x);
+  if (flying()) return dyn_.flight_kinetic_energy(q_, x(ithd()), qd_, cg_velocity(x));
+  const double a = rocking() ? dyn_.alpha(edge()) : 0.0;
+  return dyn_.kinetic_energy(a, q_, x(ithd()), qd_);
+}
+
+template <int N, int MaxN>
+double Simulator<N, MaxN>::potential_energy(const State& x) {
+  unpack(x);
+  if (flying()) return dyn_.flight_potential_energy(x(ixc() + 1), q_);
+  const double a = rocking() ? dyn_.alpha(edge()) : 0.0;
+  return dyn_.potential_energy(a, x(0), q_);
+}
+
+// the horizontal offset of the base centre from where the body stood [m]
+template <int N, int MaxN>
+double Simulator<N, MaxN>::offset_of(const State& x) {
+  if (!flying()) return offset_;
+  unpack(x);
+  // the base centre is the tipping-point line's point at alpha = 0
+  const double sn = std::sin(x(0)), cs = std::cos(x(0)), h = dyn_.height();
+  return x(ixc()) + h * (-cs * dyn_.psi_x().dot(q_) + sn * (1.0 + dyn_.psi_y().dot(q_)));
+}
+
+template <int N, int MaxN>
+Observation Simulator<N, MaxN>::observation(double t, const State& x, const GuardSample& s) {
+  Observation o;
+  o.t = t;
+  o.mode = mode_;
+  o.theta = x(0);
+  o.theta_dot = x(ithd());
+  o.q = x.data() + iq();
+  o.q_dot = x.data() + iqd();
+  o.fi = s.fi;
+  o.fj = s.fj;
+  o.moment = s.moment;
+  o.input_work = x(iw());
+  o.damping_loss = x(id());
+  const double base = body_.params().b1 + body_.params().b2;
+  if (flying()) {
+    unpack(x);
+    const double sn = std::sin(x(0)), cs = std::cos(x(0));
+    const double y1 = dyn_.corner_height(1, sn, cs, q_, x(ixc() + 1));
+    const double y2 = dyn_.corner_height(2, sn, cs, q_, x(ixc() + 1));
+    o.lift = std::min(y1, y2);
+    o.high = std::max(y1, y2);
+    o.offset = offset_of(x);
+  } else {
+    o.high = base * std::sin(std::abs(x(0)));
+    o.offset = offset_;
+  }
+  return o;
+}
+
+template <int N, int MaxN>
+void Simulator<N, MaxN>::emit_rows_until(double t_cut) {
+  if (opt_.output_dt <= 0.0) return;
+  for (;;) {
+    const double to = static_cast<double>(next_output_) * opt_.output_dt;
+    if (to > t_cut || to > t_end_ * (1.0 + 1e-14)) break;
+    state_at(std::min(to, still_ ? still_t1_ : (exact_ ? prop_.t1() : integ_.t1())), xr_);
+    emit_row(to, xr_);
+    ++next_output_;
+  }
+}
+
+template <int N, int MaxN>
+void Simulator<N, MaxN>::emit_row(double t, const State& x) {
+  GuardSample s;
+  evaluate(t, x, s);
+  const BaseAcceleration a = motion_.at(t, event_cursor_);
+  const Observation o = observation(t, x, s);
+  // the resultant's distance from the c.g. projection [m]: at the pivot while rocking
+  double resultant = 0.0;
+  if (rocking()) {
+    resultant = dyn_.height() * dyn_.alpha(edge());
+  } else if (mode_ == ContactMode::kFullContact) {
+    resultant = dyn_.height() * s.moment / s.fj;
+  }
+  rec_.row(o, a, kinetic_energy(x), potential_energy(x), resultant, impact_loss_ + chatter_loss_);
+}
+
+template <int N, int MaxN>
+void Simulator<N, MaxN>::finish(double t, const State& x) {
+  res_.t_end = t;
+  if (opt_.progress) opt_.progress->store(t, std::memory_order_relaxed);
+  if (opt_.output_dt > 0.0 && (res_.history.time.empty() || res_.history.time.back() < t - 1e-12)) {
+    emit_row(t, x);
+  }
+  if (flying() && res_.status != Status::kOverturned)
+    res_.extremes.flight_time += t - flight_start_;
+  res_.final_phase = mode_;
+  res_.final_theta = x(0);
+  res_.final_theta_dot = x(ithd());
+  res_.final_q = x.segment(iq(), n_);
+  res_.final_q_dot = x.segment(iqd(), n_);
+  res_.final_offset = offset_of(x);
+  EnergyBalance& e = res_.energy;
+  const double kin = kinetic_energy(x);
+  const double pot = potential_energy(x);
+  e.input_work = x(iw());
+  e.damping_loss = x(id());
+  e.impact_loss = impact_loss_;
+  e.chatter_loss = chatter_loss_;
+  e.kinetic_change = kin - kinetic0_;
+  e.potential_change = pot - (energy0_ - kinetic0_);
+  e.residual = e.input_work - (e.kinetic_change + e.potential_change + e.damping_loss +
+                               e.impact_loss + e.chatter_loss);
+  e.scale = std::max({rec_.energy_scale(), std::abs(energy0_ - pot), std::abs(kin), kinetic0_,
+                      impact_loss_ + chatter_loss_});
+  res_.rejected_steps = integ_.rejected_steps();
+  res_.rhs_evaluations = integ_.rhs_evaluations();
+  if (res_.status == Status::kCompleted) res_.message = "completed";
+}
 
 }  // namespace flexrock::detail

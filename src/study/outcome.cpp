@@ -16,8 +16,6 @@ const char* to_string(Outcome o) {
       return "overturned_after_impacts";
     case Outcome::kOverturnedWithoutImpact:
       return "overturned_without_impact";
-    case Outcome::kContactLost:
-      return "contact_lost";
     case Outcome::kStopped:
       return "stopped";
   }
@@ -40,33 +38,17 @@ RunSummary summarize(const Body& body, const SimulationResult& r) {
   s.max_friction_demand = x.max_friction_demand;
   s.max_uplift = x.max_uplift;
   s.t_end = r.t_end;
-  switch (r.status) {
-    case Status::kOverturned:
-      s.outcome =
-          x.impacts == 0 ? Outcome::kOverturnedWithoutImpact : Outcome::kOverturnedAfterImpacts;
-      break;
-    case Status::kContactLost: {
-      // a body that leaves the floor already past its static overturning angle is falling: the
-      // static criterion (paper eq. 5) would have called it overturned before this point
-      const int edge = r.final_theta >= 0.0 ? 1 : 2;
-      if (std::abs(r.final_theta) >= body.tipping_angle(edge)) {
-        s.outcome =
-            x.impacts == 0 ? Outcome::kOverturnedWithoutImpact : Outcome::kOverturnedAfterImpacts;
-        s.overturn_time = r.t_end;
-        s.overturn_edge = edge;
-      } else {
-        s.outcome = Outcome::kContactLost;
-      }
-      break;
-    }
-    case Status::kStopped:
-      s.outcome = Outcome::kStopped;
-      break;
-    case Status::kCompleted:
-      // an uplift without any tilt (the base acceleration touching the threshold) is no rocking
-      s.outcome =
-          x.first_uplift_time >= 0.0 && s.max_theta > 0.0 ? Outcome::kRocking : Outcome::kNoUplift;
-      break;
+  if (flexrock::overturned(r)) {
+    // the engine's one overturning rule, whether the body was rocking or in flight
+    s.outcome =
+        x.impacts == 0 ? Outcome::kOverturnedWithoutImpact : Outcome::kOverturnedAfterImpacts;
+  } else if (r.status == Status::kStopped) {
+    s.outcome = Outcome::kStopped;
+  } else {
+    // an uplift without any tilt (the base acceleration touching the threshold) is no rocking;
+    // a body that left the floor (flight) did move
+    const bool moved = (x.first_uplift_time >= 0.0 && s.max_theta > 0.0) || x.lift_offs > 0;
+    s.outcome = moved ? Outcome::kRocking : Outcome::kNoUplift;
   }
   return s;
 }

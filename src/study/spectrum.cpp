@@ -183,7 +183,7 @@ RunSummary run_pulse_cell(const Body& body, const SpectrumSpec& spec, double a_p
   // follow the free motion (the Ricker wavelet never quite ends)
   if (body.modes() == 0 && spec.pulse != PulseType::kRicker && spec.free_periods > 0.0) {
     const SimulationResult r = simulate(body, motion, {}, run_options(spec.solver, t_pulse));
-    if (r.status != Status::kCompleted || r.final_phase == Phase::kFullContact) {
+    if (r.status != Status::kCompleted || r.final_phase == ContactMode::kFullContact) {
       RunSummary s = summarize(body, r);
       if (r.status == Status::kCompleted) s.t_end = duration;
       return s;

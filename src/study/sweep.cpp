@@ -112,7 +112,7 @@ SweepRow run_one(const SweepSpec& spec, const SweepRun& run, const Body& body,
   o.progress = nullptr;
   const SimulationResult r = simulate(body, m.scaled(row.scale), {}, o);
   row.run = summarize(body, r);
-  if (r.status == Status::kStopped || r.status == Status::kContactLost) row.message = r.message;
+  if (r.status == Status::kStopped) row.message = r.message;
   return row;
 }
 

@@ -167,25 +167,29 @@ TEST_F(Adversarial, TenMillionSamplesAreReadAndRun) {
 // --- extreme motions and bodies -----------------------------------------------------------------
 
 TEST(AdversarialMotion, HundredGHorizontalPulseLiftsABlockIntoFlight) {
-  // the block uplifts at once; rocking that fast needs the floor to pull: the run ends there
+  // the block uplifts at once; rocking that fast needs the floor to pull: it leaves the floor
+  // (or, where it could only do so by sliding, the pivot is flagged) and the run goes on to an
+  // answer
   const Body body(rigid_block(0.4, 2.0, 100.0));
   const SimulationResult r = simulate(body, one_sine_pulse(100 * kG, 2 * kPi * 2.0, 2.0));
-  EXPECT_EQ(r.status, Status::kContactLost) << r.message;
-  EXPECT_NE(r.message.find("contact lost"), std::string::npos) << r.message;
+  EXPECT_NE(r.status, Status::kStopped) << r.message;
   EXPECT_GE(r.extremes.first_uplift_time, 0.0);
-  EXPECT_LT(r.t_end, 0.1);
-  ASSERT_FALSE(r.events.empty());
-  EXPECT_EQ(r.events.back().kind, EventKind::kContactLost);
+  EXPECT_TRUE(r.extremes.lift_offs > 0 || r.pivot_tension);
+  EXPECT_EQ(r.status, Status::kOverturned) << r.message;
   expect_sound(r);
 }
 
 TEST(AdversarialMotion, HundredGDownwardBaseLosesContactAtOnce) {
-  // the floor falls faster than gravity: it would have to pull the body down
+  // the floor falls faster than gravity: the body flies from t = 0 and is still in the air at the
+  // end (it rose 99 g x 0.25 s^2 / 2 relative to the floor)
   const Body body(rigid_block(0.4, 2.0, 100.0));
   const SimulationResult r =
       simulate(body, rectangular_pulse(-100 * kG, 0.5, 1.0, Component::kVertical));
-  EXPECT_EQ(r.status, Status::kContactLost) << r.message;
-  EXPECT_LT(r.t_end, 1e-6);
+  EXPECT_EQ(r.status, Status::kCompleted) << r.message;
+  ASSERT_FALSE(r.events.empty());
+  EXPECT_EQ(r.events.front().kind, EventKind::kLiftOff);
+  EXPECT_EQ(r.events.front().time, 0.0);
+  EXPECT_EQ(r.final_phase, ContactMode::kFlight);
   expect_sound(r);
 }
 
@@ -239,10 +243,9 @@ TEST(AdversarialBody, TenKilohertzModeNextToATenthHertzOneRunsToTheEnd) {
   SimulationOptions opt;
   opt.t_end = 0.5;
   const SimulationResult r = simulate(body, harmonic(0.75 * kG, 2 * kPi * 2.0, 1.0), {}, opt);
-  // it uplifts, and ends with a physical outcome (here the floor would have to pull: flight)
+  // it uplifts, and runs to the end through whatever contact modes it visits
   EXPECT_GT(r.extremes.first_uplift_time, 0.0);
-  EXPECT_EQ(r.status, Status::kContactLost) << r.message;
-  EXPECT_NE(r.status, Status::kStopped) << r.message;
+  EXPECT_EQ(r.status, Status::kCompleted) << r.message;
   expect_sound(r);
 }
 

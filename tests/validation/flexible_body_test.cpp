@@ -179,10 +179,9 @@ TEST_P(FlexibleEnergy, ConservedBetweenImpactsWithoutDampingOrBaseMotion) {
   opt.rtol = 1e-11;
   opt.atol = 1e-13;
   const auto res = simulate(body, GroundMotion::none(opt.t_end), init, opt);
-  // after an impact the modes keep their momenta and can pull the pivot up: the run may end
-  // with contact lost; the balance must hold to wherever it ends
-  ASSERT_TRUE(res.status == Status::kCompleted || res.status == Status::kContactLost)
-      << res.message;
+  // after an impact the modes keep their momenta and can pull the pivot up: the body then flies;
+  // the balance must hold throughout
+  ASSERT_EQ(res.status, Status::kCompleted) << res.message;
   const auto& h = res.history;
   const double e0 = h.kinetic[0] + h.potential[0];
   const double scale = std::max(h.kinetic[0], 1e-3 * e0);
@@ -256,8 +255,7 @@ TEST(FlexibleBody, ManyModesRunOnTheHeapPath) {
   SimulationOptions opt;
   opt.t_end = 1.0;
   const auto res = simulate(body, GroundMotion::none(opt.t_end), init, opt);
-  EXPECT_TRUE(res.status == Status::kCompleted || res.status == Status::kContactLost)
-      << res.message;
+  EXPECT_EQ(res.status, Status::kCompleted) << res.message;
   EXPECT_GT(res.extremes.impacts, 0);
   EXPECT_LT(std::abs(res.energy.residual), 1e-7 * res.energy.scale);
 }

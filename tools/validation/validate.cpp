@@ -58,20 +58,11 @@ struct Outcome {
   bool contact_lost = false;
 };
 
-// overturned: the criterion was met, or the body left the floor (contact lost) already past its
-// tipping angle, where nothing brings it back; contact lost below the tipping angle stays
-// unresolved (the model does not follow a body in flight)
-bool overturned(const Body& body, const SimulationResult& r) {
-  if (r.status == Status::kOverturned) return true;
-  return r.status == Status::kContactLost && (r.extremes.max_theta_edge1 >= body.tipping_angle(1) ||
-                                              r.extremes.max_theta_edge2 >= body.tipping_angle(2));
-}
-
 Outcome run_outcome(const Body& body, const GroundMotion& m, const SimulationOptions& o) {
   const auto r = simulate(body, m, {}, o);
   Outcome out;
-  out.overturned = overturned(body, r);
-  out.contact_lost = !out.overturned && r.status == Status::kContactLost;
+  out.overturned = flexrock::overturned(r);
+  out.contact_lost = false;  // the engine follows flight: every run is classified
   out.after_impact = out.overturned && r.extremes.impacts > 0;
   return out;
 }
@@ -519,7 +510,7 @@ json records(const std::string& data_dir) {
         for (double rtol : {1e-8, 1e-10}) {
           const auto r = simulate(body, m, {}, opts(rtol));
           const double mt = std::max(r.extremes.max_theta_edge1, r.extremes.max_theta_edge2);
-          const bool over = overturned(body, r);
+          const bool over = flexrock::overturned(r);
           if (over && first_over[i] < 0) first_over[i] = s;
           row[i == 0 ? "loose" : "tight"] = {{"max_theta_over_alpha", mt / alpha},
                                              {"overturned", over},

@@ -17,7 +17,7 @@
 namespace flexrock::io {
 
 /// Version of the summary JSON layout; raised only when keys are removed or change meaning.
-inline constexpr int kSummarySchemaVersion = 1;
+inline constexpr int kSummarySchemaVersion = 2;
 
 /// Writes a file atomically: `write` fills a stream opened on "PATH.tmp.<pid>", which is then
 /// renamed onto `path`. Throws std::runtime_error (naming the path) if the file cannot be written;

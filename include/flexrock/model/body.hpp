@@ -61,6 +61,8 @@ class Body {
   double g_over_h() const { return p_.gravity / p_.height; }  // [1/s^2]
 
   const MatrixX& mu_inverse() const { return mu_inv_; }
+  /// (mu - psi_x psi_x^T - psi_y psi_y^T)^-1: the modal mass about the deformed c.g. (flight)
+  const MatrixX& flight_mu_inverse() const { return mu_cg_inv_; }
   const MatrixX& stiffness() const { return stiffness_; }          // K = (g/h) kappa [1/s^2]
   const MatrixX& damping_matrix() const { return damping_; }       // C [1/s]
   const VectorX& natural_frequencies() const { return omega_; }    // pinned-base [rad/s], ascending
@@ -74,7 +76,7 @@ class Body {
  private:
   BodyParameters p_;
   int n_ = 0;
-  MatrixX mu_inv_, stiffness_, damping_;
+  MatrixX mu_inv_, mu_cg_inv_, stiffness_, damping_;
   VectorX omega_, ratios_, q_static_;
   double p_rock_ = 0.0, theta_c1_ = 0.0, theta_c2_ = 0.0;
 };

@@ -14,13 +14,6 @@
 
 namespace flexrock {
 
-/// Which edges touch the floor.
-enum class Phase : int {
-  kFullContact = 0,   // theta = 0, both edges down
-  kRockingEdge1 = 1,  // theta > 0, pivot on the left tipping point
-  kRockingEdge2 = 2,  // theta < 0, pivot on the right tipping point
-};
-
 /// Position of an edge relative to the c.g., over h: alpha = -alpha1 (edge 1) or alpha2 (edge 2).
 inline double edge_sign(int edge) { return edge == 1 ? 1.0 : -1.0; }
 
@@ -50,7 +43,13 @@ class Dynamics {
         delta_(body.params().delta),
         beta_(body.params().beta),
         damped_(body.damping_matrix().size() > 0 &&
-                body.damping_matrix().cwiseAbs().maxCoeff() > 0) {}
+                body.damping_matrix().cwiseAbs().maxCoeff() > 0) {
+    // about the deformed c.g. (flight, docs/theory.md "Flight"): mu_cg = mu - psi_x psi_x^T -
+    // psi_y psi_y^T is constant, Gamma = gamma + psi_y psi_x^T - psi_x psi_y^T antisymmetric
+    mu_cg_ = mu_ - psi_x_ * psi_x_.transpose() - psi_y_ * psi_y_.transpose();
+    mu_cg_inv_ = body.flight_mu_inverse();
+    gamma_cg_ = gamma_ + psi_y_ * psi_x_.transpose() - psi_x_ * psi_y_.transpose();
+  }
 
   int modes() const { return n_; }
   double mass() const { return mass_; }
@@ -203,6 +202,146 @@ class Dynamics {
     return {h_ * (psi_x_.dot(q_dot) - theta_dot * wy), h_ * (psi_y_.dot(q_dot) + theta_dot * wx)};
   }
 
+  // ---- flight (docs/theory.md, "Flight"): state (x_c, y_c) of the deformed c.g. relative to the
+  // base, theta, q; the c.g. is ballistic and the internal motion feels no gravity
+
+  /// Rotational inertia about the deformed c.g. over M h^2: m_cg = zeta^2 + 2 delta.q + q^T mu q -
+  /// (psi_x.q)^2 - (psi_y.q)^2.
+  double flight_inertia(const Vec& q) const {
+    const double px = psi_x_.dot(q), py = psi_y_.dot(q);
+    return zeta2_ + 2.0 * delta_.dot(q) + q.dot(mu_ * q) - px * px - py * py;
+  }
+  /// Coupling about the c.g.: b_cg = beta + Gamma^T q.
+  Vec flight_coupling(const Vec& q) const { return beta_ + gamma_cg_.transpose() * q; }
+
+  /// Accelerations of theta and q in flight: A_cg [thdd; qdd] = [-2 (c_cg.qd) thd;
+  /// thd (thd c_cg - 2 Gamma^T qd) - K q - C qd].
+  void flight_acceleration(const Vec& q, double theta_dot, const Vec& q_dot, double& theta_ddot,
+                           Vec& q_ddot) const {
+    const double px = psi_x_.dot(q), py = psi_y_.dot(q);
+    const Vec cv = delta_ + mu_ * q - px * psi_x_ - py * psi_y_;  // half the gradient of m_cg
+    const Vec b = flight_coupling(q);
+    const double m = zeta2_ + (cv + delta_).dot(q);  // m_cg: (c_cg + delta).q holds the psi terms
+    const double f_theta = -2.0 * cv.dot(q_dot) * theta_dot;
+    Vec f_q = theta_dot * (theta_dot * cv - 2.0 * (gamma_cg_.transpose() * q_dot)) - stiffness_ * q;
+    if (damped_) f_q.noalias() -= damping_ * q_dot;
+    if (n_ == 0) {
+      theta_ddot = 0.0;  // a rigid body turns at constant speed about its c.g.
+      return;
+    }
+    const Vec z = mu_cg_inv_ * b;
+    const Vec y = mu_cg_inv_ * f_q;
+    theta_ddot = (f_theta - b.dot(y)) / (m - b.dot(z));
+    q_ddot = y - z * theta_ddot;
+  }
+
+  /// Height of tipping point `edge` above the floor [m] in flight, with s = sin(theta),
+  /// c = cos(theta): y_e = y_c + h [s (alpha_e - psi_x.q) - c (1 + psi_y.q)].
+  double corner_height(int edge, double s, double c, const Vec& q, double y_c) const {
+    return y_c + h_ * (s * (alpha(edge) - psi_x_.dot(q)) - c * (1.0 + psi_y_.dot(q)));
+  }
+  /// Horizontal position of tipping point `edge` relative to the base origin [m] in flight.
+  double corner_x(int edge, double s, double c, const Vec& q, double x_c) const {
+    return x_c + h_ * (c * (alpha(edge) - psi_x_.dot(q)) + s * (1.0 + psi_y_.dot(q)));
+  }
+
+  /// Velocity of tipping point `edge` relative to the base [m/s], body components, in flight
+  /// (the c.g. velocity v_c given in inertial components).
+  Eigen::Vector2d corner_velocity_body(int edge, double s, double c, const Vec& q, double theta_dot,
+                                       const Vec& q_dot, const Eigen::Vector2d& v_c) const {
+    const double vbx = c * v_c(0) + s * v_c(1), vby = -s * v_c(0) + c * v_c(1);
+    return {vbx + h_ * (theta_dot * (1.0 + psi_y_.dot(q)) - psi_x_.dot(q_dot)),
+            vby + h_ * (theta_dot * (alpha(edge) - psi_x_.dot(q)) - psi_y_.dot(q_dot))};
+  }
+
+  /// Vertical acceleration [m/s^2] relative to the base of tipping point `edge` if the body were
+  /// free (flight) in this state: y_e'' = y_c'' + h [thdd (c a + s b) + thd^2 (c b - s a) +
+  /// 2 thd (c a' + s b') + s a'' - c b''], a = alpha_e - psi_x.q, b = 1 + psi_y.q. Negative means a
+  /// body whose pivot force vanishes cannot fly off a sticking pivot: it must slide.
+  double free_corner_acceleration(int edge, double s, double c, const Vec& q, double theta_dot,
+                                  const Vec& q_dot, BaseAcceleration base) const {
+    double thdd = 0.0;
+    Vec qdd = Vec::Zero(n_);
+    flight_acceleration(q, theta_dot, q_dot, thdd, qdd);
+    const double a = alpha(edge) - psi_x_.dot(q), b = 1.0 + psi_y_.dot(q);
+    const double ad = -psi_x_.dot(q_dot), bd = psi_y_.dot(q_dot);
+    const double add = -psi_x_.dot(qdd), bdd = psi_y_.dot(qdd);
+    return -g_ - base.y +
+           h_ * (thdd * (c * a + s * b) + theta_dot * theta_dot * (c * b - s * a) +
+                 2.0 * theta_dot * (c * ad + s * bd) + s * add - c * bdd);
+  }
+
+  /// Kinetic energy in flight relative to the base [J]: 1/2 M |v_c|^2 + 1/2 M h^2 nu^T A_cg nu.
+  double flight_kinetic_energy(const Vec& q, double theta_dot, const Vec& q_dot,
+                               const Eigen::Vector2d& v_c) const {
+    return 0.5 * mass_ * v_c.squaredNorm() +
+           0.5 * mass_ * h_ * h_ *
+               (flight_inertia(q) * theta_dot * theta_dot +
+                2.0 * theta_dot * flight_coupling(q).dot(q_dot) + q_dot.dot(mu_cg_ * q_dot));
+  }
+  /// Gravity and strain energy in flight [J]: M g y_c + 1/2 M g h q^T kappa q.
+  double flight_potential_energy(double y_c, const Vec& q) const {
+    return mass_ * g_ * (y_c + 0.5 * h_ * q.dot(kappa_ * q));
+  }
+  /// Power of the base's d'Alembert force in flight [W]: -M a_base . v_c.
+  double flight_input_power(const Eigen::Vector2d& v_c, BaseAcceleration base) const {
+    return -mass_ * (base.x * v_c(0) + base.y * v_c(1));
+  }
+
+  /// Position and velocity of the deformed c.g. relative to the pivot of `edge` [m, m/s],
+  /// inertial components, while rocking at theta (the lift-off map: no impulse).
+  void cg_from_pivot(int edge, double s, double c, const Vec& q, double theta_dot, const Vec& q_dot,
+                     Eigen::Vector2d& r, Eigen::Vector2d& v) const {
+    const double a = alpha(edge);
+    const double wx = -a + psi_x_.dot(q), wy = 1.0 + psi_y_.dot(q);
+    r = {h_ * (c * wx - s * wy), h_ * (s * wx + c * wy)};
+    const double vbx = h_ * (psi_x_.dot(q_dot) - theta_dot * wy);
+    const double vby = h_ * (psi_y_.dot(q_dot) + theta_dot * wx);
+    v = {c * vbx - s * vby, s * vbx + c * vby};
+  }
+
+  /// The plastic impact of tipping point `edge` (it sticks): the body then rocks on it. The
+  /// impulse acts where the modes vanish, so the modal momenta and the moment of momentum about
+  /// the tipping point are conserved (docs/theory.md, "Landing"):
+  ///   A_e nu+ = A_e nu- + (1/h) [w_e x V_b ; psi.V_b],
+  /// nu- = (theta_dot, q_dot) before, V_b the tipping point's velocity before (body components).
+  /// At theta = 0 with V_b that of a point turning about the other edge this is the paper's map.
+  void corner_impact(int edge, const Vec& q, double theta_dot_minus, const Vec& q_dot_minus,
+                     const Eigen::Vector2d& v_corner_body, double& theta_dot_plus,
+                     Vec& q_dot_plus) const {
+    const double a = alpha(edge);
+    const double wx = -a + psi_x_.dot(q), wy = 1.0 + psi_y_.dot(q);
+    const double m = inertia(a, q);
+    const Vec b = coupling(a, q);
+    // the right-hand side: A_e nu- plus the momenta of the tipping point's motion
+    const double r_theta = m * theta_dot_minus + b.dot(q_dot_minus) +
+                           (wx * v_corner_body(1) - wy * v_corner_body(0)) / h_;
+    const Vec r_q = b * theta_dot_minus + mu_ * q_dot_minus +
+                    (psi_x_ * v_corner_body(0) + psi_y_ * v_corner_body(1)) / h_;
+    solve_rocking_inertia(m, b, r_theta, r_q, theta_dot_plus, q_dot_plus);
+  }
+
+  /// Modal momenta over M h^2 of a flight state: p = b_e theta_dot + mu q_dot + psi.V_b/h for any
+  /// edge e (the same for both: the modes vanish at both tipping points).
+  Vec flight_modal_momenta(int edge, const Vec& q, double theta_dot, const Vec& q_dot,
+                           const Eigen::Vector2d& v_corner_body) const {
+    return coupling(alpha(edge), q) * theta_dot + mu_ * q_dot +
+           (psi_x_ * v_corner_body(0) + psi_y_ * v_corner_body(1)) / h_;
+  }
+
+  /// Solves [m b^T; b mu] [x; y] = [r_theta; r_q] by block elimination with the constant mu^-1.
+  void solve_rocking_inertia(double m, const Vec& b, double r_theta, const Vec& r_q, double& x,
+                             Vec& y) const {
+    if (n_ == 0) {
+      x = r_theta / m;
+      return;
+    }
+    const Vec z = mu_inv_ * b;
+    const Vec u = mu_inv_ * r_q;
+    x = (r_theta - b.dot(u)) / (m - b.dot(z));
+    y = u - z * x;
+  }
+
   const Vec& psi_x() const { return psi_x_; }  // participation, body i component
   const Vec& psi_y() const { return psi_y_; }  // participation, body j component
 
@@ -210,6 +349,7 @@ class Dynamics {
   int n_;
   double mass_, h_, g_, gh_, zeta2_, alpha1_, alpha2_;
   Mat mu_, mu_inv_, kappa_, stiffness_, damping_, gamma_;
+  Mat mu_cg_, mu_cg_inv_, gamma_cg_;  // about the deformed c.g. (flight)
   Vec psi_x_, psi_y_, delta_, beta_;
   bool damped_;
 };

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // One simulation: a body on a moving base, from an initial state to the end of the motion or an
-// outcome (overturned, contact lost, stopped). Outcomes are returned, never thrown.
+// outcome (overturned, stopped). Outcomes are returned, never thrown.
 #pragma once
 
 #include <atomic>
@@ -15,16 +15,26 @@
 
 namespace flexrock {
 
+/// When a run counts as overturned, in every contact mode (rocking or flight).
 enum class OverturnCriterion {
-  kStaticInstability,  // paper eq. 5: |theta| reaches the static overturning angle (default)
-  kHalfPi,             // go on until |theta| reaches pi/2 (a body past eq. 5 may still return)
+  kHalfPi,             // |theta| reaches pi/2 (default: a body past its static overturning angle
+                       // can still be brought back by a base motion that reverses)
+  kStaticInstability,  // |theta| reaches the static overturning angle (paper eq. 5)
 };
 
+/// The contact modes of the hybrid automaton (docs/theory.md, "Contact modes and transitions").
+enum class ContactMode : int {
+  kFullContact = 0,   // theta = 0, both edges down
+  kRockingEdge1 = 1,  // theta > 0, pivot on the left tipping point
+  kRockingEdge2 = 2,  // theta < 0, pivot on the right tipping point
+  kFlight = 3,        // no contact: the c.g. is ballistic relative to the base
+};
+using Phase = ContactMode;
+
 enum class Status {
-  kCompleted,    // reached the end time
-  kOverturned,   // the overturning criterion was met
-  kContactLost,  // the floor would have to pull (vertical reaction < 0): the body would fly
-  kStopped,      // the run could not go on; `message` says why
+  kCompleted,   // reached the end time
+  kOverturned,  // |theta| reached the overturning angle (OverturnCriterion), rocking or flying
+  kStopped,     // the run could not go on; `message` says why
 };
 
 enum class EventKind {
@@ -34,15 +44,19 @@ enum class EventKind {
   kChatterCutoff,       // impacts came faster than the chatter criterion: set to full contact
   kPeak,                // a rocking amplitude: theta_dot = 0 while rocking
   kOverturn,            // overturning criterion met about `edge`
-  kContactLost,         // vertical reaction reached zero
+  kLiftOff,             // the vertical reaction reached zero: the body leaves the floor (flight)
+  kLanding,             // a tipping point (`edge`; 0: both, flat) lands after a flight
   kFrictionExceeded,    // friction demand rose above the given coefficient (not terminal)
   kImpactGainedEnergy,  // an impact (with a restitution factor) added kinetic energy
   kStopped,             // step collapse, step or event limit
+  kTensileLanding,      // a plastic landing needed a pulling impulse: the sticking model breaks
+  kPivotTension,        // the vertical reaction vanished but the body cannot fly off its sticking
+                        // pivot (it would have to slide): the floor is let pull until it presses
 };
 
 const char* to_string(Status s);
 const char* to_string(EventKind k);
-const char* to_string(Phase p);
+const char* to_string(ContactMode m);
 
 /// Where the body starts. theta > 0 rocks on edge 1, theta < 0 on edge 2; theta = 0 with a
 /// nonzero theta_dot rocks on the edge its sign lifts off; otherwise full contact.
@@ -60,8 +74,9 @@ struct SimulationOptions {
   double max_step = 0.01;  // [s] cap on the step; events are sought within each step
   int event_samples = 4;   // points per step where event functions are checked
   double output_dt = 0.0;  // [s] time-history spacing; 0: no time history
-  OverturnCriterion overturn = OverturnCriterion::kStaticInstability;
-  double chatter_ratio = 0.01;  // impacts closer than this times the shortest period end rocking
+  OverturnCriterion overturn = OverturnCriterion::kHalfPi;
+  // impacts closer than this times the shortest period end rocking (docs/theory.md, "Chatter")
+  double chatter_ratio = 1e-4;
   double restitution_factor = 1.0;  // factor on theta_dot after an impact (1: the paper's law)
   double friction_coefficient = std::numeric_limits<double>::infinity();  // static friction
   long max_steps = 50'000'000;    // integrator steps before the run stops
@@ -84,13 +99,15 @@ struct Event {
   double impulse_x = 0.0;         // [N s] horizontal impulse of the floor (impacts)
   double impulse_y = 0.0;         // [N s] vertical impulse of the floor (impacts)
   double friction_demand = 0.0;   // |F_I|/F_J or |impulse_x|/impulse_y
+  double offset = 0.0;            // [m] horizontal offset of the base from where it stood
 };
 
 /// Time history at the requested output times.
 struct History {
   int modes = 0;
-  std::vector<double> time;                    // [s]
-  std::vector<int> phase;                      // 0 full contact, 1 rocking on edge 1, 2 on edge 2
+  std::vector<double> time;  // [s]
+  std::vector<int>
+      phase;  // contact mode: 0 full contact, 1 rocking on edge 1, 2 on edge 2, 3 flight
   std::vector<double> theta, theta_dot;        // [rad], [rad/s]
   std::vector<double> q, q_dot;                // [-], [1/s]; row-major, `modes` values a row
   std::vector<double> base_acc_x, base_acc_y;  // [m/s^2]
@@ -99,6 +116,8 @@ struct History {
   std::vector<double> friction_demand;  // |F_I|/F_J [-]
   std::vector<double> kinetic, potential;  // [J] relative kinetic; gravity + strain
   std::vector<double> input_work, damping_loss, impact_loss;  // [J] cumulative
+  std::vector<double> offset;  // [m] horizontal offset of the base centre from where it stood
+  std::vector<double> lift;    // [m] height of the lower tipping point above the floor
   std::size_t size() const { return time.size(); }
 };
 
@@ -106,18 +125,24 @@ struct Extremes {
   double max_theta_edge1 = 0.0;  // [rad] largest tilt on edge 1 (theta > 0)
   double max_theta_edge2 = 0.0;  // [rad] largest tilt on edge 2, as a positive number
   double max_uplift = 0.0;       // [m] height of the lifted tipping point, (b1+b2) sin|theta|
-  long impacts = 0;              // impacts, chatter cut-offs included
+  long impacts = 0;              // impacts, chatter cut-offs and landings included
+  long chatter_cutoffs = 0;      // impacts ended by the chatter criterion
   double max_impulse = 0.0;      // [N s] largest vertical impulse
   double max_impact_energy_loss = 0.0;  // [J]
   VectorX max_abs_q;                    // [-] largest |q_i|
   double max_base_shear = 0.0;          // [N] largest |F_I|
   double max_overturning_moment =
       0.0;  // [N m] largest |moment of the reaction about the c.g. projection|
-  double max_friction_demand = 0.0;  // [-] largest |F_I|/F_J, impulses included
+  double max_friction_demand = 0.0;  // [-] largest |F_I|/F_J while the floor presses, impulses
+                                     // included (docs/theory.md, "Friction demand")
   double first_uplift_time = -1.0;   // [s] -1: never
   int first_uplift_edge = 0;
   double overturn_time = -1.0;  // [s] -1: did not overturn
   int overturn_edge = 0;
+  long lift_offs = 0;              // times the body left the floor (flight)
+  double flight_time = 0.0;        // [s] total time in flight
+  double max_flight_height = 0.0;  // [m] largest height of the lower tipping point in flight
+  double max_offset = 0.0;         // [m] largest |horizontal offset| of the base centre
 };
 
 /// Energy balance relative to the base [J]: residual = input_work - (kinetic_change +
@@ -137,18 +162,24 @@ struct SimulationResult {
   Status status = Status::kCompleted;
   std::string message;  // why it stopped, in words
   double t_end = 0.0;   // [s] time reached
-  Phase final_phase = Phase::kFullContact;
+  ContactMode final_phase = ContactMode::kFullContact;
   double final_theta = 0.0, final_theta_dot = 0.0;
+  double final_offset = 0.0;  // [m] horizontal offset of the base centre at the end
   VectorX final_q, final_q_dot;
   bool friction_exceeded = false;     // friction demand rose above the coefficient
   bool chatter_cut_off = false;       // the chatter criterion ended rocking at least once
   bool impact_gained_energy = false;  // some impact added energy (restitution factor)
+  bool pivot_tension = false;         // the floor pulled on a sticking pivot (no sliding modelled)
   History history;
   Extremes extremes;
   EnergyBalance energy;
   std::vector<Event> events;
   long steps = 0, rejected_steps = 0, rhs_evaluations = 0;
 };
+
+/// The one overturning rule of every entry point (run, sweep, spectrum, Python): the engine's
+/// status, set when |theta| reaches the criterion's angle in any contact mode.
+inline bool overturned(const SimulationResult& r) { return r.status == Status::kOverturned; }
 
 /// Simulates `body` on a base moving with `motion`. Invalid options or initial state throw
 /// InputError; the physical outcome is in the result's status and events.

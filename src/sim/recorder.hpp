@@ -1,0 +1,51 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Recording a run: extremes, time-history rows and events, from plain observations that the
+// contact modes compute. Ordinary code, the same for every body size. Internal header.
+#pragma once
+
+#include "flexrock/sim/simulate.hpp"
+
+namespace flexrock::detail {
+
+/// What the extremes and the history need of one instant.
+struct Observation {
+  double t = 0.0;  // [s]
+  ContactMode mode = ContactMode::kFullContact;
+  double theta = 0.0, theta_dot = 0.0;          // [rad], [rad/s]
+  const double* q = nullptr;                    // [-] n values
+  const double* q_dot = nullptr;                // [1/s] n values
+  double fi = 0.0, fj = 0.0;                    // floor reaction over M g (0 in flight)
+  double moment = 0.0;                          // about the c.g. projection, over M g h
+  double offset = 0.0;                          // [m] horizontal offset of the base centre
+  double lift = 0.0;                            // [m] height of the lower tipping point
+  double high = 0.0;                            // [m] height of the higher tipping point
+  double input_work = 0.0, damping_loss = 0.0;  // [J] cumulative
+};
+
+/// A floor pressing with less than this fraction of the weight holds no meaningful friction
+/// demand: |F_I|/F_J grows without bound as F_J -> 0 before a lift-off (docs/theory.md, "Friction
+/// demand").
+inline constexpr double kPressingFraction = 0.05;
+
+class Recorder {
+ public:
+  Recorder(SimulationResult& res, double mass, double g, double height, int n);
+
+  /// Folds one instant into the extremes.
+  void observe(const Observation& o);
+  /// Appends one history row.
+  void row(const Observation& o, BaseAcceleration base, double kinetic, double potential,
+           double resultant, double impact_loss);
+  /// Appends an event.
+  void event(const Event& e) { res_.events.push_back(e); }
+  /// Largest |input work| or |damping loss| seen [J].
+  double energy_scale() const { return energy_scale_; }
+
+ private:
+  SimulationResult& res_;
+  double mg_, height_;
+  int n_;
+  double energy_scale_ = 0.0;
+};
+
+}  // namespace flexrock::detail

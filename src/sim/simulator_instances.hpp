@@ -1,0 +1,19 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// The body sizes the event loop is compiled for: fixed sizes for the common small bodies, a
+// stack-bounded size up to 16 modes, heap beyond. Each is instantiated once, in its own file
+// (simulator_n*.cpp), so that they compile in parallel. Internal header.
+#pragma once
+
+#include "simulator.hpp"
+
+namespace flexrock::detail {
+
+extern template class Simulator<0, 0>;
+extern template class Simulator<1, 1>;
+extern template class Simulator<2, 2>;
+extern template class Simulator<3, 3>;
+extern template class Simulator<4, 4>;
+extern template class Simulator<Eigen::Dynamic, 16>;
+extern template class Simulator<Eigen::Dynamic, Eigen::Dynamic>;
+
+}  // namespace flexrock::detail
