@@ -41,7 +41,7 @@ void bind_study(py::module_& m) {
       .value("overturned_after_impacts", Outcome::kOverturnedAfterImpacts)
       .value("overturned_without_impact", Outcome::kOverturnedWithoutImpact)
       .value("stopped", Outcome::kStopped);
-  m.def("overturned", &overturned, py::arg("outcome"),
+  m.def("overturned", static_cast<bool (*)(Outcome)>(&overturned), py::arg("outcome"),
         R"doc(Whether an outcome is one of the two overturning classes.
 
 Parameters

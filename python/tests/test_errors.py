@@ -50,7 +50,7 @@ def test_bad_initial_state_message_equals_the_cli(cli, tmp_path):
     case = tmp_path / "init.toml"
     case.write_text('[body]\ntype = "rigid_block"\nwidth = 0.4\nheight = 1.8\nmass = 10\n'
                     '[excitation.horizontal]\ntype = "none"\nduration = 1\n'
-                    '[initial]\ntheta = 1.5\n')
+                    '[initial]\ntheta = 1.6\n')
     expected = cli_error(cli, "run", "-o", tmp_path, case)
     with pytest.raises(fr.InputError) as e:
         fr.run_case(str(case), str(tmp_path))

@@ -640,8 +640,14 @@ bool Simulator<N, MaxN>::fire(int slot, double t, State& x) {
   }
   const GuardSpec& g = guard_spec(mode_spec(mode_).guards[static_cast<std::size_t>(slot)]);
   switch (g.reset) {
-    case Reset::kUplift:
+    case Reset::kUplift: {
+      // U1 + U2 = (alpha1 + alpha2) F_J / M g: when the floor also stops pressing, both uplift
+      // guards and the lift-off guard cross together, and the body flies (theory §15)
+      GuardSample now;
+      evaluate(t, x, now);
+      if (!tension_ && now.v[2] <= 0.0) return lift_off(t, x);  // slot 2: F_J
       return uplift(t, x, g.edge);
+    }
     case Reset::kLiftOff:
       return lift_off(t, x);
     case Reset::kImpact:
@@ -816,7 +822,6 @@ bool Simulator<N, MaxN>::land(double t, State& x, int e) {
   const double th = x(0), thd_minus = x(ithd());
   const double sn = std::sin(th), cs = std::cos(th), h = dyn_.height();
   const Eigen::Vector2d v_c = cg_velocity(x);
-  const double kinetic_before = dyn_.flight_kinetic_energy(q_, thd_minus, qd_, v_c);
   const Eigen::Vector2d v_corner = dyn_.corner_velocity_body(e, sn, cs, q_, thd_minus, qd_, v_c);
   double thd_plus = 0.0;
   Vec qd_plus(n_);
@@ -853,8 +858,13 @@ bool Simulator<N, MaxN>::land(double t, State& x, int e) {
   offset_ = x_corner - h * dyn_.alpha(e);
   mode_ = flat ? ContactMode::kFullContact
                : (e == 1 ? ContactMode::kRockingEdge1 : ContactMode::kRockingEdge2);
-  const double kinetic_after = kinetic_energy(x);
+  if (flat)
+    v_after = dyn_.height() * Eigen::Vector2d(dyn_.psi_x().dot(qd_plus), dyn_.psi_y().dot(qd_plus));
   const Eigen::Vector2d impulse = dyn_.mass() * (v_after - v_c);
+  // a plastic impact loses the kinetic energy of the velocity jump (Carnot), which is >= 0 by
+  // construction: the jump's c.g. velocity and its motion about the c.g. (theory §16)
+  const Vec dqd = qd_plus - qd_;
+  const double loss = dyn_.flight_kinetic_energy(q_, thd_plus - thd_minus, dqd, v_after - v_c);
   Event ev;
   ev.time = t;
   ev.kind = EventKind::kLanding;
@@ -862,14 +872,22 @@ bool Simulator<N, MaxN>::land(double t, State& x, int e) {
   ev.theta = th;
   ev.theta_dot_before = thd_minus;
   ev.theta_dot_after = thd_plus;
-  ev.energy_loss = kinetic_before - kinetic_after;
+  ev.energy_loss = loss;
   ev.impulse_x = impulse(0);
   ev.impulse_y = impulse(1);
   ev.friction_demand = impulse(1) > 0.0 ? std::abs(impulse(0)) / impulse(1)
                                         : std::numeric_limits<double>::infinity();
   ev.offset = offset_;
   res_.extremes.flight_time += t - flight_start_;
-  count_impact(ev, impulse(1), ev.energy_loss, false);
+  // a flight shorter than the chatter interval is below what the model resolves (a tipping point
+  // grazing the floor): the landing is a chatter cut-off, and the floor may pull until it presses
+  // again, so that such hops cannot accumulate without end
+  const bool chatter = t - last_contact_change_ < chatter_interval_;
+  if (chatter) {
+    ev.kind = EventKind::kChatterCutoff;
+    tension_ = true;
+  }
+  count_impact(ev, impulse(1), ev.energy_loss, chatter);
   if (impulse(1) < 0.0) {
     // the sticking tipping point would need the floor to pull: say so
     Event te = ev;
@@ -889,6 +907,9 @@ template <int N, int MaxN>
 bool Simulator<N, MaxN>::overturned(double t, State& x) {
   const int side = flying() ? (x(0) >= 0.0 ? 1 : 2) : edge();
   res_.status = Status::kOverturned;
+  Extremes& ex = res_.extremes;
+  if (x(0) > 0.0) ex.max_theta_edge1 = std::max(ex.max_theta_edge1, x(0));
+  if (x(0) < 0.0) ex.max_theta_edge2 = std::max(ex.max_theta_edge2, -x(0));
   res_.extremes.overturn_time = t;
   res_.extremes.overturn_edge = side;
   if (flying()) res_.extremes.flight_time += t - flight_start_;

@@ -100,7 +100,7 @@ TEST_F(CaseFile, MinimalCaseGetsDocumentedDefaults) {
   EXPECT_DOUBLE_EQ(c.options.output_dt, 0.01);
   EXPECT_DOUBLE_EQ(c.options.rtol, SimulationOptions{}.rtol);
   EXPECT_TRUE(std::isinf(c.options.friction_coefficient));
-  EXPECT_EQ(c.options.overturn, OverturnCriterion::kStaticInstability);
+  EXPECT_EQ(c.options.overturn, OverturnCriterion::kHalfPi);
 }
 
 TEST_F(CaseFile, SolverInitialAndOutputTablesAreRead) {
@@ -408,7 +408,7 @@ TEST_F(CaseFile, BodyKeysOfAnotherTypeAreUnknown) {
 }
 
 TEST_F(CaseFile, InitialTiltPastOverturningIsRejected) {
-  expect_error(kBlock + kPulse + "[initial]\ntheta = 0.5\n",
+  expect_error(kBlock + kPulse + "[initial]\ntheta = 1.6\n",
                {"case.toml:15:", "key 'initial.theta'", "overturning angle"});
 }
 

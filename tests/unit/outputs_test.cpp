@@ -73,7 +73,9 @@ TEST(TimeHistoryColumns, NameEveryColumnWithItsUnit) {
   EXPECT_EQ(c[5], "q1");
   EXPECT_EQ(c[6], "q2");
   EXPECT_EQ(c[7], "q1_dot_per_s");
-  EXPECT_EQ(c.back(), "impact_loss_J");
+  EXPECT_EQ(c.back(), "lift_m");
+  EXPECT_EQ(c[c.size() - 2], "offset_m");
+  EXPECT_EQ(c[c.size() - 3], "impact_loss_J");
   EXPECT_EQ(time_history_columns(0).size() + 4, c.size());
 }
 

@@ -97,7 +97,7 @@ TEST(Simulate, RejectsBadOptionsWithMessages) {
   o.event_samples = 0;
   expect_throw(o, "event_samples");
   InitialState init;
-  init.theta = 0.5;  // beyond atan(0.2)
+  init.theta = 1.6;  // beyond pi/2, the default overturning angle
   try {
     simulate(body, motion, init, {});
     ADD_FAILURE() << "accepted a tilt past overturning";

@@ -219,9 +219,13 @@ TEST(FlexibleBody, EnergyBalanceClosesUnderDampedRecordLikeShaking) {
   opt.atol = 1e-12;
   const auto res = simulate(body, motion, {}, opt);
   ASSERT_GT(res.extremes.impacts, 0);
+  ASSERT_NE(res.status, Status::kStopped) << res.message;
   EXPECT_GT(res.energy.damping_loss, 0.0);
-  EXPECT_GT(res.energy.input_work, 0.0);
-  EXPECT_LT(std::abs(res.energy.residual), 1e-7 * res.energy.scale);
+  // the base does work on the body (its sign depends on where the body ends: one that flew or
+  // fell may end lower than it started)
+  EXPECT_NE(res.energy.input_work, 0.0);
+  EXPECT_LT(std::abs(res.energy.residual), 1e-7 * res.energy.scale)
+      << to_string(res.status) << ", " << res.extremes.lift_offs << " lift-offs";
 }
 
 TEST(FlexibleBody, MirroredExcitationMirrorsSymmetricBody) {

@@ -228,7 +228,9 @@ TEST(RigidBlock, LargeLongPulseOverturnsAndCriterionOptionGoesFurther) {
         return BaseAcceleration{t < 2 * M_PI / wp ? ap * std::sin(wp * t) : 0.0, 0.0};
       },
       10.0, {2 * M_PI / wp});
-  const auto res = simulate(body, motion);
+  SimulationOptions at_static;
+  at_static.overturn = OverturnCriterion::kStaticInstability;
+  const auto res = simulate(body, motion, {}, at_static);
   EXPECT_EQ(res.status, Status::kOverturned);
   const double theta_c = std::atan(0.2);
   EXPECT_NEAR(std::max(res.extremes.max_theta_edge1, res.extremes.max_theta_edge2), theta_c, 1e-9);
@@ -237,6 +239,10 @@ TEST(RigidBlock, LargeLongPulseOverturnsAndCriterionOptionGoesFurther) {
   const auto further = simulate(body, motion, {}, opt);
   EXPECT_EQ(further.status, Status::kOverturned);
   EXPECT_GT(further.extremes.overturn_time, res.extremes.overturn_time);
+  // the default is pi/2: the one rule of every entry point
+  EXPECT_EQ(simulate(body, motion).extremes.overturn_time, further.extremes.overturn_time);
+  EXPECT_NEAR(std::max(further.extremes.max_theta_edge1, further.extremes.max_theta_edge2),
+              M_PI / 2, 1e-9);
 }
 
 TEST(RigidBlock, SquatBlockStopsOnBothEdgesAtFirstImpact) {

@@ -69,8 +69,15 @@ ImpactOutcome<Vec> resolve_impact(const Dyn& dyn, int landing_edge, const Vec& q
   const Eigen::Vector2d v_minus = dyn.cg_velocity(a_pre, q, theta_dot_minus, q_dot_minus);
   const Eigen::Vector2d v_plus = dyn.cg_velocity(a_post, q, out.theta_dot, out.q_dot);
   out.impulse = dyn.mass() * (v_plus - v_minus);
-  out.energy_loss = dyn.kinetic_energy(a_pre, q, theta_dot_minus, q_dot_minus) -
-                    dyn.kinetic_energy(a_post, q, out.theta_dot, out.q_dot);
+  if (out.both_edges || restitution_factor == 1.0) {
+    // a plastic impact loses the kinetic energy of the velocity jump (Carnot): >= 0 by
+    // construction, where the difference of the energies can round below zero
+    out.energy_loss = dyn.flight_kinetic_energy(q, out.theta_dot - theta_dot_minus,
+                                                out.q_dot - q_dot_minus, v_plus - v_minus);
+  } else {
+    out.energy_loss = dyn.kinetic_energy(a_pre, q, theta_dot_minus, q_dot_minus) -
+                      dyn.kinetic_energy(a_post, q, out.theta_dot, out.q_dot);
+  }
   return out;
 }
 
