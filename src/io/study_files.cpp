@@ -675,9 +675,10 @@ std::vector<FragilityData> fragility_data(const CsvTable& t, const FragilityQuer
       out.push_back({body, {}, {}, 0});
       it = out.end() - 1;
     }
-    // not classified: the run could not go on
+    // not classified: the run could not go on (`contact_lost`: rows written before the engine
+    // followed flight)
     const std::string& outcome = t.rows[r][cs];
-    if (outcome == "stopped") {
+    if (outcome == "stopped" || outcome == "contact_lost") {
       ++it->excluded;
       continue;
     }
