@@ -1,4 +1,13 @@
 # SPDX-License-Identifier: BSD-3-Clause
+# the engine (flexrock::core, flexrock::study) needs Eigen and Boost only; the io layer (toml++,
+# nlohmann_json) and everything above it (the command line with CLI11 and fmt, the Python module,
+# the tests) can be left out for a consumer of the engine alone
+option(FLEXROCK_BUILD_IO "Build flexrock::io (case files, records, outputs) and what needs it" ON)
+include(CMakeDependentOption)
+cmake_dependent_option(FLEXROCK_BUILD_APPS "Build the flexrock command (CLI11, fmt)" ON
+                       "FLEXROCK_BUILD_IO" OFF)
+option(FLEXROCK_INSTALL "Install rules and the CMake package (find_package(flexrock))"
+       ${FLEXROCK_MASTER_PROJECT})
 option(FLEXROCK_BUILD_TESTS "Build the test suite" ${FLEXROCK_MASTER_PROJECT})
 option(FLEXROCK_BUILD_EXAMPLES "Build the example programs" ${FLEXROCK_MASTER_PROJECT})
 option(FLEXROCK_BUILD_BENCH "Build the benchmarks (Google Benchmark)" OFF)

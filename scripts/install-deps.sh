@@ -11,7 +11,8 @@ pkgs=(build-essential cmake ninja-build pkg-config
       libtomlplusplus-dev nlohmann-json3-dev libcli11-dev libfmt-dev
       libgtest-dev libgmock-dev python3 python3-sympy
       pybind11-dev python3-dev python3-numpy python3-scipy python3-matplotlib python3-pytest
-      python3-pandas)
+      python3-pandas
+      python3-venv python3-pip python3-setuptools python3-wheel)  # pip install . (offline)
 for arg in "$@"; do
   case "$arg" in
     --python) pkgs+=(pybind11-dev python3-dev python3-numpy python3-matplotlib python3-pytest

@@ -23,13 +23,10 @@
 #include "flexrock/io/case_file.hpp"
 #include "flexrock/io/outputs.hpp"
 #include "flexrock/sim/simulate.hpp"
+#include "flexrock/version.hpp"
 #include "plot_command.hpp"
 #include "progress.hpp"
 #include "study_commands.hpp"
-
-#ifndef FLEXROCK_VERSION
-#define FLEXROCK_VERSION "unknown"
-#endif
 
 namespace {
 
@@ -279,7 +276,7 @@ int cmd_params(const std::string& file) {
 int main(int argc, char** argv) {
   CLI::App app{"flexrock: rocking, impacts and overturning of free-standing deformable bodies",
                "flexrock"};
-  app.set_version_flag("--version", std::string("flexrock ") + FLEXROCK_VERSION);
+  app.set_version_flag("--version", std::string("flexrock ") + flexrock::version());
   app.require_subcommand(1);
   app.footer(
       "Examples:\n"

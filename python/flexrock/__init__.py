@@ -65,6 +65,9 @@ from ._flexrock import (  # noqa: F401  (re-exported API)
     uniform_cantilever,
 )
 
+# the library's version, set once in CMake's project(VERSION) (also `flexrock --version`)
+__version__: str = _flexrock.__version__
+
 __all__ = [name for name in dir() if not name.startswith("_") and name not in ("Optional", "Sequence", "Union", "annotations")] + [
     "Result",
     "motion_from_array",

@@ -19,6 +19,8 @@
 #include <stdexcept>
 #include <system_error>
 
+#include "flexrock/version.hpp"
+
 namespace flexrock::io {
 
 namespace fs = std::filesystem;
@@ -292,6 +294,7 @@ std::string summary_json(const Case& c, const Body& body, const SimulationResult
   json j;
   j["schema"] = "flexrock.summary";
   j["schema_version"] = kSummarySchemaVersion;
+  j["flexrock_version"] = flexrock::version();  // the program that wrote the file
   j["case"] = {{"name", c.name}, {"description", c.description}, {"file", c.source}};
   VectorX hz = body.natural_frequencies() / (2.0 * std::numbers::pi);
   j["body"] = {{"type", c.body_type},

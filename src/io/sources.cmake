@@ -4,7 +4,9 @@
 # flexrock::io: record files (PEER .AT2, single-column, time/acceleration text and CSV)
 add_library(flexrock_io io/records.cpp)
 add_library(flexrock::io ALIAS flexrock_io)
-target_link_libraries(flexrock_io PUBLIC flexrock::core PRIVATE flexrock_warnings)
+set_target_properties(flexrock_io PROPERTIES EXPORT_NAME io)
+target_link_libraries(flexrock_io PUBLIC flexrock::core
+                                  PRIVATE $<BUILD_INTERFACE:flexrock_warnings>)
 flexrock_apply_sanitizers(flexrock_io)
 
 
@@ -13,12 +15,16 @@ target_sources(flexrock_io PRIVATE io/case_file.cpp io/outputs.cpp)
 find_package(tomlplusplus CONFIG QUIET)
 find_package(nlohmann_json 3.9 REQUIRED)
 if(TARGET tomlplusplus::tomlplusplus)
+  # a compiled library: an installed flexrock::io links it (flexrockConfig.cmake finds it)
   target_link_libraries(flexrock_io PRIVATE tomlplusplus::tomlplusplus)
+  set(FLEXROCK_IO_LINKS_TOMLPLUSPLUS ON CACHE INTERNAL "")
 else()
   # header-only use when no CMake package is installed
   target_compile_definitions(flexrock_io PRIVATE TOML_HEADER_ONLY=1)
+  set(FLEXROCK_IO_LINKS_TOMLPLUSPLUS OFF CACHE INTERNAL "")
 endif()
-target_link_libraries(flexrock_io PRIVATE nlohmann_json::nlohmann_json)
+# header-only: not part of an installed flexrock::io's link interface
+target_link_libraries(flexrock_io PRIVATE $<BUILD_INTERFACE:nlohmann_json::nlohmann_json>)
 
 # study files (spectrum specs, sweep manifests and journals, fragility input): flexrock::io
 target_sources(flexrock_io PRIVATE io/study_files.cpp)

@@ -16,6 +16,10 @@ expect_in "$WORK/out" "--output-dir"
 run "$FLEXROCK" --version
 expect_rc 0 "--version"
 grep -qE '^flexrock [0-9]+\.[0-9]+\.[0-9]+$' "$WORK/out" || fail "version line: $(cat "$WORK/out")"
+# the one version source: project(flexrock VERSION x.y.z) in CMakeLists.txt
+declared="$(sed -nE 's/^project\(flexrock VERSION ([0-9.]+).*/\1/p' "$SRC/CMakeLists.txt")"
+[ -n "$declared" ] || fail "no project(flexrock VERSION ...) in $SRC/CMakeLists.txt"
+[ "$(cat "$WORK/out")" = "flexrock $declared" ] || fail "--version says $(cat "$WORK/out"), CMake $declared"
 
 run "$FLEXROCK"
 expect_rc 2 "no subcommand"

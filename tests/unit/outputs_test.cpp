@@ -15,6 +15,7 @@
 
 #include "flexrock/io/case_file.hpp"
 #include "flexrock/sim/simulate.hpp"
+#include "flexrock/version.hpp"
 
 namespace flexrock::io {
 namespace {
@@ -119,6 +120,11 @@ TEST_F(Outputs, WritesAllFilesAndTheSummaryNamesThem) {
   const nlohmann::json j = nlohmann::json::parse(in);
   EXPECT_EQ(j.at("schema"), "flexrock.summary");
   EXPECT_EQ(j.at("schema_version"), kSummarySchemaVersion);
+  // the writer's version: the library's, which is the one the headers declare
+  EXPECT_EQ(j.at("flexrock_version"), std::string(flexrock::version()));
+  EXPECT_EQ(std::string(flexrock::version()), FLEXROCK_VERSION_STRING);
+  EXPECT_EQ(FLEXROCK_VERSION,
+            FLEXROCK_VERSION_MAJOR * 10000 + FLEXROCK_VERSION_MINOR * 100 + FLEXROCK_VERSION_PATCH);
   EXPECT_EQ(j.at("case").at("name"), "pulse");
   EXPECT_EQ(j.at("outcome").at("status"), to_string(r.status));
   EXPECT_DOUBLE_EQ(j.at("peaks").at("max_theta_edge1_rad").get<double>(),

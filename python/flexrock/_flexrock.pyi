@@ -1,0 +1,1655 @@
+# SPDX-License-Identifier: BSD-3-Clause
+# Type stubs of the compiled module flexrock._flexrock, written by tools/stubgen.py from the module.
+# Do not edit: after changing the bindings, rebuild and run the tool (a test checks they agree).
+from __future__ import annotations
+
+from typing import Any, Callable, ClassVar, Iterator, Optional, overload
+
+import numpy
+import numpy.typing
+
+__version__: str
+
+class InputError(ValueError): ...
+
+class AccelUnit:
+    g: ClassVar[AccelUnit]
+    m_per_s2: ClassVar[AccelUnit]
+    cm_per_s2: ClassVar[AccelUnit]
+    __members__: ClassVar[dict[str, AccelUnit]]
+    def __init__(self, value: int) -> None: ...
+    def __eq__(self, other: object) -> bool: ...
+    def __hash__(self) -> int: ...
+    def __index__(self) -> int: ...
+    def __int__(self) -> int: ...
+    @property
+    def name(self) -> str: ...
+    @property
+    def value(self) -> int: ...
+
+class Body:
+    """A validated body; bad parameters raise InputError."""
+    def __init__(self, params: BodyParameters) -> None: ...
+    def __repr__(self) -> str: ...
+    @property
+    def alpha1(self) -> float: ...
+    @property
+    def alpha2(self) -> float: ...
+    @property
+    def damping_matrix(self) -> numpy.typing.NDArray[numpy.float64]: ...
+    @property
+    def damping_ratios(self) -> numpy.typing.NDArray[numpy.float64]: ...
+    @property
+    def g(self) -> float: ...
+    @property
+    def modes(self) -> int: ...
+    @property
+    def mu_inverse(self) -> numpy.typing.NDArray[numpy.float64]: ...
+    @property
+    def natural_frequencies(self) -> numpy.typing.NDArray[numpy.float64]: ...
+    @property
+    def params(self) -> BodyParameters: ...
+    @property
+    def rocking_frequency(self) -> float: ...
+    @property
+    def static_deformation(self) -> numpy.typing.NDArray[numpy.float64]: ...
+    @property
+    def stiffness(self) -> numpy.typing.NDArray[numpy.float64]: ...
+    def tipping_angle(self, edge: int) -> float:
+        """static overturning angle about edge 1 or 2 [rad], positive"""
+
+class BodyParameters:
+    """The paper's parameters of a deformable body on two tipping points (SI units; mu, kappa, ... dimensionless)."""
+    def __init__(self) -> None: ...
+    def __repr__(self) -> str: ...
+    b1: float
+    b2: float
+    beta: numpy.typing.NDArray[numpy.float64]
+    damping: Damping
+    delta: numpy.typing.NDArray[numpy.float64]
+    gamma: numpy.typing.NDArray[numpy.float64]
+    gravity: float
+    height: float
+    kappa: numpy.typing.NDArray[numpy.float64]
+    mass: float
+    @property
+    def modes(self) -> int: ...
+    mu: numpy.typing.NDArray[numpy.float64]
+    psi_x: numpy.typing.NDArray[numpy.float64]
+    psi_y: numpy.typing.NDArray[numpy.float64]
+    @staticmethod
+    def rectangular_block(mass: float, half_width: float, half_height: float) -> BodyParameters: ...
+    @staticmethod
+    def rigid(mass: float, height: float, b1: float, b2: float, zeta2: float) -> BodyParameters: ...
+    zeta2: float
+
+class Case:
+    """A case: everything a run needs (see load_case)."""
+    def __init__(self) -> None: ...
+    body: BodyParameters
+    body_type: str
+    description: str
+    excitation_scale: float
+    horizontal: ExcitationComponent
+    initial: InitialState
+    motion: GroundMotion
+    name: str
+    options: SimulationOptions
+    output: OutputSettings
+    rigid: bool
+    source: str
+    stem: str
+    vertical: ExcitationComponent
+
+class Component:
+    horizontal: ClassVar[Component]
+    vertical: ClassVar[Component]
+    __members__: ClassVar[dict[str, Component]]
+    def __init__(self, value: int) -> None: ...
+    def __eq__(self, other: object) -> bool: ...
+    def __hash__(self) -> int: ...
+    def __index__(self) -> int: ...
+    def __int__(self) -> int: ...
+    @property
+    def name(self) -> str: ...
+    @property
+    def value(self) -> int: ...
+
+class CsvTable:
+    @property
+    def columns(self) -> list[str]: ...
+    @property
+    def rows(self) -> list[list[str]]: ...
+    @property
+    def source(self) -> str: ...
+
+class Damping:
+    """Material damping of the deformation modes."""
+    def __init__(self) -> None: ...
+    kind: DampingKind
+    modal_ratios: numpy.typing.NDArray[numpy.float64]
+    rayleigh_mass: float
+    rayleigh_stiffness: float
+
+class DampingKind:
+    none: ClassVar[DampingKind]
+    rayleigh: ClassVar[DampingKind]
+    modal: ClassVar[DampingKind]
+    __members__: ClassVar[dict[str, DampingKind]]
+    def __init__(self, value: int) -> None: ...
+    def __eq__(self, other: object) -> bool: ...
+    def __hash__(self) -> int: ...
+    def __index__(self) -> int: ...
+    def __int__(self) -> int: ...
+    @property
+    def name(self) -> str: ...
+    @property
+    def value(self) -> int: ...
+
+class EnergyBalance:
+    @property
+    def chatter_loss(self) -> float: ...
+    @property
+    def damping_loss(self) -> float: ...
+    @property
+    def impact_loss(self) -> float: ...
+    @property
+    def input_work(self) -> float: ...
+    @property
+    def kinetic_change(self) -> float: ...
+    @property
+    def potential_change(self) -> float: ...
+    @property
+    def residual(self) -> float: ...
+    @property
+    def scale(self) -> float: ...
+
+class Event:
+    """Something that happened; fields not meaningful are zero."""
+    def __repr__(self) -> str: ...
+    @property
+    def edge(self) -> int: ...
+    @property
+    def energy_loss(self) -> float: ...
+    @property
+    def friction_demand(self) -> float: ...
+    @property
+    def impulse_x(self) -> float: ...
+    @property
+    def impulse_y(self) -> float: ...
+    @property
+    def kind(self) -> EventKind: ...
+    @property
+    def theta(self) -> float: ...
+    @property
+    def theta_dot_after(self) -> float: ...
+    @property
+    def theta_dot_before(self) -> float: ...
+    @property
+    def time(self) -> float: ...
+
+class EventKind:
+    uplift: ClassVar[EventKind]
+    impact: ClassVar[EventKind]
+    rocking_ended: ClassVar[EventKind]
+    chatter_cutoff: ClassVar[EventKind]
+    peak: ClassVar[EventKind]
+    overturn: ClassVar[EventKind]
+    contact_lost: ClassVar[EventKind]
+    friction_exceeded: ClassVar[EventKind]
+    impact_gained_energy: ClassVar[EventKind]
+    stopped: ClassVar[EventKind]
+    __members__: ClassVar[dict[str, EventKind]]
+    def __init__(self, value: int) -> None: ...
+    def __eq__(self, other: object) -> bool: ...
+    def __hash__(self) -> int: ...
+    def __index__(self) -> int: ...
+    def __int__(self) -> int: ...
+    @property
+    def name(self) -> str: ...
+    @property
+    def value(self) -> int: ...
+
+class ExcitationComponent:
+    """One component of the excitation, as a case describes it."""
+    def __init__(self) -> None: ...
+    amplitude: float
+    file: str
+    format: str
+    scale: float
+    type: str
+    units: str
+
+class Extremes:
+    @property
+    def first_uplift_edge(self) -> int: ...
+    @property
+    def first_uplift_time(self) -> float: ...
+    @property
+    def impacts(self) -> int: ...
+    @property
+    def max_abs_q(self) -> numpy.typing.NDArray[numpy.float64]: ...
+    @property
+    def max_base_shear(self) -> float: ...
+    @property
+    def max_friction_demand(self) -> float: ...
+    @property
+    def max_impact_energy_loss(self) -> float: ...
+    @property
+    def max_impulse(self) -> float: ...
+    @property
+    def max_overturning_moment(self) -> float: ...
+    @property
+    def max_theta_edge1(self) -> float: ...
+    @property
+    def max_theta_edge2(self) -> float: ...
+    @property
+    def max_uplift(self) -> float: ...
+    @property
+    def overturn_edge(self) -> int: ...
+    @property
+    def overturn_time(self) -> float: ...
+
+class FragilityData:
+    @property
+    def body(self) -> str: ...
+    @property
+    def excluded(self) -> int: ...
+    @property
+    def failed(self) -> list[int]: ...
+    @property
+    def im(self) -> list[float]: ...
+
+class FragilityFit:
+    """Lognormal fragility P = Phi(ln(x/theta)/beta)."""
+    def __repr__(self) -> str: ...
+    @property
+    def beta(self) -> float: ...
+    @property
+    def beta_lower(self) -> float: ...
+    @property
+    def beta_upper(self) -> float: ...
+    @property
+    def confidence(self) -> float: ...
+    @property
+    def cov_ab(self) -> tuple: ...
+    @property
+    def cov_ln_theta_beta(self) -> float: ...
+    @property
+    def failures(self) -> int: ...
+    @property
+    def iterations(self) -> int: ...
+    @property
+    def log_likelihood(self) -> float: ...
+    @property
+    def samples(self) -> int: ...
+    @property
+    def se_beta(self) -> float: ...
+    @property
+    def se_ln_theta(self) -> float: ...
+    @property
+    def theta(self) -> float: ...
+    @property
+    def theta_lower(self) -> float: ...
+    @property
+    def theta_upper(self) -> float: ...
+
+class FragilityQuery:
+    def __init__(self) -> None: ...
+    body: str
+    im: str
+    level: float
+    outcome: str
+
+class GroundMotion:
+    """Base accelerations [m/s^2]: sampled (linear between samples) or analytic."""
+    def __repr__(self) -> str: ...
+    def at(self, t: float) -> tuple:
+        """(x, y) base acceleration at time t [m/s^2]"""
+    @property
+    def duration(self) -> float: ...
+    @property
+    def has_vertical(self) -> bool: ...
+    @property
+    def horizontal(self) -> list[float]: ...
+    @property
+    def is_sampled(self) -> bool: ...
+    @staticmethod
+    def none(duration: float) -> GroundMotion: ...
+    @staticmethod
+    def sampled(time: list[float], horizontal: list[float], vertical: list[float] = ...) -> GroundMotion: ...
+    @property
+    def samples(self) -> int: ...
+    def scaled(self, factor: float) -> GroundMotion:
+        """The motion with every acceleration times `factor` [-]."""
+    @property
+    def times(self) -> list[float]: ...
+    @staticmethod
+    def uniform(dt: float, horizontal: list[float], vertical: list[float] = ..., start: float = ...) -> GroundMotion: ...
+    @property
+    def vertical(self) -> list[float]: ...
+
+class History:
+    """Time history at the output times; each a numpy copy."""
+    def __len__(self) -> int: ...
+    @property
+    def base_acc_x(self) -> numpy.typing.NDArray[numpy.float64]: ...
+    @property
+    def base_acc_y(self) -> numpy.typing.NDArray[numpy.float64]: ...
+    @property
+    def damping_loss(self) -> numpy.typing.NDArray[numpy.float64]: ...
+    @property
+    def friction_demand(self) -> numpy.typing.NDArray[numpy.float64]: ...
+    @property
+    def impact_loss(self) -> numpy.typing.NDArray[numpy.float64]: ...
+    @property
+    def input_work(self) -> numpy.typing.NDArray[numpy.float64]: ...
+    @property
+    def kinetic(self) -> numpy.typing.NDArray[numpy.float64]: ...
+    @property
+    def modes(self) -> int: ...
+    @property
+    def phase(self) -> numpy.typing.NDArray[numpy.int32]: ...
+    @property
+    def potential(self) -> numpy.typing.NDArray[numpy.float64]: ...
+    @property
+    def q(self) -> numpy.typing.NDArray[numpy.float64]: ...
+    @property
+    def q_dot(self) -> numpy.typing.NDArray[numpy.float64]: ...
+    @property
+    def reaction_x(self) -> numpy.typing.NDArray[numpy.float64]: ...
+    @property
+    def reaction_y(self) -> numpy.typing.NDArray[numpy.float64]: ...
+    @property
+    def resultant(self) -> numpy.typing.NDArray[numpy.float64]: ...
+    @property
+    def theta(self) -> numpy.typing.NDArray[numpy.float64]: ...
+    @property
+    def theta_dot(self) -> numpy.typing.NDArray[numpy.float64]: ...
+    @property
+    def time(self) -> numpy.typing.NDArray[numpy.float64]: ...
+
+class InitialState:
+    """Where the body starts."""
+    def __init__(self, theta: float = ..., theta_dot: float = ..., q: numpy.typing.NDArray[numpy.float64] = ..., q_dot: numpy.typing.NDArray[numpy.float64] = ...) -> None: ...
+    q: numpy.typing.NDArray[numpy.float64]
+    q_dot: numpy.typing.NDArray[numpy.float64]
+    theta: float
+    theta_dot: float
+
+class Intensity:
+    @property
+    def pga(self) -> float: ...
+    @property
+    def pgv(self) -> float: ...
+
+class LumpedModel:
+    """A lumped-mass modal model (pinned-base modes) from a finite-element program."""
+    def __init__(self) -> None: ...
+    damping: Damping
+    frequencies: numpy.typing.NDArray[numpy.float64]
+    gravity: float
+    nodes: list[LumpedNode]
+    phi_x: numpy.typing.NDArray[numpy.float64]
+    phi_y: numpy.typing.NDArray[numpy.float64]
+    stiffness: numpy.typing.NDArray[numpy.float64]
+    tip1_x: float
+    tip2_x: float
+
+class LumpedNode:
+    def __init__(self, x: float, y: float, mass: float, rotary_inertia: float = ...) -> None: ...
+    mass: float
+    rotary_inertia: float
+    x: float
+    y: float
+
+class Outcome:
+    no_uplift: ClassVar[Outcome]
+    rocking: ClassVar[Outcome]
+    overturned_after_impacts: ClassVar[Outcome]
+    overturned_without_impact: ClassVar[Outcome]
+    contact_lost: ClassVar[Outcome]
+    stopped: ClassVar[Outcome]
+    __members__: ClassVar[dict[str, Outcome]]
+    def __init__(self, value: int) -> None: ...
+    def __eq__(self, other: object) -> bool: ...
+    def __hash__(self) -> int: ...
+    def __index__(self) -> int: ...
+    def __int__(self) -> int: ...
+    @property
+    def name(self) -> str: ...
+    @property
+    def value(self) -> int: ...
+
+class OutputPaths:
+    def __init__(self) -> None: ...
+    events: str
+    summary: str
+    time_history: str
+
+class OutputSettings:
+    def __init__(self) -> None: ...
+    dt: float
+    events: str
+    summary: str
+    time_history: str
+
+class OverturnBoundary:
+    class Kind:
+        found: ClassVar[OverturnBoundary.Kind]
+        below_grid: ClassVar[OverturnBoundary.Kind]
+        none: ClassVar[OverturnBoundary.Kind]
+        __members__: ClassVar[dict[str, OverturnBoundary.Kind]]
+        def __init__(self, value: int) -> None: ...
+        def __eq__(self, other: object) -> bool: ...
+        def __hash__(self) -> int: ...
+        def __index__(self) -> int: ...
+        def __int__(self) -> int: ...
+        @property
+        def name(self) -> str: ...
+        @property
+        def value(self) -> int: ...
+    @property
+    def bisection_runs(self) -> int: ...
+    @property
+    def column(self) -> int: ...
+    @property
+    def computed(self) -> bool: ...
+    @property
+    def frequency(self) -> float: ...
+    @property
+    def kind(self) -> OverturnBoundary.Kind: ...
+    @property
+    def mode(self) -> Outcome: ...
+    @property
+    def overturning(self) -> float: ...
+    @property
+    def safe(self) -> float: ...
+
+class OverturnCriterion:
+    static_instability: ClassVar[OverturnCriterion]
+    half_pi: ClassVar[OverturnCriterion]
+    __members__: ClassVar[dict[str, OverturnCriterion]]
+    def __init__(self, value: int) -> None: ...
+    def __eq__(self, other: object) -> bool: ...
+    def __hash__(self) -> int: ...
+    def __index__(self) -> int: ...
+    def __int__(self) -> int: ...
+    @property
+    def name(self) -> str: ...
+    @property
+    def value(self) -> int: ...
+
+class Phase:
+    full_contact: ClassVar[Phase]
+    rocking_edge1: ClassVar[Phase]
+    rocking_edge2: ClassVar[Phase]
+    __members__: ClassVar[dict[str, Phase]]
+    def __init__(self, value: int) -> None: ...
+    def __eq__(self, other: object) -> bool: ...
+    def __hash__(self) -> int: ...
+    def __index__(self) -> int: ...
+    def __int__(self) -> int: ...
+    @property
+    def name(self) -> str: ...
+    @property
+    def value(self) -> int: ...
+
+class PulseType:
+    one_sine: ClassVar[PulseType]
+    half_sine: ClassVar[PulseType]
+    cycloidal_a: ClassVar[PulseType]
+    cycloidal_b: ClassVar[PulseType]
+    cycloidal_c: ClassVar[PulseType]
+    ricker: ClassVar[PulseType]
+    __members__: ClassVar[dict[str, PulseType]]
+    def __init__(self, value: int) -> None: ...
+    def __eq__(self, other: object) -> bool: ...
+    def __hash__(self) -> int: ...
+    def __index__(self) -> int: ...
+    def __int__(self) -> int: ...
+    @property
+    def name(self) -> str: ...
+    @property
+    def value(self) -> int: ...
+
+class Record:
+    """An acceleration record, values in the file's units."""
+    def __repr__(self) -> str: ...
+    @property
+    def dt(self) -> float: ...
+    @property
+    def duration(self) -> float: ...
+    @property
+    def header(self) -> list[str]: ...
+    @property
+    def npts(self) -> int: ...
+    @property
+    def source(self) -> str: ...
+    @property
+    def time(self) -> list[float]: ...
+    def to_motion(self, scale: float = ...) -> GroundMotion:
+        """The record as a horizontal ground motion [m/s^2] times `scale`."""
+    def to_si(self, scale: float = ...) -> list[float]: ...
+    @property
+    def units(self) -> AccelUnit: ...
+    @property
+    def values(self) -> list[float]: ...
+
+class RecordSpectrumSpec:
+    """One record x scale factors."""
+    def __init__(self) -> None: ...
+    bisect: bool
+    bisection_tolerance: float
+    free_periods: float
+    motion: GroundMotion
+    scales: list[float]
+    solver: SimulationOptions
+
+class RunSummary:
+    """What a study keeps of one simulation."""
+    @property
+    def energy_lost(self) -> float: ...
+    @property
+    def first_uplift_time(self) -> float: ...
+    @property
+    def impacts(self) -> int: ...
+    @property
+    def max_friction_demand(self) -> float: ...
+    @property
+    def max_impulse(self) -> float: ...
+    @property
+    def max_theta(self) -> float: ...
+    @property
+    def max_theta_over_alpha(self) -> float: ...
+    @property
+    def max_uplift(self) -> float: ...
+    @property
+    def outcome(self) -> Outcome: ...
+    @property
+    def overturn_edge(self) -> int: ...
+    @property
+    def overturn_time(self) -> float: ...
+    @property
+    def status(self) -> Status: ...
+    @property
+    def t_end(self) -> float: ...
+
+class ScaleKind:
+    factor: ClassVar[ScaleKind]
+    target_pga: ClassVar[ScaleKind]
+    __members__: ClassVar[dict[str, ScaleKind]]
+    def __init__(self, value: int) -> None: ...
+    def __eq__(self, other: object) -> bool: ...
+    def __hash__(self) -> int: ...
+    def __index__(self) -> int: ...
+    def __int__(self) -> int: ...
+    @property
+    def name(self) -> str: ...
+    @property
+    def value(self) -> int: ...
+
+class SimulationOptions:
+    """Solver options (SI units)."""
+    def __init__(self) -> None: ...
+    atol: float
+    chatter_ratio: float
+    event_samples: int
+    friction_coefficient: float
+    max_impacts: int
+    max_step: float
+    max_steps: int
+    output_dt: float
+    overturn: OverturnCriterion
+    restitution_factor: float
+    rtol: float
+    t_end: float
+
+class SimulationResult:
+    @property
+    def chatter_cut_off(self) -> bool: ...
+    @property
+    def energy(self) -> EnergyBalance: ...
+    @property
+    def events(self) -> list[Event]: ...
+    @property
+    def extremes(self) -> Extremes: ...
+    @property
+    def final_phase(self) -> Phase: ...
+    @property
+    def final_q(self) -> numpy.typing.NDArray[numpy.float64]: ...
+    @property
+    def final_q_dot(self) -> numpy.typing.NDArray[numpy.float64]: ...
+    @property
+    def final_theta(self) -> float: ...
+    @property
+    def final_theta_dot(self) -> float: ...
+    @property
+    def friction_exceeded(self) -> bool: ...
+    @property
+    def history(self) -> History: ...
+    @property
+    def impact_gained_energy(self) -> bool: ...
+    @property
+    def message(self) -> str: ...
+    @property
+    def rejected_steps(self) -> int: ...
+    @property
+    def rhs_evaluations(self) -> int: ...
+    @property
+    def status(self) -> Status: ...
+    @property
+    def steps(self) -> int: ...
+    @property
+    def t_end(self) -> float: ...
+
+class SpectrumCell:
+    @property
+    def amplitude(self) -> float: ...
+    @property
+    def amplitude_si(self) -> float: ...
+    @property
+    def column(self) -> int: ...
+    @property
+    def computed(self) -> bool: ...
+    @property
+    def frequency(self) -> float: ...
+    @property
+    def omega_si(self) -> float: ...
+    @property
+    def row(self) -> int: ...
+    @property
+    def run(self) -> RunSummary: ...
+
+class SpectrumFile:
+    """A spectrum spec file, loaded and checked."""
+    @property
+    def body(self) -> BodyParameters: ...
+    @property
+    def body_source(self) -> str: ...
+    @property
+    def is_record(self) -> bool: ...
+    @property
+    def name(self) -> str: ...
+    @property
+    def pulse(self) -> SpectrumSpec: ...
+    @property
+    def record(self) -> RecordSpectrumSpec: ...
+    @property
+    def record_name(self) -> str: ...
+    @property
+    def source(self) -> str: ...
+
+class SpectrumResult:
+    """Every cell of a spectrum and the minimum overturning of each column."""
+    def __repr__(self) -> str: ...
+    @property
+    def alpha(self) -> float: ...
+    @property
+    def boundary(self) -> list[OverturnBoundary]: ...
+    @property
+    def cells(self) -> list[SpectrumCell]: ...
+    @property
+    def p(self) -> float: ...
+    @property
+    def tan_alpha(self) -> float: ...
+
+class SpectrumSpec:
+    """A pulse spectrum: pulse x amplitude x frequency."""
+    def __init__(self) -> None: ...
+    amplitudes: list[float]
+    bisect: bool
+    bisection_tolerance: float
+    free_periods: float
+    frequencies: list[float]
+    normalized: bool
+    pulse: PulseType
+    solver: SimulationOptions
+
+class Status:
+    completed: ClassVar[Status]
+    overturned: ClassVar[Status]
+    contact_lost: ClassVar[Status]
+    stopped: ClassVar[Status]
+    __members__: ClassVar[dict[str, Status]]
+    def __init__(self, value: int) -> None: ...
+    def __eq__(self, other: object) -> bool: ...
+    def __hash__(self) -> int: ...
+    def __index__(self) -> int: ...
+    def __int__(self) -> int: ...
+    @property
+    def name(self) -> str: ...
+    @property
+    def value(self) -> int: ...
+
+class SweepBody:
+    def __init__(self, name: str, body: BodyParameters) -> None: ...
+    body: BodyParameters
+    name: str
+
+class SweepManifest:
+    @property
+    def hash(self) -> int: ...
+    @property
+    def source(self) -> str: ...
+    @property
+    def spec(self) -> SweepSpec: ...
+
+class SweepRecord:
+    def __init__(self, name: str, motion: GroundMotion) -> None: ...
+    motion: GroundMotion
+    name: str
+
+class SweepRow:
+    @property
+    def body(self) -> int: ...
+    @property
+    def duration(self) -> float: ...
+    @property
+    def index(self) -> int: ...
+    @property
+    def message(self) -> str: ...
+    @property
+    def pga(self) -> float: ...
+    @property
+    def pgv(self) -> float: ...
+    @property
+    def record(self) -> int: ...
+    @property
+    def run(self) -> RunSummary: ...
+    @property
+    def scale(self) -> float: ...
+    @property
+    def scale_index(self) -> int: ...
+
+class SweepSpec:
+    """Bodies x records x scale factors."""
+    def __init__(self) -> None: ...
+    bodies: list[SweepBody]
+    free_periods: float
+    level_units: str
+    levels: list[float]
+    records: list[SweepRecord]
+    scale_kind: ScaleKind
+    scales: list[float]
+    solver: SimulationOptions
+
+def boundary_columns() -> list[str]:
+    """Columns of the minimum-overturning CSV.
+
+    Returns
+    -------
+    list of str
+    """
+
+def boundary_csv(result: SpectrumResult, normalized: bool, g: float) -> str:
+    """The minimum-overturning CSV text (one row per frequency column).
+
+    Parameters
+    ----------
+    result : SpectrumResult
+    normalized : bool
+        Whether the spectrum's grid was normalised (the units of ``frequency``, ``min_overturning``).
+    g : float
+        [m/s^2]
+
+    Returns
+    -------
+    str
+    """
+
+def combine(horizontal: Record, vertical: Optional[Record] = ..., scale: float = ...) -> GroundMotion:
+    """A horizontal record and an optional vertical one as one ground motion.
+
+    Parameters
+    ----------
+    horizontal : Record
+    vertical : Record, optional
+        Resampled onto the horizontal's times.
+    scale : float
+        [-] factor on both.
+
+    Returns
+    -------
+    GroundMotion
+        Accelerations in m/s^2.
+    """
+
+def compute_record_spectrum(body: Body, spec: RecordSpectrumSpec, threads: int = ...) -> SpectrumResult:
+    """One record times scale factors, and the minimum overturning scale.
+
+    Parameters
+    ----------
+    body : Body
+    spec : RecordSpectrumSpec
+    threads : int
+        0: every core.
+
+    Returns
+    -------
+    SpectrumResult
+    """
+
+def compute_spectrum(body: Body, spec: SpectrumSpec, threads: int = ...) -> SpectrumResult:
+    """Every cell of a pulse spectrum, then the minimum overturning amplitude of each column.
+
+    Parameters
+    ----------
+    body : Body
+    spec : SpectrumSpec
+        Amplitudes and frequencies normalised (a_p/(g tan alpha), omega_p/p) or in m/s^2 and rad/s.
+    threads : int
+        0: every core. The GIL is released.
+
+    Returns
+    -------
+    SpectrumResult
+    """
+
+def cycloidal_c_phase(n: int) -> float:
+    """The phase phi_n [rad] of the type-C_n cycloidal pulse.
+
+    Parameters
+    ----------
+    n : int
+        [-] the pulse's index, >= 1.
+
+    Returns
+    -------
+    float
+        [rad]
+    """
+
+def cycloidal_pulse_a(a_p: float, omega_p: float, duration: float, component: Component = ...) -> GroundMotion:
+    """Makris & Roussos cycloidal pulse type A (= one-sine).
+
+    Parameters
+    ----------
+    a_p : float
+        [m/s^2] peak acceleration (negative: reversed).
+    omega_p : float
+        [rad/s] circular frequency of the pulse.
+    duration : float
+        [s] length of the motion (zero after the pulse: free vibration).
+    component : Component
+        horizontal (default) or vertical.
+
+    Returns
+    -------
+    GroundMotion
+        Analytic. The package's ``flexrock.cycloidal_pulse_a`` also takes the case file's keys
+        (``amplitude=``, ``units=``, ``frequency_hz=`` or ``period=``).
+    """
+
+def cycloidal_pulse_b(a_p: float, omega_p: float, duration: float, component: Component = ...) -> GroundMotion:
+    """Makris & Roussos cycloidal pulse type B: a_p cos(omega_p t) for one period.
+
+    Parameters
+    ----------
+    a_p : float
+        [m/s^2] peak acceleration (negative: reversed).
+    omega_p : float
+        [rad/s] circular frequency of the pulse.
+    duration : float
+        [s] length of the motion (zero after the pulse: free vibration).
+    component : Component
+        horizontal (default) or vertical.
+
+    Returns
+    -------
+    GroundMotion
+        Analytic. The package's ``flexrock.cycloidal_pulse_b`` also takes the case file's keys
+        (``amplitude=``, ``units=``, ``frequency_hz=`` or ``period=``).
+    """
+
+def cycloidal_pulse_c(a_p: float, omega_p: float, duration: float, n: int = ..., component: Component = ...) -> GroundMotion:
+    """Makris & Roussos cycloidal pulse type C_n: a_p cos(omega_p t + phi_n).
+
+    Parameters
+    ----------
+    a_p : float
+        [m/s^2] peak acceleration.
+    omega_p : float
+        [rad/s] circular frequency.
+    duration : float
+        [s] length of the motion.
+    n : int
+        [-] type index, >= 1.
+    component : Component
+
+    Returns
+    -------
+    GroundMotion
+    """
+
+def event_columns() -> list[str]:
+    """Column names of the event log.
+
+    Returns
+    -------
+    list of str
+        time_s, event, edge, theta_rad, theta_dot_before_rad_per_s, theta_dot_after_rad_per_s,
+        energy_loss_J, impulse_x_N_s, impulse_y_N_s, friction_demand.
+    """
+
+def events_csv(result: SimulationResult) -> str:
+    """The event-log CSV text ``flexrock run`` writes.
+
+    Parameters
+    ----------
+    result : SimulationResult
+
+    Returns
+    -------
+    str
+    """
+
+def fit_lognormal(im: list[float], failed: list[int], confidence: float = ...) -> FragilityFit:
+    """Maximum-likelihood lognormal fragility P(failure | IM = x) = Phi(ln(x/theta)/beta).
+
+    Parameters
+    ----------
+    im : list of float
+        Intensity measures, > 0 (theta comes out in their unit).
+    failed : list of int
+        0 or 1 per run.
+    confidence : float
+        Level of the bounds, in (0, 1).
+
+    Returns
+    -------
+    FragilityFit
+    """
+
+def fragility_band(fit: FragilityFit, x: numpy.typing.NDArray[numpy.float64]) -> object:
+    """The pointwise confidence band of the fitted curve (delta method).
+
+    Parameters
+    ----------
+    fit : FragilityFit
+        Its ``confidence`` is the level of the band.
+    x : float or array_like
+        Intensity measure in the fit's units; arrays of any shape broadcast elementwise.
+
+    Returns
+    -------
+    (lower, upper) : tuple of float or of numpy.ndarray
+        [-] probabilities, each of the shape of ``x``.
+    """
+
+def fragility_columns() -> list[str]:
+    """Columns of the fit CSV of ``flexrock fragility``.
+
+    Returns
+    -------
+    list of str
+    """
+
+def fragility_data(table: CsvTable, query: FragilityQuery) -> list[FragilityData]:
+    """The (IM, failed) observations of each body of a sweep CSV.
+
+    Parameters
+    ----------
+    table : CsvTable
+    query : FragilityQuery
+        im: pga [m/s^2], pga_g [g], pgv [m/s], scale [-] or requested_level; outcome:
+        overturned, theta or energy, with its level.
+
+    Returns
+    -------
+    list of FragilityData
+        Rows whose outcome is stopped or contact_lost are left out and counted (``excluded``).
+    """
+
+def fragility_probability(fit: FragilityFit, x: numpy.typing.NDArray[numpy.float64]) -> object:
+    """The fitted probability of failure P(failure | IM = x) = Phi(ln(x/theta)/beta).
+
+    Parameters
+    ----------
+    fit : FragilityFit
+    x : float or array_like
+        Intensity measure, in the units of the IM the fit was made with (e.g. [g] for pga_g);
+        arrays of any shape broadcast elementwise. x <= 0 gives 0.
+
+    Returns
+    -------
+    float or numpy.ndarray
+        [-] of the shape of ``x``.
+    """
+
+def fragility_row(data: FragilityData, fit: FragilityFit) -> str:
+    """One line of the fit CSV.
+
+    Parameters
+    ----------
+    data : FragilityData
+    fit : FragilityFit
+
+    Returns
+    -------
+    str
+    """
+
+def from_lumped_model(model: LumpedModel) -> BodyParameters:
+    """The paper's parameters of a lumped-mass modal model (e.g. from an FE program).
+
+    Parameters
+    ----------
+    model : LumpedModel
+        Nodes [m, kg], pinned-base mode shapes [m] and frequencies [rad/s] or stiffness [N m].
+
+    Returns
+    -------
+    BodyParameters
+    """
+
+def half_sine_pulse(a_p: float, omega_p: float, duration: float, component: Component = ...) -> GroundMotion:
+    """Half a sine cycle a_p sin(omega_p t).
+
+    Parameters
+    ----------
+    a_p : float
+        [m/s^2] peak acceleration (negative: reversed).
+    omega_p : float
+        [rad/s] circular frequency of the pulse.
+    duration : float
+        [s] length of the motion (zero after the pulse: free vibration).
+    component : Component
+        horizontal (default) or vertical.
+
+    Returns
+    -------
+    GroundMotion
+        Analytic. The package's ``flexrock.half_sine_pulse`` also takes the case file's keys
+        (``amplitude=``, ``units=``, ``frequency_hz=`` or ``period=``).
+    """
+
+def harmonic(amplitude: float, omega: float, duration: float, phase: float = ..., component: Component = ...) -> GroundMotion:
+    """A steady harmonic base acceleration a sin(omega t + phase).
+
+    Parameters
+    ----------
+    amplitude : float
+        [m/s^2] peak acceleration.
+    omega : float
+        [rad/s] circular frequency.
+    duration : float
+        [s] length of the motion.
+    phase : float
+        [rad] phase at t = 0.
+    component : Component
+        horizontal (default) or vertical.
+
+    Returns
+    -------
+    GroundMotion
+    """
+
+def harmonic_cycles(amplitude: float, omega: float, cycles: float, duration: float, phase: float = ..., component: Component = ...) -> GroundMotion:
+    """A harmonic base acceleration over a whole number of cycles, then zero.
+
+    Parameters
+    ----------
+    amplitude : float
+        [m/s^2] peak acceleration.
+    omega : float
+        [rad/s] circular frequency.
+    cycles : float
+        [-] cycles before the motion stops.
+    duration : float
+        [s] length of the motion.
+    phase : float
+        [rad] phase at t = 0.
+    component : Component
+
+    Returns
+    -------
+    GroundMotion
+    """
+
+def intensity(motion: GroundMotion, analytic_dt: float = ...) -> Intensity:
+    """Peak ground acceleration and velocity of a motion's horizontal component.
+
+    Parameters
+    ----------
+    motion : GroundMotion
+    analytic_dt : float
+        [s] sampling of an analytic motion (plus its breakpoints).
+
+    Returns
+    -------
+    Intensity
+        pga [m/s^2], pgv [m/s] (trapezoidal integral from 0).
+    """
+
+def load_body(path: str) -> tuple:
+    """The [body] table of a case or body file.
+
+    Parameters
+    ----------
+    path : str
+
+    Returns
+    -------
+    (BodyParameters, str)
+        The parameters (SI) and the body's type name.
+    """
+
+def load_case(path: str) -> Case:
+    """Reads and checks a case file (TOML, docs/case-file.md).
+
+    Parameters
+    ----------
+    path : str
+
+    Returns
+    -------
+    Case
+        Body, motion (m/s^2), initial state, solver options and outputs; bad input raises
+        InputError naming file, line and key.
+    """
+
+def load_spectrum_file(path: str) -> SpectrumFile:
+    """Reads and checks a spectrum file (TOML, docs/studies.md).
+
+    Parameters
+    ----------
+    path : str
+
+    Returns
+    -------
+    SpectrumFile
+        Grids converted to SI (m/s^2, rad/s) unless normalised.
+    """
+
+def load_sweep_manifest(path: str) -> SweepManifest:
+    """Reads and checks a sweep manifest (TOML, docs/studies.md).
+
+    Parameters
+    ----------
+    path : str
+
+    Returns
+    -------
+    SweepManifest
+        Its spec (target PGAs in m/s^2, the levels as written in ``spec.levels``) and hash.
+    """
+
+def lognormal_log_likelihood(im: list[float], failed: list[int], theta: float, beta: float) -> float:
+    """The log-likelihood of lognormal fragility parameters.
+
+    Parameters
+    ----------
+    im : list of float
+        Intensity measures, > 0.
+    failed : list of int
+        0 or 1.
+    theta : float
+        Median, in the IM's unit.
+    beta : float
+        [-] lognormal standard deviation.
+
+    Returns
+    -------
+    float
+    """
+
+def one_sine_pulse(a_p: float, omega_p: float, duration: float, component: Component = ...) -> GroundMotion:
+    """One full sine cycle a_p sin(omega_p t).
+
+    Parameters
+    ----------
+    a_p : float
+        [m/s^2] peak acceleration (negative: reversed).
+    omega_p : float
+        [rad/s] circular frequency of the pulse.
+    duration : float
+        [s] length of the motion (zero after the pulse: free vibration).
+    component : Component
+        horizontal (default) or vertical.
+
+    Returns
+    -------
+    GroundMotion
+        Analytic. The package's ``flexrock.one_sine_pulse`` also takes the case file's keys
+        (``amplitude=``, ``units=``, ``frequency_hz=`` or ``period=``).
+    """
+
+def oscillator_on_slab(top_mass: float, frequency_hz: float, base_mass: float, height: float, base_width: float, damping_ratio: float = ...) -> BodyParameters:
+    """An elastic single-degree-of-freedom oscillator on a rocking base slab.
+
+    Parameters
+    ----------
+    top_mass : float
+        [kg] the oscillator's mass.
+    frequency_hz : float
+        [Hz] its natural frequency on a fixed base.
+    base_mass : float
+        [kg] the slab's mass.
+    height : float
+        [m] of the top mass above the base.
+    base_width : float
+        [m] full width of the slab.
+    damping_ratio : float
+        [-] of the mode.
+
+    Returns
+    -------
+    BodyParameters
+    """
+
+def overturned(outcome: Outcome) -> bool:
+    """Whether an outcome is one of the two overturning classes.
+
+    Parameters
+    ----------
+    outcome : Outcome
+
+    Returns
+    -------
+    bool
+    """
+
+def pulse_length(type: PulseType, omega_p: float) -> float:
+    """The length of one pulse of a family.
+
+    Parameters
+    ----------
+    type : PulseType
+    omega_p : float
+        [rad/s]
+
+    Returns
+    -------
+    float
+        [s]
+    """
+
+def pulse_motion(type: PulseType, a_p: float, omega_p: float, duration: float) -> GroundMotion:
+    """A pulse of a family as a ground motion.
+
+    Parameters
+    ----------
+    type : PulseType
+    a_p : float
+        [m/s^2]
+    omega_p : float
+        [rad/s]
+    duration : float
+        [s]
+
+    Returns
+    -------
+    GroundMotion
+    """
+
+def pulse_type_from_string(name: str) -> PulseType:
+    """The pulse family of a name.
+
+    Parameters
+    ----------
+    name : str
+        one_sine, half_sine, cycloidal_a, cycloidal_b, cycloidal_c or ricker.
+
+    Returns
+    -------
+    PulseType
+    """
+
+def read_at2(path: str) -> Record:
+    """Reads a PEER NGA .AT2 record.
+
+    Parameters
+    ----------
+    path : str
+
+    Returns
+    -------
+    Record
+        Values in g, as the file states, with its dt [s].
+    """
+
+def read_csv_table(path: str) -> CsvTable:
+    """Reads a CSV file as text fields (a sweep CSV for a fragility fit).
+
+    Parameters
+    ----------
+    path : str
+
+    Returns
+    -------
+    CsvTable
+    """
+
+def read_single_column(path: str, dt: float, units: AccelUnit) -> Record:
+    """Reads a record of one value a line, sampled every dt.
+
+    Parameters
+    ----------
+    path : str
+    dt : float
+        [s] sample spacing.
+    units : AccelUnit
+        Units of the file's values.
+
+    Returns
+    -------
+    Record
+    """
+
+def read_time_series(path: str, units: AccelUnit) -> Record:
+    """Reads time/acceleration pairs, one a line.
+
+    Parameters
+    ----------
+    path : str
+    units : AccelUnit
+        Units of the accelerations (times in s).
+
+    Returns
+    -------
+    Record
+    """
+
+def rectangular_pulse(a_p: float, t_1: float, duration: float, component: Component = ...) -> GroundMotion:
+    """A constant acceleration a_p for 0 <= t <= t_1, then zero.
+
+    Parameters
+    ----------
+    a_p : float
+        [m/s^2] acceleration.
+    t_1 : float
+        [s] length of the pulse (the case file's ``length``).
+    duration : float
+        [s] length of the motion.
+    component : Component
+
+    Returns
+    -------
+    GroundMotion
+    """
+
+def ricker_wavelet(a_p: float, omega_p: float, t_c: float, duration: float, component: Component = ...) -> GroundMotion:
+    """A Ricker wavelet peaking at t_c.
+
+    Parameters
+    ----------
+    a_p : float
+        [m/s^2] peak acceleration.
+    omega_p : float
+        [rad/s] circular peak frequency.
+    t_c : float
+        [s] time of the peak (the case file's ``center``).
+    duration : float
+        [s] length of the motion.
+    component : Component
+
+    Returns
+    -------
+    GroundMotion
+    """
+
+def rigid_block(width: float, height: float, mass: float) -> BodyParameters:
+    """A uniform rigid rectangular block.
+
+    Parameters
+    ----------
+    width : float
+        [m] full width of the footprint (2 b).
+    height : float
+        [m] full height (2 h).
+    mass : float
+        [kg]
+
+    Returns
+    -------
+    BodyParameters
+    """
+
+def rigid_body(mass: float, inertia_cg: float, height: float, b1: float, b2: float) -> BodyParameters:
+    """A general rigid body on two tipping points.
+
+    Parameters
+    ----------
+    mass : float
+        [kg]
+    inertia_cg : float
+        [kg m^2] moment of inertia about the c.g.
+    height : float
+        [m] c.g. above the base.
+    b1, b2 : float
+        [m] c.g. to tipping points 1 (left) and 2 (right).
+
+    Returns
+    -------
+    BodyParameters
+    """
+
+def run_pulse_cell(body: Body, spec: SpectrumSpec, a_p: float, omega_p: float) -> RunSummary:
+    """One pulse-spectrum cell, as compute_spectrum runs it.
+
+    Parameters
+    ----------
+    body : Body
+    spec : SpectrumSpec
+    a_p : float
+        [m/s^2] amplitude.
+    omega_p : float
+        [rad/s] frequency.
+
+    Returns
+    -------
+    RunSummary
+    """
+
+def run_record_cell(body: Body, spec: RecordSpectrumSpec, scale: float) -> RunSummary:
+    """One record-spectrum cell.
+
+    Parameters
+    ----------
+    body : Body
+    spec : RecordSpectrumSpec
+    scale : float
+        [-] factor on the record.
+
+    Returns
+    -------
+    RunSummary
+    """
+
+def run_sweep(spec: SweepSpec, indices: list[int] = ..., threads: int = ...) -> list[SweepRow]:
+    """Runs a sweep (bodies x records x scales), or the given run indices.
+
+    Parameters
+    ----------
+    spec : SweepSpec
+    indices : list of int
+        Empty: every run.
+    threads : int
+        0: every core. The GIL is released.
+
+    Returns
+    -------
+    list of SweepRow
+        In index order.
+    """
+
+def simulate(body: Body, motion: GroundMotion, initial: InitialState = ..., options: SimulationOptions = ...) -> SimulationResult:
+    """Simulates a body on a base moving with a ground motion.
+
+    Parameters
+    ----------
+    body : Body
+    motion : GroundMotion
+        Base accelerations [m/s^2].
+    initial : InitialState
+        theta [rad], theta_dot [rad/s], q, q_dot; default at rest.
+    options : SimulationOptions
+        Solver options (SI).
+
+    Returns
+    -------
+    SimulationResult
+        Overturning, loss of contact and a stopped run are its ``status``, not exceptions. The
+        GIL is released while it runs.
+    """
+
+def spectrum_columns() -> list[str]:
+    """Columns of the spectrum CSV (unit-suffixed).
+
+    Returns
+    -------
+    list of str
+    """
+
+def spectrum_csv(result: SpectrumResult, g: float) -> str:
+    """The spectrum CSV text (one row per cell).
+
+    Parameters
+    ----------
+    result : SpectrumResult
+    g : float
+        [m/s^2] gravity for the normalised columns.
+
+    Returns
+    -------
+    str
+    """
+
+def summarize(body: Body, result: SimulationResult) -> RunSummary:
+    """The study outcome class and peaks of a finished simulation.
+
+    Parameters
+    ----------
+    body : Body
+    result : SimulationResult
+
+    Returns
+    -------
+    RunSummary
+    """
+
+def summary_json(case: Case, body: Body, result: SimulationResult, paths: OutputPaths = ...) -> str:
+    """The summary JSON text ``flexrock run`` writes (SI units, docs/case-file.md).
+
+    Parameters
+    ----------
+    case : Case
+    body : Body
+    result : SimulationResult
+    paths : OutputPaths
+        Where the outputs went, for the summary's ``outputs``.
+
+    Returns
+    -------
+    str
+    """
+
+def sweep_columns() -> list[str]:
+    """Columns of the sweep CSV.
+
+    Returns
+    -------
+    list of str
+        index, body, record, requested_level, requested_units, scale, pga_m_per_s2, pga_g, ...
+    """
+
+def sweep_row(spec: SweepSpec, row: SweepRow) -> str:
+    """One line of the sweep CSV (no line end).
+
+    Parameters
+    ----------
+    spec : SweepSpec
+    row : SweepRow
+
+    Returns
+    -------
+    str
+    """
+
+def time_history_arrays(result: SimulationResult, body: Body) -> dict:
+    """The time history as numpy arrays, by the CSV's column names.
+
+    Parameters
+    ----------
+    result : SimulationResult
+        A finished simulation.
+    body : Body
+        The body it simulated (for the uplift column).
+
+    Returns
+    -------
+    dict of str to numpy.ndarray
+        One float64 array per column of :func:`time_history_columns` (``time_s`` [s], ``phase``,
+        ``theta_rad`` [rad], ..., ``impact_loss_J`` [J]), equal bit for bit to the values of
+        :func:`time_history_csv`.
+    """
+
+def time_history_columns(modes: int) -> list[str]:
+    """Column names of the time history, each with its unit suffix.
+
+    Parameters
+    ----------
+    modes : int
+        Deformation modes of the body.
+
+    Returns
+    -------
+    list of str
+        time_s, phase, theta_rad, theta_dot_rad_per_s, uplift_m, q1..., q1_dot_per_s...,
+        base_acc_x_m_per_s2, ..., impact_loss_J.
+    """
+
+def time_history_csv(result: SimulationResult, body: Body) -> str:
+    """The time-history CSV text ``flexrock run`` writes.
+
+    Parameters
+    ----------
+    result : SimulationResult
+    body : Body
+
+    Returns
+    -------
+    str
+    """
+
+def uniform_cantilever(height: float, width: float, mass_per_length: float, bending_stiffness: float, modes: int, base_mass: float = ..., damping_ratio: float = ...) -> BodyParameters:
+    """A uniform flexible cantilever on a rigid base plate.
+
+    Parameters
+    ----------
+    height : float
+        [m]
+    width : float
+        [m] of the base (tipping points at -+ width/2).
+    mass_per_length : float
+        [kg/m]
+    bending_stiffness : float
+        [N m^2] EI.
+    modes : int
+        Bending modes kept.
+    base_mass : float
+        [kg] of the base plate.
+    damping_ratio : float
+        [-] of every mode.
+
+    Returns
+    -------
+    BodyParameters
+    """
+
+def write_outputs(case: Case, body: Body, result: SimulationResult, output_dir: str = ...) -> OutputPaths:
+    """Writes the outputs the case's [output] table asks for, atomically, summary last.
+
+    Parameters
+    ----------
+    case : Case
+    body : Body
+    result : SimulationResult
+    output_dir : str
+        Relative names are relative to it.
+
+    Returns
+    -------
+    OutputPaths
+    """

@@ -1,0 +1,18 @@
+# SPDX-License-Identifier: BSD-3-Clause
+# included from tests/CMakeLists.txt: installs as a user would make them (label "install").
+#  install_consumer: `cmake --install` of this build, then tests/consumer built against it with
+#                    find_package(flexrock) (about a minute: one small C++ project)
+#  install_pip:      `pip install .` into a fresh venv with the system site packages, packaging
+#                    this build's module and command (FLEXROCK_BUILD_DIR: no second build)
+if(FLEXROCK_INSTALL AND TARGET flexrock)
+  add_test(NAME install_consumer
+           COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/install/consumer.sh ${PROJECT_BINARY_DIR}
+                   ${PROJECT_SOURCE_DIR})
+  set_tests_properties(install_consumer PROPERTIES LABELS install TIMEOUT 600)
+endif()
+if(TARGET _flexrock AND TARGET flexrock)
+  add_test(NAME install_pip
+           COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/install/pip.sh ${PROJECT_SOURCE_DIR}
+                   ${PROJECT_BINARY_DIR})
+  set_tests_properties(install_pip PROPERTIES LABELS install TIMEOUT 600)
+endif()
