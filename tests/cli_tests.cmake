@@ -4,13 +4,13 @@
 # case files (toml++) and outputs (CSV, summary JSON): flexrock::io
 find_package(nlohmann_json 3.9 REQUIRED)
 flexrock_add_test(flexrock_case_file_tests
-  SOURCES unit/case_file_test.cpp unit/outputs_test.cpp
+  SOURCES unit/case_file_test.cpp unit/outputs_test.cpp unit/fe_modal_files_test.cpp
   LIBS flexrock::io nlohmann_json::nlohmann_json
   LABEL unit)
 
 # the `flexrock` command: exit codes, messages, columns, no partial outputs, the four examples
 if(TARGET flexrock)
-  foreach(script usage bad_input run_outcomes)
+  foreach(script usage bad_input run_outcomes real_inputs)
     add_test(NAME cli_${script}
              COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/cli/${script}.sh $<TARGET_FILE:flexrock>
                      ${PROJECT_SOURCE_DIR})

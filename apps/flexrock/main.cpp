@@ -5,6 +5,7 @@
 //   1  a run that could not complete (status "stopped"), or outputs that could not be written
 //   2  bad input or usage (case file, record, body, options, command line)
 #include <fmt/core.h>
+#include <glob.h>
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
@@ -148,16 +149,43 @@ void print_summary(const io::Case& c, const Body& body, const SimulationResult& 
   }
 }
 
+// each record of a case: its file's PGA, PGV, duration and dt, and the factor it is run with
+void print_records(const io::Case& c) {
+  const double g = kStandardGravity;
+  for (const auto* comp : {&c.horizontal, &c.vertical}) {
+    if (comp->type != "record") continue;
+    const double factor = comp->scale * c.excitation_scale;
+    fmt::print(
+        "  record {}: {}: PGA {:.4g} g ({:.4g} m/s^2), PGV {:.4g} m/s, duration {:.4g} s, "
+        "dt {}\n",
+        comp == &c.horizontal ? "horizontal" : "vertical", comp->file, comp->pga / g, comp->pga,
+        comp->pgv, comp->duration,
+        comp->dt > 0.0 ? fmt::format("{:.4g} s", comp->dt) : std::string("not uniform"));
+    if (factor != 1.0) {
+      fmt::print("    run scaled by {:.6g}{}: PGA {:.4g} g, PGV {:.4g} m/s\n", factor,
+                 c.scaled_to.empty() ? "" : " (to " + c.scaled_to + ")", factor * comp->pga / g,
+                 factor * comp->pgv);
+    }
+  }
+}
+
+// what reading changed in the data, on stderr
+void print_notes(const io::Case& c) {
+  for (const std::string& n : c.notes) fmt::print(stderr, "flexrock: note: {}: {}\n", c.source, n);
+}
+
 // ---------------------------------------------------------------------------------------------
 // commands
 
-int cmd_run(const std::string& file, const std::string& output_dir, bool quiet, bool no_progress) {
+int cmd_run_one(const std::string& file, const std::string& output_dir, bool quiet,
+                bool no_progress) {
   io::Case c;
   try {
     c = io::load_case(file);
   } catch (const InputError& e) {
     return error(e.what(), kExitBadInput);
   }
+  print_notes(c);
   const Body body(c.body);
   SimulationResult r;
   try {
@@ -179,7 +207,45 @@ int cmd_run(const std::string& file, const std::string& output_dir, bool quiet, 
   return kExitOk;
 }
 
-int cmd_check(const std::vector<std::string>& files, bool quiet) {
+// the case files named: each argument as given, or the files its wildcards match (for a
+// pattern quoted past the shell, or a shell that does not expand them); sorted per argument
+std::vector<std::string> expand_cases(const std::vector<std::string>& args) {
+  std::vector<std::string> files;
+  for (const std::string& a : args) {
+    if (a.find_first_of("*?[") == std::string::npos) {
+      files.push_back(a);
+      continue;
+    }
+    glob_t g{};
+    const int rc = ::glob(a.c_str(), 0, nullptr, &g);
+    if (rc == GLOB_NOMATCH) {
+      globfree(&g);
+      throw InputError(a + ": no case file matches this pattern");
+    }
+    if (rc != 0) {
+      globfree(&g);
+      throw InputError(a + ": cannot expand this pattern");
+    }
+    for (std::size_t i = 0; i < g.gl_pathc; ++i) files.emplace_back(g.gl_pathv[i]);
+    globfree(&g);
+  }
+  return files;
+}
+
+// every case in turn; the exit code is the worst (bad input 2 over a failed run 1)
+int cmd_run(const std::vector<std::string>& args, const std::string& output_dir, bool quiet,
+            bool no_progress) {
+  const std::vector<std::string> files = expand_cases(args);
+  int code = kExitOk;
+  for (std::size_t i = 0; i < files.size(); ++i) {
+    if (files.size() > 1 && i > 0) fmt::print("\n");
+    code = std::max(code, cmd_run_one(files[i], output_dir, quiet, no_progress));
+  }
+  return code;
+}
+
+int cmd_check(const std::vector<std::string>& args, bool quiet) {
+  const std::vector<std::string> files = expand_cases(args);
   int code = kExitOk;
   for (const std::string& file : files) {
     try {
@@ -191,7 +257,9 @@ int cmd_check(const std::vector<std::string>& files, bool quiet) {
                    c.vertical.type.empty() ? "" : " (with vertical)",
                    c.output.time_history.empty() ? "" : c.output.time_history + " ",
                    c.output.events.empty() ? "" : c.output.events + " ", c.output.summary);
+        print_records(c);
       }
+      print_notes(c);
     } catch (const InputError& e) {
       code = error(e.what(), kExitBadInput);
     }
@@ -268,6 +336,19 @@ int cmd_params(const std::string& file) {
     print_vector("delta", p.delta);
     print_vector("beta", p.beta);
   }
+  // a case file: its records too
+  if (io::has_excitation(file)) {
+    try {
+      const io::Case c = io::load_case(file);
+      fmt::print("excitation: {}{}, {:.4g} s\n", c.horizontal.type,
+                 c.vertical.type.empty() ? "" : " + vertical " + c.vertical.type,
+                 c.motion.duration());
+      print_records(c);
+      print_notes(c);
+    } catch (const InputError& e) {
+      return error(e.what(), kExitBadInput);
+    }
+  }
   return kExitOk;
 }
 
@@ -290,13 +371,13 @@ int main(int argc, char** argv) {
       "1 a run that could not complete or outputs that could not be written;\n"
       "2 bad input or usage. Case-file keys: docs/case-file.md.");
 
-  std::string run_file, output_dir, params_file;
-  std::vector<std::string> check_files;
+  std::string output_dir, params_file;
+  std::vector<std::string> run_files, check_files;
   bool quiet = false, no_progress = false;
 
   CLI::App* run = app.add_subcommand(
-      "run", "Run a case: write the time-history CSV and the summary JSON, print a summary");
-  run->add_option("CASE", run_file, "case file (TOML)")->required();
+      "run", "Run cases: write each one's time-history CSV and summary JSON, print a summary");
+  run->add_option("CASE", run_files, "case files (TOML); wildcards are expanded")->required();
   run->add_option("-o,--output-dir", output_dir,
                   "directory for outputs with relative paths (default: the working directory)");
   run->add_flag("-q,--quiet", quiet, "print only the results: no progress, no file list");
@@ -326,7 +407,7 @@ int main(int argc, char** argv) {
   }
 
   try {
-    if (*run) return cmd_run(run_file, output_dir, quiet, no_progress);
+    if (*run) return cmd_run(run_files, output_dir, quiet, no_progress);
     if (*check) return cmd_check(check_files, quiet);
     if (*params) return cmd_params(params_file);
     if (studies.selected()) return studies.run();

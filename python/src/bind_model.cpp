@@ -207,7 +207,8 @@ BodyParameters)doc");
       .def_readwrite("stiffness", &LumpedModel::stiffness, "[N m] modal stiffness")
       .def_readwrite("damping", &LumpedModel::damping)
       .def_readwrite("gravity", &LumpedModel::gravity);
-  m.def("from_lumped_model", &from_lumped_model, py::arg("model"),
+  m.def("from_lumped_model", py::overload_cast<const LumpedModel&>(&from_lumped_model),
+        py::arg("model"),
         R"doc(The paper's parameters of a lumped-mass modal model (e.g. from an FE program).
 
 Parameters

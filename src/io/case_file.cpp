@@ -17,9 +17,11 @@
 #include <utility>
 
 #include "flexrock/core/error.hpp"
+#include "flexrock/excitation/intensity.hpp"
 #include "flexrock/excitation/pulses.hpp"
 #include "flexrock/io/records.hpp"
 #include "flexrock/model/builders.hpp"
+#include "modal_tables.hpp"
 #include "table_reader.hpp"
 
 namespace flexrock::io {
@@ -78,82 +80,6 @@ void require_plain_file(const std::string& path, const std::string& what) {
       type == fs::file_type::block) {
     throw InputError(path + ": is a directory or a device; expected a " + what + " file");
   }
-}
-
-// rows of numbers; '#' lines and blank lines skipped; a first row without numbers is a header
-std::vector<std::vector<double>> read_number_rows(const std::string& path, std::size_t columns,
-                                                  const std::string& what) {
-  require_plain_file(path, what);
-  std::ifstream in(path);
-  if (!in) throw InputError(path + ": cannot open " + what + " file");
-  std::vector<std::vector<double>> rows;
-  std::string text;
-  std::size_t line = 0;
-  bool header_allowed = true;
-  while (std::getline(in, text)) {
-    ++line;
-    if (!text.empty() && text.back() == '\r') text.pop_back();
-    const auto first = text.find_first_not_of(" \t");
-    if (first == std::string::npos || text[first] == '#') continue;
-    for (char& c : text) {
-      if (c == ',' || c == ';') c = ' ';
-    }
-    std::istringstream ss(text);
-    std::vector<double> row;
-    std::string tok;
-    bool all_numbers = true, any_number = false;
-    while (ss >> tok) {
-      char* end = nullptr;
-      const double v = std::strtod(tok.c_str(), &end);
-      if (end == tok.c_str() || *end != '\0') {
-        all_numbers = false;
-      } else {
-        any_number = true;
-        if (!std::isfinite(v)) {
-          throw InputError(path + ":" + std::to_string(line) + ": expected finite numbers in " +
-                           what + ", got \"" + tok + "\"");
-        }
-      }
-      row.push_back(v);
-    }
-    if (header_allowed && !any_number) {
-      header_allowed = false;
-      continue;
-    }
-    header_allowed = false;
-    if (!all_numbers) {
-      throw InputError(path + ":" + std::to_string(line) + ": expected " + std::to_string(columns) +
-                       " numbers (" + what + "), got \"" + text + "\"");
-    }
-    if (row.size() != columns) {
-      throw InputError(path + ":" + std::to_string(line) + ": expected " + std::to_string(columns) +
-                       " values (" + what + "), got " + std::to_string(row.size()));
-    }
-    rows.push_back(std::move(row));
-  }
-  if (rows.empty()) throw InputError(path + ": no rows of " + what + " found");
-  return rows;
-}
-
-// the first row's column count of a numbers file
-std::size_t count_columns(const std::string& path, const std::string& what) {
-  require_plain_file(path, what);
-  std::ifstream in(path);
-  if (!in) throw InputError(path + ": cannot open " + what + " file");
-  std::string text;
-  while (std::getline(in, text)) {
-    const auto first = text.find_first_not_of(" \t\r");
-    if (first == std::string::npos || text[first] == '#') continue;
-    for (char& c : text) {
-      if (c == ',' || c == ';') c = ' ';
-    }
-    std::istringstream ss(text);
-    std::string tok;
-    std::size_t n = 0;
-    while (ss >> tok) ++n;
-    return n;
-  }
-  throw InputError(path + ": no rows of " + what + " found");
 }
 
 // a path in the case file, relative to the case file's directory
@@ -242,17 +168,20 @@ BodyParameters read_paper_body(Reader& r) {
   return p;
 }
 
-BodyParameters read_lumped_body(Reader& r) {
+BodyParameters read_lumped_body(Reader& r, std::vector<std::string>& notes) {
   LumpedModel m;
   m.tip1_x = r.number("tip1_x", "a number [m] (x of tipping point 1, the left edge)");
   m.tip2_x = r.number("tip2_x", "a number [m] (x of tipping point 2, the right edge)");
   if (!(m.tip2_x > m.tip1_x)) r.expected("tip2_x", "a number > tip1_x = " + num(m.tip1_x) + " [m]");
   m.gravity = r.positive_or("gravity", kStandardGravity, "[m/s^2]");
 
-  // nodes: inline rows [x, y, mass(, rotary_inertia)] or a CSV file
+  // nodes: inline rows [x, y, mass(, rotary_inertia)] or a table file with named columns
   std::vector<std::vector<double>> rows;
+  detail::NodeTable node_table;
+  std::string nodes_path;
   const bool inline_nodes = r.has("nodes");
-  const auto nodes_file = r.string_opt("nodes_file", "a path (CSV: x, y, mass[, rotary_inertia])");
+  const auto nodes_file = r.string_opt(
+      "nodes_file", "a path (CSV with a header row: node, x, y, mass[, rotary_inertia])");
   if (inline_nodes == nodes_file.has_value()) {
     r.fail_at(r.line(), "nodes", "expected exactly one of 'nodes' (inline) or 'nodes_file'");
   }
@@ -280,14 +209,10 @@ BodyParameters read_lumped_body(Reader& r) {
       rows.push_back(std::move(v));
     }
   } else {
-    const std::string path = resolve(r.file(), *nodes_file);
-    const std::size_t cols = count_columns(path, "nodes");
-    if (cols != 3 && cols != 4) {
-      r.fail("nodes_file",
-             "expected a CSV with 3 or 4 columns (x, y, mass[, rotary_inertia]), got " +
-                 std::to_string(cols) + " in " + path);
-    }
-    rows = read_number_rows(path, cols, "nodes: x, y, mass[, rotary_inertia]");
+    nodes_path = resolve(r.file(), *nodes_file);
+    node_table = detail::read_node_table(nodes_path);
+    for (const LumpedNode& nd : node_table.nodes)
+      rows.push_back({nd.x, nd.y, nd.mass, nd.rotary_inertia});
   }
   for (std::size_t i = 0; i < rows.size(); ++i) {
     LumpedNode node{rows[i][0], rows[i][1], rows[i][2], rows[i].size() > 3 ? rows[i][3] : 0.0};
@@ -323,7 +248,9 @@ BodyParameters read_lumped_body(Reader& r) {
   }
   const bool inline_shapes = r.has("phi_x") || r.has("phi_y");
   const auto shapes_file =
-      r.string_opt("shapes_file", "a path (CSV: phi_x_1, phi_y_1, ..., one row a node)");
+      r.string_opt("shapes_file",
+                   "a path (a table with named columns: node, phi_x_1, phi_y_1, ...; or one "
+                   "table a mode with node, UX, UY columns)");
   if (inline_shapes == shapes_file.has_value()) {
     r.fail_at(r.line(), "phi_x",
               "expected exactly one of 'phi_x' and 'phi_y' (inline) or 'shapes_file'");
@@ -344,27 +271,21 @@ BodyParameters read_lumped_body(Reader& r) {
     m.phi_y = shape("phi_y");
   } else {
     const std::string path = resolve(r.file(), *shapes_file);
-    const auto rows_s = read_number_rows(path, static_cast<std::size_t>(2 * n),
-                                         "mode shapes: phi_x_1, phi_y_1, ... one row a node");
-    if (static_cast<Eigen::Index>(rows_s.size()) != nn) {
-      r.fail("shapes_file", "expected " + std::to_string(nn) + " rows (one a node) in " + path +
-                                ", got " + std::to_string(rows_s.size()));
+    const detail::ShapeTable shapes = detail::read_shape_table(path, n);
+    if (inline_nodes) {
+      node_table.nodes = m.nodes;
+      node_table.lines.assign(m.nodes.size(), r.line());
     }
-    m.phi_x.resize(nn, n);
-    m.phi_y.resize(nn, n);
-    for (Eigen::Index i = 0; i < nn; ++i) {
-      for (Eigen::Index j = 0; j < n; ++j) {
-        m.phi_x(i, j) = rows_s[static_cast<std::size_t>(i)][static_cast<std::size_t>(2 * j)];
-        m.phi_y(i, j) = rows_s[static_cast<std::size_t>(i)][static_cast<std::size_t>(2 * j + 1)];
-      }
-    }
+    detail::match_shapes(node_table, inline_nodes ? r.file() : nodes_path, shapes, path, m.phi_x,
+                         m.phi_y);
   }
   m.damping = read_damping(r);
-  return from_lumped_model(m);
+  return from_lumped_model(m, notes);
 }
 
-// [body] of any type; `rigid` receives body.rigid
-BodyParameters read_body(Reader& r, std::string& type, bool& rigid) {
+// [body] of any type; `rigid` receives body.rigid, `notes` what a builder changed in the data
+BodyParameters read_body(Reader& r, std::string& type, bool& rigid,
+                         std::vector<std::string>& notes) {
   type = r.choice("type", kBodyTypes);
   rigid = r.boolean_or("rigid", false);
   BodyParameters p;
@@ -384,7 +305,7 @@ BodyParameters read_body(Reader& r, std::string& type, bool& rigid) {
     } else if (type == "paper") {
       p = read_paper_body(r);
     } else if (type == "lumped") {
-      p = read_lumped_body(r);
+      p = read_lumped_body(r, notes);
     } else if (type == "oscillator_on_slab") {
       const double top = r.positive("top_mass", "[kg]");
       const double f = r.positive("frequency_hz", "[Hz]");
@@ -493,6 +414,12 @@ Built read_component(Reader& r, bool vertical, ExcitationComponent& out) {
     out.units = std::string(unit_name(b.record->units));
     if (b.record->npts() < 2)
       r.fail("file", "expected a record with at least 2 samples in " + out.file);
+    // the file's intensity, before any scale factor
+    const std::vector<double> si = b.record->to_si();
+    out.pga = peak_ground_acceleration(si);
+    out.pgv = peak_ground_velocity(b.record->time, si);
+    out.duration = b.record->duration() - b.record->time.front();
+    out.dt = b.record->dt;
     if (out.scale != 1.0) {
       for (double& v : b.record->values) v *= out.scale;
     }
@@ -588,12 +515,63 @@ GroundMotion record_motion(const Record& rec, bool vertical) {
   return GroundMotion::sampled(rec.time, std::vector<double>(v.size(), 0.0), std::move(v));
 }
 
+// [excitation] target_pga, target_pgv or target_sa: the factor on both components that gives the
+// horizontal record that intensity; 0 when no target is given
+double target_scale(Reader& r, const Built& h, Case& c) {
+  const auto pga = r.number_opt("target_pga", "a number > 0 [g] (PGA of the scaled record)");
+  const auto pgv = r.number_opt("target_pgv", "a number > 0 [m/s] (PGV of the scaled record)");
+  const auto sa = r.number_opt("target_sa", "a number > 0 [g] (Sa of the scaled record)");
+  const auto period = r.number_opt("sa_period", "a number > 0 [s] (period of target_sa)");
+  const auto zeta = r.number_opt("sa_damping_ratio", "a number in [0, 1) (of target_sa)");
+  const int given = int(pga.has_value()) + int(pgv.has_value()) + int(sa.has_value());
+  if (!sa && (period || zeta)) {
+    r.fail(period ? "sa_period" : "sa_damping_ratio", "expected only with target_sa");
+  }
+  if (given == 0) return 0.0;
+  const char* key = pga ? "target_pga" : pgv ? "target_pgv" : "target_sa";
+  if (given > 1) r.fail(key, "expected one of target_pga, target_pgv, target_sa, got several");
+  if (r.has("scale")) r.fail("scale", "expected either scale or " + std::string(key));
+  const double target = *(pga ? pga : pgv ? pgv : sa);
+  if (!(target > 0.0)) r.expected(key, "a number > 0");
+  if (!h.record) {
+    r.fail(key, "expected a horizontal component of type \"record\" to scale, got \"" +
+                    c.horizontal.type + "\"");
+  }
+  // the horizontal component as it is run, its own scale included
+  const std::vector<double> a = h.record->to_si();
+  const double g = kStandardGravity;
+  double measure = 0.0, want = 0.0;
+  std::string what;
+  if (pga) {
+    measure = peak_ground_acceleration(a);
+    want = target * g;
+    what = "PGA " + num(target) + " g";
+  } else if (pgv) {
+    measure = peak_ground_velocity(h.record->time, a);
+    want = target;
+    what = "PGV " + num(target) + " m/s";
+  } else {
+    if (!period)
+      r.fail_at(r.line(), "sa_period", "missing; expected a number > 0 [s] with target_sa");
+    if (!(*period > 0.0)) r.expected("sa_period", "a number > 0 [s]");
+    const double z = zeta.value_or(0.05);
+    if (!(z >= 0.0 && z < 1.0)) r.expected("sa_damping_ratio", "a number in [0, 1)");
+    measure = spectral_acceleration(h.record->time, a, *period, z);
+    want = target * g;
+    what = "Sa(" + num(*period) + " s, " + num(100.0 * z) + " %) " + num(target) + " g";
+  }
+  if (!(measure > 0.0)) r.fail(key, "the horizontal record is zero: it cannot be scaled");
+  c.scaled_to = what;
+  return want / measure;
+}
+
 void read_excitation(Reader& r, Case& c) {
   c.excitation_scale = r.number_or("scale", 1.0, "a number [-] (factor on both components)");
   Reader hr = r.table("horizontal");
   Built h = read_component(hr, false, c.horizontal);
   std::optional<Built> v;
   if (auto vr = r.table_opt("vertical")) v = read_component(*vr, true, c.vertical);
+  if (const double f = target_scale(r, h, c); f > 0.0) c.excitation_scale = f;
   r.finish();
   const double s = c.excitation_scale;
   try {
@@ -682,7 +660,7 @@ Case load_case(const std::string& path) {
   c.output.summary = c.stem + ".summary.json";
 
   Reader br = top.table("body");
-  c.body = read_body(br, c.body_type, c.rigid);
+  c.body = read_body(br, c.body_type, c.rigid, c.notes);
   const Body body(c.body);
   Reader er = top.table("excitation");
   read_excitation(er, c);
@@ -694,13 +672,16 @@ Case load_case(const std::string& path) {
   return c;
 }
 
+bool has_excitation(const std::string& path) { return parse(path).contains("excitation"); }
+
 BodyParameters load_body(const std::string& path, std::string* type) {
   const toml::table doc = parse(path);
   Reader top(path, doc, "", 1);
   Reader br = top.table("body");
   std::string t;
   bool rigid = false;
-  BodyParameters p = read_body(br, t, rigid);
+  std::vector<std::string> notes;
+  BodyParameters p = read_body(br, t, rigid, notes);
   if (type) *type = t;
   return p;
 }

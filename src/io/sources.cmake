@@ -11,7 +11,7 @@ flexrock_apply_sanitizers(flexrock_io)
 
 
 # case files (toml++) and outputs (CSV, summary JSON): flexrock::io
-target_sources(flexrock_io PRIVATE io/case_file.cpp io/outputs.cpp)
+target_sources(flexrock_io PRIVATE io/case_file.cpp io/modal_tables.cpp io/outputs.cpp)
 find_package(tomlplusplus CONFIG QUIET)
 find_package(nlohmann_json 3.9 REQUIRED)
 if(TARGET tomlplusplus::tomlplusplus)

@@ -21,10 +21,14 @@ namespace flexrock {
 
 namespace {
 
-constexpr int kMaxBuilderModes = 20;         // modes a closed-form builder may generate
-constexpr double kTipTolerance = 1e-9;       // [m] a node this close to a tipping point is on it
-constexpr double kPinnedTolerance = 1e-6;    // |phi| at a tipping point relative to max |phi|
-constexpr double kOrthogonality = 1e-6;      // |m_ij| relative to sqrt(m_ii m_jj), i != j
+constexpr int kMaxBuilderModes = 20;       // modes a closed-form builder may generate
+constexpr double kTipTolerance = 1e-9;     // [m] a node this close to a tipping point is on it
+constexpr double kPinnedTolerance = 1e-6;  // |phi| at a tipping point relative to max |phi|
+constexpr double kOrthogonality = 1e-6;    // |m_ij| relative to sqrt(m_ii m_jj), i != j
+// shapes printed to 4 significant digits are orthogonal only to about 1e-4 relative (rounding of
+// each printed value by up to 5e-4 of it, summed over the nodes): up to this figure they are
+// re-orthogonalised, above it the shapes are not the modes of one mass matrix
+constexpr double kPrintedOrthogonality = 1e-2;
 constexpr double kSymmetryTolerance = 1e-8;  // given stiffness, relative to its largest entry
 
 std::string num(double v) {
@@ -127,6 +131,11 @@ BodyParameters rigid_body(double mass, double inertia_cg, double height, double 
 }
 
 BodyParameters from_lumped_model(const LumpedModel& model) {
+  std::vector<std::string> notes;
+  return from_lumped_model(model, notes);
+}
+
+BodyParameters from_lumped_model(const LumpedModel& model, std::vector<std::string>& notes) {
   constexpr const char* kWhere = "lumped model";
   const std::string where = kWhere;
   const auto& nodes = model.nodes;
@@ -144,14 +153,16 @@ BodyParameters from_lumped_model(const LumpedModel& model) {
         node + " position must be finite, got (" + num(nd.x) + ", " + num(nd.y) + ")");
     FLEXROCK_THROW_UNLESS(nd.y >= -kTipTolerance, node + " y must be >= 0 (at or above the base " +
                                                       "line), got " + num(nd.y));
-    FLEXROCK_THROW_UNLESS(std::isfinite(nd.mass) && nd.mass > 0.0,
-                          node + " mass must be > 0, got " + num(nd.mass));
+    // a massless node (a mesh node the FE model carries no mass at) adds nothing but is allowed
+    FLEXROCK_THROW_UNLESS(std::isfinite(nd.mass) && nd.mass >= 0.0,
+                          node + " mass must be >= 0, got " + num(nd.mass));
     FLEXROCK_THROW_UNLESS(std::isfinite(nd.rotary_inertia) && nd.rotary_inertia >= 0.0,
                           node + " rotary_inertia must be >= 0, got " + num(nd.rotary_inertia));
     M += nd.mass;
     xm += nd.mass * nd.x;
     ym += nd.mass * nd.y;
   }
+  FLEXROCK_THROW_UNLESS(M > 0.0, where + ": every node is massless; expected some mass > 0");
   const double xc = xm / M, h = ym / M;
   FLEXROCK_THROW_UNLESS(h > 0.0,
                         where + ": the c.g. must lie above the base line, got height " + num(h));
@@ -184,12 +195,70 @@ BodyParameters from_lumped_model(const LumpedModel& model) {
                           where + ": frequencies/stiffness given but there are no mode shapes");
   }
 
+  VectorX m(nn);
+  for (Eigen::Index k = 0; k < nn; ++k) m(k) = nodes[static_cast<std::size_t>(k)].mass;
+
+  // with frequencies the modes must be mass-orthogonal, judged relative to the modal masses:
+  // |m_ij| / sqrt(m_ii m_jj); shapes read from a printed table are re-orthogonalised
+  MatrixX phx = model.phi_x, phy = model.phi_y;
+  if (has_freq && n > 1 && model.frequencies.size() == n) {  // a wrong count: reported below
+    auto inner = [&](Eigen::Index i, Eigen::Index j) {
+      return phx.col(i).cwiseProduct(m).dot(phx.col(j)) +
+             phy.col(i).cwiseProduct(m).dot(phy.col(j));
+    };
+    double worst = 0.0;
+    Eigen::Index wi = 0, wj = 0;
+    for (Eigen::Index i = 0; i < n; ++i) {
+      const double mii = inner(i, i);
+      const bool zero = phx.col(i).isZero(0.0) && phy.col(i).isZero(0.0);
+      if (zero) continue;  // reported below with the shape
+      FLEXROCK_THROW_UNLESS(mii > 0.0, where + ": mode " + idx(i) +
+                                           " moves only massless nodes (modal mass 0); expected "
+                                           "a shape that moves some mass");
+      for (Eigen::Index j = 0; j < i; ++j) {
+        const double mjj = inner(j, j);
+        if (!(mjj > 0.0)) continue;
+        const double rel = std::abs(inner(i, j)) / std::sqrt(mii * mjj);
+        if (rel > worst) {
+          worst = rel;
+          wi = i;
+          wj = j;
+        }
+      }
+    }
+    FLEXROCK_THROW_UNLESS(
+        worst <= kPrintedOrthogonality,
+        where + ": modes " + idx(wj) + " and " + idx(wi) +
+            " are not mass-orthogonal: |m_ij| / sqrt(m_ii m_jj) = " + num(worst) +
+            " (m_ij = sum m phi_i.phi_j over the nodes), more than the " +
+            num(kPrintedOrthogonality) +
+            " that printed shapes may carry; expected the modes of one mass matrix (give "
+            "stiffness instead of frequencies for shapes that are not modes)");
+    if (worst > kOrthogonality) {
+      // Gram-Schmidt in the mass inner product, lowest mode first: mode i loses its
+      // components along the modes before it, which the rounding of the printed values put there
+      for (Eigen::Index i = 1; i < n; ++i) {
+        for (Eigen::Index j = 0; j < i; ++j) {
+          const double mjj = inner(j, j);
+          if (!(mjj > 0.0)) continue;  // a zero shape, rejected below
+          const double c = inner(i, j) / mjj;
+          phx.col(i) -= c * phx.col(j);
+          phy.col(i) -= c * phy.col(j);
+        }
+      }
+      notes.push_back(where + ": modes " + idx(wj) + " and " + idx(wi) +
+                      " were mass-orthogonal only to " + num(worst) +
+                      " relative (|m_ij| / sqrt(m_ii m_jj)), as printed shapes are; the shapes "
+                      "were re-orthogonalised (Gram-Schmidt with the nodal masses, lowest mode "
+                      "first)");
+    }
+  }
+
   // rescale each mode so its largest nodal displacement is h: q_i = that displacement over h
   MatrixX px(nn, n), py(nn, n);
   VectorX scale(n);
   for (Eigen::Index i = 0; i < n; ++i) {
-    const VectorX mag =
-        (model.phi_x.col(i).cwiseAbs2() + model.phi_y.col(i).cwiseAbs2()).cwiseSqrt();
+    const VectorX mag = (phx.col(i).cwiseAbs2() + phy.col(i).cwiseAbs2()).cwiseSqrt();
     const double big = mag.maxCoeff();
     FLEXROCK_THROW_UNLESS(big > 0.0, where + ": mode " + idx(i) + " shape is zero at every node");
     for (Eigen::Index k = 0; k < nn; ++k) {
@@ -205,13 +274,11 @@ BodyParameters from_lumped_model(const LumpedModel& model) {
       }
     }
     scale(i) = h / big;
-    px.col(i) = scale(i) * model.phi_x.col(i);
-    py.col(i) = scale(i) * model.phi_y.col(i);
+    px.col(i) = scale(i) * phx.col(i);
+    py.col(i) = scale(i) * phy.col(i);
   }
 
   // modal mass m_ij = sum m phi_i.phi_j for the rescaled shapes [kg m^2]
-  VectorX m(nn);
-  for (Eigen::Index k = 0; k < nn; ++k) m(k) = nodes[static_cast<std::size_t>(k)].mass;
   const MatrixX modal_mass =
       px.transpose() * m.asDiagonal() * px + py.transpose() * m.asDiagonal() * py;
 
@@ -226,16 +293,8 @@ BodyParameters from_lumped_model(const LumpedModel& model) {
       const double w = model.frequencies(i);
       FLEXROCK_THROW_UNLESS(std::isfinite(w) && w > 0.0, where + ": frequency " + idx(i) +
                                                              " [rad/s] must be > 0, got " + num(w));
-      for (Eigen::Index j = 0; j < i; ++j) {
-        const double lim = kOrthogonality * std::sqrt(modal_mass(i, i) * modal_mass(j, j));
-        FLEXROCK_THROW_UNLESS(std::abs(modal_mass(i, j)) <= lim,
-                              where + ": modes " + idx(j) + " and " + idx(i) +
-                                  " are not mass-orthogonal (sum m phi_i.phi_j = " +
-                                  num(modal_mass(i, j) / (scale(i) * scale(j))) +
-                                  ", more than 1e-6 of sqrt(m_ii m_jj)); give stiffness "
-                                  "instead of frequencies");
-      }
-      // orthogonal modes: k = diag(omega_i^2 m_ii); the tolerated m_ij are not carried into k
+      // orthogonal modes: k = diag(omega_i^2 m_ii); m_ij below 1e-6 relative are not carried
+      // into k
       kq(i, i) = w * w * modal_mass(i, i);
     }
     if (model.damping.kind == DampingKind::kModal) {

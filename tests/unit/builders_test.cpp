@@ -8,6 +8,7 @@
 #include <functional>
 #include <limits>
 #include <numbers>
+#include <string>
 #include <vector>
 
 #include "flexrock/core/error.hpp"
@@ -281,7 +282,11 @@ TEST(LumpedModelBuilder, RejectsBadNodes) {
   model.frequencies = VectorX::Constant(1, 10.0);
   auto bad = model;
   bad.nodes[1].mass = -2.0;
-  expect_rejected([&] { from_lumped_model(bad); }, "lumped model: node 2 mass must be > 0, got -2");
+  expect_rejected([&] { from_lumped_model(bad); },
+                  "lumped model: node 2 mass must be >= 0, got -2");
+  bad = model;
+  for (auto& nd : bad.nodes) nd.mass = 0.0;
+  expect_rejected([&] { from_lumped_model(bad); }, "every node is massless");
   bad = model;
   bad.nodes[0].rotary_inertia = -1.0;
   expect_rejected([&] { from_lumped_model(bad); }, "node 1 rotary_inertia", ">= 0", "got -1");
@@ -327,12 +332,34 @@ TEST(LumpedModelBuilder, RejectsInconsistentSizes) {
   expect_rejected([&] { from_lumped_model(model); }, "one ratio per mode (1)", "got 2");
 }
 
+// a massless node adds nothing: the body is the one without it
+TEST(LumpedModelBuilder, MasslessNodesAddNothing) {
+  auto model = two_node_model(1);
+  model.frequencies = VectorX::Constant(1, 10.0);
+  auto with = model;
+  with.nodes.push_back({0.7, 2.0, 0.0, 0.0});
+  with.phi_x.conservativeResize(3, 1);
+  with.phi_y.conservativeResize(3, 1);
+  with.phi_x(2, 0) = 0.3;  // moves, but carries no mass and stays below the largest motion
+  with.phi_y(2, 0) = -0.2;
+  expect_same(from_lumped_model(with), from_lumped_model(model), 1e-15);
+}
+
 TEST(LumpedModelBuilder, RejectsBadModesAndStiffness) {
   auto model = two_node_model(2);
   model.frequencies = VectorX::Constant(2, 10.0);
-  // these two shapes are not mass-orthogonal (mu_12 != 0)
+  // these two shapes are not mass-orthogonal: m_12 = -0.675, m_11 = 2.52, m_22 = 7.3125 for the
+  // rescaled shapes (see two_node_model), 0.675 / sqrt(2.52 * 7.3125) = 0.157243 relative
   expect_rejected([&] { from_lumped_model(model); }, "modes 1 and 2", "mass-orthogonal",
-                  "give stiffness");
+                  "|m_ij| / sqrt(m_ii m_jj) = 0.15724", "give stiffness");
+  // within 1e-2 (printed shapes): re-orthogonalised, with a note
+  model.phi_x(0, 1) = 0.1007;  // m_12 = 0.3 (0.0007) of sqrt(0.28 * 0.0448): 1e-3 relative
+  std::vector<std::string> notes;
+  const auto p = from_lumped_model(model, notes);
+  ASSERT_EQ(notes.size(), 1u);
+  EXPECT_NE(notes[0].find("re-orthogonalised"), std::string::npos) << notes[0];
+  EXPECT_LT(std::abs(p.mu(0, 1)), 1e-14 * p.mu(0, 0));
+  model = two_node_model(2);
   model = two_node_model(2);
   model.stiffness.resize(2, 2);
   model.stiffness << 28.0, 2.0, 2.5, 10.0;

@@ -13,6 +13,7 @@
 #include <string>
 
 #include "flexrock/core/error.hpp"
+#include "flexrock/excitation/intensity.hpp"
 #include "flexrock/model/builders.hpp"
 
 namespace flexrock::io {
@@ -249,6 +250,61 @@ scale = 0.5
   EXPECT_EQ(c.vertical.format, "at2");
   // El Centro's peak 0.3188 g at 2.02 s, halved
   EXPECT_NEAR(std::abs(c.motion.at(2.02).x), 0.5 * 0.3188 * kStandardGravity, 2e-3);
+}
+
+// a case with the Kobe record horizontal and `excitation` keys
+std::string kobe_case(const std::string& rel, const std::string& excitation) {
+  return kBlock + "[excitation]\n" + excitation + R"(
+[excitation.horizontal]
+type = "record"
+file = ")" +
+         rel + R"(/kobe_1995_nishi_akashi_090.AT2"
+scale = 2.0
+)";
+}
+
+TEST_F(CaseFile, RecordsScaleToATargetPgaPgvOrSa) {
+  const std::string rel = fs::relative(kData, dir_).string();
+  const double g = kStandardGravity;
+  // the file's own intensity is reported before any factor
+  const Case plain = load_case(write("p.toml", kobe_case(rel, "")));
+  EXPECT_GT(plain.horizontal.pga, 0.0);
+  EXPECT_GT(plain.horizontal.pgv, 0.0);
+  EXPECT_GT(plain.horizontal.duration, 10.0);
+  EXPECT_GT(plain.horizontal.dt, 0.0);
+  EXPECT_DOUBLE_EQ(plain.excitation_scale, 1.0);
+
+  // PGA: the scaled motion's largest sample is the target (the component's scale included)
+  const Case a = load_case(write("a.toml", kobe_case(rel, "target_pga = 0.5")));
+  EXPECT_NEAR(a.excitation_scale * 2.0 * a.horizontal.pga, 0.5 * g, 1e-12);
+  const auto& times = a.motion.times();
+  double peak = 0.0;
+  for (double t : times) peak = std::max(peak, std::abs(a.motion.at(t).x));
+  EXPECT_NEAR(peak, 0.5 * g, 1e-9);
+  EXPECT_EQ(a.scaled_to, "PGA 0.5 g");
+
+  // PGV and Sa: linear in the factor
+  const Case v = load_case(write("v.toml", kobe_case(rel, "target_pgv = 0.8")));
+  EXPECT_NEAR(v.excitation_scale * 2.0 * v.horizontal.pgv, 0.8, 1e-12);
+  const Case s = load_case(write("s.toml", kobe_case(rel, "target_sa = 1.2\nsa_period = 0.3")));
+  std::vector<double> acc;
+  for (double t : s.motion.times()) acc.push_back(s.motion.at(t).x);
+  EXPECT_NEAR(spectral_acceleration(s.motion.times(), acc, 0.3, 0.05), 1.2 * g, 1e-9 * g);
+  EXPECT_EQ(s.scaled_to, "Sa(0.3 s, 5 %) 1.2 g");
+}
+
+TEST_F(CaseFile, TargetScalingMistakesAreRejected) {
+  const std::string rel = fs::relative(kData, dir_).string();
+  expect_error(kobe_case(rel, "target_pga = 0.5\ntarget_pgv = 0.3"),
+               {"case.toml:", "target_pga", "got several"});
+  expect_error(kobe_case(rel, "scale = 2\ntarget_pga = 0.5"),
+               {"case.toml:8:", "'excitation.scale'", "either scale or target_pga"});
+  expect_error(kobe_case(rel, "target_sa = 0.5"), {"'excitation.sa_period'", "missing"});
+  expect_error(kobe_case(rel, "sa_period = 0.5"),
+               {"'excitation.sa_period'", "only with target_sa"});
+  expect_error(kobe_case(rel, "target_pga = -1"), {"'excitation.target_pga'", "> 0"});
+  expect_error(kBlock + "[excitation]\ntarget_pga = 0.5\n" + kPulse,
+               {"'excitation.target_pga'", "type \"record\"", "got \"one_sine\""});
 }
 
 TEST_F(CaseFile, RecordWithSyntheticVerticalCombines) {

@@ -35,6 +35,11 @@ struct ExcitationComponent {
   std::string units;       // units of the file's values or of `amplitude`
   double amplitude = 0.0;  // [m/s^2] peak of a synthetic motion, converted to SI
   double scale = 1.0;      // [-] factor on a record component
+  // a record's file as read, before any scale factor
+  double pga = 0.0;       // [m/s^2] peak ground acceleration
+  double pgv = 0.0;       // [m/s] peak ground velocity (no baseline correction)
+  double duration = 0.0;  // [s] last sample time less the first
+  double dt = 0.0;        // [s] sample spacing; 0: not uniform
 };
 
 /// A case, loaded and checked: everything a run needs.
@@ -49,11 +54,17 @@ struct Case {
   GroundMotion motion;      // [m/s^2] both components, scaled
   ExcitationComponent horizontal;
   ExcitationComponent vertical;   // type empty: no vertical component
-  double excitation_scale = 1.0;  // [-] excitation.scale
+  double excitation_scale = 1.0;  // [-] excitation.scale, or the factor to the target intensity
   InitialState initial;
   SimulationOptions options;  // options.output_dt is output.dt
   OutputSettings output;
+  std::vector<std::string> notes;  // what reading changed in the data (re-orthogonalised shapes)
+  std::string scaled_to;  // the target intensity excitation_scale was chosen for ("PGA 0.3 g")
 };
+
+/// Whether a case (or body) file has an [excitation] table. Throws InputError for a file that
+/// cannot be read or parsed.
+bool has_excitation(const std::string& path);
 
 /// Reads and checks a case file: the syntax, every key, the body (through the builders and
 /// Body), the records it names (relative to the case file), the options and the initial state.

@@ -29,7 +29,8 @@ struct LumpedNode {
 
 /// A lumped-mass modal model as a finite-element program exports it. The mode shapes are the
 /// pinned-base modes (both tipping points held), in any normalisation; they must vanish at the
-/// tipping points (nodes placed there must have zero shape).
+/// tipping points (nodes placed there must have zero shape). Nodes may be massless (mass 0: mesh
+/// nodes the model carries no mass at); the total mass must be > 0.
 struct LumpedModel {
   std::vector<LumpedNode> nodes;
   double tip1_x = 0.0;  // [m] left tipping point (edge 1) on the base line
@@ -44,11 +45,18 @@ struct LumpedModel {
 
 /// Every integral of the paper from the lumped model: the shapes are rescaled so that q_i is
 /// the largest displacement of mode i over h (the sign of each shape is kept). With
-/// `frequencies`, k_ii = omega_i^2 m_ii and k_ij = 0 (modes must be mass-orthogonal; with modal
-/// damping the frequencies must ascend). Without shapes the body is rigid. Throws InputError
-/// for inconsistent data (sizes, shapes at the tipping points, tipping points not straddling
-/// the c.g., non-orthogonal modes with `frequencies`).
+/// `frequencies`, k_ii = omega_i^2 m_ii and k_ij = 0: the modes must be mass-orthogonal,
+/// judged relative to the modal masses, |m_ij| / sqrt(m_ii m_jj) with m_ij = sum m phi_i.phi_j.
+/// Up to 1e-6 the shapes are taken as given; up to 1e-2 (shapes printed to a few significant
+/// digits) they are re-orthogonalised by Gram-Schmidt in the mass inner product, lowest mode
+/// first, and a note says so; above 1e-2 they are rejected with the figure. With modal damping
+/// the frequencies must ascend. Without shapes the body is rigid. Throws InputError for
+/// inconsistent data (sizes, shapes at the tipping points, tipping points not straddling the
+/// c.g., non-orthogonal modes with `frequencies`, a mode that moves no mass).
 BodyParameters from_lumped_model(const LumpedModel& model);
+
+/// As above; `notes` receives what was changed in the data (re-orthogonalised shapes).
+BodyParameters from_lumped_model(const LumpedModel& model, std::vector<std::string>& notes);
 
 /// An elastic oscillator on a rocking base slab: a top mass on a lateral spring at `height`
 /// above a rigid base slab of mass `base_mass` and full width `base_width` (uniform, thin).
