@@ -92,9 +92,6 @@ std::string resolve(const std::string& case_file, const std::string& p) {
 // ---------------------------------------------------------------------------------------------
 // body
 
-const std::vector<std::string> kBodyTypes = {
-    "rigid_block", "rigid_body", "paper", "lumped", "oscillator_on_slab", "uniform_cantilever"};
-
 // [body] damping of the modes: damping_ratios, or rayleigh_mass/rayleigh_stiffness
 Damping read_damping(Reader& r) {
   Damping d;
@@ -283,47 +280,86 @@ BodyParameters read_lumped_body(Reader& r, std::vector<std::string>& notes) {
   return from_lumped_model(m, notes);
 }
 
+// the names of a table's entries, in its order
+template <class Kind, std::size_t N>
+std::vector<std::string> names_of(const Kind (&kinds)[N]) {
+  std::vector<std::string> v;
+  for (const Kind& k : kinds) v.emplace_back(k.name);
+  return v;
+}
+
+// the entry of `name`, which r.choice() has already checked against the names
+template <class Kind, std::size_t N>
+const Kind& kind_of(const Kind (&kinds)[N], const std::string& name) {
+  for (const Kind& k : kinds) {
+    if (name == k.name) return k;
+  }
+  FLEXROCK_DEMAND(false);
+  return kinds[0];
+}
+
+BodyParameters read_rigid_block(Reader& r, std::vector<std::string>&) {
+  const double w = r.positive("width", "[m]");
+  const double h = r.positive("height", "[m]");
+  const double m = r.positive("mass", "[kg]");
+  return rigid_block(w, h, m);
+}
+
+BodyParameters read_rigid_body(Reader& r, std::vector<std::string>&) {
+  const double m = r.positive("mass", "[kg]");
+  const double i = r.positive("inertia_cg", "[kg m^2]");
+  const double h = r.positive("height", "[m]");
+  const double b1 = r.positive("b1", "[m]");
+  const double b2 = r.positive("b2", "[m]");
+  return rigid_body(m, i, h, b1, b2);
+}
+
+BodyParameters read_paper(Reader& r, std::vector<std::string>&) { return read_paper_body(r); }
+
+BodyParameters read_oscillator_on_slab(Reader& r, std::vector<std::string>&) {
+  const double top = r.positive("top_mass", "[kg]");
+  const double f = r.positive("frequency_hz", "[Hz]");
+  const double base = r.positive("base_mass", "[kg]");
+  const double h = r.positive("height", "[m]");
+  const double w = r.positive("base_width", "[m]");
+  const double z = r.nonnegative_or("damping_ratio", 0.0, "[-]");
+  return oscillator_on_slab(top, f, base, h, w, z);
+}
+
+BodyParameters read_uniform_cantilever(Reader& r, std::vector<std::string>&) {
+  const double h = r.positive("height", "[m]");
+  const double w = r.positive("width", "[m]");
+  const double mpl = r.positive("mass_per_length", "[kg/m]");
+  const double ei = r.positive("bending_stiffness", "[N m^2]");
+  const auto modes = r.integer_or("modes", 1, 1, "an integer >= 1 (bending modes)");
+  const double base = r.nonnegative_or("base_mass", 0.0, "[kg]");
+  const double z = r.nonnegative_or("damping_ratio", 0.0, "[-]");
+  return uniform_cantilever(h, w, mpl, ei, static_cast<int>(modes), base, z);
+}
+
+// one entry a body type: its name in body.type and the reader of its keys (docs/case-file.md)
+struct BodyKind {
+  const char* name;
+  BodyParameters (*read)(Reader&, std::vector<std::string>& notes);
+};
+const BodyKind kBodyKinds[] = {
+    {"rigid_block", read_rigid_block},
+    {"rigid_body", read_rigid_body},
+    {"paper", read_paper},
+    {"lumped", read_lumped_body},
+    {"oscillator_on_slab", read_oscillator_on_slab},
+    {"uniform_cantilever", read_uniform_cantilever},
+};
+const BodyKind& body_kind(const std::string& name) { return kind_of(kBodyKinds, name); }
+
 // [body] of any type; `rigid` receives body.rigid, `notes` what a builder changed in the data
 BodyParameters read_body(Reader& r, std::string& type, bool& rigid,
                          std::vector<std::string>& notes) {
-  type = r.choice("type", kBodyTypes);
+  type = r.choice("type", names_of(kBodyKinds));
   rigid = r.boolean_or("rigid", false);
   BodyParameters p;
   try {
-    if (type == "rigid_block") {
-      const double w = r.positive("width", "[m]");
-      const double h = r.positive("height", "[m]");
-      const double m = r.positive("mass", "[kg]");
-      p = rigid_block(w, h, m);
-    } else if (type == "rigid_body") {
-      const double m = r.positive("mass", "[kg]");
-      const double i = r.positive("inertia_cg", "[kg m^2]");
-      const double h = r.positive("height", "[m]");
-      const double b1 = r.positive("b1", "[m]");
-      const double b2 = r.positive("b2", "[m]");
-      p = rigid_body(m, i, h, b1, b2);
-    } else if (type == "paper") {
-      p = read_paper_body(r);
-    } else if (type == "lumped") {
-      p = read_lumped_body(r, notes);
-    } else if (type == "oscillator_on_slab") {
-      const double top = r.positive("top_mass", "[kg]");
-      const double f = r.positive("frequency_hz", "[Hz]");
-      const double base = r.positive("base_mass", "[kg]");
-      const double h = r.positive("height", "[m]");
-      const double w = r.positive("base_width", "[m]");
-      const double z = r.nonnegative_or("damping_ratio", 0.0, "[-]");
-      p = oscillator_on_slab(top, f, base, h, w, z);
-    } else {
-      const double h = r.positive("height", "[m]");
-      const double w = r.positive("width", "[m]");
-      const double mpl = r.positive("mass_per_length", "[kg/m]");
-      const double ei = r.positive("bending_stiffness", "[N m^2]");
-      const auto modes = r.integer_or("modes", 1, 1, "an integer >= 1 (bending modes)");
-      const double base = r.nonnegative_or("base_mass", 0.0, "[kg]");
-      const double z = r.nonnegative_or("damping_ratio", 0.0, "[-]");
-      p = uniform_cantilever(h, w, mpl, ei, static_cast<int>(modes), base, z);
-    }
+    p = body_kind(type).read(r, notes);
   } catch (const InputError& e) {
     const std::string what = e.what();
     // errors that already name a place pass through; builder errors get the table's place
@@ -356,9 +392,63 @@ BodyParameters read_body(Reader& r, std::string& type, bool& rigid,
 // excitation
 
 const std::vector<std::string> kUnits = {"g", "m/s^2", "cm/s^2"};
-const std::vector<std::string> kMotionTypes = {
-    "record",      "harmonic",    "one_sine", "half_sine",   "cycloidal_a",
-    "cycloidal_b", "cycloidal_c", "ricker",   "rectangular", "none"};
+
+// one entry a synthetic motion type: its name in excitation.*.type, whether it takes
+// frequency_hz or period, and its constructor reading its own keys (docs/case-file.md)
+struct PulseKind {
+  const char* name;
+  bool frequency;
+  GroundMotion (*make)(Reader& r, double a, double omega, double duration, Component dir);
+};
+const PulseKind kPulseKinds[] = {
+    {"harmonic", true,
+     [](Reader& r, double a, double omega, double duration, Component dir) {
+       const double phase = r.number_or("phase", 0.0, "a number [rad]");
+       const auto cycles = r.number_opt("cycles", "a number > 0 (cycles, then free vibration)");
+       if (cycles && !(*cycles > 0.0)) r.expected("cycles", "a number > 0");
+       return cycles ? harmonic_cycles(a, omega, *cycles, duration, phase, dir)
+                     : harmonic(a, omega, duration, phase, dir);
+     }},
+    {"one_sine", true,
+     [](Reader&, double a, double omega, double duration, Component dir) {
+       return one_sine_pulse(a, omega, duration, dir);
+     }},
+    {"half_sine", true,
+     [](Reader&, double a, double omega, double duration, Component dir) {
+       return half_sine_pulse(a, omega, duration, dir);
+     }},
+    {"cycloidal_a", true,
+     [](Reader&, double a, double omega, double duration, Component dir) {
+       return cycloidal_pulse_a(a, omega, duration, dir);
+     }},
+    {"cycloidal_b", true,
+     [](Reader&, double a, double omega, double duration, Component dir) {
+       return cycloidal_pulse_b(a, omega, duration, dir);
+     }},
+    {"cycloidal_c", true,
+     [](Reader& r, double a, double omega, double duration, Component dir) {
+       const auto n = r.integer_or("n", 1, 1, "an integer >= 1 (main cycles)");
+       return cycloidal_pulse_c(a, omega, duration, static_cast<int>(n), dir);
+     }},
+    {"ricker", true,
+     [](Reader& r, double a, double omega, double duration, Component dir) {
+       const double tc = r.nonnegative_or("center", 3.0 * std::sqrt(6.0) / omega, "[s]");
+       return ricker_wavelet(a, omega, tc, duration, dir);
+     }},
+    {"rectangular", false,
+     [](Reader& r, double a, double, double duration, Component dir) {
+       const double len = r.positive("length", "[s] (pulse length)");
+       return rectangular_pulse(a, len, duration, dir);
+     }},
+};
+
+// every excitation type: a record, the synthetic ones, none
+std::vector<std::string> motion_types() {
+  std::vector<std::string> v{"record"};
+  for (const std::string& n : names_of(kPulseKinds)) v.push_back(n);
+  v.emplace_back("none");
+  return v;
+}
 
 AccelUnit unit_of(const std::string& u) {
   if (u == "g") return AccelUnit::kG;
@@ -373,7 +463,7 @@ struct Built {
 };
 
 Built read_component(Reader& r, bool vertical, ExcitationComponent& out) {
-  out.type = r.choice("type", kMotionTypes);
+  out.type = r.choice("type", motion_types());
   Built b;
   const Component dir = vertical ? Component::kVertical : Component::kHorizontal;
   if (out.type == "record") {
@@ -438,9 +528,9 @@ Built read_component(Reader& r, bool vertical, ExcitationComponent& out) {
   const double a = r.number("amplitude", "a number (peak acceleration, in `units`)");
   out.amplitude = a * to_si_factor(unit_of(out.units));
   const double ap = out.amplitude;
-  // frequency_hz or period for every pulse but the rectangular one
+  const PulseKind& kind = kind_of(kPulseKinds, out.type);
   double omega = 0.0;
-  if (out.type != "rectangular") {
+  if (kind.frequency) {
     const bool f = r.has("frequency_hz");
     const bool t = r.has("period");
     if (f == t) {
@@ -451,30 +541,7 @@ Built read_component(Reader& r, bool vertical, ExcitationComponent& out) {
               : 2.0 * std::numbers::pi / r.positive("period", "[s]");
   }
   try {
-    if (out.type == "harmonic") {
-      const double phase = r.number_or("phase", 0.0, "a number [rad]");
-      const auto cycles = r.number_opt("cycles", "a number > 0 (cycles, then free vibration)");
-      if (cycles && !(*cycles > 0.0)) r.expected("cycles", "a number > 0");
-      b.motion = cycles ? harmonic_cycles(ap, omega, *cycles, duration, phase, dir)
-                        : harmonic(ap, omega, duration, phase, dir);
-    } else if (out.type == "one_sine") {
-      b.motion = one_sine_pulse(ap, omega, duration, dir);
-    } else if (out.type == "half_sine") {
-      b.motion = half_sine_pulse(ap, omega, duration, dir);
-    } else if (out.type == "cycloidal_a") {
-      b.motion = cycloidal_pulse_a(ap, omega, duration, dir);
-    } else if (out.type == "cycloidal_b") {
-      b.motion = cycloidal_pulse_b(ap, omega, duration, dir);
-    } else if (out.type == "cycloidal_c") {
-      const auto n = r.integer_or("n", 1, 1, "an integer >= 1 (main cycles)");
-      b.motion = cycloidal_pulse_c(ap, omega, duration, static_cast<int>(n), dir);
-    } else if (out.type == "ricker") {
-      const double tc = r.nonnegative_or("center", 3.0 * std::sqrt(6.0) / omega, "[s]");
-      b.motion = ricker_wavelet(ap, omega, tc, duration, dir);
-    } else {
-      const double len = r.positive("length", "[s] (pulse length)");
-      b.motion = rectangular_pulse(ap, len, duration, dir);
-    }
+    b.motion = kind.make(r, ap, omega, duration, dir);
   } catch (const InputError& e) {
     const std::string what = e.what();
     if (what.starts_with(r.file() + ":")) throw;
