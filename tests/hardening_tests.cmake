@@ -45,3 +45,13 @@ if(TARGET flexrock)
     set_tests_properties(cli_${script} PROPERTIES LABELS cli TIMEOUT 300)
   endforeach()
 endif()
+
+# files that are not what they seem (FIFOs, devices, symbolic-link loops, over-long names,
+# outputs that are inputs): refused without blocking, a hang fails on the TIMEOUT
+add_executable(flexrock_io_hazard_tests unit/io_hazards_test.cpp)
+target_include_directories(flexrock_io_hazard_tests PRIVATE ${PROJECT_SOURCE_DIR}/tests)
+target_link_libraries(flexrock_io_hazard_tests PRIVATE flexrock::io flexrock::core GTest::gtest
+                                                       GTest::gtest_main flexrock_warnings)
+flexrock_apply_sanitizers(flexrock_io_hazard_tests)
+gtest_discover_tests(flexrock_io_hazard_tests PROPERTIES LABELS unit TIMEOUT 60
+                     DISCOVERY_TIMEOUT 60)

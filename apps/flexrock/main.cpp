@@ -16,6 +16,7 @@
 #include <cstdio>
 #include <exception>
 #include <future>
+#include <new>
 #include <numbers>
 #include <string>
 #include <vector>
@@ -182,8 +183,12 @@ int cmd_run_one(const std::string& file, const std::string& output_dir, bool qui
   io::Case c;
   try {
     c = io::load_case(file);
+    // before the run: an output may not overwrite an input or another output
+    io::check_output_paths(c, io::output_paths(c, output_dir));
   } catch (const InputError& e) {
     return error(e.what(), kExitBadInput);
+  } catch (const std::bad_alloc&) {
+    return error(file + ": out of memory while reading the case and its records", kExitRunFailed);
   }
   print_notes(c);
   const Body body(c.body);
@@ -192,10 +197,19 @@ int cmd_run_one(const std::string& file, const std::string& output_dir, bool qui
     r = run_with_progress(body, c, !quiet && !no_progress && ::isatty(STDERR_FILENO));
   } catch (const InputError& e) {
     return error(file + ": " + e.what(), kExitBadInput);
+  } catch (const std::bad_alloc&) {
+    return error(file + ": out of memory during the run (the time history holds a row every " +
+                     "output.dt = " + fmt::format("{:g}", c.options.output_dt) +
+                     " s; the events one row each)",
+                 kExitRunFailed);
   }
   io::OutputPaths paths;
   try {
     paths = io::write_outputs(c, body, r, output_dir);
+  } catch (const std::bad_alloc&) {
+    print_summary(c, body, r, {}, quiet);
+    return error("could not write the outputs: out of memory while formatting the summary",
+                 kExitRunFailed);
   } catch (const std::exception& e) {
     print_summary(c, body, r, {}, quiet);
     return error(std::string("could not write the outputs: ") + e.what(), kExitRunFailed);
@@ -250,6 +264,7 @@ int cmd_check(const std::vector<std::string>& args, bool quiet) {
   for (const std::string& file : files) {
     try {
       const io::Case c = io::load_case(file);
+      io::check_output_paths(c, io::output_paths(c, ""));
       const Body body(c.body);
       if (!quiet) {
         fmt::print("{}: ok: body {} ({} mode{}), excitation {:.4g} s{}, outputs: {}{}{}\n", file,
@@ -414,6 +429,8 @@ int main(int argc, char** argv) {
     if (*plot) return flexrock::cli::run_plot(plot_options);
   } catch (const InputError& e) {
     return error(e.what(), kExitBadInput);
+  } catch (const std::bad_alloc&) {
+    return error("out of memory", kExitRunFailed);
   } catch (const std::exception& e) {
     return error(e.what(), kExitRunFailed);
   }

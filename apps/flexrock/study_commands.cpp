@@ -9,9 +9,11 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cerrno>
 #include <chrono>
 #include <csignal>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <future>
 #include <map>
@@ -21,6 +23,7 @@
 #include <vector>
 
 #include "flexrock/core/error.hpp"
+#include "flexrock/io/files.hpp"
 #include "flexrock/io/outputs.hpp"
 #include "flexrock/io/study_files.hpp"
 #include "flexrock/study/fragility.hpp"
@@ -217,6 +220,12 @@ std::string default_output(const std::string& input, const std::string& suffix) 
   return fs::path(input).stem().string() + suffix;
 }
 
+std::vector<io::NamedPath> named_inputs(const std::vector<std::string>& files) {
+  std::vector<io::NamedPath> out;
+  for (const std::string& f : files) out.push_back({"input", f});
+  return out;
+}
+
 std::string join_columns(const std::vector<std::string>& v) {
   std::string s;
   for (std::size_t i = 0; i < v.size(); ++i) s += (i ? "," : "") + v[i];
@@ -281,6 +290,9 @@ int StudyCommands::Impl::run_spectrum(const Processes& procs) {
     boundary_output = (p.parent_path() / (stem + ".boundary.csv")).string();
   }
   const bool bisect = f.is_record ? f.record.bisect : f.pulse.bisect;
+  io::check_distinct_files(
+      named_inputs(f.input_files),
+      {{"output", output}, {"boundary output", bisect ? boundary_output : ""}});
 
   const SignalGuard signals;
   std::atomic<std::size_t> completed{0};
@@ -337,6 +349,12 @@ int StudyCommands::Impl::run_spectrum(const Processes& procs) {
     all_bounds[0] = io::boundary_row(res, b, true, g);
   }
   try {
+    // the boundary is written last and an old one removed first: a boundary file on disk is
+    // from the same run as the cells beside it
+    if (bisect && ::unlink(boundary_output.c_str()) != 0 && errno != ENOENT) {
+      throw std::runtime_error("cannot remove the old " + boundary_output + ": " +
+                               std::strerror(errno));
+    }
     io::write_atomically(output, [&](std::ostream& out) {
       out << join_columns(io::spectrum_columns()) << '\n';
       for (const auto& [i, line] : all_cells) out << line << '\n';
@@ -385,6 +403,8 @@ int StudyCommands::Impl::run_sweep(const Processes& procs) {
   const std::vector<study::SweepRun> runs = study::sweep_runs(m.spec);
   if (output.empty()) output = default_output(input, ".sweep.csv");
   const std::string journal_path = output + ".partial";
+  io::check_distinct_files(named_inputs(m.input_files),
+                           {{"output", output}, {"journal", journal_path}});
   const std::string rank_journal = journal_path + ".rank" + std::to_string(procs.rank());
 
   // rank 0 opens the journal, merges journals that other processes left, and says what remains
@@ -516,6 +536,7 @@ int StudyCommands::Impl::run_sweep(const Processes& procs) {
 }
 
 int StudyCommands::Impl::run_fragility() {
+  io::check_distinct_files({{"sweep CSV", input}}, {{"output", output}, {"curve", curve_output}});
   const io::CsvTable table = io::read_csv_table(input);
   io::FragilityQuery q;
   q.im = im;
@@ -659,6 +680,9 @@ int StudyCommands::run() {
     // every process reads the same input: one message is enough
     if (procs.root()) return error(e.what(), kExitBadInput);
     return kExitBadInput;
+  } catch (const std::bad_alloc&) {
+    if (procs.root() || procs.size() > 1) return error("out of memory", kExitRunFailed);
+    return kExitRunFailed;
   } catch (const std::exception& e) {
     if (procs.root() || procs.size() > 1) return error(e.what(), kExitRunFailed);
     return kExitRunFailed;

@@ -8,7 +8,6 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <memory>
 #include <numbers>
 #include <optional>
@@ -16,9 +15,11 @@
 #include <sstream>
 #include <utility>
 
+#include "decimal_comma.hpp"
 #include "flexrock/core/error.hpp"
 #include "flexrock/excitation/intensity.hpp"
 #include "flexrock/excitation/pulses.hpp"
+#include "flexrock/io/files.hpp"
 #include "flexrock/io/records.hpp"
 #include "flexrock/model/builders.hpp"
 #include "modal_tables.hpp"
@@ -70,17 +71,7 @@ using detail::num;
 using Reader = detail::TableReader;
 
 // ---------------------------------------------------------------------------------------------
-// small CSV files of numbers (nodes, mode shapes)
-
-// a directory or a device (/dev/zero) would read as an error or never end
-void require_plain_file(const std::string& path, const std::string& what) {
-  std::error_code ec;
-  const auto type = fs::status(path, ec).type();
-  if (type == fs::file_type::directory || type == fs::file_type::character ||
-      type == fs::file_type::block) {
-    throw InputError(path + ": is a directory or a device; expected a " + what + " file");
-  }
-}
+// small CSV files of numbers (nodes, mode shapes): src/io/modal_tables.cpp
 
 // a path in the case file, relative to the case file's directory
 std::string resolve(const std::string& case_file, const std::string& p) {
@@ -639,6 +630,9 @@ void read_excitation(Reader& r, Case& c) {
   std::optional<Built> v;
   if (auto vr = r.table_opt("vertical")) v = read_component(*vr, true, c.vertical);
   if (const double f = target_scale(r, h, c); f > 0.0) c.excitation_scale = f;
+  for (const ExcitationComponent* e : {&c.horizontal, &c.vertical}) {
+    if (!e->file.empty()) c.input_files.push_back(e->file);
+  }
   r.finish();
   const double s = c.excitation_scale;
   try {
@@ -700,12 +694,26 @@ void read_output(Reader& r, OutputSettings& out) {
   if (out.dt == 0.0) out.time_history.clear();
 }
 
+// the time history's rows against kMaxHistoryRows: [output] dt = 1e-300, or a record whose last
+// time is 1e9 s, would otherwise fill the memory row by row
+void check_history_rows(Reader& top, const Case& c) {
+  if (c.options.output_dt <= 0.0) return;
+  const double end = c.options.t_end >= 0.0 ? c.options.t_end : c.motion.duration();
+  const double rows = std::floor(end / c.options.output_dt) + 1.0;
+  if (rows <= static_cast<double>(kMaxHistoryRows)) return;
+  const toml::node* out = top.node("output");
+  const toml::node* dt = out && out->is_table() ? out->as_table()->get("dt") : nullptr;
+  top.fail_at(dt ? line_of(*dt) : 1, "output.dt",
+              "expected at most " + std::to_string(kMaxHistoryRows) + " time-history rows, got " +
+                  num(rows) + " (" + num(end) + " s every " + num(c.options.output_dt) +
+                  " s); choose a larger output.dt, output.dt = 0 (no time history) or a shorter " +
+                  (c.options.t_end >= 0.0 ? "solver.t_end" : "excitation (or solver.t_end)"));
+}
+
 toml::table parse(const std::string& path) {
-  if (!fs::exists(path)) throw InputError(path + ": no such case file");
-  if (fs::is_directory(path)) throw InputError(path + ": is a directory, expected a case file");
-  require_plain_file(path, "case");
+  const std::string text = read_input_file(path, "case");
   try {
-    return toml::parse_file(path);
+    return toml::parse(text, path);
   } catch (const toml::parse_error& e) {
     const auto& b = e.source().begin;
     throw InputError(path + ":" + std::to_string(b.line) + ":" + std::to_string(b.column) +
@@ -727,6 +735,7 @@ Case load_case(const std::string& path) {
   c.output.summary = c.stem + ".summary.json";
 
   Reader br = top.table("body");
+  c.input_files.push_back(path);
   c.body = read_body(br, c.body_type, c.rigid, c.notes);
   const Body body(c.body);
   Reader er = top.table("excitation");
@@ -734,6 +743,7 @@ Case load_case(const std::string& path) {
   if (auto sr = top.table_opt("solver")) read_solver(*sr, c.options);
   if (auto orr = top.table_opt("output")) read_output(*orr, c.output);
   c.options.output_dt = c.output.time_history.empty() ? 0.0 : c.output.dt;
+  check_history_rows(top, c);
   if (auto ir = top.table_opt("initial")) read_initial(*ir, c, body);
   top.finish("at the top level");
   return c;
@@ -741,8 +751,10 @@ Case load_case(const std::string& path) {
 
 bool has_excitation(const std::string& path) { return parse(path).contains("excitation"); }
 
-BodyParameters load_body(const std::string& path, std::string* type) {
+BodyParameters load_body(const std::string& path, std::string* type,
+                         std::vector<std::string>* files) {
   const toml::table doc = parse(path);
+  std::vector<std::string> read{path};
   Reader top(path, doc, "", 1);
   Reader br = top.table("body");
   std::string t;
@@ -750,6 +762,7 @@ BodyParameters load_body(const std::string& path, std::string* type) {
   std::vector<std::string> notes;
   BodyParameters p = read_body(br, t, rigid, notes);
   if (type) *type = t;
+  if (files) files->insert(files->end(), read.begin(), read.end());
   return p;
 }
 

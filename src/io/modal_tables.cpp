@@ -14,6 +14,7 @@
 
 #include "flexrock/core/error.hpp"
 #include "flexrock/io/case_file.hpp"
+#include "flexrock/io/files.hpp"
 
 namespace flexrock::io::detail {
 
@@ -31,15 +32,8 @@ struct Line {
 }
 
 std::vector<Line> read_lines(const std::string& path, const std::string& what) {
-  // a directory or a device (/dev/zero) would read as an error or never end
-  std::error_code ec;
-  const auto type = fs::status(path, ec).type();
-  if (type == fs::file_type::directory || type == fs::file_type::character ||
-      type == fs::file_type::block || type == fs::file_type::fifo) {
-    throw InputError(path + ": is a directory or a device; expected a " + what + " file");
-  }
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path + ": cannot open " + what + " file");
+  // a regular file only: a FIFO would block, a device (/dev/zero) would never end
+  std::istringstream in(read_input_file(path, what));
   std::vector<Line> lines;
   std::string text;
   while (std::getline(in, text)) {

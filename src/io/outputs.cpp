@@ -1,14 +1,19 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "flexrock/io/outputs.hpp"
 
+#include <fcntl.h>
 #include <signal.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <atomic>
+#include <cerrno>
 #include <charconv>
 #include <cmath>
 #include <csignal>
+#include <cstdint>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -17,8 +22,10 @@
 #include <numbers>
 #include <ostream>
 #include <stdexcept>
+#include <streambuf>
 #include <system_error>
 
+#include "flexrock/io/files.hpp"
 #include "flexrock/version.hpp"
 
 namespace flexrock::io {
@@ -90,25 +97,139 @@ class TempRegistration {
 
 }  // namespace
 
+namespace {
+
+// the bytes that follow a name in its temporary: ".tmp." and a process id (at most 10 digits)
+constexpr std::size_t kTempSuffixMax = 5 + 10;
+
+// the longest file name the directory takes (NAME_MAX: 255 on Linux file systems)
+std::size_t name_max(const fs::path& dir) {
+  const long n = ::pathconf(dir.empty() ? "." : dir.c_str(), _PC_NAME_MAX);
+  return n > 0 ? static_cast<std::size_t>(n) : 255;
+}
+
+// "NAME.tmp.": the name a temporary of `path` starts with, before the process id. A name too long
+// to take the suffix within NAME_MAX is cut and told apart by a hash of the whole name.
+std::string temp_stem(const fs::path& path) {
+  const std::string name = path.filename().string();
+  const std::size_t max = name_max(path.parent_path());
+  if (name.size() + kTempSuffixMax <= max) return name + ".tmp.";
+  char hash[24];
+  std::uint64_t h = 1469598103934665603ULL;
+  for (const char c : name) h = (h ^ static_cast<unsigned char>(c)) * 1099511628211ULL;
+  std::snprintf(hash, sizeof hash, ".%016llx", static_cast<unsigned long long>(h));
+  const std::size_t keep = max > kTempSuffixMax + 17 + 1 ? max - kTempSuffixMax - 17 : 1;
+  return name.substr(0, keep) + hash + ".tmp.";
+}
+
+// removes the temporaries of `path` that runs killed before they could clean up (SIGKILL, power
+// loss) left behind: "STEM<pid>" where no process <pid> runs any more
+void remove_stale_temporaries(const fs::path& path, const std::string& stem) {
+  const fs::path dir = path.parent_path().empty() ? fs::path(".") : path.parent_path();
+  std::error_code ec;
+  fs::directory_iterator it(dir, ec);
+  for (; !ec && it != fs::directory_iterator(); it.increment(ec)) {
+    const std::string name = it->path().filename().string();
+    if (!name.starts_with(stem) || name.size() == stem.size()) continue;
+    const std::string digits = name.substr(stem.size());
+    if (digits.size() > 10 || digits.find_first_not_of("0123456789") != std::string::npos) {
+      continue;
+    }
+    const long pid = std::stol(digits);
+    if (pid <= 0 || pid == static_cast<long>(::getpid())) continue;
+    if (::kill(static_cast<pid_t>(pid), 0) == 0 || errno != ESRCH) continue;  // still running
+    std::error_code ignored;
+    fs::remove(it->path(), ignored);
+  }
+}
+
+// "PATH: reason" of the last system call
+std::runtime_error os_error(const std::string& what, const std::string& path, int err) {
+  return std::runtime_error("cannot " + what + " " + path + ": " + std::strerror(err));
+}
+
+// a stream buffer on a file descriptor that keeps the first write error's errno
+class FdBuf : public std::streambuf {
+ public:
+  explicit FdBuf(int fd) : fd_(fd) { setp(buf_, buf_ + sizeof buf_); }
+  int error() const { return error_; }
+
+ protected:
+  int_type overflow(int_type c) override {
+    if (!drain()) return traits_type::eof();
+    if (!traits_type::eq_int_type(c, traits_type::eof())) {
+      *pptr() = traits_type::to_char_type(c);
+      pbump(1);
+    }
+    return traits_type::not_eof(c);
+  }
+  int sync() override { return drain() ? 0 : -1; }
+
+ private:
+  bool drain() {
+    const char* p = pbase();
+    while (p < pptr() && error_ == 0) {
+      const ssize_t n = ::write(fd_, p, static_cast<std::size_t>(pptr() - p));
+      if (n < 0) {
+        if (errno != EINTR) error_ = errno;
+        continue;
+      }
+      p += n;
+    }
+    setp(buf_, buf_ + sizeof buf_);
+    return error_ == 0;
+  }
+  int fd_;
+  int error_ = 0;
+  char buf_[1 << 16];
+};
+
+}  // namespace
+
 void write_atomically(const std::string& path, const std::function<void(std::ostream&)>& write) {
-  const std::string tmp = path + ".tmp." + std::to_string(::getpid());
+  const fs::path target(path);
+  // an existing directory, device or FIFO is not replaced by a regular file
+  struct stat st {};
+  if (::stat(path.c_str(), &st) == 0 && !S_ISREG(st.st_mode)) {
+    throw std::runtime_error("cannot write " + path + ": it exists and is not a regular file");
+  }
+  const std::string stem = temp_stem(target);
+  remove_stale_temporaries(target, stem);
+  const std::string tmp = (target.parent_path() / (stem + std::to_string(::getpid()))).string();
   install_interrupt_cleanup();
   const TempRegistration registration(tmp);
+  const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
+  if (fd < 0) throw os_error("create the temporary file", tmp, errno);
+  bool open = true;
   try {
-    {
-      std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-      if (!out) throw std::runtime_error("cannot open " + tmp + " for writing");
-      write(out);
-      out.flush();
-      if (!out) throw std::runtime_error("cannot write " + tmp + " (disk full?)");
-    }
-    std::error_code ec;
-    fs::rename(tmp, path, ec);
-    if (ec) throw std::runtime_error("cannot rename " + tmp + " to " + path + ": " + ec.message());
+    FdBuf buf(fd);
+    std::ostream out(&buf);
+    write(out);
+    out.flush();
+    if (buf.error() != 0) throw os_error("write", tmp, buf.error());
+    if (!out) throw std::runtime_error("cannot write " + tmp);
+    // on the disk before the rename: a crash after it finds the new content, not an empty file
+    if (::fsync(fd) != 0) throw os_error("flush to disk", tmp, errno);
+    open = false;
+    if (::close(fd) != 0) throw os_error("close", tmp, errno);
   } catch (...) {
+    if (open) ::close(fd);
     std::error_code ignored;
     fs::remove(tmp, ignored);
     throw;
+  }
+  if (::rename(tmp.c_str(), path.c_str()) != 0) {
+    const int e = errno;
+    std::error_code ignored;
+    fs::remove(tmp, ignored);
+    throw std::runtime_error("cannot rename " + tmp + " to " + path + ": " + std::strerror(e));
+  }
+  // the rename itself on the disk: the directory entry
+  const std::string dir = target.parent_path().empty() ? "." : target.parent_path().string();
+  const int dfd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  if (dfd >= 0) {
+    ::fsync(dfd);
+    ::close(dfd);
   }
 }
 
@@ -386,11 +507,23 @@ std::string summary_json(const Case& c, const Body& body, const SimulationResult
   return j.dump(2) + "\n";
 }
 
+OutputPaths output_paths(const Case& c, const std::string& output_dir) {
+  return {resolve_out(output_dir, c.output.time_history), resolve_out(output_dir, c.output.summary),
+          resolve_out(output_dir, c.output.events)};
+}
+
+void check_output_paths(const Case& c, const OutputPaths& paths) {
+  std::vector<NamedPath> inputs;
+  for (const std::string& f : c.input_files) inputs.push_back({"input", f});
+  check_distinct_files(inputs, {{"time history", paths.time_history},
+                                {"summary", paths.summary},
+                                {"event log", paths.events}});
+}
+
 OutputPaths write_outputs(const Case& c, const Body& body, const SimulationResult& r,
                           const std::string& output_dir) {
-  OutputPaths paths{resolve_out(output_dir, c.output.time_history),
-                    resolve_out(output_dir, c.output.summary),
-                    resolve_out(output_dir, c.output.events)};
+  const OutputPaths paths = output_paths(c, output_dir);
+  check_output_paths(c, paths);
   for (const std::string* p : {&paths.time_history, &paths.summary, &paths.events}) {
     if (p->empty()) continue;
     const fs::path parent = fs::path(*p).parent_path();
@@ -401,6 +534,12 @@ OutputPaths write_outputs(const Case& c, const Body& body, const SimulationResul
         throw std::runtime_error("cannot create directory " + parent.string() + ": " +
                                  ec.message());
     }
+  }
+  // a summary on disk vouches for the files it names: the old one goes before any of them is
+  // replaced, the new one comes after all of them are complete
+  if (!paths.summary.empty() && ::unlink(paths.summary.c_str()) != 0 && errno != ENOENT) {
+    throw std::runtime_error("cannot remove the old summary " + paths.summary + ": " +
+                             std::strerror(errno));
   }
   if (!paths.time_history.empty()) {
     write_atomically(paths.time_history,

@@ -5,17 +5,16 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
-#include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <string>
 #include <string_view>
 #include <system_error>
 #include <utility>
 #include <vector>
 
+#include "decimal_comma.hpp"
 #include "flexrock/core/error.hpp"
 #include "flexrock/core/types.hpp"
+#include "flexrock/io/files.hpp"
 
 namespace flexrock::io {
 
@@ -75,24 +74,19 @@ std::string upper(std::string_view s) {
 
 // the whole file as lines, without line ends (LF or CRLF) and without a UTF-8 byte-order mark
 std::vector<Line> read_lines(const std::string& path) {
-  // a directory or a device (/dev/zero, /dev/urandom) would read as an error or never end
-  std::error_code ec;
-  const auto type = std::filesystem::status(path, ec).type();
-  FLEXROCK_THROW_UNLESS(type != std::filesystem::file_type::directory,
-                        path + ": is a directory; expected a record file");
-  FLEXROCK_THROW_UNLESS(
-      type != std::filesystem::file_type::character && type != std::filesystem::file_type::block,
-      path + ": is a device, not a file; expected a record file");
-  std::ifstream in(path, std::ios::binary);
-  FLEXROCK_THROW_UNLESS(in.good(), path + ": cannot open the file for reading");
+  // a regular file only: a FIFO would block, a device (/dev/zero) would never end
+  const std::string text = read_input_file(path, "record");
   std::vector<Line> lines;
-  std::string text;
-  while (std::getline(in, text)) {
-    if (!text.empty() && text.back() == '\r') text.pop_back();
-    if (lines.empty() && text.starts_with("\xEF\xBB\xBF")) text.erase(0, 3);
-    lines.push_back({lines.size() + 1, std::move(text)});
+  std::size_t start = 0;
+  while (start < text.size()) {
+    std::size_t end = text.find('\n', start);
+    if (end == std::string::npos) end = text.size();
+    std::string line = text.substr(start, end - start);
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (lines.empty() && line.starts_with("\xEF\xBB\xBF")) line.erase(0, 3);
+    lines.push_back({lines.size() + 1, std::move(line)});
+    start = end + 1;
   }
-  FLEXROCK_THROW_UNLESS(!in.bad(), path + ": read error");
   return lines;
 }
 
@@ -331,6 +325,12 @@ std::vector<std::string_view> fields(std::string_view s) {
   return out;
 }
 
+// a number with a decimal comma would be split in two at the comma: refused, never split
+void refuse_decimal_commas(const std::string& path, const Line& line, std::size_t min_tokens) {
+  const std::string n = detail::decimal_comma_number(strip_comment(line.text), min_tokens);
+  if (!n.empty()) fail(path, line.number, detail::decimal_comma_message(n));
+}
+
 bool all_blank(const std::vector<Line>& lines) {
   return std::all_of(lines.begin(), lines.end(), [](const Line& l) { return is_blank(l.text); });
 }
@@ -417,6 +417,7 @@ Record read_at2(const std::string& path) {
 
   // values: exactly npts finite numbers, any count a line
   for (std::size_t i = 4; i < lines.size(); ++i) {
+    refuse_decimal_commas(path, lines[i], 1);
     for (std::string_view token : split(lines[i].text, false)) {
       if (r.values.size() == npts) {
         fail(path, lines[i].number,
@@ -459,6 +460,7 @@ Record read_single_column(const std::string& path, double dt, AccelUnit units) {
       r.header.push_back(line.text);
       continue;
     }
+    refuse_decimal_commas(path, line, 1);
     for (std::string_view token : split(strip_comment(line.text), true)) {
       r.values.push_back(value_or_fail(path, line.number, token, nth_value(r.values.size() + 1)));
     }
@@ -490,6 +492,7 @@ Record read_time_series(const std::string& path, AccelUnit units) {
     }
     const std::string_view body = strip_comment(line.text);
     if (is_blank(body)) continue;
+    refuse_decimal_commas(path, line, 2);
     const std::vector<std::string_view> f = fields(body);
     // an optional header row: the first row, if its first field is not a number
     double probe = 0.0;

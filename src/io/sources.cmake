@@ -2,7 +2,7 @@
 # included from src/CMakeLists.txt; paths are relative to src/
 
 # flexrock::io: record files (PEER .AT2, single-column, time/acceleration text and CSV)
-add_library(flexrock_io io/records.cpp)
+add_library(flexrock_io io/records.cpp io/files.cpp)
 add_library(flexrock::io ALIAS flexrock_io)
 set_target_properties(flexrock_io PROPERTIES EXPORT_NAME io)
 target_link_libraries(flexrock_io PUBLIC flexrock::core

@@ -18,6 +18,7 @@
 #include "flexrock/core/error.hpp"
 #include "flexrock/core/types.hpp"
 #include "flexrock/io/case_file.hpp"
+#include "flexrock/io/files.hpp"
 #include "flexrock/io/records.hpp"
 #include "table_reader.hpp"
 
@@ -49,12 +50,8 @@ std::string join(const std::vector<std::string>& v, const char* sep = ", ") {
   return s;
 }
 
-std::string file_bytes(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
+// a regular file's bytes (read_input_file refuses FIFOs and devices)
+std::string file_bytes(const std::string& path) { return read_input_file(path, "input"); }
 
 std::string resolve(const std::string& base_file, const std::string& p) {
   const fs::path path(p);
@@ -78,6 +75,10 @@ std::optional<std::vector<double>> grid_opt(Keys& r, std::string_view key,
                            "or {start, stop, step}";
   std::vector<double> v;
   if (const toml::array* a = n->as_array()) {
+    if (a->size() > kMaxGridPoints) {
+      r.fail(key, "expected at most " + std::to_string(kMaxGridPoints) + " values, got " +
+                      std::to_string(a->size()));
+    }
     for (const toml::node& e : *a) v.push_back(r.to_number(e, key, what));
     if (v.empty()) r.expected(key, what + " (not empty)");
     return v;
@@ -94,12 +95,23 @@ std::optional<std::vector<double>> grid_opt(Keys& r, std::string_view key,
   if (g.has("step")) {
     if (g.has("count")) g.fail("step", "expected 'step' or 'count', not both");
     const double step = g.positive_or("step", 1.0, unit);
-    // integer multiples of the step, so that values do not drift; stop included to 1e-9 steps
-    const auto n_steps = static_cast<long>(std::floor((stop - start) / step + 1e-9));
+    // integer multiples of the step, so that values do not drift; stop included to 1e-9 steps.
+    // The count is checked as a double before it becomes an integer (1e-300 would overflow it)
+    const double steps = std::floor((stop - start) / step + 1e-9);
+    if (!(steps < static_cast<double>(kMaxGridPoints))) {
+      g.fail("step", "expected a step that gives at most " + std::to_string(kMaxGridPoints) +
+                         " grid points from " + num(start) + " to " + num(stop) + ", got " +
+                         num(step) + " (" + num(steps + 1.0) + " points)");
+    }
+    const auto n_steps = static_cast<long>(steps);
     for (long i = 0; i <= n_steps; ++i) v.push_back(start + static_cast<double>(i) * step);
   } else {
     const long count = g.integer_or("count", 0, 1, "an integer >= 1 (grid points)");
     if (count == 0) g.fail("count", "missing; expected 'count' (an integer >= 1) or 'step'");
+    if (count > static_cast<long>(kMaxGridPoints)) {
+      g.fail("count", "expected at most " + std::to_string(kMaxGridPoints) + " grid points, got " +
+                          std::to_string(count));
+    }
     const std::string spacing = g.choice("spacing", {"linear", "log"}, "linear");
     if (spacing == "log" && !(start > 0.0)) g.fail("start", "expected start > 0 for a log grid");
     for (long i = 0; i < count; ++i) {
@@ -114,11 +126,9 @@ std::optional<std::vector<double>> grid_opt(Keys& r, std::string_view key,
 }
 
 toml::table parse(const std::string& path, const char* what) {
-  if (!fs::exists(path)) throw InputError(path + ": no such " + std::string(what));
-  if (fs::is_directory(path))
-    throw InputError(path + ": is a directory, expected a " + std::string(what));
+  const std::string text = read_input_file(path, what);
   try {
-    return toml::parse_file(path);
+    return toml::parse(text, path);
   } catch (const toml::parse_error& e) {
     const auto& b = e.source().begin;
     throw InputError(path + ":" + std::to_string(b.line) + ":" + std::to_string(b.column) +
@@ -141,9 +151,11 @@ AccelUnit unit_of(const std::string& u) {
 }
 
 // a record table {file, format, units, dt, name}; the record's bytes go into `hash`
-Record read_record(Keys& r, std::string& name, std::uint64_t* hash) {
+Record read_record(Keys& r, std::string& name, std::uint64_t* hash,
+                   std::vector<std::string>& files) {
   const std::string file = r.string("file", "a path to the record, relative to this file");
   const std::string path = resolve(r.file(), file);
+  files.push_back(path);
   std::string ext = fs::path(file).extension().string();
   for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   const std::string format =
@@ -198,7 +210,7 @@ void check_name(Keys& r, const std::string& key, const std::string& name) {
 // spectrum
 
 SpectrumFile load_spectrum_file(const std::string& path) {
-  const toml::table doc = parse(path, "spectrum file");
+  const toml::table doc = parse(path, "spectrum");
   Keys top(path, doc, "");
   SpectrumFile f;
   f.source = path;
@@ -214,7 +226,8 @@ SpectrumFile load_spectrum_file(const std::string& path) {
                                      "or a [body] table here");
     f.body_source = resolve(path, b);
   }
-  f.body = load_body(f.body_source);
+  f.input_files.push_back(path);
+  f.body = load_body(f.body_source, nullptr, &f.input_files);
   SimulationOptions solver = study::study_solver_defaults();
   if (auto s = top.table_opt("solver")) read_solver(*s, solver);
   auto sp = top.table_opt("spectrum");
@@ -235,7 +248,7 @@ SpectrumFile load_spectrum_file(const std::string& path) {
     const toml::node* rn = s.node("record");
     if (!rn->is_table()) s.expected("record", "a table {file, format, units, dt, name}");
     Keys rk(path, *rn->as_table(), "spectrum.record.");
-    const Record rec = read_record(rk, f.record_name, nullptr);
+    const Record rec = read_record(rk, f.record_name, nullptr, f.input_files);
     f.record.motion = rec.to_motion();
     const auto scales = grid_opt(s, "scales", "[-] (factors on the record)");
     if (!scales) s.fail("scales", "missing; expected the scale factors of the record");
@@ -283,6 +296,12 @@ SpectrumFile load_spectrum_file(const std::string& path) {
         s.fail("frequencies", "expected values > 0, got " + num((*freqs)[i]) + " at position " +
                                   std::to_string(i + 1));
       }
+    }
+    if (static_cast<double>(amps->size()) * static_cast<double>(freqs->size()) >
+        static_cast<double>(kMaxStudyRuns)) {
+      s.fail("amplitudes", "expected at most " + std::to_string(kMaxStudyRuns) +
+                               " grid cells, got " + std::to_string(amps->size()) +
+                               " amplitudes x " + std::to_string(freqs->size()) + " frequencies");
     }
     f.pulse.amplitudes = std::move(*amps);
     f.pulse.frequencies = std::move(*freqs);
@@ -394,6 +413,7 @@ SweepManifest load_sweep_manifest(const std::string& path) {
   Keys top(path, doc, "");
   SweepManifest m;
   m.source = path;
+  m.input_files.push_back(path);
   std::uint64_t h = fnv1a(file_bytes(path));
   top.string_opt("name", "a string");
   top.string_opt("description", "a string");
@@ -410,7 +430,7 @@ SweepManifest load_sweep_manifest(const std::string& path) {
       b.fail("name", "expected a unique body name, got \"" + sb.name + "\" twice");
     b.finish("for a [[body]] (see docs/studies.md)");
     try {
-      sb.body = load_body(full);
+      sb.body = load_body(full, nullptr, &m.input_files);
     } catch (const InputError& e) {
       throw InputError(std::string(e.what()) + " (body named by [[body]] at " + path + ":" +
                        std::to_string(b.line()) + ")");
@@ -420,7 +440,7 @@ SweepManifest load_sweep_manifest(const std::string& path) {
   }
   for (Keys& r : top.tables("record", "a record: { file, format, units, dt, name }")) {
     study::SweepRecord sr;
-    const Record rec = read_record(r, sr.name, &h);
+    const Record rec = read_record(r, sr.name, &h, m.input_files);
     check_name(r, "name", sr.name);
     if (!names.insert("record:" + sr.name).second)
       r.fail("name", "expected a unique record name, got \"" + sr.name + "\" twice");
@@ -452,6 +472,16 @@ SweepManifest load_sweep_manifest(const std::string& path) {
       sk->fail(f ? "factors" : "target_pga", "expected values > 0, got " + num(m.spec.scales[i]) +
                                                  " at position " + std::to_string(i + 1));
     }
+  }
+  const double runs = static_cast<double>(m.spec.bodies.size()) *
+                      static_cast<double>(m.spec.records.size()) *
+                      static_cast<double>(m.spec.scales.size());
+  if (runs > static_cast<double>(kMaxStudyRuns)) {
+    sk->fail(f ? "factors" : "target_pga",
+             "expected at most " + std::to_string(kMaxStudyRuns) + " runs, got " +
+                 std::to_string(m.spec.bodies.size()) + " bodies x " +
+                 std::to_string(m.spec.records.size()) + " records x " +
+                 std::to_string(m.spec.scales.size()) + " scales");
   }
   sk->finish("in [scales] (see docs/studies.md)");
   if (auto s = top.table_opt("solver")) read_solver(*s, m.spec.solver);
@@ -598,8 +628,7 @@ std::size_t CsvTable::column(const std::string& name) const {
 }
 
 CsvTable read_csv_table(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError(path + ": cannot open the CSV file");
+  std::istringstream in(read_input_file(path, "CSV"));
   CsvTable t;
   t.source = path;
   auto split = [](const std::string& line) {

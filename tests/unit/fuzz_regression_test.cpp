@@ -49,6 +49,7 @@ TEST_P(FuzzReplay, EveryCorpusAndRegressionInputIsReadOrRefusedCleanly) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Targets, FuzzReplay,
-                         ::testing::Values("fuzz_at2", "fuzz_values", "fuzz_csv", "fuzz_case"));
+                         ::testing::Values("fuzz_at2", "fuzz_values", "fuzz_csv", "fuzz_case",
+                                           "fuzz_sweep", "fuzz_spectrum"));
 
 }  // namespace

@@ -60,11 +60,16 @@ struct Case {
   OutputSettings output;
   std::vector<std::string> notes;  // what reading changed in the data (re-orthogonalised shapes)
   std::string scaled_to;  // the target intensity excitation_scale was chosen for ("PGA 0.3 g")
+  std::vector<std::string> input_files;  // every file read: the case, records, nodes, shapes
 };
 
 /// Whether a case (or body) file has an [excitation] table. Throws InputError for a file that
 /// cannot be read or parsed.
 bool has_excitation(const std::string& path);
+
+/// The most time-history rows a case may ask for (its duration / output.dt): a typo such as
+/// output.dt = 1e-300 is refused naming the key instead of exhausting the memory.
+inline constexpr std::size_t kMaxHistoryRows = 10'000'000;
 
 /// Reads and checks a case file: the syntax, every key, the body (through the builders and
 /// Body), the records it names (relative to the case file), the options and the initial state.
@@ -72,8 +77,10 @@ bool has_excitation(const std::string& path);
 Case load_case(const std::string& path);
 
 /// Reads only the [body] table of a case (or body) file: for `flexrock params`. Other tables are
-/// ignored. `type` receives body.type. Throws InputError like load_case.
-BodyParameters load_body(const std::string& path, std::string* type = nullptr);
+/// ignored. `type` receives body.type; `files`, when given, gets every file read appended (the
+/// file itself, nodes and shapes files). Throws InputError like load_case.
+BodyParameters load_body(const std::string& path, std::string* type = nullptr,
+                         std::vector<std::string>* files = nullptr);
 
 /// Levenshtein edit distance (insertions, deletions, substitutions), for "did you mean".
 std::size_t edit_distance(std::string_view a, std::string_view b);

@@ -19,11 +19,15 @@ namespace flexrock::io {
 /// Version of the summary JSON layout; raised only when keys are removed or change meaning.
 inline constexpr int kSummarySchemaVersion = 2;
 
-/// Writes a file atomically: `write` fills a stream opened on "PATH.tmp.<pid>", which is then
-/// renamed onto `path`. Throws std::runtime_error (naming the path) if the file cannot be written;
-/// the temporary file is removed. SIGINT, SIGTERM and SIGHUP left at their default action get a
-/// handler (installed on the first call) that removes the temporaries being written before the
-/// process dies of the signal: an interrupted program leaves complete files or none.
+/// Writes a file atomically: `write` fills a stream opened on "PATH.tmp.<pid>" (a name too long
+/// for NAME_MAX with the suffix is cut and ends in a hash of the whole name), which is flushed to
+/// the disk (fsync) and renamed onto `path`; the directory is then synced too. Temporaries of
+/// the same path left by processes that no longer run (killed by SIGKILL, a crash) are removed
+/// first. Throws std::runtime_error naming the path and the operating system's reason (e.g.
+/// "No space left on device") if the file cannot be written, or if `path` exists and is not a
+/// regular file; the temporary file is removed. SIGINT, SIGTERM and SIGHUP left at their default
+/// action get a handler (installed on the first call) that removes the temporaries being written
+/// before the process dies of the signal: an interrupted program leaves complete files or none.
 void write_atomically(const std::string& path, const std::function<void(std::ostream&)>& write);
 
 /// Column names of the time history for a body with `modes` modes, each with its unit suffix:
@@ -58,9 +62,19 @@ struct OutputPaths {
 std::string summary_json(const Case& c, const Body& body, const SimulationResult& result,
                          const OutputPaths& paths);
 
-/// Writes the outputs `c.output` asks for: the time history, the event log, then the summary
-/// (last, so that a summary on disk means a complete set). Relative paths are taken relative
-/// to `output_dir` (created if missing). Returns the paths written.
+/// The output paths of a case: `c.output` with relative paths taken relative to `output_dir`.
+OutputPaths output_paths(const Case& c, const std::string& output_dir);
+
+/// Throws InputError if an output is one of the case's input files (c.input_files) or two
+/// outputs are the same file (io::check_distinct_files).
+void check_output_paths(const Case& c, const OutputPaths& paths);
+
+/// Writes the outputs `c.output` asks for, after check_output_paths(): first removes an old
+/// summary at the summary path, then writes the time history, the event log and the summary
+/// last. So a summary on disk vouches for the files it names under "outputs": they are complete
+/// and from the same run. A failed or interrupted rerun can leave a new time history beside an
+/// old event log, but never a summary beside files of another run. Relative paths are taken
+/// relative to `output_dir` (created if missing). Returns the paths written.
 OutputPaths write_outputs(const Case& c, const Body& body, const SimulationResult& result,
                           const std::string& output_dir);
 

@@ -20,6 +20,12 @@
 
 namespace flexrock::io {
 
+/// The most values a grid ({start, stop, count}, {start, stop, step} or an array) may hold, and
+/// the most runs (grid cells, bodies x records x scales) a study may have: typos such as
+/// count = 1e12 or step = 1e-9 are refused naming the key instead of exhausting the memory.
+inline constexpr std::size_t kMaxGridPoints = 1'000'000;
+inline constexpr std::size_t kMaxStudyRuns = 2'000'000;
+
 // ---------------------------------------------------------------------------------------------
 // spectrum
 
@@ -32,7 +38,8 @@ struct SpectrumFile {
   bool is_record = false;   // true: `record` (one record x scales); false: `pulse` grid
   study::SpectrumSpec pulse;
   study::RecordSpectrumSpec record;
-  std::string record_name;  // record.name (default: the record file's stem)
+  std::string record_name;               // record.name (default: the record file's stem)
+  std::vector<std::string> input_files;  // every file read: the spec, body and record files
 };
 
 /// Reads a spectrum spec (TOML). `body` is a path to a case or body file (relative to the spec)
@@ -62,6 +69,7 @@ struct SweepManifest {
   std::string source;  // path as given
   study::SweepSpec spec;
   std::uint64_t hash = 0;  // FNV-1a of the manifest, the body and record files it names
+  std::vector<std::string> input_files;  // every file read: the manifest, bodies, records
 };
 
 /// Reads a sweep manifest (TOML): [[body]] tables naming case/body files, [[record]] tables
