@@ -14,6 +14,9 @@
 #include "flexrock/core/error.hpp"
 #include "flexrock/io/case_file.hpp"
 #include "flexrock/io/records.hpp"
+#include "flexrock/io/study_files.hpp"
+#include "flexrock/model/body.hpp"
+#include "flexrock/study/sweep.hpp"
 
 namespace flexrock::fuzz {
 namespace {
@@ -33,6 +36,10 @@ struct Scratch {
     put("rec.txt", "0 0.01 -0.02\n0.03 0\n");
     put("rec.csv", "time,acc\n0,0\n0.01,0.1\n0.02,-0.1\n0.03,0\n");
     put("nodes.csv", "x,y,mass\n-0.5,0,10\n0.5,0,10\n0,2,100\n");
+    put("body.toml", "[body]\ntype = \"rigid_block\"\nwidth = 0.4\nheight = 2.0\nmass = 100.0\n");
+    put("lumped.toml",
+        "[body]\ntype = \"lumped\"\nnodes_file = \"nodes.csv\"\ntip1_x = -0.5\ntip2_x = 0.5\n"
+        "frequencies_hz = [2.0]\nphi_x = [[0.0], [0.0], [1.0]]\nphi_y = [[0.0], [0.0], [0.0]]\n");
   }
   ~Scratch() {
     std::error_code ec;
@@ -133,6 +140,38 @@ void case_file(const std::uint8_t* data, std::size_t size) {
   }
 }
 
+void sweep_manifest(const std::uint8_t* data, std::size_t size) {
+  const std::string path = put_file("manifest.toml", data, size);
+  try {
+    const io::SweepManifest m = io::load_sweep_manifest(path);
+    // what the sweep command does next with a manifest: its runs, in index order
+    study::validate(m.spec);
+    const std::vector<study::SweepRun> runs = study::sweep_runs(m.spec);
+    if (runs.size() != m.spec.bodies.size() * m.spec.records.size() * m.spec.scales.size()) {
+      std::abort();
+    }
+  } catch (const InputError&) {
+  }
+}
+
+void spectrum_file(const std::uint8_t* data, std::size_t size) {
+  const std::string path = put_file("spectrum.toml", data, size);
+  try {
+    const io::SpectrumFile f = io::load_spectrum_file(path);
+    // grids that were read are what a spectrum needs: finite, positive, amplitudes increasing
+    const std::vector<double>& a = f.is_record ? f.record.scales : f.pulse.amplitudes;
+    for (std::size_t i = 0; i < a.size(); ++i) {
+      if (!(std::isfinite(a[i]) && a[i] > 0.0) || (i > 0 && !(a[i] > a[i - 1]))) std::abort();
+    }
+    for (double w : f.pulse.frequencies) {
+      if (!(std::isfinite(w) && w > 0.0)) std::abort();
+    }
+    const Body body(f.body);
+    (void)body.rocking_frequency();
+  } catch (const InputError&) {
+  }
+}
+
 bool run_file(const std::string& target, const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   const std::vector<char> bytes((std::istreambuf_iterator<char>(in)),
@@ -146,6 +185,10 @@ bool run_file(const std::string& target, const std::string& path) {
     csv(d, bytes.size());
   } else if (target == "fuzz_case") {
     case_file(d, bytes.size());
+  } else if (target == "fuzz_sweep") {
+    sweep_manifest(d, bytes.size());
+  } else if (target == "fuzz_spectrum") {
+    spectrum_file(d, bytes.size());
   } else {
     return false;
   }

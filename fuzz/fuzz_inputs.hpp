@@ -26,7 +26,17 @@ void csv(const std::uint8_t* data, std::size_t size);
 /// name sit next to it: rec.at2, rec.txt (values), rec.csv and nodes.csv.
 void case_file(const std::uint8_t* data, std::size_t size);
 
-/// Runs `target` ("fuzz_at2", "fuzz_values", "fuzz_csv" or "fuzz_case") on the bytes of a file.
+/// Sweep manifest loader (load_sweep_manifest, then the runs): the input is the manifest. Files
+/// it may name sit next to it: body.toml (a rigid block), lumped.toml (a lumped body reading
+/// nodes.csv), rec.at2, rec.txt, rec.csv.
+void sweep_manifest(const std::uint8_t* data, std::size_t size);
+
+/// Spectrum spec loader (load_spectrum_file): the input is the spec; the same files lie next to
+/// it as for sweep_manifest().
+void spectrum_file(const std::uint8_t* data, std::size_t size);
+
+/// Runs `target` ("fuzz_at2", "fuzz_values", "fuzz_csv", "fuzz_case", "fuzz_sweep" or
+/// "fuzz_spectrum") on the bytes of a file.
 /// Returns false for an unknown target.
 bool run_file(const std::string& target, const std::string& path);
 
