@@ -60,7 +60,7 @@ struct Case {
   OutputSettings output;
   std::vector<std::string> notes;  // what reading changed in the data (re-orthogonalised shapes)
   std::string scaled_to;  // the target intensity excitation_scale was chosen for ("PGA 0.3 g")
-  std::vector<std::string> input_files;  // every file read: the case, records, nodes, shapes
+  std::vector<std::string> input_files;  // the case file and its record files
 };
 
 /// Whether a case (or body) file has an [excitation] table. Throws InputError for a file that
