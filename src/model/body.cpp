@@ -7,6 +7,7 @@
 #include <cmath>
 #include <numbers>
 #include <string>
+#include <utility>
 
 #include "flexrock/core/error.hpp"
 
@@ -94,6 +95,19 @@ Body::Body(BodyParameters params) : p_(std::move(params)) {
   require_positive(p_.zeta2, "zeta2", "radius of gyration squared over h^2");
   require_positive(p_.gravity, "g", "gravity [m/s^2]");
 
+  // derived quantities must not overflow or underflow (finite inputs can: M = 1e308 or 5e-324)
+  const double mgh = p_.mass * p_.gravity * p_.height;
+  const double inertia = p_.mass * p_.height * p_.height * (1.0 + p_.zeta2);
+  for (const auto& [v, what] : {std::pair<double, const char*>{mgh, "M g h [J], the energy scale"},
+                                {inertia, "M h^2 (1 + zeta2) [kg m^2], the rotary inertia"},
+                                {p_.gravity / p_.height, "g/h [1/s^2]"}}) {
+    FLEXROCK_THROW_UNLESS(
+        std::isnormal(v),
+        std::string("body: ") + what + " = " + num(v) + " is not a finite normal number (M = " +
+            num(p_.mass) + " kg, h = " + num(p_.height) + " m, g = " + num(p_.gravity) +
+            " m/s^2 overflow or underflow double precision); give the body " + "in physical sizes");
+  }
+
   n_ = static_cast<int>(p_.mu.rows());
   require_size(p_.mu, n_, "mu");
   require_size(p_.kappa, n_, "kappa");
@@ -129,6 +143,10 @@ Body::Body(BodyParameters params) : p_(std::move(params)) {
     mu_cg_inv_ = MatrixX(0, 0);
   }
   stiffness_ = gh * p_.kappa;
+  FLEXROCK_THROW_UNLESS(stiffness_.allFinite() && mu_inv_.allFinite(),
+                        "body: (g/h) kappa or mu^-1 overflows double precision (largest kappa " +
+                            num(p_.kappa.size() ? p_.kappa.cwiseAbs().maxCoeff() : 0.0) +
+                            ", g/h = " + num(gh) + " 1/s^2); give the body in physical sizes");
 
   // pinned-base modes: K phi = omega^2 mu phi, phi mass-normalised
   omega_.resize(n_);

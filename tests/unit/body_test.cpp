@@ -45,6 +45,22 @@ TEST(BodyValidation, RejectsNonPositiveGeometry) {
   expect_rejected(p, "M", "nan");
 }
 
+TEST(BodyValidation, RejectsFiniteInputsWhoseDerivedQuantitiesOverflow) {
+  // each input is finite and positive; M g h or the inertia is not a normal double
+  auto p = BodyParameters::rectangular_block(1e308, 0.2, 1.0);
+  expect_rejected(p, "M g h", "inf", "M = 1e+308", "physical sizes");
+  p = BodyParameters::rectangular_block(5e-324, 0.2, 1.0);
+  expect_rejected(p, "M g h", "not a finite normal number", "4.94066e-324");
+  p = BodyParameters::rectangular_block(1e300, 0.2, 1e5);
+  expect_rejected(p, "rotary inertia");
+  p = two_modes();
+  p.kappa *= 1e306;
+  expect_rejected(p, "kappa", "overflows");
+  // physical extremes still pass: 1 g and 1e9 kg
+  EXPECT_NO_THROW(Body(BodyParameters::rectangular_block(1e-3, 0.01, 0.05)));
+  EXPECT_NO_THROW(Body(BodyParameters::rectangular_block(1e9, 5.0, 20.0)));
+}
+
 TEST(BodyValidation, RejectsWrongSizes) {
   auto p = two_modes();
   p.kappa = MatrixX::Identity(3, 3);
