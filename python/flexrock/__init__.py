@@ -435,6 +435,8 @@ class Result:
 
     @property
     def overturned(self) -> bool:
+        """The engine's one overturning rule (|theta| reached the criterion's angle, rocking or
+        in flight), as ``flexrock run``, sweeps and spectra report it."""
         return self.raw.status == Status.overturned
 
     def time_history_csv(self) -> str:
@@ -460,12 +462,13 @@ class Result:
         Returns
         -------
         dict of str to numpy.ndarray
-            ``time_s`` [s], ``phase`` (0 full contact, 1 and 2 rocking on edge 1 and 2),
+            ``time_s`` [s], ``phase`` (0 full contact, 1 and 2 rocking on edge 1 and 2, 3 flight),
             ``theta_rad`` [rad], ``theta_dot_rad_per_s`` [rad/s], ``uplift_m`` [m], ``q1``...
             [-], ``q1_dot_per_s``... [1/s], ``base_acc_x_m_per_s2``, ``base_acc_y_m_per_s2``
             [m/s^2], ``reaction_x_N``, ``reaction_y_N`` [N], ``resultant_m`` [m],
             ``friction_demand`` [-], ``kinetic_J``, ``potential_J``, ``input_work_J``,
-            ``damping_loss_J``, ``impact_loss_J`` [J] (docs/case-file.md). Built from the
+            ``damping_loss_J``, ``impact_loss_J`` [J], ``offset_m``, ``lift_m`` [m]
+            (docs/case-file.md). Built from the
             engine's arrays, equal bit for bit to the CSV's values.
         """
         if self._time_history is None:
