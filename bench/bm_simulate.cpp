@@ -69,6 +69,21 @@ void BM_C_RigidKobe(benchmark::State& s) { run_case(s, case_c()); }
 void BM_D_OscillatorKobe(benchmark::State& s) { run_case(s, case_d_oscillator()); }
 void BM_D_Cantilever4Kobe(benchmark::State& s) { run_case(s, case_d_cantilever()); }
 
+// the same cases with the options the engine had before it followed flight (chatter_ratio 0.01,
+// overturning at the static angle): the event loop's cost at equal work, against the old engine
+Case pre_flight_options(Case c) {
+  c.opt.chatter_ratio = 0.01;
+  c.opt.overturn = OverturnCriterion::kStaticInstability;
+  return c;
+}
+void BM_A_RigidFreeRocking_OldOptions(benchmark::State& s) {
+  run_case(s, pre_flight_options(case_a()));
+}
+void BM_B_RigidPulse2pi_OldOptions(benchmark::State& s) {
+  run_case(s, pre_flight_options(case_b(2.0 * kPi)));
+}
+void BM_C_RigidKobe_OldOptions(benchmark::State& s) { run_case(s, pre_flight_options(case_c())); }
+
 // medians over repetitions: the machine is shared, single runs are noisy
 #define FLEXROCK_WHOLE_RUN(fn)                                      \
   BENCHMARK(fn)                                                     \
@@ -84,5 +99,8 @@ FLEXROCK_WHOLE_RUN(BM_B_RigidPulse6pi);
 FLEXROCK_WHOLE_RUN(BM_C_RigidKobe);
 FLEXROCK_WHOLE_RUN(BM_D_OscillatorKobe);
 FLEXROCK_WHOLE_RUN(BM_D_Cantilever4Kobe);
+FLEXROCK_WHOLE_RUN(BM_A_RigidFreeRocking_OldOptions);
+FLEXROCK_WHOLE_RUN(BM_B_RigidPulse2pi_OldOptions);
+FLEXROCK_WHOLE_RUN(BM_C_RigidKobe_OldOptions);
 
 }  // namespace
