@@ -4,13 +4,14 @@
 # studies (flexrock::study, io/study_files): spectra, sweeps, fragility fits, the thread pool
 flexrock_add_test(flexrock_study_tests
   SOURCES unit/study_spectrum_test.cpp unit/study_sweep_test.cpp unit/study_fragility_test.cpp
-          unit/study_files_test.cpp
+          unit/study_files_test.cpp unit/journal_test.cpp
   LIBS flexrock::study flexrock::io
   LABEL unit)
 
 if(TARGET flexrock)
-  # the commands: outputs, thread-count independence, errors; resume after SIGINT and SIGKILL
-  foreach(script study_spectrum study_sweep_resume study_fragility)
+  # the commands: outputs, thread-count independence, errors; resume after SIGINT, SIGTERM and
+  # SIGKILL, damaged journals, a second writer
+  foreach(script study_spectrum study_spectrum_resume study_sweep_resume study_fragility)
     add_test(NAME cli_${script}
              COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/cli/${script}.sh $<TARGET_FILE:flexrock>
                      ${PROJECT_SOURCE_DIR})

@@ -24,6 +24,7 @@
 
 #include "flexrock/core/error.hpp"
 #include "flexrock/io/files.hpp"
+#include "flexrock/io/journal.hpp"
 #include "flexrock/io/outputs.hpp"
 #include "flexrock/io/study_files.hpp"
 #include "flexrock/study/fragility.hpp"
@@ -232,6 +233,135 @@ std::string join_columns(const std::vector<std::string>& v) {
   return s;
 }
 
+// ---------------------------------------------------------------------------------------------
+// the journal of a study over one or several processes: rank 0 holds OUT.partial and merges
+// into it what other processes left in OUT.partial.rank<r> when an MPI study was interrupted;
+// every process learns the lines finished before this start; the others journal their runs to
+// OUT.partial.rank<r> (created with their first line)
+
+class StudyJournal {
+ public:
+  StudyJournal(const Processes& procs, std::string path, std::string kind, std::uint64_t inputs,
+               std::size_t runs, io::JournalCheck check)
+      : procs_(procs),
+        path_(std::move(path)),
+        kind_(std::move(kind)),
+        inputs_(inputs),
+        runs_(runs),
+        check_(std::move(check)) {
+    std::string known, failure;
+    if (procs_.root()) {
+      try {
+        open_root();
+        known = pack(main_->finished());
+      } catch (const InputError& e) {
+        failure = std::string("I") + e.what();
+      } catch (const std::exception& e) {
+        failure = std::string("R") + e.what();
+      }
+    }
+    // every process stops alike when rank 0 cannot use the journal
+    failure = procs_.broadcast(failure);
+    if (!failure.empty()) {
+      if (failure[0] == 'I') throw InputError(failure.substr(1));
+      throw std::runtime_error(failure.substr(1));
+    }
+    known_ = unpack(procs_.broadcast(known));
+  }
+
+  const std::string& path() const { return path_; }
+  /// Lines finished before this start, by run index (on every process).
+  const std::map<std::size_t, std::string>& known() const { return known_; }
+
+  /// A run finished here: into this process's journal. Callers serialize.
+  void append(std::size_t index, const std::string& line) {
+    if (procs_.root()) {
+      main_->append(index, line);
+      return;
+    }
+    if (!own_) {
+      own_ = std::make_unique<io::Journal>(path_ + ".rank" + std::to_string(procs_.rank()), kind_,
+                                           inputs_, runs_, check_);
+    }
+    own_->append(index, line);
+    added_[index] = line;
+  }
+
+  /// After the work (every process calls it): every line of every process, on rank 0; the
+  /// others get an empty map.
+  const std::map<std::size_t, std::string>& gather() {
+    const std::map<std::size_t, std::string> all = unpack(procs_.gather(pack(added_)));
+    if (!procs_.root()) return added_ = {};
+    for (const auto& [i, line] : all) {
+      if (!main_->finished().count(i)) main_->remember(i, line);
+    }
+    return main_->finished();
+  }
+
+  /// A line found on rank 0 after gather() (a bisection done there).
+  void append_on_root(std::size_t index, const std::string& line) { main_->append(index, line); }
+
+  /// Every process calls it last: with rank 0's `outputs_written`, every journal is deleted;
+  /// without, they stay for the next start.
+  void finish(bool outputs_written) {
+    if (!procs_.any(procs_.root() && outputs_written)) return;
+    if (own_) own_->remove();
+    if (main_) main_->remove();
+  }
+
+ private:
+  void open_root() {
+    main_ = std::make_unique<io::Journal>(path_, kind_, inputs_, runs_, check_);
+    // journals other processes left: merged, then deleted
+    const fs::path p(path_);
+    const std::string prefix = p.filename().string() + ".rank";
+    std::vector<fs::path> others;
+    std::error_code ec;
+    for (const auto& e :
+         fs::directory_iterator(p.parent_path().empty() ? fs::path(".") : p.parent_path(), ec)) {
+      const std::string name = e.path().filename().string();
+      if (name.size() > prefix.size() && name.starts_with(prefix) &&
+          name.find_first_not_of("0123456789", prefix.size()) == std::string::npos) {
+        others.push_back(e.path());
+      }
+    }
+    for (const fs::path& o : others) {
+      io::Journal other(o.string(), kind_, inputs_, runs_, check_);
+      for (const auto& [i, line] : other.finished()) {
+        const auto it = main_->finished().find(i);
+        if (it == main_->finished().end()) {
+          main_->append(i, line);
+        } else if (it->second != line) {
+          throw InputError(o.string() + ": run " + std::to_string(i) +
+                           " differs from its line in " + path_ +
+                           ": delete one of the two journals");
+        }
+      }
+      other.remove();
+    }
+  }
+
+  const Processes& procs_;
+  std::string path_, kind_;
+  std::uint64_t inputs_;
+  std::size_t runs_;
+  io::JournalCheck check_;
+  std::unique_ptr<io::Journal> main_;         // rank 0
+  std::unique_ptr<io::Journal> own_;          // other ranks
+  std::map<std::size_t, std::string> known_;  // finished before this start
+  std::map<std::size_t, std::string> added_;  // other ranks: finished here
+};
+
+// the outcome field of every cell line, counted
+std::map<std::string, std::size_t> count_outcomes(const std::map<std::size_t, std::string>& lines,
+                                                  std::size_t cells) {
+  std::map<std::string, std::size_t> counts;
+  for (const auto& [i, line] : lines) {
+    if (i < cells) ++counts[study::to_string(io::spectrum_line_outcome(line))];
+  }
+  return counts;
+}
+
 }  // namespace
 
 // ---------------------------------------------------------------------------------------------
@@ -293,61 +423,87 @@ int StudyCommands::Impl::run_spectrum(const Processes& procs) {
   io::check_distinct_files(
       named_inputs(f.input_files),
       {{"output", output}, {"boundary output", bisect ? boundary_output : ""}});
+  const bool normalized = f.pulse.normalized || f.is_record;
+
+  // the grid, with every run it makes checked, before the journal exists: a run that could not
+  // start must not leave a journal behind
+  const study::SpectrumResult grid = f.is_record ? study::record_spectrum_grid(body, f.record)
+                                                 : study::spectrum_grid(body, f.pulse);
+  const std::size_t cells = grid.cells.size();
+  const std::size_t columns = f.is_record ? 1 : f.pulse.frequencies.size();
+  const std::size_t runs = cells + grid.boundary.size();
+  // the journal: cells by index, then one boundary per column; its inputs are the files and
+  // whether the boundary is bisected
+  StudyJournal journal(procs, output + ".partial", "spectrum",
+                       io::fnv1a(bisect ? "bisect" : "no-bisect", f.hash), runs,
+                       io::spectrum_journal_check(grid, normalized, g));
+  study::SpectrumResume resume;
+  for (const auto& [i, line] : journal.known()) {
+    if (i < cells) {
+      resume.cells[i] = io::spectrum_line_outcome(line);
+    } else {
+      resume.boundaries.insert(i - cells);
+    }
+  }
+  resume.on_cell = [&](const study::SpectrumCell& c) {
+    journal.append(c.row * columns + c.column, io::spectrum_row(grid, c, g));
+  };
+  resume.on_boundary = [&](const study::OverturnBoundary& b) {
+    journal.append(cells + b.column, io::boundary_row(grid, b, normalized, g));
+  };
 
   const SignalGuard signals;
   std::atomic<std::size_t> completed{0};
   study::RunOptions options = run_options(procs);
   options.completed = &completed;
-  // the runs of rank 0's share, for its progress bar (the bisection's runs come on top)
+  // the cells left in rank 0's share, for its progress bar (the bisection's runs come on top)
   const auto size = static_cast<std::size_t>(procs.size());
   const auto rank = static_cast<std::size_t>(procs.rank());
-  const std::size_t units = f.is_record ? f.record.scales.size() : f.pulse.frequencies.size();
-  const std::size_t my_units = (units + size - 1 - rank) / size;
-  const std::size_t my_runs = f.is_record ? my_units : my_units * f.pulse.amplitudes.size();
+  std::size_t my_runs = 0;
+  for (std::size_t i = 0; i < cells; ++i) {
+    const std::size_t unit = f.is_record ? i : i % columns;
+    if (unit % size == rank && !resume.cells.count(i)) ++my_runs;
+  }
+  if (!quiet && procs.root() && !journal.known().empty()) {
+    fmt::print("resuming: {} of {} cells and boundaries already in {}\n", journal.known().size(),
+               runs, journal.path());
+  }
   const auto start = std::chrono::steady_clock::now();
-  study::SpectrumResult res =
-      with_progress(show_progress(procs), my_runs, completed,
-                    procs.size() > 1 ? fmt::format("  (rank 0 of {})", procs.size()) : "", [&] {
-                      return f.is_record ? study::compute_record_spectrum(body, f.record, options)
-                                         : study::compute_spectrum(body, f.pulse, options);
-                    });
+  with_progress(show_progress(procs), my_runs, completed,
+                procs.size() > 1 ? fmt::format("  (rank 0 of {})", procs.size()) : "", [&] {
+                  return f.is_record
+                             ? study::compute_record_spectrum(body, f.record, options, &resume)
+                             : study::compute_spectrum(body, f.pulse, options, &resume);
+                });
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const std::string interrupted = fmt::format(
+      "interrupted: finished cells are kept in {}{}; run the same command again to "
+      "continue",
+      journal.path(), procs.size() > 1 ? " (and .rank<N> files)" : "");
   if (procs.any(g_cancel.load())) {
-    if (procs.root()) return error("interrupted: nothing written", kExitRunFailed);
+    if (procs.root()) return error(interrupted, kExitRunFailed);
     return kExitRunFailed;
   }
 
-  // gather every computed cell's line and every boundary line on rank 0, by index
-  std::map<std::size_t, std::string> cells, bounds;
-  for (std::size_t i = 0; i < res.cells.size(); ++i) {
-    if (res.cells[i].computed) cells[i] = io::spectrum_row(res, res.cells[i], g);
+  const std::map<std::size_t, std::string>& lines = journal.gather();
+  if (!procs.root()) {
+    journal.finish(false);
+    return kExitOk;
   }
-  for (std::size_t j = 0; j < res.boundary.size(); ++j) {
-    if (res.boundary[j].computed) {
-      bounds[j] = io::boundary_row(res, res.boundary[j], f.pulse.normalized || f.is_record, g);
+  // a record spectrum spread over processes: the bisection here, from every cell's outcome
+  if (f.is_record && bisect && !lines.count(cells)) {
+    std::vector<study::SpectrumCell> all = grid.cells;
+    for (std::size_t i = 0; i < cells; ++i)
+      all[i].run.outcome = io::spectrum_line_outcome(lines.at(i));
+    const study::OverturnBoundary b = study::record_boundary(body, f.record, all, &g_cancel);
+    if (!b.computed) {
+      journal.finish(false);
+      return error(interrupted, kExitRunFailed);
     }
+    journal.append_on_root(cells, io::boundary_row(grid, b, true, g));
   }
-  std::map<std::size_t, std::string> all_cells = unpack(procs.gather(pack(cells)));
-  std::map<std::size_t, std::string> all_bounds = unpack(procs.gather(pack(bounds)));
-  if (!procs.root()) return kExitOk;
-  FLEXROCK_DEMAND(all_cells.size() == res.cells.size());
-  if (f.is_record && bisect && procs.size() > 1) {
-    // the record's rows came from several processes: take their outcomes from the lines
-    for (auto& [i, line] : all_cells) {
-      std::vector<std::string> fields;
-      std::stringstream ss(line);
-      for (std::string x; std::getline(ss, x, ',');) fields.push_back(x);
-      for (study::Outcome o :
-           {study::Outcome::kNoUplift, study::Outcome::kRocking,
-            study::Outcome::kOverturnedAfterImpacts, study::Outcome::kOverturnedWithoutImpact,
-            study::Outcome::kStopped}) {
-        if (fields.at(7) == study::to_string(o)) res.cells[i].run.outcome = o;
-      }
-    }
-    const study::OverturnBoundary b = study::record_boundary(body, f.record, res.cells);
-    all_bounds[0] = io::boundary_row(res, b, true, g);
-  }
+  FLEXROCK_DEMAND(lines.size() == runs);
   try {
     // the boundary is written last and an old one removed first: a boundary file on disk is
     // from the same run as the cells beside it
@@ -357,34 +513,32 @@ int StudyCommands::Impl::run_spectrum(const Processes& procs) {
     }
     io::write_atomically(output, [&](std::ostream& out) {
       out << join_columns(io::spectrum_columns()) << '\n';
-      for (const auto& [i, line] : all_cells) out << line << '\n';
+      for (std::size_t i = 0; i < cells; ++i) out << lines.at(i) << '\n';
     });
     if (bisect) {
       io::write_atomically(boundary_output, [&](std::ostream& out) {
         out << join_columns(io::boundary_columns()) << '\n';
-        for (const auto& [j, line] : all_bounds) out << line << '\n';
+        for (std::size_t i = cells; i < runs; ++i) out << lines.at(i) << '\n';
       });
     }
   } catch (const std::exception& e) {
-    return error(std::string("could not write the outputs: ") + e.what(), kExitRunFailed);
+    journal.finish(false);
+    return error(std::string("could not write the outputs (the finished cells are kept in ") +
+                     journal.path() + "): " + e.what(),
+                 kExitRunFailed);
   }
+  const std::map<std::string, std::size_t> counts = count_outcomes(lines, cells);
+  journal.finish(true);
 
   // a short account on stdout
-  std::map<std::string, std::size_t> counts;
-  for (const auto& [i, line] : all_cells) {
-    std::vector<std::string> fields;
-    std::stringstream ss(line);
-    for (std::string x; std::getline(ss, x, ',');) fields.push_back(x);
-    ++counts[fields.at(7)];
-  }
   fmt::print("spectrum: {} ({}), body from {}\n", f.name,
              f.is_record ? "record " + f.record_name + " x scales"
                          : std::string(study::to_string(f.pulse.pulse)) + " pulse, " +
                                (f.pulse.normalized ? "normalized" : "physical") + " axes",
              f.body_source);
   fmt::print("body: g tan(alpha1) = {:.4g} m/s^2, alpha1 = {:.4g} rad, p = {:.4g} rad/s\n",
-             g * res.tan_alpha, res.alpha, res.p);
-  fmt::print("cells: {}", all_cells.size());
+             g * grid.tan_alpha, grid.alpha, grid.p);
+  fmt::print("cells: {}", cells);
   for (const auto& [k, n] : counts) fmt::print(", {} {}", k, n);
   fmt::print("\n");
   if (!quiet) {
@@ -399,45 +553,19 @@ int StudyCommands::Impl::run_spectrum(const Processes& procs) {
 int StudyCommands::Impl::run_sweep(const Processes& procs) {
   check_threads();
   const io::SweepManifest m = io::load_sweep_manifest(input);
+  // every run is checked before the journal exists: a run that could not start must not leave
+  // a journal behind
   study::validate(m.spec);
   const std::vector<study::SweepRun> runs = study::sweep_runs(m.spec);
   if (output.empty()) output = default_output(input, ".sweep.csv");
-  const std::string journal_path = output + ".partial";
   io::check_distinct_files(named_inputs(m.input_files),
-                           {{"output", output}, {"journal", journal_path}});
-  const std::string rank_journal = journal_path + ".rank" + std::to_string(procs.rank());
-
-  // rank 0 opens the journal, merges journals that other processes left, and says what remains
-  std::string remaining_text;
-  std::unique_ptr<io::SweepJournal> journal;
-  std::size_t resumed = 0;
-  if (procs.root()) {
-    journal = std::make_unique<io::SweepJournal>(journal_path, m.hash, runs.size());
-    const std::string prefix = fs::path(journal_path).filename().string() + ".rank";
-    const fs::path dir = fs::path(journal_path).parent_path().empty()
-                             ? fs::path(".")
-                             : fs::path(journal_path).parent_path();
-    std::vector<fs::path> others;
-    for (const auto& e : fs::directory_iterator(dir)) {
-      if (e.path().filename().string().starts_with(prefix)) others.push_back(e.path());
-    }
-    for (const fs::path& p : others) {
-      io::SweepJournal other(p.string(), m.hash, runs.size());
-      for (const auto& [i, line] : other.finished()) {
-        if (!journal->finished().count(i)) journal->append(i, line);
-      }
-      other.remove();
-    }
-    resumed = journal->finished().size();
-    for (const study::SweepRun& r : runs) {
-      if (!journal->finished().count(r.index)) remaining_text += std::to_string(r.index) + "\n";
-    }
-  }
-  remaining_text = procs.broadcast(remaining_text);
+                           {{"output", output}, {"journal", output + ".partial"}});
+  StudyJournal journal(procs, output + ".partial", "sweep", m.hash, runs.size(),
+                       io::sweep_journal_check(m.spec));
+  const std::size_t resumed = journal.known().size();
   std::vector<std::size_t> remaining;
-  {
-    std::istringstream in(remaining_text);
-    for (std::string s; std::getline(in, s);) remaining.push_back(std::stoul(s));
+  for (const study::SweepRun& r : runs) {
+    if (!journal.known().count(r.index)) remaining.push_back(r.index);
   }
   // this process's share: every size-th of the remaining runs
   std::vector<std::size_t> mine;
@@ -445,11 +573,6 @@ int StudyCommands::Impl::run_sweep(const Processes& procs) {
        k += static_cast<std::size_t>(procs.size())) {
     mine.push_back(remaining[k]);
   }
-  std::unique_ptr<io::SweepJournal> own;
-  if (!procs.root() && !mine.empty()) {
-    own = std::make_unique<io::SweepJournal>(rank_journal, m.hash, runs.size());
-  }
-  io::SweepJournal* sink = procs.root() ? journal.get() : own.get();
 
   const SignalGuard signals;
   std::atomic<std::size_t> completed{0};
@@ -458,69 +581,55 @@ int StudyCommands::Impl::run_sweep(const Processes& procs) {
   options.ranks = 1;  // the share is already this process's
   options.completed = &completed;
   if (!quiet && procs.root() && resumed > 0) {
-    fmt::print("resuming: {} of {} runs already in {}\n", resumed, runs.size(), journal_path);
+    fmt::print("resuming: {} of {} runs already in {}\n", resumed, runs.size(), journal.path());
   }
   const auto start = std::chrono::steady_clock::now();
-  std::map<std::size_t, std::string> lines;
   if (!mine.empty()) {
     with_progress(show_progress(procs), mine.size(), completed,
                   procs.size() > 1 ? fmt::format("  (rank 0 of {})", procs.size()) : "", [&] {
                     return study::run_sweep(m.spec, mine, options, [&](const study::SweepRow& r) {
-                      const std::string line = io::sweep_row(m.spec, r);
-                      sink->append(r.index, line);
+                      journal.append(r.index, io::sweep_row(m.spec, r));
                     });
                   });
-    for (const auto& [i, line] : sink->finished()) lines[i] = line;
   }
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  const bool cancelled = procs.any(g_cancel.load());
-  if (cancelled) {
+  if (procs.any(g_cancel.load())) {
     // every finished run is in a journal; the next identical command goes on from there
     if (procs.root()) {
       return error(fmt::format("interrupted: finished runs are kept in {}{}; run the same "
                                "command again to continue",
-                               journal_path, procs.size() > 1 ? " (and .rank<N> files)" : ""),
+                               journal.path(), procs.size() > 1 ? " (and .rank<N> files)" : ""),
                    kExitRunFailed);
     }
     return kExitRunFailed;
   }
-  // gather the other processes' lines on rank 0
-  std::map<std::size_t, std::string> gathered =
-      unpack(procs.gather(procs.root() ? std::string() : pack(lines)));
+  const std::map<std::size_t, std::string>& lines = journal.gather();
   if (!procs.root()) {
-    procs.barrier();  // rank 0 writes the result, then removes every journal
+    journal.finish(false);
     return kExitOk;
   }
-  for (auto& [i, line] : gathered) {
-    if (!journal->finished().count(i)) journal->remember(i, line);
-  }
-  FLEXROCK_DEMAND(journal->finished().size() == runs.size());
+  FLEXROCK_DEMAND(lines.size() == runs.size());
   try {
     io::write_atomically(output, [&](std::ostream& out) {
       out << join_columns(io::sweep_columns()) << '\n';
-      for (const auto& [i, line] : journal->finished()) out << line << '\n';
+      for (const auto& [i, line] : lines) out << line << '\n';
     });
   } catch (const std::exception& e) {
-    procs.barrier();
-    return error(std::string("could not write the outputs (the runs are kept in ") + journal_path +
-                     "): " + e.what(),
+    journal.finish(false);
+    return error(std::string("could not write the outputs (the runs are kept in ") +
+                     journal.path() + "): " + e.what(),
                  kExitRunFailed);
   }
   std::size_t over = 0, stopped = 0;
-  for (const auto& [i, line] : journal->finished()) {
+  for (const auto& [i, line] : lines) {
     if (line.find(",overturned_") != std::string::npos) ++over;
     // the outcome column, followed by overturned = 0
     if (line.find(",stopped,0,") != std::string::npos) {
       ++stopped;
     }
   }
-  journal->remove();
-  procs.barrier();
-  for (int r = 1; r < procs.size(); ++r) {
-    std::error_code ec;
-    fs::remove(journal_path + ".rank" + std::to_string(r), ec);
-  }
+  journal.finish(true);
   fmt::print(
       "sweep: {} bodies x {} records x {} scales = {} runs: {} overturned, {} not "
       "classified (stopped or contact lost)\n",

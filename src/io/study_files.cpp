@@ -8,11 +8,13 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <memory>
 #include <numbers>
 #include <optional>
 #include <ostream>
 #include <set>
 #include <sstream>
+#include <string_view>
 #include <utility>
 
 #include "flexrock/core/error.hpp"
@@ -136,10 +138,16 @@ toml::table parse(const std::string& path, const char* what) {
   }
 }
 
-// [solver]: the keys of a case file's [solver] table that make sense for a study (no t_end)
-void read_solver(Keys& r, SimulationOptions& o) {
+// [solver]: the keys of a case file's [solver] table that make sense for a study (no t_end),
+// checked as simulate() will check them, here where the file and line are known
+void read_solver(Keys& r, SimulationOptions& o, const BodyParameters& body) {
   detail::read_solver_keys(r, o);
   r.finish("in [solver] (see docs/studies.md)");
+  try {
+    validate_options(Body(body), {}, o);
+  } catch (const InputError& e) {
+    throw InputError(r.file() + ":" + std::to_string(r.line()) + ": table [solver]: " + e.what());
+  }
 }
 
 const std::vector<std::string> kUnits = {"g", "m/s^2", "cm/s^2"};
@@ -228,8 +236,10 @@ SpectrumFile load_spectrum_file(const std::string& path) {
   }
   f.input_files.push_back(path);
   f.body = load_body(f.body_source, nullptr, &f.input_files);
+  f.hash = fnv1a(file_bytes(path));
+  if (!inline_body) f.hash = fnv1a(file_bytes(f.body_source), f.hash);
   SimulationOptions solver = study::study_solver_defaults();
-  if (auto s = top.table_opt("solver")) read_solver(*s, solver);
+  if (auto s = top.table_opt("solver")) read_solver(*s, solver, f.body);
   auto sp = top.table_opt("spectrum");
   if (!sp)
     throw InputError(
@@ -238,7 +248,11 @@ SpectrumFile load_spectrum_file(const std::string& path) {
   const double free_periods = s.nonnegative_or("free_periods", 4.0, "[-] (rocking periods 2 pi/p)");
   const bool bisect = s.boolean_or("bisect", true);
   const double tol = s.positive_or("bisection_tolerance", 1e-3, "[-] (relative)");
-  if (!(tol < 1.0)) s.expected("bisection_tolerance", "a number in (0, 1)");
+  if (!(tol < 1.0) || tol < study::kMinBisectionTolerance) {
+    s.expected("bisection_tolerance",
+               "a number in [1e-12, 1) (relative; a narrower bracket is finer than the "
+               "simulations resolve)");
+  }
   if (s.has("record")) {
     f.is_record = true;
     for (const char* k :
@@ -248,7 +262,7 @@ SpectrumFile load_spectrum_file(const std::string& path) {
     const toml::node* rn = s.node("record");
     if (!rn->is_table()) s.expected("record", "a table {file, format, units, dt, name}");
     Keys rk(path, *rn->as_table(), "spectrum.record.");
-    const Record rec = read_record(rk, f.record_name, nullptr, f.input_files);
+    const Record rec = read_record(rk, f.record_name, &f.hash, f.input_files);
     f.record.motion = rec.to_motion();
     const auto scales = grid_opt(s, "scales", "[-] (factors on the record)");
     if (!scales) s.fail("scales", "missing; expected the scale factors of the record");
@@ -484,7 +498,10 @@ SweepManifest load_sweep_manifest(const std::string& path) {
                  std::to_string(m.spec.scales.size()) + " scales");
   }
   sk->finish("in [scales] (see docs/studies.md)");
-  if (auto s = top.table_opt("solver")) read_solver(*s, m.spec.solver);
+  if (auto s = top.table_opt("solver")) {
+    if (m.spec.bodies.empty()) throw InputError(path + ": expected at least one [[body]]");
+    read_solver(*s, m.spec.solver, m.spec.bodies.front().body);
+  }
   top.finish("at the top level of a sweep manifest");
   m.hash = h;
   return m;
@@ -533,87 +550,181 @@ std::string sweep_row(const study::SweepSpec& spec, const study::SweepRow& row) 
   return s;
 }
 
-std::string journal_header(std::uint64_t hash, std::size_t runs) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(hash));
-  return "# flexrock sweep journal v2 manifest=" + std::string(buf) +
-         " runs=" + std::to_string(runs);
-}
+// ---------------------------------------------------------------------------------------------
+// journal lines
 
-std::size_t row_index(const std::string& line) {
-  std::size_t idx = 0;
-  const auto r = std::from_chars(line.data(), line.data() + line.size(), idx);
-  if (r.ec != std::errc() || r.ptr == line.data() || r.ptr == line.data() + line.size() ||
-      *r.ptr != ',') {
-    throw InputError("expected a line starting with a run index, got \"" + line + "\"");
+namespace {
+
+std::vector<std::string_view> fields_of(std::string_view line) {
+  std::vector<std::string_view> out;
+  for (std::size_t start = 0;;) {
+    const std::size_t c = line.find(',', start);
+    out.push_back(
+        line.substr(start, c == std::string_view::npos ? std::string_view::npos : c - start));
+    if (c == std::string_view::npos) return out;
+    start = c + 1;
   }
-  return idx;
 }
 
-SweepJournal::SweepJournal(std::string path, std::uint64_t hash, std::size_t runs)
-    : path_(std::move(path)) {
-  const std::string header = journal_header(hash, runs);
-  const std::size_t fields = sweep_columns().size();
-  if (fs::exists(path_)) {
-    std::string text = file_bytes(path_);
-    // keep whole lines only: a line without its end was torn by a kill
-    const std::size_t keep = text.rfind('\n') == std::string::npos ? 0 : text.rfind('\n') + 1;
-    text.resize(keep);
-    std::istringstream in(text);
-    std::string line;
-    if (!std::getline(in, line) || line != header) {
-      throw InputError(path_ + ": a sweep journal of another manifest or run count (" +
-                       (line.empty() ? std::string("empty header") : line) + ", expected " +
-                       header + "): delete it to start afresh, or run the manifest that wrote it");
+// the text before the n-th comma: the first n fields
+std::string_view first_fields(std::string_view line, std::size_t n) {
+  std::size_t pos = 0;
+  for (std::size_t k = 0; k < n; ++k) {
+    pos = line.find(',', pos);
+    if (pos == std::string_view::npos) return line;
+    ++pos;
+  }
+  return line.substr(0, pos == 0 ? 0 : pos - 1);
+}
+
+bool is_number(std::string_view f) {
+  double v = 0.0;
+  const auto r = std::from_chars(f.data(), f.data() + f.size(), v);
+  return !f.empty() && r.ec == std::errc() && r.ptr == f.data() + f.size();
+}
+
+bool is_count(std::string_view f) {
+  long v = 0;
+  const auto r = std::from_chars(f.data(), f.data() + f.size(), v);
+  return !f.empty() && r.ec == std::errc() && r.ptr == f.data() + f.size() && v >= 0;
+}
+
+std::optional<study::Outcome> outcome_named(std::string_view name) {
+  // every value of the enumeration, so that a new outcome needs no change here
+  for (int k = 0; k < 64; ++k) {
+    const auto o = static_cast<study::Outcome>(k);
+    if (name == study::to_string(o)) return o;
+  }
+  return std::nullopt;
+}
+
+bool is_status(std::string_view name) {
+  for (int k = 0; k < 64; ++k) {
+    if (name == to_string(static_cast<Status>(k))) return true;
+  }
+  return false;
+}
+
+// the fields of a run's outcome: a known name and the overturned flag that goes with it
+std::string check_outcome(std::string_view outcome, std::string_view flag) {
+  const std::optional<study::Outcome> o = outcome_named(outcome);
+  if (!o) return "unknown outcome \"" + std::string(outcome) + "\"";
+  if (flag != (study::overturned(*o) ? "1" : "0")) {
+    return "overturned = " + std::string(flag) + " does not go with outcome " +
+           std::string(outcome);
+  }
+  return "";
+}
+
+std::string check_fields(const std::vector<std::string_view>& f, std::size_t expected) {
+  if (f.size() != expected) {
+    return std::to_string(f.size()) + " fields, expected " + std::to_string(expected);
+  }
+  return "";
+}
+
+}  // namespace
+
+JournalCheck sweep_journal_check(const study::SweepSpec& spec) {
+  // the bodies and record intensities, once: every run's input fields follow from them
+  auto bodies = std::make_shared<std::vector<Body>>();
+  for (const study::SweepBody& b : spec.bodies) bodies->emplace_back(b.body);
+  auto im = std::make_shared<std::vector<study::Intensity>>();
+  for (const study::SweepRecord& r : spec.records) im->push_back(study::intensity(r.motion));
+  auto runs = std::make_shared<std::vector<study::SweepRun>>(study::sweep_runs(spec));
+  // where the fields are, by column name
+  const std::vector<std::string> names = sweep_columns();
+  auto col = [&names](const char* name) {
+    return static_cast<std::size_t>(std::find(names.begin(), names.end(), name) - names.begin());
+  };
+  const std::size_t columns = names.size();
+  const std::size_t inputs = col("duration_s") + 1;  // the fields a run's inputs decide
+  const std::size_t outcome = col("outcome"), edge = col("overturn_edge");
+  const std::size_t impacts = col("impacts"), status = col("status");
+  return [&spec, bodies, im, runs, columns, inputs, outcome, edge, impacts, status](
+             std::size_t index, const std::string& line) -> std::string {
+    if (index >= runs->size()) return "no such run";
+    const study::SweepRun& run = (*runs)[index];
+    const std::vector<std::string_view> f = fields_of(line);
+    if (std::string why = check_fields(f, columns); !why.empty()) return why;
+    // index, body, record, level, scale, PGA, PGV, duration: as the manifest makes this run
+    const study::SweepRow row =
+        study::sweep_inputs(spec, run, (*bodies)[run.body], (*im)[run.record]);
+    const std::string expected(first_fields(sweep_row(spec, row), inputs));
+    if (first_fields(line, inputs) != expected) {
+      return "its first fields are not those of run " + std::to_string(index) + " (" + expected +
+             ")";
     }
-    std::size_t n = 1;
-    while (std::getline(in, line)) {
-      ++n;
-      const auto commas = static_cast<std::size_t>(std::count(line.begin(), line.end(), ','));
-      std::size_t idx = 0;
-      try {
-        idx = row_index(line);
-      } catch (const InputError& e) {
-        throw InputError(path_ + ":" + std::to_string(n) + ": corrupt sweep journal: " + e.what());
+    if (std::string why = check_outcome(f[outcome], f[outcome + 1]); !why.empty()) return why;
+    for (std::size_t k = edge + 1; k < status; ++k) {
+      if (k != impacts && !is_number(f[k])) {
+        return "field " + std::to_string(k + 1) + " is not a number";
       }
-      if (commas + 1 != fields || idx >= runs) {
-        throw InputError(path_ + ":" + std::to_string(n) + ": corrupt sweep journal line (" +
-                         std::to_string(commas + 1) + " fields, expected " +
-                         std::to_string(fields) + "): delete the journal to start afresh");
+    }
+    if (f[edge] != "0" && f[edge] != "1" && f[edge] != "2") return "overturn_edge is not 0, 1 or 2";
+    if (!is_count(f[impacts])) return "impacts is not a count";
+    if (!is_status(f[status])) return "unknown status \"" + std::string(f[status]) + "\"";
+    return "";
+  };
+}
+
+JournalCheck spectrum_journal_check(const study::SpectrumResult& grid, bool normalized, double g) {
+  auto res = std::make_shared<study::SpectrumResult>(grid);
+  const std::size_t cell_columns = spectrum_columns().size();
+  const std::size_t boundary_fields = boundary_columns().size();
+  return [res, normalized, g, cell_columns, boundary_fields](
+             std::size_t index, const std::string& line) -> std::string {
+    const std::vector<std::string_view> f = fields_of(line);
+    const std::size_t cells = res->cells.size();
+    if (index < cells) {
+      if (std::string why = check_fields(f, cell_columns); !why.empty()) return why;
+      // row, column, amplitudes, frequencies, scale: as the spec makes this cell
+      const std::string expected(first_fields(spectrum_row(*res, res->cells[index], g), 7));
+      if (first_fields(line, 7) != expected) {
+        return "its first fields are not those of cell " + std::to_string(index) + " (" + expected +
+               ")";
       }
-      finished_[idx] = line;
+      if (std::string why = check_outcome(f[7], f[8]); !why.empty()) return why;
+      for (const std::size_t k : {9u, 11u, 12u, 13u}) {
+        if (!is_number(f[k])) return "field " + std::to_string(k + 1) + " is not a number";
+      }
+      if (!is_count(f[10])) return "impacts is not a count";
+      if (!is_status(f[14])) return "unknown status \"" + std::string(f[14]) + "\"";
+      return "";
     }
-    fs::resize_file(path_, keep);
-    file_ = std::fopen(path_.c_str(), "ab");
-  } else {
-    file_ = std::fopen(path_.c_str(), "wb");
-    if (file_) {
-      std::fputs((header + "\n").c_str(), file_);
-      std::fflush(file_);
+    const std::size_t j = index - cells;
+    if (j >= res->boundary.size()) return "no such cell or boundary";
+    if (std::string why = check_fields(f, boundary_fields); !why.empty()) return why;
+    const std::string expected(
+        first_fields(boundary_row(*res, res->boundary[j], normalized, g), 4));
+    if (first_fields(line, 4) != expected) {
+      return "its first fields are not those of the boundary of column " + std::to_string(j) +
+             " (" + expected + ")";
     }
-  }
-  if (!file_) throw std::runtime_error("cannot open the sweep journal " + path_ + " for writing");
+    const bool none = f[4] == "none";
+    if (!none && f[4] != "found" && f[4] != "below_grid") {
+      return "unknown kind \"" + std::string(f[4]) + "\"";
+    }
+    for (const std::size_t k : {5u, 6u, 7u, 8u}) {
+      const bool empty_ok = none || (k == 6 && f[4] == "below_grid");
+      if (!(is_number(f[k]) || (empty_ok && f[k].empty()))) {
+        return "field " + std::to_string(k + 1) + " is not a number";
+      }
+    }
+    if (!none && (!outcome_named(f[9]) || !study::overturned(*outcome_named(f[9])))) {
+      return "mode \"" + std::string(f[9]) + "\" is not an overturning outcome";
+    }
+    if (!is_count(f[10])) return "bisection_runs is not a count";
+    return "";
+  };
 }
 
-SweepJournal::~SweepJournal() {
-  if (file_) std::fclose(file_);
-}
-
-void SweepJournal::append(std::size_t index, const std::string& line) {
-  finished_[index] = line;
-  const std::string text = line + "\n";
-  // one write of the whole line, then to the operating system: a kill leaves whole lines or a
-  // torn last one, which the next opening drops
-  if (std::fwrite(text.data(), 1, text.size(), file_) != text.size() || std::fflush(file_) != 0) {
-    throw std::runtime_error("cannot write the sweep journal " + path_ + " (disk full?)");
-  }
-}
-
-void SweepJournal::remove() {
-  if (file_) std::fclose(file_);
-  file_ = nullptr;
-  std::error_code ec;
-  fs::remove(path_, ec);
+study::Outcome spectrum_line_outcome(const std::string& line) {
+  const std::vector<std::string_view> f = fields_of(line);
+  const std::optional<study::Outcome> o =
+      f.size() > 7 ? outcome_named(f[7]) : std::optional<study::Outcome>();
+  if (!o) throw InputError("no outcome in the spectrum line \"" + line + "\"");
+  return *o;
 }
 
 // ---------------------------------------------------------------------------------------------

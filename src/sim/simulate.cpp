@@ -117,6 +117,11 @@ SimulationResult run(const Body& body, const GroundMotion& motion, const Initial
 
 }  // namespace
 
+void validate_options(const Body& body, const InitialState& init,
+                      const SimulationOptions& options) {
+  check_options(body, init, options);
+}
+
 SimulationResult simulate(const Body& body, const GroundMotion& motion, const InitialState& init,
                           const SimulationOptions& options) {
   check_options(body, init, options);

@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "flexrock/study/spectrum.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <mutex>
 #include <numbers>
 #include <string>
 
@@ -38,8 +40,11 @@ void check_grid(const std::vector<double>& v, const char* name, bool increasing)
 void check_common(double free_periods, double tolerance) {
   FLEXROCK_THROW_UNLESS(std::isfinite(free_periods) && free_periods >= 0.0,
                         "spectrum: free_periods: expected a number >= 0");
-  FLEXROCK_THROW_UNLESS(std::isfinite(tolerance) && tolerance > 0.0 && tolerance < 1.0,
-                        "spectrum: bisection_tolerance: expected a number in (0, 1)");
+  FLEXROCK_THROW_UNLESS(
+      std::isfinite(tolerance) && tolerance >= kMinBisectionTolerance && tolerance < 1.0,
+      "spectrum: bisection_tolerance: expected a number in [1e-12, 1), got " +
+          std::to_string(tolerance) +
+          " (a narrower bracket is below what the simulations resolve and than doubles hold)");
 }
 
 SimulationOptions run_options(const SimulationOptions& solver, double t_end) {
@@ -50,12 +55,17 @@ SimulationOptions run_options(const SimulationOptions& solver, double t_end) {
   return o;
 }
 
-// one column's boundary: bisection between the last safe and the first overturning grid row
+bool cancelled(const std::atomic<bool>* cancel) {
+  return cancel && cancel->load(std::memory_order_relaxed);
+}
+
+// one column's boundary: bisection between the last safe and the first overturning grid row.
+// A stop request ends it between runs with computed = false (an unfinished bracket).
 template <class Run>
 OverturnBoundary bisect_column(const std::vector<double>& rows,
                                const std::vector<SpectrumCell>& cells, std::size_t columns,
                                std::size_t column, double frequency, bool bisect, double tol,
-                               const Run& run) {
+                               const std::atomic<bool>* cancel, const Run& run) {
   OverturnBoundary b;
   b.column = column;
   b.frequency = frequency;
@@ -79,6 +89,12 @@ OverturnBoundary bisect_column(const std::vector<double>& rows,
   if (!bisect) return b;
   while (b.overturning - b.safe > tol * b.overturning) {
     const double mid = 0.5 * (b.safe + b.overturning);
+    // adjacent doubles: the bracket cannot narrow further, whatever the tolerance
+    if (!(mid > b.safe && mid < b.overturning)) break;
+    if (cancelled(cancel)) {
+      b.computed = false;
+      return b;
+    }
     const RunSummary s = run(mid);
     ++b.bisection_runs;
     if (overturned(s.outcome)) {
@@ -198,12 +214,10 @@ RunSummary run_record_cell(const Body& body, const RecordSpectrumSpec& spec, dou
       body, simulate(body, spec.motion.scaled(scale), {}, run_options(spec.solver, duration)));
 }
 
-SpectrumResult compute_spectrum(const Body& body, const SpectrumSpec& spec,
-                                const RunOptions& options) {
+SpectrumResult spectrum_grid(const Body& body, const SpectrumSpec& spec) {
   check_grid(spec.amplitudes, "amplitudes", true);
   check_grid(spec.frequencies, "frequencies", false);
   check_common(spec.free_periods, spec.bisection_tolerance);
-  check_ranks(options);
   SpectrumResult res;
   res.tan_alpha = body.alpha1();
   res.alpha = body.tipping_angle(1);
@@ -212,6 +226,22 @@ SpectrumResult compute_spectrum(const Body& body, const SpectrumSpec& spec,
   const double w_unit = spec.normalized ? res.p : 1.0;
   const std::size_t rows = spec.amplitudes.size();
   const std::size_t cols = spec.frequencies.size();
+  // every run as it will be made, before any is
+  for (std::size_t j = 0; j < cols; ++j) {
+    const double omega = spec.frequencies[j] * w_unit;
+    const double duration = pulse_length(spec.pulse, omega) + free_span(body, spec.free_periods);
+    const std::string where = "spectrum: frequency " + std::to_string(spec.frequencies[j]);
+    FLEXROCK_THROW_UNLESS(std::isfinite(omega) && std::isfinite(duration),
+                          where + ": the pulse and free motion last " + std::to_string(duration) +
+                              " s; expected a finite duration");
+    try {
+      validate_options(body, {}, run_options(spec.solver, duration));
+    } catch (const InputError& e) {
+      throw InputError(where + ": [solver] " + e.what());
+    }
+  }
+  FLEXROCK_THROW_UNLESS(std::isfinite(spec.amplitudes.back() * a_unit),
+                        "spectrum: amplitudes: the largest one overflows in m/s^2");
   res.cells.resize(rows * cols);
   if (spec.bisect) res.boundary.resize(cols);
   for (std::size_t i = 0; i < rows; ++i) {
@@ -225,39 +255,32 @@ SpectrumResult compute_spectrum(const Body& body, const SpectrumSpec& spec,
       c.omega_si = c.frequency * w_unit;
     }
   }
-  // the columns this process computes
-  std::vector<std::size_t> todo;
-  for (std::size_t j = 0; j < cols; ++j) {
-    if (mine(j, options)) todo.push_back(j);
+  for (std::size_t j = 0; j < res.boundary.size(); ++j) {
+    res.boundary[j].column = j;
+    res.boundary[j].frequency = spec.frequencies[j];
   }
-  parallel_for(
-      todo.size(), options.threads,
-      [&](std::size_t k) {
-        const std::size_t j = todo[k];
-        const double omega = spec.frequencies[j] * w_unit;
-        for (std::size_t i = 0; i < rows; ++i) {
-          SpectrumCell& c = res.cells[i * cols + j];
-          c.run = run_pulse_cell(body, spec, c.amplitude_si, omega);
-          c.computed = true;
-          if (options.completed) options.completed->fetch_add(1, std::memory_order_relaxed);
-        }
-        if (spec.bisect) {
-          res.boundary[j] = bisect_column(spec.amplitudes, res.cells, cols, j, spec.frequencies[j],
-                                          true, spec.bisection_tolerance, [&](double a) {
-                                            return run_pulse_cell(body, spec, a * a_unit, omega);
-                                          });
-        }
-      },
-      options.cancel);
   return res;
 }
 
-SpectrumResult compute_record_spectrum(const Body& body, const RecordSpectrumSpec& spec,
-                                       const RunOptions& options) {
+SpectrumResult record_spectrum_grid(const Body& body, const RecordSpectrumSpec& spec) {
   check_grid(spec.scales, "scales", true);
   check_common(spec.free_periods, spec.bisection_tolerance);
-  check_ranks(options);
   FLEXROCK_THROW_UNLESS(spec.motion.duration() > 0.0, "spectrum: the record is empty");
+  const double duration = spec.motion.duration() + free_span(body, spec.free_periods);
+  FLEXROCK_THROW_UNLESS(std::isfinite(duration), "spectrum: the record and free motion last " +
+                                                     std::to_string(duration) +
+                                                     " s; expected a finite duration");
+  try {
+    validate_options(body, {}, run_options(spec.solver, duration));
+  } catch (const InputError& e) {
+    throw InputError(std::string("spectrum: [solver] ") + e.what());
+  }
+  double peak = 0.0;  // the scaled record must stay finite
+  for (const double a : spec.motion.horizontal()) peak = std::max(peak, std::abs(a));
+  for (const double a : spec.motion.vertical()) peak = std::max(peak, std::abs(a));
+  FLEXROCK_THROW_UNLESS(std::isfinite(peak * spec.scales.back()),
+                        "spectrum: scales: the record scaled by " +
+                            std::to_string(spec.scales.back()) + " overflows");
   SpectrumResult res;
   res.tan_alpha = body.alpha1();
   res.alpha = body.tipping_angle(1);
@@ -271,30 +294,118 @@ SpectrumResult compute_record_spectrum(const Body& body, const RecordSpectrumSpe
     c.amplitude = spec.scales[i];
     c.amplitude_si = spec.scales[i] * pga;
   }
+  if (spec.bisect) res.boundary.resize(1);
+  return res;
+}
+
+namespace {
+
+// cells and boundaries already known from `resume`: marked, not run again
+void apply_resume(SpectrumResult& res, const SpectrumResume* resume) {
+  if (!resume) return;
+  for (const auto& [i, outcome] : resume->cells) {
+    FLEXROCK_THROW_UNLESS(i < res.cells.size(),
+                          "spectrum resume: cell index " + std::to_string(i) + " out of range");
+    res.cells[i].run.outcome = outcome;
+    res.cells[i].resumed = true;
+  }
+  for (const std::size_t j : resume->boundaries) {
+    FLEXROCK_THROW_UNLESS(j < res.boundary.size(),
+                          "spectrum resume: boundary index " + std::to_string(j) + " out of range");
+    res.boundary[j].resumed = true;
+  }
+}
+
+}  // namespace
+
+SpectrumResult compute_spectrum(const Body& body, const SpectrumSpec& spec,
+                                const RunOptions& options, const SpectrumResume* resume) {
+  check_ranks(options);
+  SpectrumResult res = spectrum_grid(body, spec);
+  apply_resume(res, resume);
+  const double a_unit = spec.normalized ? body.g() * body.alpha1() : 1.0;
+  const std::size_t rows = spec.amplitudes.size();
+  const std::size_t cols = spec.frequencies.size();
+  // the columns this process computes, and that have something left to compute
+  std::vector<std::size_t> todo;
+  for (std::size_t j = 0; j < cols; ++j) {
+    if (!mine(j, options)) continue;
+    bool left = spec.bisect && !res.boundary[j].resumed;
+    for (std::size_t i = 0; i < rows && !left; ++i) left = !res.cells[i * cols + j].resumed;
+    if (left) todo.push_back(j);
+  }
+  std::mutex report;  // the callbacks are called one at a time
+  parallel_for(
+      todo.size(), options.threads,
+      [&](std::size_t k) {
+        const std::size_t j = todo[k];
+        const double omega = res.cells[j].omega_si;
+        for (std::size_t i = 0; i < rows; ++i) {
+          if (cancelled(options.cancel)) return;  // a column can take long: stop between cells
+          SpectrumCell& c = res.cells[i * cols + j];
+          if (c.resumed) continue;
+          c.run = run_pulse_cell(body, spec, c.amplitude_si, omega);
+          c.computed = true;
+          if (resume && resume->on_cell) {
+            const std::lock_guard lock(report);
+            resume->on_cell(c);
+          }
+          if (options.completed) options.completed->fetch_add(1, std::memory_order_relaxed);
+        }
+        if (spec.bisect && !res.boundary[j].resumed) {
+          OverturnBoundary b = bisect_column(
+              spec.amplitudes, res.cells, cols, j, spec.frequencies[j], true,
+              spec.bisection_tolerance, options.cancel,
+              [&](double a) { return run_pulse_cell(body, spec, a * a_unit, omega); });
+          if (b.computed && resume && resume->on_boundary) {
+            const std::lock_guard lock(report);
+            resume->on_boundary(b);
+          }
+          res.boundary[j] = b;
+        }
+      },
+      options.cancel);
+  return res;
+}
+
+SpectrumResult compute_record_spectrum(const Body& body, const RecordSpectrumSpec& spec,
+                                       const RunOptions& options, const SpectrumResume* resume) {
+  check_ranks(options);
+  SpectrumResult res = record_spectrum_grid(body, spec);
+  apply_resume(res, resume);
+  const std::size_t rows = spec.scales.size();
   // rows spread over ranks and threads; the bisection (one column) runs on rank 0 afterwards
   std::vector<std::size_t> todo;
   for (std::size_t i = 0; i < rows; ++i) {
-    if (mine(i, options)) todo.push_back(i);
+    if (mine(i, options) && !res.cells[i].resumed) todo.push_back(i);
   }
+  std::mutex report;
   parallel_for(
       todo.size(), options.threads,
       [&](std::size_t k) {
         SpectrumCell& c = res.cells[todo[k]];
         c.run = run_record_cell(body, spec, c.amplitude);
         c.computed = true;
+        if (resume && resume->on_cell) {
+          const std::lock_guard lock(report);
+          resume->on_cell(c);
+        }
         if (options.completed) options.completed->fetch_add(1, std::memory_order_relaxed);
       },
       options.cancel);
-  const bool cancelled = options.cancel && options.cancel->load();
-  if (options.ranks == 1 && spec.bisect && !cancelled) {
-    res.boundary = {record_boundary(body, spec, res.cells)};
+  if (options.ranks == 1 && spec.bisect && !res.boundary[0].resumed && !cancelled(options.cancel)) {
+    res.boundary[0] = record_boundary(body, spec, res.cells, options.cancel);
+    if (res.boundary[0].computed && resume && resume->on_boundary) {
+      resume->on_boundary(res.boundary[0]);
+    }
   }
   return res;
 }
 
 OverturnBoundary record_boundary(const Body& body, const RecordSpectrumSpec& spec,
-                                 const std::vector<SpectrumCell>& cells) {
-  return bisect_column(spec.scales, cells, 1, 0, 0.0, spec.bisect, spec.bisection_tolerance,
+                                 const std::vector<SpectrumCell>& cells,
+                                 const std::atomic<bool>* cancel) {
+  return bisect_column(spec.scales, cells, 1, 0, 0.0, spec.bisect, spec.bisection_tolerance, cancel,
                        [&](double s) { return run_record_cell(body, spec, s); });
 }
 

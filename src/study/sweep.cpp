@@ -72,45 +72,88 @@ void validate(const SweepSpec& spec) {
                             std::to_string(spec.levels.size()));
   FLEXROCK_THROW_UNLESS(std::isfinite(spec.free_periods) && spec.free_periods >= 0.0,
                         "sweep: free_periods: expected a number >= 0");
+  std::vector<Body> bodies;
   for (const SweepBody& b : spec.bodies) {
     try {
-      const Body body(b.body);
+      bodies.emplace_back(b.body);
     } catch (const InputError& e) {
       throw InputError("sweep: body '" + b.name + "': " + e.what());
     }
   }
+  std::vector<Intensity> im;
+  std::vector<double> peak;  // [m/s^2] largest |sample| of either component
   for (const SweepRecord& r : spec.records) {
     FLEXROCK_THROW_UNLESS(r.motion.duration() > 0.0,
                           "sweep: record '" + r.name + "': expected a record lasting > 0 s");
+    im.push_back(intensity(r.motion));
+    double p = 0.0;
+    for (const double a : r.motion.horizontal()) p = std::max(p, std::abs(a));
+    for (const double a : r.motion.vertical()) p = std::max(p, std::abs(a));
+    peak.push_back(p);
     if (spec.scale_kind == ScaleKind::kTargetPga) {
       FLEXROCK_THROW_UNLESS(
-          intensity(r.motion).pga > 0.0,
+          im.back().pga > 0.0,
           "sweep: record '" + r.name + "': PGA is zero, it cannot be scaled to a target PGA");
     }
   }
+  // every run as it will be made, before any is: a bad one found after others ran would leave
+  // a journal of a study that cannot finish
+  for (const SweepRun& run : sweep_runs(spec)) {
+    const SweepRecord& rec = spec.records[run.record];
+    const SweepRow row = sweep_inputs(spec, run, bodies[run.body], im[run.record]);
+    const std::string where = "sweep: body '" + spec.bodies[run.body].name + "', record '" +
+                              rec.name + "', scale " + std::to_string(spec.scales[run.scale_index]);
+    // the scaled record must stay finite: its peak times the factor
+    FLEXROCK_THROW_UNLESS(
+        std::isfinite(row.scale) && row.scale > 0.0 &&
+            std::isfinite(row.scale * peak[run.record]) && std::isfinite(row.pgv),
+        where + ": the scaled record overflows (factor " + std::to_string(row.scale) + ")");
+    FLEXROCK_THROW_UNLESS(std::isfinite(row.duration),
+                          where + ": free_periods x 2 pi/p gives a run of " +
+                              std::to_string(row.duration) + " s; expected a finite duration");
+    // the solver options do not depend on the scale: check them once per body and record
+    if (run.scale_index == 0) {
+      try {
+        validate_options(bodies[run.body], {}, run_options(spec, row));
+      } catch (const InputError& e) {
+        throw InputError(where + ": [solver] " + e.what());
+      }
+    }
+  }
+}
+
+SweepRow sweep_inputs(const SweepSpec& spec, const SweepRun& run, const Body& body,
+                      const Intensity& im) {
+  SweepRow row;
+  row.index = run.index;
+  row.body = run.body;
+  row.record = run.record;
+  row.scale_index = run.scale_index;
+  const double s = spec.scales.at(run.scale_index);
+  row.scale = spec.scale_kind == ScaleKind::kTargetPga ? s / im.pga : s;
+  row.pga = row.scale * im.pga;
+  row.pgv = row.scale * im.pgv;
+  const GroundMotion& m = spec.records.at(run.record).motion;
+  row.duration =
+      m.duration() + spec.free_periods * 2.0 * std::numbers::pi / body.rocking_frequency();
+  return row;
+}
+
+SimulationOptions run_options(const SweepSpec& spec, const SweepRow& row) {
+  SimulationOptions o = spec.solver;
+  o.t_end = row.duration;
+  o.output_dt = 0.0;
+  o.progress = nullptr;
+  return o;
 }
 
 namespace {
 
 SweepRow run_one(const SweepSpec& spec, const SweepRun& run, const Body& body,
                  const Intensity& im) {
-  SweepRow row;
-  row.index = run.index;
-  row.body = run.body;
-  row.record = run.record;
-  row.scale_index = run.scale_index;
-  const double s = spec.scales[run.scale_index];
-  row.scale = spec.scale_kind == ScaleKind::kTargetPga ? s / im.pga : s;
-  row.pga = row.scale * im.pga;
-  row.pgv = row.scale * im.pgv;
+  SweepRow row = sweep_inputs(spec, run, body, im);
   const GroundMotion& m = spec.records[run.record].motion;
-  row.duration =
-      m.duration() + spec.free_periods * 2.0 * std::numbers::pi / body.rocking_frequency();
-  SimulationOptions o = spec.solver;
-  o.t_end = row.duration;
-  o.output_dt = 0.0;
-  o.progress = nullptr;
-  const SimulationResult r = simulate(body, m.scaled(row.scale), {}, o);
+  const SimulationResult r = simulate(body, m.scaled(row.scale), {}, run_options(spec, row));
   row.run = summarize(body, r);
   if (r.status == Status::kStopped) row.message = r.message;
   return row;

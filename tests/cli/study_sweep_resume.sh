@@ -1,7 +1,9 @@
 # SPDX-License-Identifier: BSD-3-Clause
 # flexrock sweep is resumable: interrupted by SIGINT and killed by SIGKILL mid-way, the same
 # command continues from the journal, and the final file equals an uninterrupted run byte for
-# byte. A journal of another manifest is refused.
+# byte. A journal of another manifest, of the previous format or with a damaged line is refused;
+# a second sweep on the same output is refused while the first runs; options no run could use
+# are refused before any journal exists.
 source "$(dirname "$0")/common.sh"
 
 DATA="$SRC/../shared/data"
@@ -76,10 +78,78 @@ for sig in INT KILL; do
 done
 
 # a journal of another manifest (or another run count) is an error, not a mix
-printf '# flexrock sweep journal v2 manifest=0000000000000001 runs=60\n0%s\n' "$(printf ',%.0s' $(seq 23))" \
+printf '# flexrock sweep journal v3 inputs=0000000000000001 runs=60\n0 0123456789abcdef 0,x\n' \
   >"$WORK/mix.csv.partial"
 run "$FLEXROCK" sweep "$WORK/m.toml" -o "$WORK/mix.csv"
 expect_rc 2 "foreign journal"
-expect_in "$WORK/err" "a sweep journal of another manifest or run count"
+expect_in "$WORK/err" "a journal of other inputs or another run count"
 [ ! -e "$WORK/mix.csv" ] || fail "a refused sweep wrote an output"
+# a journal of the previous format, without checksums: refused, saying what to do
+printf '# flexrock sweep journal v2 manifest=0000000000000001 runs=60\n0%s\n' "$(printf ',%.0s' $(seq 23))" \
+  >"$WORK/mix.csv.partial"
+run "$FLEXROCK" sweep "$WORK/m.toml" -o "$WORK/mix.csv"
+expect_rc 2 "v1 journal"
+expect_in "$WORK/err" "no checksums and cannot be checked: delete it to compute its runs again"
+
+# a changed value in a middle line (here the outcome), a NUL, a duplicated run with another
+# result: each refused with its line, nothing written; without the line the run is computed again
+rm -f "$WORK/out.csv" "$WORK/out.csv.partial"
+"$FLEXROCK" sweep "$WORK/m.toml" -o "$WORK/out.csv" -j 1 -q >/dev/null 2>&1 &
+pid=$!
+wait_rows 6
+kill -INT "$pid"
+wait "$pid" || true
+cp "$WORK/out.csv.partial" "$WORK/good.partial"
+for damage in 's/,no_uplift,0,/,rocking,0,/;t;s/,rocking,0,/,no_uplift,0,/' 's/,elcentro,/,elcentr\x00,/' 's/,0,\([0-9]\)/,1,\1/'; do
+  cp "$WORK/good.partial" "$WORK/out.csv.partial"
+  sed -i "3{$damage}" "$WORK/out.csv.partial"
+  ! cmp -s "$WORK/good.partial" "$WORK/out.csv.partial" || fail "sed '$damage' changed nothing"
+  run "$FLEXROCK" sweep "$WORK/m.toml" -o "$WORK/out.csv"
+  expect_rc 2 "a corrupt journal line ($damage)"
+  expect_in "$WORK/err" "$WORK/out.csv.partial:3: corrupt sweep journal line"
+  [ ! -e "$WORK/out.csv" ] || fail "a refused sweep wrote an output"
+done
+# run 2's line again, with another result (a valid checksum would need the tool: a copy of
+# another line under run 2's index is caught by the checksum as well)
+cp "$WORK/good.partial" "$WORK/out.csv.partial"
+sed -n '5p' "$WORK/good.partial" | sed 's/^[0-9]* /2 /' >>"$WORK/out.csv.partial"
+run "$FLEXROCK" sweep "$WORK/m.toml" -o "$WORK/out.csv"
+expect_rc 2 "a run twice"
+expect_in "$WORK/err" "corrupt sweep journal line"
+# the damaged line deleted: that run is computed again, and the result is the same
+cp "$WORK/good.partial" "$WORK/out.csv.partial"
+sed -i '3d' "$WORK/out.csv.partial"
+run "$FLEXROCK" sweep "$WORK/m.toml" -o "$WORK/out.csv" -j 2 -q
+expect_rc 0 "the journal without a line"
+cmp "$WORK/ref.csv" "$WORK/out.csv" || fail "the sweep differs after a journal line was deleted"
+
+# two sweeps on the same output: the second is refused while the first runs; the first's
+# result is whole
+rm -f "$WORK/out.csv" "$WORK/out.csv.partial"
+"$FLEXROCK" sweep "$WORK/m.toml" -o "$WORK/out.csv" -j 1 -q >/dev/null 2>&1 &
+pid=$!
+wait_rows 1
+run "$FLEXROCK" sweep "$WORK/m.toml" -o "$WORK/out.csv" -j 1 -q
+expect_rc 2 "a second sweep on the same output"
+expect_in "$WORK/err" "another flexrock process is running with this sweep journal"
+wait "$pid" || fail "the first sweep failed beside a refused second one"
+cmp "$WORK/ref.csv" "$WORK/out.csv" || fail "the first sweep's result was changed"
+
+# options that no run could use are refused before the journal exists, naming the key, so the
+# corrected manifest runs at once
+sed 's/^max_step = 0.0005$/max_step = 0.0005\nevent_samples = 100/' "$WORK/m.toml" >"$WORK/bad.toml"
+run "$FLEXROCK" sweep "$WORK/bad.toml" -o "$WORK/bad.csv"
+expect_rc 2 "event_samples = 100"
+expect_in "$WORK/err" "event_samples"
+[ ! -e "$WORK/bad.csv.partial" ] || fail "a refused sweep left a journal"
+sed 's/^free_periods = 1$/free_periods = 1e308/' "$WORK/m.toml" >"$WORK/bad.toml"
+run "$FLEXROCK" sweep "$WORK/bad.toml" -o "$WORK/bad.csv"
+expect_rc 2 "free_periods = 1e308"
+expect_in "$WORK/err" "free_periods"
+[ ! -e "$WORK/bad.csv.partial" ] || fail "a refused sweep left a journal"
+sed 's/^factors = .*$/factors = [1.0, 1e308]/' "$WORK/m.toml" >"$WORK/bad.toml"
+run "$FLEXROCK" sweep "$WORK/bad.toml" -o "$WORK/bad.csv"
+expect_rc 2 "a scale that overflows"
+expect_in "$WORK/err" "overflows"
+[ ! -e "$WORK/bad.csv.partial" ] || fail "a refused sweep left a journal"
 echo "ok"

@@ -1,14 +1,18 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// Study files: manifests and spectrum specs (errors with file:line: key), the sweep journal
-// (resume, torn lines, foreign journals), CSV input of fragility fits.
+// Study files: manifests and spectrum specs (errors with file:line: key), what sweep and
+// spectrum journals may hold, CSV input of fragility fits.
 #include "flexrock/io/study_files.hpp"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 
+#include "flexrock/io/case_file.hpp"
+#include "flexrock/study/spectrum.hpp"
+#include "flexrock/study/sweep.hpp"
 #include "support/expect_error.hpp"
 
 namespace flexrock::io {
@@ -108,29 +112,99 @@ TEST_F(StudyFiles, SpectrumFileWithInlineBodyAndPhysicalAxes) {
                            {"bad.toml:7", "spectrum.pulse", "did you mean \"one_sine\""});
 }
 
-TEST_F(StudyFiles, JournalResumesDropsATornLineAndRejectsAForeignOne) {
-  const std::string p = (dir_ / "out.csv.partial").string();
-  const std::string row5 = "5" + std::string(23, ',');
-  const std::string row2 = "2" + std::string(23, ',');
-  {
-    SweepJournal j(p, 42, 10);
-    j.append(5, row5);
-    j.append(2, row2);
+TEST_F(StudyFiles, SweepJournalLinesMustBeThoseOfTheirRun) {
+  write("b.toml", kBody);
+  write("r.dat", kRecord);
+  const std::string m = write("m.toml",
+                              "[[body]]\nfile = \"b.toml\"\n"
+                              "[[record]]\nfile = \"r.dat\"\nformat = \"single_column\"\n"
+                              "dt = 0.01\nunits = \"g\"\nname = \"rec\"\n"
+                              "[scales]\nfactors = [0.5, 40.0]\n");
+  const SweepManifest sm = load_sweep_manifest(m);
+  const JournalCheck check = sweep_journal_check(sm.spec);
+  const std::string row0 = sweep_row(sm.spec, study::run_sweep_one(sm.spec, {0, 0, 0, 0}));
+  const std::string row1 = sweep_row(sm.spec, study::run_sweep_one(sm.spec, {1, 0, 0, 1}));
+  EXPECT_EQ(check(0, row0), "");
+  EXPECT_EQ(check(1, row1), "");
+  // the line of another run, a changed body name, scale or PGA
+  EXPECT_NE(check(1, row0), "");
+  // the line with field k (0-based) replaced
+  auto with_field = [](const std::string& line, std::size_t k, const std::string& value) {
+    std::size_t start = 0;
+    for (std::size_t i = 0; i < k; ++i) start = line.find(',', start) + 1;
+    const std::size_t end = line.find(',', start);
+    return line.substr(0, start) + value + (end == std::string::npos ? "" : line.substr(end));
+  };
+  ASSERT_EQ(with_field(row0, 0, "0"), row0);
+  const std::vector<std::string> cols = sweep_columns();
+  auto at = [&cols](const char* name) {
+    return static_cast<std::size_t>(std::find(cols.begin(), cols.end(), name) - cols.begin());
+  };
+  EXPECT_NE(check(0, with_field(row0, at("body"), "c")), "");
+  EXPECT_NE(check(0, with_field(row0, at("record"), "r")), "");
+  EXPECT_NE(check(0, with_field(row0, at("scale"), "0.6")), "");
+  EXPECT_NE(check(0, with_field(row0, at("pga_m_per_s2"), "1.5")), "");
+  EXPECT_NE(check(0, with_field(row0, at("duration_s"), "9")), "");
+  // an unknown outcome, an overturned flag that does not go with it, a count that is not one,
+  // text where a number belongs, a missing field, an unknown status
+  EXPECT_NE(check(0, with_field(row0, at("outcome"), "no_upleft")), "");
+  const bool over = row0.find(",overturned_") != std::string::npos;
+  EXPECT_NE(check(0, with_field(row0, at("overturned"), over ? "0" : "1")), "");
+  EXPECT_NE(check(0, with_field(row0, at("impacts"), "1.5")), "");
+  EXPECT_NE(check(0, with_field(row0, at("max_theta_rad"), "abc")), "");
+  EXPECT_NE(check(0, row0.substr(0, row0.rfind(','))), "");
+  EXPECT_NE(check(0, with_field(row0, at("status"), "complete")), "");
+  EXPECT_NE(check(5, row0), "");
+}
+
+TEST_F(StudyFiles, SpectrumJournalLinesMustBeThoseOfTheirCell) {
+  const Body body(load_body(write("b.toml", kBody)));
+  study::SpectrumSpec spec;
+  spec.amplitudes = {0.5, 3.0, 6.0};
+  spec.frequencies = {2.0, 4.0};
+  spec.free_periods = 1.0;
+  const study::SpectrumResult res = study::compute_spectrum(body, spec, {.threads = 1});
+  const study::SpectrumResult grid = study::spectrum_grid(body, spec);
+  const double g = body.g();
+  const JournalCheck check = spectrum_journal_check(grid, true, g);
+  for (std::size_t i = 0; i < res.cells.size(); ++i) {
+    const std::string line = spectrum_row(res, res.cells[i], g);
+    EXPECT_EQ(check(i, line), "") << line;
+    EXPECT_EQ(spectrum_line_outcome(line), res.cells[i].run.outcome);
+    EXPECT_NE(check((i + 1) % res.cells.size(), line), "");  // another cell's line
   }
-  // a kill in the middle of a line
-  std::ofstream(p, std::ios::app) << "7,half a li";
-  {
-    SweepJournal j(p, 42, 10);
-    ASSERT_EQ(j.finished().size(), 2u);
-    EXPECT_EQ(j.finished().at(5), row5);
-    EXPECT_EQ(read(p), journal_header(42, 10) + "\n" + row5 + "\n" + row2 + "\n");
-    j.append(7, "7" + std::string(23, ','));
+  for (std::size_t j = 0; j < res.boundary.size(); ++j) {
+    const std::string line = boundary_row(res, res.boundary[j], true, g);
+    EXPECT_EQ(check(res.cells.size() + j, line), "") << line;
+    EXPECT_NE(check(res.cells.size() + 1 - j, line), "");  // the other column's
+    EXPECT_NE(check(j, line), "");                         // not a cell
   }
-  EXPECT_EQ(SweepJournal(p, 42, 10).finished().size(), 3u);
-  test::expect_input_error([&] { SweepJournal(p, 43, 10); }, {"another manifest", "delete it"});
-  test::expect_input_error([&] { SweepJournal(p, 42, 11); }, {"another manifest or run count"});
-  SweepJournal(p, 42, 10).remove();
-  EXPECT_FALSE(fs::exists(p));
+  std::string cell = spectrum_row(res, res.cells[0], g);
+  cell.replace(cell.find(",no_uplift,0,"), 13, ",no_uplift,1,");
+  EXPECT_NE(check(0, cell), "");
+  EXPECT_NE(check(res.cells.size() + res.boundary.size(), "0,x"), "");
+}
+
+TEST_F(StudyFiles, SolverOptionsAreCheckedWhereTheyAreWritten) {
+  write("b.toml", kBody);
+  write("r.dat", kRecord);
+  // accepted by the [solver] reader, refused by simulate(): refused here, with file and line
+  const std::string m = write("m.toml",
+                              "[[body]]\nfile = \"b.toml\"\n"
+                              "[[record]]\nfile = \"r.dat\"\nformat = \"single_column\"\n"
+                              "dt = 0.01\nunits = \"g\"\n"
+                              "[scales]\nfactors = [1.0]\n[solver]\nevent_samples = 100\n");
+  test::expect_input_error([&] { load_sweep_manifest(m); },
+                           {"m.toml:10", "[solver]", "event_samples"});
+  const std::string s = write("s.toml", std::string(kBody) +
+                                            "[spectrum]\namplitudes = [1.0]\nfrequencies = [1.0]\n"
+                                            "[solver]\nevent_samples = 100\n");
+  test::expect_input_error([&] { load_spectrum_file(s); }, {"s.toml:9", "event_samples"});
+  const std::string t = write("t.toml", std::string(kBody) +
+                                            "[spectrum]\namplitudes = [1.0]\nfrequencies = [1.0]\n"
+                                            "bisection_tolerance = 1e-16\n");
+  test::expect_input_error([&] { load_spectrum_file(t); },
+                           {"t.toml:9", "spectrum.bisection_tolerance", "1e-12"});
 }
 
 TEST_F(StudyFiles, FragilityDataFromASweepCsv) {

@@ -214,5 +214,55 @@ TEST(StudySpectrum, BadSpecsAreInputErrors) {
   test::expect_input_error([] { pulse_type_from_string("one-sine"); }, {"one_sine", "one-sine"});
 }
 
+TEST(StudySpectrum, BisectionToleranceBelowTheMinimumIsRefused) {
+  // 1e-16 once bisected forever: the midpoint of adjacent doubles is one of them
+  const Body body = slender_block();
+  SpectrumSpec s = small_spec();
+  s.bisection_tolerance = 1e-16;
+  test::expect_input_error([&] { compute_spectrum(body, s); }, {"bisection_tolerance", "1e-12"});
+  RecordSpectrumSpec r;
+  r.motion = one_sine_pulse(1.0, 2.0 * body.rocking_frequency(), 2.0);
+  r.scales = {1.0, 2.0};
+  r.bisection_tolerance = 0.5 * kMinBisectionTolerance;
+  test::expect_input_error([&] { compute_record_spectrum(body, r); }, {"bisection_tolerance"});
+}
+
+TEST(StudySpectrum, BisectionAtTheMinimumToleranceEnds) {
+  // the narrowest allowed bracket: about log2(grid spacing / 1e-12) = 40 runs, then it stops
+  const Body body = slender_block();
+  RecordSpectrumSpec s;
+  s.motion = one_sine_pulse(1.0, 2.0 * body.rocking_frequency(), 2.0);
+  s.scales = {0.5, 1.0, 3.0, 5.0, 8.0, 12.0};
+  s.free_periods = 1.0;
+  s.bisection_tolerance = kMinBisectionTolerance;
+  const SpectrumResult r = compute_record_spectrum(body, s, {.threads = 2});
+  ASSERT_EQ(r.boundary.size(), 1u);
+  const OverturnBoundary& b = r.boundary[0];
+  ASSERT_EQ(b.kind, OverturnBoundary::Kind::kFound);
+  EXPECT_TRUE(b.computed);
+  EXPECT_LE(b.overturning - b.safe, kMinBisectionTolerance * b.overturning);
+  EXPECT_LT(b.safe, b.overturning);
+  EXPECT_LE(b.bisection_runs, 45);
+}
+
+TEST(StudySpectrum, AStopRequestEndsTheBisectionUnfinished) {
+  const Body body = slender_block();
+  RecordSpectrumSpec s;
+  s.motion = one_sine_pulse(1.0, 2.0 * body.rocking_frequency(), 2.0);
+  s.scales = {0.5, 1.0, 3.0, 5.0, 8.0, 12.0};
+  s.free_periods = 1.0;
+  const SpectrumResult r = compute_record_spectrum(body, s, {.threads = 1});
+  ASSERT_EQ(r.boundary.at(0).kind, OverturnBoundary::Kind::kFound);
+  ASSERT_GT(r.boundary[0].bisection_runs, 0);
+  const std::atomic<bool> stop{true};
+  const OverturnBoundary b = record_boundary(body, s, r.cells, &stop);
+  EXPECT_FALSE(b.computed);  // not a result: the bracket is the grid's
+  EXPECT_EQ(b.bisection_runs, 0);
+  // stopped before the first run: no cell computed, no boundary
+  const SpectrumResult none = compute_record_spectrum(body, s, {.threads = 2, .cancel = &stop});
+  for (const SpectrumCell& c : none.cells) EXPECT_FALSE(c.computed);
+  EXPECT_FALSE(none.boundary.at(0).computed);
+}
+
 }  // namespace
 }  // namespace flexrock::study

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// Files of studies: spectrum specs and sweep manifests (TOML), the spectrum and sweep CSVs, the
-// sweep journal that makes a sweep resumable, and a sweep CSV read back for fragility fits.
+// Files of studies: spectrum specs and sweep manifests (TOML), the spectrum and sweep CSVs, what
+// their journals (io/journal.hpp) may hold, and a sweep CSV read back for fragility fits.
 // Every key, column and rule is documented in docs/studies.md. Errors are InputError with
 // "<file>:<line>: key '<key>': expected ..., got ..." messages, as for case files.
 #pragma once
@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "flexrock/io/journal.hpp"
 #include "flexrock/model/body.hpp"
 #include "flexrock/study/fragility.hpp"
 #include "flexrock/study/spectrum.hpp"
@@ -38,8 +39,9 @@ struct SpectrumFile {
   bool is_record = false;   // true: `record` (one record x scales); false: `pulse` grid
   study::SpectrumSpec pulse;
   study::RecordSpectrumSpec record;
-  std::string record_name;               // record.name (default: the record file's stem)
+  std::string record_name;  // record.name (default: the record file's stem)
   std::vector<std::string> input_files;  // every file read: the spec, body and record files
+  std::uint64_t hash = 0;   // FNV-1a of the spec and of the body and record files it names
 };
 
 /// Reads a spectrum spec (TOML). `body` is a path to a case or body file (relative to the spec)
@@ -82,39 +84,19 @@ std::vector<std::string> sweep_columns();
 /// One CSV line (no line end) of a row; its first field is the run index.
 std::string sweep_row(const study::SweepSpec& spec, const study::SweepRow& row);
 
-/// The journal of a sweep: "OUT.partial", a header line with the manifest's hash and the run
-/// count, then one CSV line per finished run, appended and flushed as runs finish (in any
-/// order). Opening an existing journal reads its finished lines, drops a torn last line (no
-/// line end: the writer was killed mid-line) and truncates the file to the complete lines.
-class SweepJournal {
- public:
-  /// Opens (or creates) the journal at `path`. A journal whose header differs (another manifest
-  /// or another run count) is an InputError saying so; a journal with the same header resumes.
-  SweepJournal(std::string path, std::uint64_t hash, std::size_t runs);
-  ~SweepJournal();
-  SweepJournal(const SweepJournal&) = delete;
-  SweepJournal& operator=(const SweepJournal&) = delete;
+/// What the line of run `index` in a sweep journal (io::Journal) must be: the run's CSV line,
+/// whose index, body, record, scale, PGA, PGV and duration are those the manifest gives that
+/// run, with a field per column, a known outcome and status, and numbers where numbers belong.
+/// `spec` must outlive the check.
+JournalCheck sweep_journal_check(const study::SweepSpec& spec);
 
-  /// Finished lines by run index (read at opening, plus those appended since).
-  const std::map<std::size_t, std::string>& finished() const { return finished_; }
-  /// Appends one finished run's line and flushes it to the operating system.
-  void append(std::size_t index, const std::string& line);
-  /// Adds lines (e.g. gathered from other processes) without writing them.
-  void remember(std::size_t index, const std::string& line) { finished_[index] = line; }
-  /// Closes and deletes the journal file.
-  void remove();
-  const std::string& path() const { return path_; }
+/// The same for a spectrum journal: runs 0 .. cells-1 are the cells' CSV lines (row-major), then
+/// one boundary line per column (when bisecting). `grid` is study::spectrum_grid (or
+/// record_spectrum_grid) of the spec; `normalized` and `g` as for boundary_row.
+JournalCheck spectrum_journal_check(const study::SpectrumResult& grid, bool normalized, double g);
 
- private:
-  std::string path_;
-  std::FILE* file_ = nullptr;
-  std::map<std::size_t, std::string> finished_;
-};
-
-/// The header line of a journal (no line end).
-std::string journal_header(std::uint64_t hash, std::size_t runs);
-/// The run index of a sweep CSV line (its first field); throws InputError if it has none.
-std::size_t row_index(const std::string& line);
+/// The outcome named by a spectrum CSV line (its `outcome` field); throws InputError if none.
+study::Outcome spectrum_line_outcome(const std::string& line);
 
 // ---------------------------------------------------------------------------------------------
 // fragility input
@@ -161,7 +143,7 @@ std::string fragility_row(const FragilityData& data, const study::FragilityFit& 
 
 // ---------------------------------------------------------------------------------------------
 
-/// 64-bit FNV-1a of bytes, continued from `h` (for journal headers).
+/// 64-bit FNV-1a of bytes, continued from `h` (for journal headers and lines).
 std::uint64_t fnv1a(const std::string& bytes, std::uint64_t h = 1469598103934665603ULL);
 
 }  // namespace flexrock::io

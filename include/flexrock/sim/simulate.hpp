@@ -186,4 +186,9 @@ inline bool overturned(const SimulationResult& r) { return r.status == Status::k
 SimulationResult simulate(const Body& body, const GroundMotion& motion,
                           const InitialState& initial = {}, const SimulationOptions& options = {});
 
+/// The checks simulate() makes of its options and initial state before it starts, alone: throws
+/// the same InputError (naming the option). For callers that refuse bad options before any run.
+void validate_options(const Body& body, const InitialState& initial,
+                      const SimulationOptions& options);
+
 }  // namespace flexrock

@@ -6,6 +6,8 @@
 #pragma once
 
 #include <functional>
+#include <map>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -32,6 +34,11 @@ const char* to_string(PulseType t);
 /// The pulse type of a name above; throws InputError listing the names otherwise.
 PulseType pulse_type_from_string(const std::string& name);
 
+/// The narrowest relative bracket a bisection may ask for: below it the bracket is finer than the
+/// simulations resolve (their rtol is >= 1e-14) and soon than doubles can split (the midpoint of
+/// adjacent doubles is one of them).
+inline constexpr double kMinBisectionTolerance = 1e-12;
+
 /// A pulse spectrum: pulse type x amplitude x frequency.
 struct SpectrumSpec {
   PulseType pulse = PulseType::kOneSine;
@@ -41,7 +48,8 @@ struct SpectrumSpec {
   std::vector<double> frequencies;  // the grid columns, > 0
   double free_periods = 4.0;        // [-] free motion after the pulse, in rocking periods 2 pi / p
   bool bisect = true;               // refine the minimum overturning amplitude of every column
-  double bisection_tolerance = 1e-3;  // [-] relative width of the final bracket
+  double bisection_tolerance = 1e-3;  // [-] relative width of the final bracket, in
+                                      // [kMinBisectionTolerance, 1)
   // tolerances etc. (overturning at pi/2); t_end and output_dt are set per run
   SimulationOptions solver = study_solver_defaults();
 };
@@ -52,7 +60,7 @@ struct RecordSpectrumSpec {
   std::vector<double> scales;         // [-] strictly increasing, > 0
   double free_periods = 4.0;          // [-] free motion after the record, in 2 pi / p
   bool bisect = true;                 // refine the minimum overturning scale
-  double bisection_tolerance = 1e-3;  // [-] relative width of the final bracket
+  double bisection_tolerance = 1e-3;  // [-] as in SpectrumSpec
   // overturning at pi/2; t_end and output_dt are set per run
   SimulationOptions solver = study_solver_defaults();
 };
@@ -67,6 +75,7 @@ struct SpectrumCell {
   double omega_si = 0.0;      // [rad/s] omega_p (record: 0)
   bool computed = false;      // false: another process (rank) computed this cell
   RunSummary run;
+  bool resumed = false;  // known before the call (SpectrumResume): only run.outcome is set
 };
 
 /// The minimum overturning amplitude of one frequency column.
@@ -83,6 +92,7 @@ struct OverturnBoundary {
   int bisection_runs = 0;    // extra simulations the bisection took
   bool computed = false;     // false: another process (rank) computed this column
   Outcome mode = Outcome::kNoUplift;  // outcome at `overturning` (which overturning mode)
+  bool resumed = false;  // known before the call (SpectrumResume): not bisected, not set here
 };
 
 const char* to_string(OverturnBoundary::Kind k);  // "found", "below_grid", "none"
@@ -105,20 +115,46 @@ RunSummary run_pulse_cell(const Body& body, const SpectrumSpec& spec, double a_p
 /// Simulates one record cell exactly as compute_record_spectrum does.
 RunSummary run_record_cell(const Body& body, const RecordSpectrumSpec& spec, double scale);
 
+/// What a spectrum already has (e.g. from the journal of an interrupted one) and where each
+/// new result goes as it is found: how a spectrum resumes. Cell indices are row * columns +
+/// column (a record spectrum: the scale index); boundary indices are columns (a record: 0).
+struct SpectrumResume {
+  std::map<std::size_t, Outcome> cells;  // finished cells: not run again; their outcomes
+                                         // place the bisection bracket of their column
+  std::set<std::size_t> boundaries;      // columns whose boundary is finished: not bisected
+  std::function<void(const SpectrumCell&)> on_cell;          // every cell run, one call at a time
+  std::function<void(const OverturnBoundary&)> on_boundary;  // every finished boundary, alike
+};
+
+/// The grid of a spec with nothing run: every cell's indices and amplitudes, the boundary slots
+/// (column, frequency), alpha and p. It checks the spec and every run it makes (finite
+/// durations, the solver options as simulate() checks them) and throws InputError otherwise.
+SpectrumResult spectrum_grid(const Body& body, const SpectrumSpec& spec);
+/// The same for a record spectrum (one column; boundary slot 0 when spec.bisect).
+SpectrumResult record_spectrum_grid(const Body& body, const RecordSpectrumSpec& spec);
+
 /// Every cell of the grid, then (if spec.bisect) the boundary of every column. Columns run in
 /// parallel (one task a column: its cells, then its bisection), so results do not depend on the
 /// thread count. With options.ranks > 1 only the columns with index % ranks == rank are
-/// computed (the others keep computed = false). Throws InputError for a bad spec.
+/// computed (the others keep computed = false). A stop request (options.cancel) is seen between
+/// runs: cells not run keep computed = false and an unfinished bisection is dropped. With
+/// `resume`, its cells and boundaries are not computed again (resumed = true). Throws
+/// InputError for a bad spec, before any run.
 SpectrumResult compute_spectrum(const Body& body, const SpectrumSpec& spec,
-                                const RunOptions& options = {});
+                                const RunOptions& options = {},
+                                const SpectrumResume* resume = nullptr);
 /// The record spectrum: one column, rows = scales (spread over threads and ranks), then the
 /// boundary (the minimum overturning scale) when this process computed every row (ranks == 1).
+/// Stop requests and `resume` as for compute_spectrum.
 SpectrumResult compute_record_spectrum(const Body& body, const RecordSpectrumSpec& spec,
-                                       const RunOptions& options = {});
+                                       const RunOptions& options = {},
+                                       const SpectrumResume* resume = nullptr);
 /// The boundary of a record spectrum from its complete cells (after gathering them from every
-/// rank): what compute_record_spectrum adds itself with ranks == 1.
+/// rank): what compute_record_spectrum adds itself with ranks == 1. A stop request (`cancel`
+/// true) ends the bisection between runs and returns computed = false.
 OverturnBoundary record_boundary(const Body& body, const RecordSpectrumSpec& spec,
-                                 const std::vector<SpectrumCell>& cells);
+                                 const std::vector<SpectrumCell>& cells,
+                                 const std::atomic<bool>* cancel = nullptr);
 
 /// Runs a study computes for a spec: grid cells (the bisection adds more, not known ahead).
 inline std::size_t grid_runs(const SpectrumSpec& s) {

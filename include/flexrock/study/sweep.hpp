@@ -90,7 +90,17 @@ std::vector<SweepRow> run_sweep(const SweepSpec& spec, const std::vector<std::si
                                 const RunOptions& options = {},
                                 const std::function<void(const SweepRow&)>& on_row = {});
 
-/// Checks a spec (non-empty lists, valid bodies, positive scales); throws InputError.
+/// Checks a spec (non-empty lists, valid bodies, positive scales) and every run it makes
+/// (finite scaled records and durations, the solver options as simulate() checks them), so that
+/// no run can fail on its input once the sweep started; throws InputError naming the body,
+/// record and scale, and the option.
 void validate(const SweepSpec& spec);
+
+/// A run's row before it runs: indices, scale factor, PGA, PGV and duration (what run_sweep
+/// writes in those fields); `body` and `im` are the run's body and its record's intensity.
+SweepRow sweep_inputs(const SweepSpec& spec, const SweepRun& run, const Body& body,
+                      const Intensity& im);
+/// The simulation options of a run (spec.solver with its duration as t_end, no time history).
+SimulationOptions run_options(const SweepSpec& spec, const SweepRow& row);
 
 }  // namespace flexrock::study
