@@ -29,13 +29,13 @@ cmp rt.csv rm.csv || fail "the 2-process record spectrum differs"
 cmp rt.boundary.csv rm.boundary.csv || fail "the 2-process record boundary differs"
 
 # a journal another process left (an interrupted 2-process run) is merged on the next start:
-# a complete journal (kept because its output could not be written: a directory is in the way)
-# cut to half its cells and left as rank 1's
-mkdir -p k.csv/in_the_way
-run "$FLEXROCK" spectrum "$SRC/examples/studies/one_sine_block.toml" -o k.csv -j 2 -q
+# a complete journal (kept because an output could not be written: the boundary's directory does
+# not exist) cut to half its cells and left as rank 1's
+run "$FLEXROCK" spectrum "$SRC/examples/studies/one_sine_block.toml" -o k.csv \
+  --boundary no_such_dir/k.boundary.csv -j 2 -q
 expect_rc 1 "an output that cannot be written"
 expect_in "$WORK/err" "the finished cells are kept in k.csv.partial"
-rm -r k.csv
+rm -f k.csv
 total=$(wc -l <k.csv.partial)
 head -n $((total / 2)) k.csv.partial >k.csv.partial.rank1
 rm k.csv.partial

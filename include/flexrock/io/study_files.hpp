@@ -39,9 +39,9 @@ struct SpectrumFile {
   bool is_record = false;   // true: `record` (one record x scales); false: `pulse` grid
   study::SpectrumSpec pulse;
   study::RecordSpectrumSpec record;
-  std::string record_name;  // record.name (default: the record file's stem)
+  std::string record_name;               // record.name (default: the record file's stem)
   std::vector<std::string> input_files;  // every file read: the spec, body and record files
-  std::uint64_t hash = 0;   // FNV-1a of the spec and of the body and record files it names
+  std::uint64_t hash = 0;  // FNV-1a of the spec and of the body and record files it names
 };
 
 /// Reads a spectrum spec (TOML). `body` is a path to a case or body file (relative to the spec)
