@@ -5,9 +5,15 @@
 #  install_pip:      `pip install .` into a fresh venv with the system site packages, packaging
 #                    this build's module and command (FLEXROCK_BUILD_DIR: no second build)
 if(FLEXROCK_INSTALL AND TARGET flexrock)
+  # a sanitized build installs an instrumented library: its consumer must link the same runtime
+  set(_consumer_flags "")
+  if(FLEXROCK_SANITIZE)
+    string(REPLACE ";" "," _consumer_flags "${FLEXROCK_SANITIZE}")
+    set(_consumer_flags "-fsanitize=${_consumer_flags}")
+  endif()
   add_test(NAME install_consumer
            COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/install/consumer.sh ${PROJECT_BINARY_DIR}
-                   ${PROJECT_SOURCE_DIR})
+                   ${PROJECT_SOURCE_DIR} "${_consumer_flags}")
   set_tests_properties(install_consumer PROPERTIES LABELS install TIMEOUT 600)
 endif()
 if(TARGET _flexrock AND TARGET flexrock)

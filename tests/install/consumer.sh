@@ -2,10 +2,13 @@
 # SPDX-License-Identifier: BSD-3-Clause
 # `cmake --install` of a build into a scratch prefix, then tests/consumer, a project outside the
 # tree, configured against that prefix with find_package(flexrock), built and run.
-# Usage: consumer.sh BUILD_DIR SOURCE_DIR
+# Usage: consumer.sh BUILD_DIR SOURCE_DIR [FLAGS]
+#   FLAGS: compile and link flags the library was built with that its users need too (the
+#   sanitizer runtime of an instrumented build); empty for a plain build.
 set -euo pipefail
 build="$1"
 src="$2"
+flags="${3:-}"
 work="$(mktemp -d "${TMPDIR:-/tmp}/flexrock_consumer.XXXXXX")"
 trap 'rm -rf "$work"' EXIT
 fail() {
@@ -28,7 +31,8 @@ config="$(find "$work/prefix" -name flexrockConfig.cmake)"
 generator=()
 command -v ninja >/dev/null && generator=(-G Ninja)
 cmake -S "$src/tests/consumer" -B "$work/build" "${generator[@]}" -DCMAKE_BUILD_TYPE=Release \
-  -DCMAKE_PREFIX_PATH="$work/prefix" >"$work/configure.log" ||
+  -DCMAKE_PREFIX_PATH="$work/prefix" -DCMAKE_CXX_FLAGS="$flags" \
+  -DCMAKE_EXE_LINKER_FLAGS="$flags" >"$work/configure.log" ||
   { cat "$work/configure.log" >&2; fail "configuring the consumer against the installed tree"; }
 cmake --build "$work/build" >"$work/build.log" 2>&1 ||
   { cat "$work/build.log" >&2; fail "building the consumer"; }
