@@ -407,6 +407,12 @@ int main(int argc, char** argv) {
   params->add_option("BODY", params_file, "case or body file (TOML) with a [body] table")
       ->required();
 
+  bool markdown = false;
+  CLI::App* keys = app.add_subcommand(
+      "keys", "Print the key reference of the synthetic motion types (docs/case-file.md)");
+  keys->add_flag("--markdown", markdown,
+                 "as the Markdown table of docs/case-file.md (the default)");
+
   flexrock::cli::PlotOptions plot_options;
   CLI::App* plot = flexrock::cli::add_plot_command(app, plot_options);
 
@@ -425,6 +431,10 @@ int main(int argc, char** argv) {
     if (*run) return cmd_run(run_files, output_dir, quiet, no_progress);
     if (*check) return cmd_check(check_files, quiet);
     if (*params) return cmd_params(params_file);
+    if (*keys) {
+      fmt::print("{}", io::pulse_key_reference());
+      return 0;
+    }
     if (studies.selected()) return studies.run();
     if (*plot) return flexrock::cli::run_plot(plot_options);
   } catch (const InputError& e) {

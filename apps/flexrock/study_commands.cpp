@@ -533,7 +533,7 @@ int StudyCommands::Impl::run_spectrum(const Processes& procs) {
   // a short account on stdout
   fmt::print("spectrum: {} ({}), body from {}\n", f.name,
              f.is_record ? "record " + f.record_name + " x scales"
-                         : std::string(study::to_string(f.pulse.pulse)) + " pulse, " +
+                         : f.pulse.pulse + " pulse, " +
                                (f.pulse.normalized ? "normalized" : "physical") + " axes",
              f.body_source);
   fmt::print("body: g tan(alpha1) = {:.4g} m/s^2, alpha1 = {:.4g} rad, p = {:.4g} rad/s\n",

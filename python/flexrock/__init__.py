@@ -249,7 +249,9 @@ _OLD_ARGS = {  # the engine's arguments of each pulse, in order (SI: m/s^2, rad/
     "rectangular": ("a_p", "t_1", "duration", "component"),
     "cycloidal_c": ("a_p", "omega_p", "duration", "n", "component"),
 }
-_TOML_KEYS = {"center": "t_c", "length": "t_1"}  # a case file's names of the engine's arguments
+_PULSE_KINDS = {k.name: k for k in _flexrock.pulse_kinds()}  # the library's table of pulse types
+# a case file's names of the engine's arguments, where they differ
+_TOML_KEYS = {k.name: k.argument for kind in _PULSE_KINDS.values() for k in kind.keys if k.name != k.argument}
 
 
 def _synthetic(fn, type_name: str, args=("a_p", "omega_p", "duration", "component")):
@@ -333,8 +335,7 @@ def _synthetic(fn, type_name: str, args=("a_p", "omega_p", "duration", "componen
         "units : {\"g\", \"m/s^2\", \"cm/s^2\"}\n"
         + ("frequency_hz : float\n    [Hz]; or ``period`` [s].\n" if omega else "")
         + "duration : float\n    [s] length of the motion (free vibration after the pulse).\n"
-        + "".join(f"{_key_name(k)} : float\n    As the case file's key.\n"
-                  for k in args[2:-1] if k != "duration")
+        + "".join(_key_doc(type_name, k) for k in args[2:-1] if k != "duration")
         + "component : Component\n    horizontal (default) or vertical.\n\n"
         f"The engine's SI form ``{fn.__name__}({', '.join(args)})`` (m/s^2, rad/s, s) is\n"
         "accepted too, positionally or by those names.\n\n"
@@ -347,6 +348,31 @@ def _key_name(arg: str) -> str:
     return {v: k for k, v in _TOML_KEYS.items()}.get(arg, arg)
 
 
+def _key_doc(type_name: str, arg: str) -> str:
+    # the docstring lines of one extra argument, from the table of pulse types
+    for k in _PULSE_KINDS[type_name].keys:
+        if k.argument == arg:
+            return f"{k.name} : float\n    [{k.unit}] {k.doc} (default: {k.default_text}).\n"
+    return f"{_key_name(arg)} : float\n    As the case file's key.\n"
+
+
+def _table_pulse(kind) -> tuple:
+    # the keyword function of a pulse type that has no function of its own in the module: the
+    # engine's arguments in the table's order, made by make_pulse
+    args = ("a_p",) + (("omega_p",) if kind.frequency else ()) + ("duration",)
+    args += tuple(k.argument for k in kind.keys) + ("component",)
+
+    def fn(*pos, **kw):
+        values = dict(zip(args, pos))
+        values.update(kw)
+        keys = {k.name: values[k.argument] for k in kind.keys if values.get(k.argument) is not None}
+        return _flexrock.make_pulse(kind.name, values["a_p"], values.get("omega_p", 0.0), values["duration"],
+                                    values.get("component", Component.horizontal), keys)
+
+    fn.__name__ = kind.function
+    return fn, args
+
+
 harmonic = _synthetic(_flexrock.harmonic, "harmonic", _OLD_ARGS["harmonic"])
 harmonic_cycles = _synthetic(_flexrock.harmonic_cycles, "harmonic", _OLD_ARGS["harmonic_cycles"])
 one_sine_pulse = _synthetic(_flexrock.one_sine_pulse, "one_sine")
@@ -356,6 +382,12 @@ cycloidal_pulse_b = _synthetic(_flexrock.cycloidal_pulse_b, "cycloidal_b")
 cycloidal_pulse_c = _synthetic(_flexrock.cycloidal_pulse_c, "cycloidal_c", _OLD_ARGS["cycloidal_c"])
 ricker_wavelet = _synthetic(_flexrock.ricker_wavelet, "ricker", _OLD_ARGS["ricker"])
 rectangular_pulse = _synthetic(_flexrock.rectangular_pulse, "rectangular", _OLD_ARGS["rectangular"])
+for _kind in _PULSE_KINDS.values():
+    # a pulse type of the table without a function above gets one here
+    if _kind.function not in globals():
+        _fn, _args = _table_pulse(_kind)
+        globals()[_kind.function] = _synthetic(_fn, _kind.name, _args)
+        __all__.append(_kind.function)
 __all__ += [
     "harmonic",
     "harmonic_cycles",

@@ -514,14 +514,32 @@ class Phase:
     @property
     def value(self) -> int: ...
 
-class PulseType:
-    one_sine: ClassVar[PulseType]
-    half_sine: ClassVar[PulseType]
-    cycloidal_a: ClassVar[PulseType]
-    cycloidal_b: ClassVar[PulseType]
-    cycloidal_c: ClassVar[PulseType]
-    ricker: ClassVar[PulseType]
-    __members__: ClassVar[dict[str, PulseType]]
+class PulseKey:
+    """One key of a pulse type besides amplitude and frequency."""
+    def __repr__(self) -> str: ...
+    @property
+    def argument(self) -> str: ...
+    @property
+    def default(self) -> Optional[float]: ...
+    @property
+    def default_text(self) -> str: ...
+    @property
+    def doc(self) -> str: ...
+    @property
+    def name(self) -> str: ...
+    @property
+    def required(self) -> bool: ...
+    @property
+    def rule(self) -> PulseKeyRule: ...
+    @property
+    def unit(self) -> str: ...
+
+class PulseKeyRule:
+    finite: ClassVar[PulseKeyRule]
+    positive: ClassVar[PulseKeyRule]
+    nonnegative: ClassVar[PulseKeyRule]
+    count: ClassVar[PulseKeyRule]
+    __members__: ClassVar[dict[str, PulseKeyRule]]
     def __init__(self, value: int) -> None: ...
     def __eq__(self, other: object) -> bool: ...
     def __hash__(self) -> int: ...
@@ -531,6 +549,24 @@ class PulseType:
     def name(self) -> str: ...
     @property
     def value(self) -> int: ...
+
+class PulseKind:
+    """One synthetic motion type of the case file."""
+    def __repr__(self) -> str: ...
+    @property
+    def doc(self) -> str: ...
+    @property
+    def ends(self) -> bool: ...
+    @property
+    def frequency(self) -> bool: ...
+    @property
+    def function(self) -> str: ...
+    @property
+    def keys(self) -> list[PulseKey]: ...
+    @property
+    def name(self) -> str: ...
+    @property
+    def spectrum(self) -> bool: ...
 
 class Record:
     """An acceleration record, values in the file's units."""
@@ -726,7 +762,7 @@ class SpectrumSpec:
     free_periods: float
     frequencies: list[float]
     normalized: bool
-    pulse: PulseType
+    pulse: str
     solver: SimulationOptions
 
 class Status:
@@ -1216,6 +1252,29 @@ def lognormal_log_likelihood(im: list[float], failed: list[int], theta: float, b
     float
     """
 
+def make_pulse(type: str, a_p: float, omega_p: float, duration: float, component: Component = ..., keys: dict[str, float] = ...) -> GroundMotion:
+    """A motion of any pulse type, in SI units.
+
+    Parameters
+    ----------
+    type : str
+        A pulse type (``pulse_kinds()``).
+    a_p : float
+        [m/s^2] peak acceleration.
+    omega_p : float
+        [rad/s] circular frequency (ignored by a type without one).
+    duration : float
+        [s] length of the motion.
+    component : Component
+    keys : dict
+        The type's other keys by their case-file names, in their units; absent keys take their
+        defaults.
+
+    Returns
+    -------
+    GroundMotion
+    """
+
 def one_sine_pulse(a_p: float, omega_p: float, duration: float, component: Component = ...) -> GroundMotion:
     """One full sine cycle a_p sin(omega_p t).
 
@@ -1272,12 +1331,21 @@ def overturned(outcome: Outcome) -> bool:
     bool
     """
 
-def pulse_length(type: PulseType, omega_p: float) -> float:
+def pulse_kinds() -> list[PulseKind]:
+    """Every synthetic motion type, in the order of the docs.
+
+    Returns
+    -------
+    list of PulseKind
+    """
+
+def pulse_length(type: str, omega_p: float) -> float:
     """The length of one pulse of a family.
 
     Parameters
     ----------
-    type : PulseType
+    type : str
+        A pulse type of spectra (``spectrum_pulse_names()``).
     omega_p : float
         [rad/s]
 
@@ -1287,12 +1355,13 @@ def pulse_length(type: PulseType, omega_p: float) -> float:
         [s]
     """
 
-def pulse_motion(type: PulseType, a_p: float, omega_p: float, duration: float) -> GroundMotion:
+def pulse_motion(type: str, a_p: float, omega_p: float, duration: float) -> GroundMotion:
     """A pulse of a family as a ground motion.
 
     Parameters
     ----------
-    type : PulseType
+    type : str
+        A pulse type of spectra (``spectrum_pulse_names()``).
     a_p : float
         [m/s^2]
     omega_p : float
@@ -1303,19 +1372,6 @@ def pulse_motion(type: PulseType, a_p: float, omega_p: float, duration: float) -
     Returns
     -------
     GroundMotion
-    """
-
-def pulse_type_from_string(name: str) -> PulseType:
-    """The pulse family of a name.
-
-    Parameters
-    ----------
-    name : str
-        one_sine, half_sine, cycloidal_a, cycloidal_b, cycloidal_c or ricker.
-
-    Returns
-    -------
-    PulseType
     """
 
 def read_at2(path: str) -> Record:
@@ -1536,6 +1592,14 @@ def spectrum_csv(result: SpectrumResult, g: float) -> str:
     Returns
     -------
     str
+    """
+
+def spectrum_pulse_names() -> list[str]:
+    """The pulse types that spectra sweep.
+
+    Returns
+    -------
+    list of str
     """
 
 def summarize(body: Body, result: SimulationResult) -> RunSummary:

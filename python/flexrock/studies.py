@@ -16,7 +16,6 @@ from ._flexrock import (  # noqa: F401  (re-exported API)
     Intensity,
     Outcome,
     OverturnBoundary,
-    PulseType,
     RecordSpectrumSpec,
     RunSummary,
     ScaleKind,
@@ -39,6 +38,7 @@ from ._flexrock import (  # noqa: F401  (re-exported API)
     load_spectrum_file,
     load_sweep_manifest,
     pulse_motion,
+    spectrum_pulse_names,
     run_pulse_cell,
     run_record_cell,
     run_sweep,
@@ -104,7 +104,7 @@ def spectrum(
     body,
     amplitudes: Sequence[float],
     frequencies: Sequence[float],
-    pulse: Union[str, PulseType] = "one_sine",
+    pulse: str = "one_sine",
     *,
     axes: Optional[str] = None,
     amplitude_units: Optional[str] = None,
@@ -128,8 +128,9 @@ def spectrum(
         ``axes="normalized"`` (default), otherwise in ``amplitude_units``.
     frequencies : array_like
         Pulse frequencies: omega_p/p [-] normalised, otherwise in ``frequency_units``.
-    pulse : str or PulseType
-        "one_sine", "half_sine", "cycloidal_a", "cycloidal_b", "cycloidal_c" or "ricker".
+    pulse : str
+        A pulse type of spectra: ``flexrock.spectrum_pulse_names()`` ("one_sine", "half_sine",
+        ...; docs/case-file.md lists them).
     axes : {"normalized", "physical"}, optional
         Default "normalized"; giving a unit implies "physical".
     amplitude_units : {"g", "m/s^2", "cm/s^2"}, optional
@@ -175,7 +176,7 @@ def spectrum(
     elif amplitude_units is not None or frequency_units is not None:
         raise InputError("amplitude_units, frequency_units: only with axes=\"physical\"")
     spec = SpectrumSpec()
-    spec.pulse = _flexrock.pulse_type_from_string(pulse) if isinstance(pulse, str) else pulse
+    spec.pulse = _choice("pulse", pulse, tuple(spectrum_pulse_names()))
     spec.normalized = axes == "normalized"
     spec.amplitudes = [float(a) * a_factor for a in amplitudes]
     spec.frequencies = [float(f) * w_factor for f in frequencies]

@@ -4,7 +4,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <map>
 #include <sstream>
+#include <string>
 
 #include "bindings.hpp"
 #include "flexrock/excitation/ground_motion.hpp"
@@ -242,6 +245,84 @@ t_1 : float
 duration : float
     [s] length of the motion.
 component : Component
+
+Returns
+-------
+GroundMotion)doc");
+  // the table of pulse types: the package builds its keyword functions from it
+  py::enum_<PulseKeyRule>(m, "PulseKeyRule")
+      .value("finite", PulseKeyRule::kFinite)
+      .value("positive", PulseKeyRule::kPositive)
+      .value("nonnegative", PulseKeyRule::kNonnegative)
+      .value("count", PulseKeyRule::kCount);
+  py::class_<PulseKey>(m, "PulseKey", "One key of a pulse type besides amplitude and frequency.")
+      .def_readonly("name", &PulseKey::name, "key in a case file and keyword in Python")
+      .def_readonly("argument", &PulseKey::argument, "the pulse function's argument")
+      .def_readonly("unit", &PulseKey::unit)
+      .def_readonly("rule", &PulseKey::rule)
+      .def_readonly("required", &PulseKey::required)
+      .def_property_readonly(
+          "default",
+          [](const PulseKey& k) -> std::optional<double> {
+            if (k.required || std::isnan(k.fixed)) return std::nullopt;
+            return k.fixed;
+          },
+          "the fixed default, or None (required, or the function decides)")
+      .def_readonly("default_text", &PulseKey::default_text)
+      .def_readonly("doc", &PulseKey::doc)
+      .def("__repr__", [](const PulseKey& k) {
+        return std::string("<PulseKey ") + k.name + " [" + k.unit + "]>";
+      });
+  py::class_<PulseKind>(m, "PulseKind", "One synthetic motion type of the case file.")
+      .def_readonly("name", &PulseKind::name, "type name in case files and spectrum specs")
+      .def_readonly("function", &PulseKind::function, "the function that makes it")
+      .def_readonly("frequency", &PulseKind::frequency, "takes frequency_hz or period")
+      .def_readonly("keys", &PulseKind::keys)
+      .def_property_readonly(
+          "spectrum", [](const PulseKind& k) { return k.length != nullptr; },
+          "a spectrum family (it has a length)")
+      .def_readonly("ends", &PulseKind::ends)
+      .def_readonly("doc", &PulseKind::doc)
+      .def("__repr__",
+           [](const PulseKind& k) { return std::string("<PulseKind ") + k.name + ">"; });
+  m.def("pulse_kinds", &pulse_kinds, py::return_value_policy::reference,
+        R"doc(Every synthetic motion type, in the order of the docs.
+
+Returns
+-------
+list of PulseKind)doc");
+  m.def("spectrum_pulse_names", &spectrum_pulse_names,
+        R"doc(The pulse types that spectra sweep.
+
+Returns
+-------
+list of str)doc");
+  m.def(
+      "make_pulse",
+      [](const std::string& type, double a_p, double omega_p, double duration, Component component,
+         const std::map<std::string, double>& keys) {
+        PulseArgs args{a_p, omega_p, duration, component, {}};
+        for (const auto& [k, v] : keys) args.keys.emplace(k, v);
+        return make_pulse(pulse_kind(type), std::move(args));
+      },
+      py::arg("type"), py::arg("a_p"), py::arg("omega_p"), py::arg("duration"),
+      py::arg("component") = h, py::arg("keys") = std::map<std::string, double>{},
+      R"doc(A motion of any pulse type, in SI units.
+
+Parameters
+----------
+type : str
+    A pulse type (``pulse_kinds()``).
+a_p : float
+    [m/s^2] peak acceleration.
+omega_p : float
+    [rad/s] circular frequency (ignored by a type without one).
+duration : float
+    [s] length of the motion.
+component : Component
+keys : dict
+    The type's other keys by their case-file names, in their units; absent keys take their
+    defaults.
 
 Returns
 -------

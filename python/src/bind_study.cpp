@@ -79,25 +79,6 @@ Returns
 RunSummary)doc");
 
   // spectra
-  py::enum_<PulseType>(m, "PulseType")
-      .value("one_sine", PulseType::kOneSine)
-      .value("half_sine", PulseType::kHalfSine)
-      .value("cycloidal_a", PulseType::kCycloidalA)
-      .value("cycloidal_b", PulseType::kCycloidalB)
-      .value("cycloidal_c", PulseType::kCycloidalC)
-      .value("ricker", PulseType::kRicker);
-  m.def("pulse_type_from_string", &pulse_type_from_string, py::arg("name"),
-        R"doc(The pulse family of a name.
-
-Parameters
-----------
-name : str
-    one_sine, half_sine, cycloidal_a, cycloidal_b, cycloidal_c or ricker.
-
-Returns
--------
-PulseType)doc");
-
   py::class_<SpectrumSpec>(m, "SpectrumSpec", "A pulse spectrum: pulse x amplitude x frequency.")
       .def(py::init<>())
       .def_readwrite("pulse", &SpectrumSpec::pulse)
@@ -232,7 +213,8 @@ RunSummary)doc");
 
 Parameters
 ----------
-type : PulseType
+type : str
+    A pulse type of spectra (``spectrum_pulse_names()``).
 a_p : float
     [m/s^2]
 omega_p : float
@@ -248,7 +230,8 @@ GroundMotion)doc");
 
 Parameters
 ----------
-type : PulseType
+type : str
+    A pulse type of spectra (``spectrum_pulse_names()``).
 omega_p : float
     [rad/s]
 

@@ -3,10 +3,12 @@
 
 #include <cmath>
 #include <limits>
+#include <map>
 #include <numbers>
 #include <sstream>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "flexrock/core/error.hpp"
 
@@ -177,6 +179,168 @@ GroundMotion rectangular_pulse(double a_p, double t_1, double duration, Componen
   require_positive(name, "t_1", t_1);
   require_duration(name, duration, t_1);
   return make_pulse([=](double) { return a_p; }, t_1, duration, component, {t_1});
+}
+
+// ---------------------------------------------------------------------------------------------
+// the table of pulse types
+
+std::optional<double> PulseArgs::key(std::string_view name) const {
+  const auto it = keys.find(name);
+  if (it == keys.end()) return std::nullopt;
+  return it->second;
+}
+
+namespace {
+
+constexpr double kNone = std::numeric_limits<double>::quiet_NaN();
+constexpr double kTwoPi = 2.0 * kPi;
+
+// the length of a pulse of one period
+double one_period(double omega_p) { return kTwoPi / omega_p; }
+
+const std::vector<PulseKind> kPulseKinds = {
+    {"harmonic",
+     "harmonic",
+     true,
+     {{"phase", "phase", "rad", PulseKeyRule::kFinite, false, 0.0, "0", "phase at t = 0"},
+      {"cycles", "cycles", "-", PulseKeyRule::kPositive, false, kNone, "none: steady",
+       "cycles, then zero (free vibration); may be fractional"}},
+     [](const PulseArgs& a) {
+       const double phase = *a.key("phase");
+       const std::optional<double> cycles = a.key("cycles");
+       return cycles ? harmonic_cycles(a.a_p, a.omega_p, *cycles, a.duration, phase, a.component)
+                     : harmonic(a.a_p, a.omega_p, a.duration, phase, a.component);
+     },
+     nullptr,
+     "",
+     true,
+     "a sin(omega t + phase), over `cycles` cycles then zero, or the whole duration"},
+    {"one_sine",
+     "one_sine_pulse",
+     true,
+     {},
+     [](const PulseArgs& a) { return one_sine_pulse(a.a_p, a.omega_p, a.duration, a.component); },
+     one_period,
+     "2 pi/omega",
+     true,
+     "a sin(omega t) for one period"},
+    {"half_sine",
+     "half_sine_pulse",
+     true,
+     {},
+     [](const PulseArgs& a) { return half_sine_pulse(a.a_p, a.omega_p, a.duration, a.component); },
+     [](double omega_p) { return kPi / omega_p; },
+     "pi/omega",
+     true,
+     "a sin(omega t) for half a period"},
+    {"cycloidal_a",
+     "cycloidal_pulse_a",
+     true,
+     {},
+     [](const PulseArgs& a) {
+       return cycloidal_pulse_a(a.a_p, a.omega_p, a.duration, a.component);
+     },
+     one_period,
+     "2 pi/omega",
+     true,
+     "Makris & Roussos type A (= one-sine)"},
+    {"cycloidal_b",
+     "cycloidal_pulse_b",
+     true,
+     {},
+     [](const PulseArgs& a) {
+       return cycloidal_pulse_b(a.a_p, a.omega_p, a.duration, a.component);
+     },
+     one_period,
+     "2 pi/omega",
+     true,
+     "a cos(omega t) for one period"},
+    {"cycloidal_c",
+     "cycloidal_pulse_c",
+     true,
+     {{"n", "n", "-", PulseKeyRule::kCount, false, 1.0, "1", "main cycles (type C_n)"}},
+     [](const PulseArgs& a) {
+       const int n = static_cast<int>(*a.key("n"));
+       return cycloidal_pulse_c(a.a_p, a.omega_p, a.duration, n, a.component);
+     },
+     // spectra use n = 1
+     [](double omega_p) { return (1.5 - cycloidal_c_phase(1) / kPi) * kTwoPi / omega_p; },
+     "(1.5 - phi_1/pi) 2 pi/omega",
+     true,
+     "a cos(omega t + phi_n), type C_n"},
+    {"ricker",
+     "ricker_wavelet",
+     true,
+     {{"center", "t_c", "s", PulseKeyRule::kNonnegative, false, kNone, "3 sqrt(6)/omega",
+       "time of the peak"}},
+     [](const PulseArgs& a) {
+       const double t_c = a.key("center").value_or(3.0 * std::sqrt(6.0) / a.omega_p);
+       return ricker_wavelet(a.a_p, a.omega_p, t_c, a.duration, a.component);
+     },
+     // the centre 3 sqrt(6)/omega plus as much again
+     [](double omega_p) { return 6.0 * std::sqrt(6.0) / omega_p; },
+     "6 sqrt(6)/omega",
+     false,
+     "Ricker wavelet peaking at `center`; `frequency_hz` is its peak frequency"},
+    {"rectangular",
+     "rectangular_pulse",
+     false,
+     {{"length", "t_1", "s", PulseKeyRule::kPositive, true, kNone, "required",
+       "length of the pulse"}},
+     [](const PulseArgs& a) {
+       return rectangular_pulse(a.a_p, *a.key("length"), a.duration, a.component);
+     },
+     nullptr,
+     "",
+     true,
+     "a for 0 <= t <= length"},
+};
+
+std::string pulse_names() {
+  std::string s;
+  for (const PulseKind& k : kPulseKinds) s += (s.empty() ? "" : ", ") + std::string(k.name);
+  return s;
+}
+
+}  // namespace
+
+const std::vector<PulseKind>& pulse_kinds() { return kPulseKinds; }
+
+const PulseKind& pulse_kind(std::string_view name) {
+  for (const PulseKind& k : kPulseKinds) {
+    if (name == k.name) return k;
+  }
+  throw InputError("expected a pulse type, one of: " + pulse_names() + "; got \"" +
+                   std::string(name) + "\"");
+}
+
+std::vector<std::string> spectrum_pulse_names() {
+  std::vector<std::string> v;
+  for (const PulseKind& k : kPulseKinds) {
+    if (k.length) v.emplace_back(k.name);
+  }
+  return v;
+}
+
+GroundMotion make_pulse(const PulseKind& kind, PulseArgs args) {
+  for (const auto& [name, value] : args.keys) {
+    bool known = false;
+    std::string names;
+    for (const PulseKey& k : kind.keys) {
+      known = known || name == k.name;
+      names += (names.empty() ? "" : ", ") + std::string(k.name);
+    }
+    FLEXROCK_THROW_UNLESS(known, std::string(kind.name) + ": unknown key '" + name +
+                                     "'; expected " +
+                                     (names.empty() ? std::string("none") : "one of: " + names));
+  }
+  for (const PulseKey& k : kind.keys) {
+    if (args.keys.count(k.name)) continue;
+    FLEXROCK_THROW_UNLESS(!k.required, std::string(kind.name) + ": key '" + k.name +
+                                           "': missing; expected a number [" + k.unit + "]");
+    if (!std::isnan(k.fixed)) args.keys.emplace(k.name, k.fixed);
+  }
+  return kind.make(args);
 }
 
 }  // namespace flexrock

@@ -384,59 +384,31 @@ BodyParameters read_body(Reader& r, std::string& type, bool& rigid,
 
 const std::vector<std::string> kUnits = {"g", "m/s^2", "cm/s^2"};
 
-// one entry a synthetic motion type: its name in excitation.*.type, whether it takes
-// frequency_hz or period, and its constructor reading its own keys (docs/case-file.md)
-struct PulseKind {
-  const char* name;
-  bool frequency;
-  GroundMotion (*make)(Reader& r, double a, double omega, double duration, Component dir);
-};
-const PulseKind kPulseKinds[] = {
-    {"harmonic", true,
-     [](Reader& r, double a, double omega, double duration, Component dir) {
-       const double phase = r.number_or("phase", 0.0, "a number [rad]");
-       const auto cycles = r.number_opt("cycles", "a number > 0 (cycles, then free vibration)");
-       if (cycles && !(*cycles > 0.0)) r.expected("cycles", "a number > 0");
-       return cycles ? harmonic_cycles(a, omega, *cycles, duration, phase, dir)
-                     : harmonic(a, omega, duration, phase, dir);
-     }},
-    {"one_sine", true,
-     [](Reader&, double a, double omega, double duration, Component dir) {
-       return one_sine_pulse(a, omega, duration, dir);
-     }},
-    {"half_sine", true,
-     [](Reader&, double a, double omega, double duration, Component dir) {
-       return half_sine_pulse(a, omega, duration, dir);
-     }},
-    {"cycloidal_a", true,
-     [](Reader&, double a, double omega, double duration, Component dir) {
-       return cycloidal_pulse_a(a, omega, duration, dir);
-     }},
-    {"cycloidal_b", true,
-     [](Reader&, double a, double omega, double duration, Component dir) {
-       return cycloidal_pulse_b(a, omega, duration, dir);
-     }},
-    {"cycloidal_c", true,
-     [](Reader& r, double a, double omega, double duration, Component dir) {
-       const auto n = r.integer_or("n", 1, 1, "an integer >= 1 (main cycles)");
-       return cycloidal_pulse_c(a, omega, duration, static_cast<int>(n), dir);
-     }},
-    {"ricker", true,
-     [](Reader& r, double a, double omega, double duration, Component dir) {
-       const double tc = r.nonnegative_or("center", 3.0 * std::sqrt(6.0) / omega, "[s]");
-       return ricker_wavelet(a, omega, tc, duration, dir);
-     }},
-    {"rectangular", false,
-     [](Reader& r, double a, double, double duration, Component dir) {
-       const double len = r.positive("length", "[s] (pulse length)");
-       return rectangular_pulse(a, len, duration, dir);
-     }},
-};
+// an extra key of a pulse type (excitation/pulses.hpp), checked by its rule; nullopt: not given
+std::optional<double> read_pulse_key(Reader& r, const PulseKey& k) {
+  const std::string unit = std::string("[") + k.unit + "]";
+  const toml::node* n = r.node(k.name);
+  if (!n) {
+    if (k.required) r.fail_at(r.line(), k.name, "missing; expected a number " + unit);
+    return std::nullopt;
+  }
+  switch (k.rule) {
+    case PulseKeyRule::kFinite:
+      return r.number(k.name, "a number " + unit);
+    case PulseKeyRule::kPositive:
+      return r.positive(k.name, unit);
+    case PulseKeyRule::kNonnegative:
+      return r.nonnegative_or(k.name, 0.0, unit);
+    case PulseKeyRule::kCount:
+      return static_cast<double>(r.integer_or(k.name, 1, 1, "an integer >= 1"));
+  }
+  return std::nullopt;
+}
 
 // every excitation type: a record, the synthetic ones, none
 std::vector<std::string> motion_types() {
   std::vector<std::string> v{"record"};
-  for (const std::string& n : names_of(kPulseKinds)) v.push_back(n);
+  for (const PulseKind& k : pulse_kinds()) v.emplace_back(k.name);
   v.emplace_back("none");
   return v;
 }
@@ -519,7 +491,7 @@ Built read_component(Reader& r, bool vertical, ExcitationComponent& out) {
   const double a = r.number("amplitude", "a number (peak acceleration, in `units`)");
   out.amplitude = a * to_si_factor(unit_of(out.units));
   const double ap = out.amplitude;
-  const PulseKind& kind = kind_of(kPulseKinds, out.type);
+  const PulseKind& kind = pulse_kind(out.type);
   double omega = 0.0;
   if (kind.frequency) {
     const bool f = r.has("frequency_hz");
@@ -531,8 +503,12 @@ Built read_component(Reader& r, bool vertical, ExcitationComponent& out) {
     omega = f ? 2.0 * std::numbers::pi * r.positive("frequency_hz", "[Hz]")
               : 2.0 * std::numbers::pi / r.positive("period", "[s]");
   }
+  PulseArgs args{ap, omega, duration, dir, {}};
+  for (const PulseKey& k : kind.keys) {
+    if (const std::optional<double> v = read_pulse_key(r, k)) args.keys.emplace(k.name, *v);
+  }
   try {
-    b.motion = kind.make(r, ap, omega, duration, dir);
+    b.motion = make_pulse(kind, std::move(args));
   } catch (const InputError& e) {
     const std::string what = e.what();
     if (what.starts_with(r.file() + ":")) throw;
@@ -764,6 +740,43 @@ BodyParameters load_body(const std::string& path, std::string* type,
   if (type) *type = t;
   if (files) files->insert(files->end(), read.begin(), read.end());
   return p;
+}
+
+std::string pulse_key_reference() {
+  auto rule_text = [](const PulseKey& k) -> std::string {
+    switch (k.rule) {
+      case PulseKeyRule::kFinite:
+        return "";
+      case PulseKeyRule::kPositive:
+        return ", > 0";
+      case PulseKeyRule::kNonnegative:
+        return ", >= 0";
+      case PulseKeyRule::kCount:
+        return ", integer >= 1";
+    }
+    return "";
+  };
+  std::string s =
+      "<!-- begin: written by `flexrock keys --markdown` from the table of pulse types "
+      "(src/excitation/pulses.cpp); edit the table, not these lines -->\n"
+      "| type | `frequency_hz` or `period` | extra keys (unit, default): meaning | spectra: pulse "
+      "length | acceleration |\n"
+      "|---|---|---|---|---|\n";
+  for (const PulseKind& k : pulse_kinds()) {
+    std::string keys;
+    for (const PulseKey& key : k.keys) {
+      keys += (keys.empty() ? "" : "; ") + std::string("`") + key.name + "` (" + key.unit + ", " +
+              key.default_text + rule_text(key) + "): " + key.doc;
+    }
+    s += std::string("| `") + k.name + "` | " + (k.frequency ? "required" : "no") + " | " +
+         (keys.empty() ? "none" : keys) + " | " +
+         (k.length ? std::string("yes: ") + k.length_text : std::string("no")) + " | " + k.doc +
+         " |\n";
+  }
+  s += "| `none` | no | (no amplitude, units, frequency) | no | no motion: free rocking; "
+       "horizontal only |\n"
+       "<!-- end: written by `flexrock keys --markdown` -->\n";
+  return s;
 }
 
 }  // namespace flexrock::io

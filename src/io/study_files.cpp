@@ -19,6 +19,7 @@
 
 #include "flexrock/core/error.hpp"
 #include "flexrock/core/types.hpp"
+#include "flexrock/excitation/pulses.hpp"
 #include "flexrock/io/case_file.hpp"
 #include "flexrock/io/files.hpp"
 #include "flexrock/io/records.hpp"
@@ -273,10 +274,7 @@ SpectrumFile load_spectrum_file(const std::string& path) {
     f.record.solver = solver;
   } else {
     if (s.has("scales")) s.fail("scales", "only with 'record' (a pulse spectrum has 'amplitudes')");
-    const std::string pulse = s.choice(
-        "pulse", {"one_sine", "half_sine", "cycloidal_a", "cycloidal_b", "cycloidal_c", "ricker"},
-        "one_sine");
-    f.pulse.pulse = study::pulse_type_from_string(pulse);
+    f.pulse.pulse = s.choice("pulse", spectrum_pulse_names(), "one_sine");
     const std::string axes = s.choice("axes", {"normalized", "physical"}, "normalized");
     f.pulse.normalized = axes == "normalized";
     double a_factor = 1.0, w_factor = 1.0;

@@ -119,34 +119,19 @@ void check_ranks(const RunOptions& o) {
 
 }  // namespace
 
-const char* to_string(PulseType t) {
-  switch (t) {
-    case PulseType::kOneSine:
-      return "one_sine";
-    case PulseType::kHalfSine:
-      return "half_sine";
-    case PulseType::kCycloidalA:
-      return "cycloidal_a";
-    case PulseType::kCycloidalB:
-      return "cycloidal_b";
-    case PulseType::kCycloidalC:
-      return "cycloidal_c";
-    case PulseType::kRicker:
-      return "ricker";
+namespace {
+// a pulse type that spectra sweep: one with a length
+const PulseKind& spectrum_kind(const std::string& type) {
+  const PulseKind& k = pulse_kind(type);
+  if (!k.length) {
+    std::string names;
+    for (const std::string& n : spectrum_pulse_names()) names += (names.empty() ? "" : ", ") + n;
+    throw InputError("expected a pulse type of spectra, one of: " + names + "; got \"" + type +
+                     "\"");
   }
-  return "unknown";
+  return k;
 }
-
-PulseType pulse_type_from_string(const std::string& name) {
-  for (PulseType t : {PulseType::kOneSine, PulseType::kHalfSine, PulseType::kCycloidalA,
-                      PulseType::kCycloidalB, PulseType::kCycloidalC, PulseType::kRicker}) {
-    if (name == to_string(t)) return t;
-  }
-  throw InputError(
-      "expected a pulse type, one of: one_sine, half_sine, cycloidal_a, "
-      "cycloidal_b, cycloidal_c, ricker; got \"" +
-      name + "\"");
-}
+}  // namespace
 
 const char* to_string(OverturnBoundary::Kind k) {
   switch (k) {
@@ -160,35 +145,12 @@ const char* to_string(OverturnBoundary::Kind k) {
   return "unknown";
 }
 
-double pulse_length(PulseType type, double omega_p) {
-  switch (type) {
-    case PulseType::kHalfSine:
-      return std::numbers::pi / omega_p;
-    case PulseType::kCycloidalC:
-      return (1.5 - cycloidal_c_phase(1) / std::numbers::pi) * kTwoPi / omega_p;
-    case PulseType::kRicker:
-      return 6.0 * std::sqrt(6.0) / omega_p;  // centre 3 sqrt(6)/omega plus as much again
-    default:
-      return kTwoPi / omega_p;
-  }
+double pulse_length(const std::string& type, double omega_p) {
+  return spectrum_kind(type).length(omega_p);
 }
 
-GroundMotion pulse_motion(PulseType type, double a_p, double omega_p, double duration) {
-  switch (type) {
-    case PulseType::kOneSine:
-      return one_sine_pulse(a_p, omega_p, duration);
-    case PulseType::kHalfSine:
-      return half_sine_pulse(a_p, omega_p, duration);
-    case PulseType::kCycloidalA:
-      return cycloidal_pulse_a(a_p, omega_p, duration);
-    case PulseType::kCycloidalB:
-      return cycloidal_pulse_b(a_p, omega_p, duration);
-    case PulseType::kCycloidalC:
-      return cycloidal_pulse_c(a_p, omega_p, duration, 1);
-    case PulseType::kRicker:
-      return ricker_wavelet(a_p, omega_p, 3.0 * std::sqrt(6.0) / omega_p, duration);
-  }
-  return GroundMotion::none(duration);
+GroundMotion pulse_motion(const std::string& type, double a_p, double omega_p, double duration) {
+  return make_pulse(spectrum_kind(type), {a_p, omega_p, duration, Component::kHorizontal, {}});
 }
 
 RunSummary run_pulse_cell(const Body& body, const SpectrumSpec& spec, double a_p, double omega_p) {
@@ -197,7 +159,7 @@ RunSummary run_pulse_cell(const Body& body, const SpectrumSpec& spec, double a_p
   const GroundMotion motion = pulse_motion(spec.pulse, a_p, omega_p, duration);
   // a rigid body in full contact when a pulse that ends has ended stays at rest: no need to
   // follow the free motion (the Ricker wavelet never quite ends)
-  if (body.modes() == 0 && spec.pulse != PulseType::kRicker && spec.free_periods > 0.0) {
+  if (body.modes() == 0 && spectrum_kind(spec.pulse).ends && spec.free_periods > 0.0) {
     const SimulationResult r = simulate(body, motion, {}, run_options(spec.solver, t_pulse));
     if (r.status != Status::kCompleted || r.final_phase == ContactMode::kFullContact) {
       RunSummary s = summarize(body, r);

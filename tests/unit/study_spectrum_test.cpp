@@ -19,7 +19,7 @@ Body slender_block() { return Body(rigid_block(0.4, 2.0, 1000.0)); }
 
 SpectrumSpec small_spec() {
   SpectrumSpec s;
-  s.pulse = PulseType::kOneSine;
+  s.pulse = "one_sine";
   s.amplitudes = {1.5, 2.5, 3.5, 4.5, 6.0};
   s.frequencies = {1.5, 3.0, 6.0};
   return s;
@@ -211,7 +211,12 @@ TEST(StudySpectrum, BadSpecsAreInputErrors) {
   s = small_spec();
   s.bisection_tolerance = 0.0;
   test::expect_input_error([&] { compute_spectrum(body, s); }, {"bisection_tolerance"});
-  test::expect_input_error([] { pulse_type_from_string("one-sine"); }, {"one_sine", "one-sine"});
+  s = small_spec();
+  s.pulse = "one-sine";
+  test::expect_input_error([&] { compute_spectrum(body, s); }, {"one_sine", "one-sine"});
+  // a type without a length (harmonic over the whole duration) is not a spectrum family
+  s.pulse = "harmonic";
+  test::expect_input_error([&] { compute_spectrum(body, s); }, {"pulse type of spectra", "ricker"});
 }
 
 TEST(StudySpectrum, BisectionToleranceBelowTheMinimumIsRefused) {

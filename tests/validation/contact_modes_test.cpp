@@ -145,7 +145,7 @@ TEST(ContactModes, ToppingBlockIsOverturnedBySimulateSummaryAndSpectrumAlike) {
     // a one-sine pulse pushes first toward edge 2's side: the block tips onto edge 1 first
     EXPECT_EQ(r.extremes.first_uplift_edge, 1);
     study::SpectrumSpec spec;
-    spec.pulse = study::PulseType::kOneSine;
+    spec.pulse = "one_sine";
     spec.solver = study::study_solver_defaults();
     const study::RunSummary cell = study::run_pulse_cell(body, spec, a_p, w_p);
     EXPECT_EQ(cell.outcome, s.outcome);

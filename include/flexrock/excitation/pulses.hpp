@@ -16,6 +16,12 @@
 // Violations throw flexrock::InputError naming the argument, its value and what is expected.
 #pragma once
 
+#include <map>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
 #include "flexrock/excitation/ground_motion.hpp"
 
 namespace flexrock {
@@ -105,5 +111,70 @@ GroundMotion ricker_wavelet(double a_p, double omega_p, double t_c, double durat
 /// The ground velocity ends at a_p t_1. Breakpoint: t_1.
 GroundMotion rectangular_pulse(double a_p, double t_1, double duration,
                                Component component = Component::kHorizontal);
+
+// ---------------------------------------------------------------------------------------------
+// The table of pulse types: one entry a synthetic motion type, read by the case loader
+// (excitation.*.type), the spectrum loader ([spectrum] pulse), the Python keywords and the
+// generated key reference of docs/case-file.md. A new pulse type is one entry here and its
+// function above.
+
+/// How an extra key of a pulse type is checked.
+enum class PulseKeyRule {
+  kFinite,       // any finite number
+  kPositive,     // a finite number > 0
+  kNonnegative,  // a finite number >= 0
+  kCount,        // an integer >= 1
+};
+
+/// One key of a pulse type besides amplitude, units, frequency_hz/period and duration.
+struct PulseKey {
+  const char* name;      // key in a case file and keyword in Python
+  const char* argument;  // the pulse function's argument it becomes
+  const char* unit;      // "rad", "s", "-"
+  PulseKeyRule rule;
+  bool required;  // no default: the key must be given
+  double fixed;   // default when not required; NaN: the function decides (`default_text`)
+  const char* default_text;  // the default as the docs state it
+  const char* doc;           // one line: what the key means
+};
+
+/// The values a pulse type is made from, in SI units (amplitude m/s^2, omega rad/s, times s).
+struct PulseArgs {
+  double a_p = 0.0;       // [m/s^2] peak acceleration
+  double omega_p = 0.0;   // [rad/s] circular frequency; 0 for a type without one
+  double duration = 0.0;  // [s] length of the motion
+  Component component = Component::kHorizontal;
+  std::map<std::string, double, std::less<>> keys;  // extra keys given or defaulted
+  /// The value of extra key `name`, if given or defaulted.
+  std::optional<double> key(std::string_view name) const;
+};
+
+/// One synthetic motion type.
+struct PulseKind {
+  const char* name;      // type name in case files and spectrum specs ("one_sine")
+  const char* function;  // the function of this header that makes it ("one_sine_pulse")
+  bool frequency;        // takes frequency_hz or period (omega_p)
+  std::vector<PulseKey> keys;
+  GroundMotion (*make)(const PulseArgs& args);
+  /// [s] length of the pulse at omega_p with default keys, where spectra start the free motion;
+  /// nullptr: not a spectrum family (no frequency, or no end).
+  double (*length)(double omega_p);
+  const char* length_text;  // the length as the docs state it ("" without a length)
+  bool ends;        // false: never quite ends (Ricker): spectra always follow the free motion
+  const char* doc;  // one line: the acceleration
+};
+
+/// Every pulse type, in the order the docs list them.
+const std::vector<PulseKind>& pulse_kinds();
+
+/// The pulse type of a name; throws InputError listing the known names (and the closest one).
+const PulseKind& pulse_kind(std::string_view name);
+
+/// The names of the pulse types that spectra sweep (those with a length).
+std::vector<std::string> spectrum_pulse_names();
+
+/// Makes a pulse type from `args`, filling the fixed defaults of keys not given and refusing
+/// keys the type does not have. Throws InputError as the pulse functions do.
+GroundMotion make_pulse(const PulseKind& kind, PulseArgs args);
 
 }  // namespace flexrock

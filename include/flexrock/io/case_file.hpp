@@ -82,6 +82,12 @@ Case load_case(const std::string& path);
 BodyParameters load_body(const std::string& path, std::string* type = nullptr,
                          std::vector<std::string>* files = nullptr);
 
+/// The key reference of the synthetic motion types (excitation.*.type), as the Markdown table of
+/// docs/case-file.md, written from the table of pulse types (excitation/pulses.hpp) with its
+/// begin and end marker lines. `flexrock keys --markdown` prints it; a test checks that the docs
+/// hold it unchanged.
+std::string pulse_key_reference();
+
 /// Levenshtein edit distance (insertions, deletions, substitutions), for "did you mean".
 std::size_t edit_distance(std::string_view a, std::string_view b);
 

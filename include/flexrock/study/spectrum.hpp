@@ -19,21 +19,6 @@
 
 namespace flexrock::study {
 
-/// Pulse families of a spectrum (the functions of flexrock/excitation/pulses.hpp).
-enum class PulseType {
-  kOneSine,     // one_sine_pulse
-  kHalfSine,    // half_sine_pulse
-  kCycloidalA,  // cycloidal_pulse_a
-  kCycloidalB,  // cycloidal_pulse_b
-  kCycloidalC,  // cycloidal_pulse_c (n = 1)
-  kRicker,      // ricker_wavelet, centred at 3 sqrt(6) / omega_p
-};
-
-/// Stable names: "one_sine", "half_sine", "cycloidal_a", "cycloidal_b", "cycloidal_c", "ricker".
-const char* to_string(PulseType t);
-/// The pulse type of a name above; throws InputError listing the names otherwise.
-PulseType pulse_type_from_string(const std::string& name);
-
 /// The narrowest relative bracket a bisection may ask for: below it the bracket is finer than the
 /// simulations resolve (their rtol is >= 1e-14) and soon than doubles can split (the midpoint of
 /// adjacent doubles is one of them).
@@ -41,7 +26,7 @@ inline constexpr double kMinBisectionTolerance = 1e-12;
 
 /// A pulse spectrum: pulse type x amplitude x frequency.
 struct SpectrumSpec {
-  PulseType pulse = PulseType::kOneSine;
+  std::string pulse = "one_sine";  // a pulse type with a length (excitation/pulses.hpp table)
   bool normalized = true;  // true: amplitudes a_p/(g tan alpha1) [-], frequencies omega_p/p [-];
                            // false: amplitudes [m/s^2], frequencies omega_p [rad/s]
   std::vector<double> amplitudes;   // the grid rows, strictly increasing, > 0
@@ -105,10 +90,11 @@ struct SpectrumResult {
   std::vector<OverturnBoundary> boundary;  // one per column (empty without bisection)
 };
 
-/// The motion of one cell: a_p [m/s^2], omega_p [rad/s], total duration [s].
-GroundMotion pulse_motion(PulseType type, double a_p, double omega_p, double duration);
+/// The motion of one cell: a_p [m/s^2], omega_p [rad/s], total duration [s], the pulse type's
+/// other keys at their defaults. Throws InputError for a type that is not a spectrum family.
+GroundMotion pulse_motion(const std::string& type, double a_p, double omega_p, double duration);
 /// Length of the pulse [s] (where the free motion starts; Ricker: its centre + 3 sqrt(6)/omega).
-double pulse_length(PulseType type, double omega_p);
+double pulse_length(const std::string& type, double omega_p);
 
 /// Simulates one cell (a pulse spectrum cell) exactly as compute_spectrum does.
 RunSummary run_pulse_cell(const Body& body, const SpectrumSpec& spec, double a_p, double omega_p);

@@ -1,0 +1,20 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
+# the key reference of docs/case-file.md is the one `flexrock keys --markdown` writes from the
+# library's table of pulse types: the docs cannot drift from the loaders
+source "$(dirname "$0")/common.sh"
+
+run "$FLEXROCK" keys --markdown
+expect_rc 0 "keys --markdown"
+expect_in "$WORK/out" "| \`one_sine\` |"
+expect_in "$WORK/out" "| \`none\` |"
+
+# the lines from the begin marker to the end marker, in the docs
+sed -n '/^<!-- begin: written by `flexrock keys --markdown`/,/^<!-- end: written by `flexrock keys --markdown`/p' \
+  "$SRC/docs/case-file.md" >"$WORK/docs"
+[ -s "$WORK/docs" ] || fail "no generated key reference in docs/case-file.md (begin/end markers)"
+if ! diff -u "$WORK/docs" "$WORK/out" >"$WORK/diff"; then
+  cat "$WORK/diff" >&2
+  fail "docs/case-file.md differs from 'flexrock keys --markdown': replace its generated block with the command's output"
+fi
+echo "ok"
