@@ -5,12 +5,12 @@
 #include <limits>
 #include <map>
 #include <numbers>
-#include <sstream>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "flexrock/core/error.hpp"
+#include "flexrock/core/format.hpp"
 
 namespace flexrock {
 
@@ -20,12 +20,7 @@ constexpr double kPi = std::numbers::pi;
 constexpr double kEpsilon = std::numeric_limits<double>::epsilon();
 
 // shortest round-trip text of a double, so messages show the value the user gave
-std::string show(double v) {
-  std::ostringstream s;
-  s.precision(17);
-  s << v;
-  return s.str();
-}
+std::string show(double v) { return format_number(v); }
 
 // "pulse: argument 'name' = value, expected ..."
 void require(bool ok, const char* pulse, const char* name, double value, const char* expected) {

@@ -73,13 +73,6 @@ using Reader = detail::TableReader;
 // ---------------------------------------------------------------------------------------------
 // small CSV files of numbers (nodes, mode shapes): src/io/modal_tables.cpp
 
-// a path in the case file, relative to the case file's directory
-std::string resolve(const std::string& case_file, const std::string& p) {
-  const fs::path path(p);
-  if (path.is_absolute()) return p;
-  return (fs::path(case_file).parent_path() / path).lexically_normal().string();
-}
-
 // ---------------------------------------------------------------------------------------------
 // body
 
@@ -197,7 +190,7 @@ BodyParameters read_lumped_body(Reader& r, std::vector<std::string>& notes) {
       rows.push_back(std::move(v));
     }
   } else {
-    nodes_path = resolve(r.file(), *nodes_file);
+    nodes_path = detail::resolve_path(r.file(), *nodes_file);
     node_table = detail::read_node_table(nodes_path);
     for (const LumpedNode& nd : node_table.nodes)
       rows.push_back({nd.x, nd.y, nd.mass, nd.rotary_inertia});
@@ -258,7 +251,7 @@ BodyParameters read_lumped_body(Reader& r, std::vector<std::string>& notes) {
     m.phi_x = shape("phi_x");
     m.phi_y = shape("phi_y");
   } else {
-    const std::string path = resolve(r.file(), *shapes_file);
+    const std::string path = detail::resolve_path(r.file(), *shapes_file);
     const detail::ShapeTable shapes = detail::read_shape_table(path, n);
     if (inline_nodes) {
       node_table.nodes = m.nodes;
@@ -382,8 +375,6 @@ BodyParameters read_body(Reader& r, std::string& type, bool& rigid,
 // ---------------------------------------------------------------------------------------------
 // excitation
 
-const std::vector<std::string> kUnits = {"g", "m/s^2", "cm/s^2"};
-
 // an extra key of a pulse type (excitation/pulses.hpp), checked by its rule; nullopt: not given
 std::optional<double> read_pulse_key(Reader& r, const PulseKey& k) {
   const std::string unit = std::string("[") + k.unit + "]";
@@ -413,12 +404,6 @@ std::vector<std::string> motion_types() {
   return v;
 }
 
-AccelUnit unit_of(const std::string& u) {
-  if (u == "g") return AccelUnit::kG;
-  if (u == "m/s^2") return AccelUnit::kMetersPerSecond2;
-  return AccelUnit::kCentimetersPerSecond2;
-}
-
 // one component: a record (kept for combine()) or a synthetic motion along its own direction
 struct Built {
   std::optional<Record> record;
@@ -430,43 +415,13 @@ Built read_component(Reader& r, bool vertical, ExcitationComponent& out) {
   Built b;
   const Component dir = vertical ? Component::kVertical : Component::kHorizontal;
   if (out.type == "record") {
-    const std::string file = r.string("file", "a path to the record, relative to the case file");
-    out.file = resolve(r.file(), file);
-    std::string ext = fs::path(file).extension().string();
-    for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    out.format =
-        r.choice("format", {"at2", "single_column", "time_series"}, ext == ".at2" ? "at2" : "");
-    const auto units = r.has("units") ? std::optional(r.choice("units", kUnits)) : std::nullopt;
+    const detail::RecordKeys k =
+        detail::read_record_keys(r, "a path to the record, relative to the case file");
+    out.file = k.path;
+    out.format = k.format->name;
     out.scale = r.number_or("scale", 1.0, "a number [-] (factor on this component)");
-    std::optional<double> dt;
-    if (out.format == "single_column") dt = r.positive("dt", "[s] (sample spacing)");
-    if (out.format != "at2" && !units) {
-      r.fail_at(r.line(), "units",
-                "missing; expected one of: " + join(kUnits) + " (the units of the file's values)");
-    }
-    const std::size_t file_line = line_of(*r.node("file"));
-    try {
-      if (out.format == "at2") {
-        b.record = read_at2(out.file);
-        if (units && unit_of(*units) != b.record->units) {
-          r.fail("units", "expected the units the AT2 file states (" +
-                              std::string(unit_name(b.record->units)) + "), got \"" + *units +
-                              "\"");
-        }
-      } else if (out.format == "single_column") {
-        b.record = read_single_column(out.file, *dt, unit_of(*units));
-      } else {
-        b.record = read_time_series(out.file, unit_of(*units));
-      }
-    } catch (const InputError& e) {
-      const std::string what = e.what();
-      if (what.starts_with(r.file() + ":")) throw;
-      throw InputError(what + " (record named by key '" + r.full("file") + "' at " + r.file() +
-                       ":" + std::to_string(file_line) + ")");
-    }
+    b.record = detail::read_record_file(r, k);
     out.units = std::string(unit_name(b.record->units));
-    if (b.record->npts() < 2)
-      r.fail("file", "expected a record with at least 2 samples in " + out.file);
     // the file's intensity, before any scale factor
     const std::vector<double> si = b.record->to_si();
     out.pga = peak_ground_acceleration(si);
@@ -487,9 +442,9 @@ Built read_component(Reader& r, bool vertical, ExcitationComponent& out) {
     b.motion = GroundMotion::none(duration);
     return b;
   }
-  out.units = r.choice("units", kUnits);
+  out.units = r.choice("units", detail::accel_unit_names());
   const double a = r.number("amplitude", "a number (peak acceleration, in `units`)");
-  out.amplitude = a * to_si_factor(unit_of(out.units));
+  out.amplitude = a * to_si_factor(detail::accel_unit(out.units));
   const double ap = out.amplitude;
   const PulseKind& kind = pulse_kind(out.type);
   double omega = 0.0;
@@ -686,16 +641,7 @@ void check_history_rows(Reader& top, const Case& c) {
                   (c.options.t_end >= 0.0 ? "solver.t_end" : "excitation (or solver.t_end)"));
 }
 
-toml::table parse(const std::string& path) {
-  const std::string text = read_input_file(path, "case");
-  try {
-    return toml::parse(text, path);
-  } catch (const toml::parse_error& e) {
-    const auto& b = e.source().begin;
-    throw InputError(path + ":" + std::to_string(b.line) + ":" + std::to_string(b.column) +
-                     ": TOML syntax error: " + std::string(e.description()));
-  }
-}
+toml::table parse(const std::string& path) { return detail::parse_toml(path, "case"); }
 
 }  // namespace
 

@@ -25,6 +25,7 @@
 #include <streambuf>
 #include <system_error>
 
+#include "flexrock/core/format.hpp"
 #include "flexrock/io/files.hpp"
 #include "flexrock/version.hpp"
 
@@ -236,15 +237,7 @@ void write_atomically(const std::string& path, const std::function<void(std::ost
 namespace {
 
 // shortest text that reads back to the same double
-void put(std::ostream& out, double v) {
-  if (!std::isfinite(v)) {
-    out << (std::isnan(v) ? "nan" : (v > 0 ? "inf" : "-inf"));
-    return;
-  }
-  char buf[32];
-  const auto r = std::to_chars(buf, buf + sizeof buf, v);
-  out.write(buf, r.ptr - buf);
-}
+void put(std::ostream& out, double v) { out << format_number(v); }
 
 template <class T>
 void put_row(std::ostream& out, const std::vector<T>& row) {

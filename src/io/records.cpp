@@ -13,6 +13,7 @@
 
 #include "decimal_comma.hpp"
 #include "flexrock/core/error.hpp"
+#include "flexrock/core/format.hpp"
 #include "flexrock/core/types.hpp"
 #include "flexrock/io/files.hpp"
 
@@ -33,11 +34,7 @@ struct Line {
 };
 
 // shortest round-trip text of a double
-std::string show(double v) {
-  char buf[32];
-  const auto end = std::to_chars(buf, buf + sizeof buf, v).ptr;
-  return std::string(buf, end);
-}
+std::string show(double v) { return format_number(v); }
 
 // the text in quotes, shortened to 80 characters
 std::string quote(std::string_view s) {

@@ -40,12 +40,7 @@ std::uint64_t fnv1a(const std::string& bytes, std::uint64_t h) {
 namespace {
 
 // shortest text that reads back to the same double
-std::string num(double v) {
-  if (!std::isfinite(v)) return std::isnan(v) ? "nan" : (v > 0 ? "inf" : "-inf");
-  char buf[32];
-  const auto r = std::to_chars(buf, buf + sizeof buf, v);
-  return std::string(buf, r.ptr);
-}
+std::string num(double v) { return format_number(v); }
 
 std::string join(const std::vector<std::string>& v, const char* sep = ", ") {
   std::string s;
@@ -55,12 +50,6 @@ std::string join(const std::vector<std::string>& v, const char* sep = ", ") {
 
 // a regular file's bytes (read_input_file refuses FIFOs and devices)
 std::string file_bytes(const std::string& path) { return read_input_file(path, "input"); }
-
-std::string resolve(const std::string& base_file, const std::string& p) {
-  const fs::path path(p);
-  if (path.is_absolute()) return p;
-  return (fs::path(base_file).parent_path() / path).lexically_normal().string();
-}
 
 using detail::describe;
 using detail::line_of;
@@ -128,17 +117,6 @@ std::optional<std::vector<double>> grid_opt(Keys& r, std::string_view key,
   return v;
 }
 
-toml::table parse(const std::string& path, const char* what) {
-  const std::string text = read_input_file(path, what);
-  try {
-    return toml::parse(text, path);
-  } catch (const toml::parse_error& e) {
-    const auto& b = e.source().begin;
-    throw InputError(path + ":" + std::to_string(b.line) + ":" + std::to_string(b.column) +
-                     ": TOML syntax error: " + std::string(e.description()));
-  }
-}
-
 // [solver]: the keys of a case file's [solver] table that make sense for a study (no t_end),
 // checked as simulate() will check them, here where the file and line are known
 void read_solver(Keys& r, SimulationOptions& o, const BodyParameters& body) {
@@ -151,57 +129,16 @@ void read_solver(Keys& r, SimulationOptions& o, const BodyParameters& body) {
   }
 }
 
-const std::vector<std::string> kUnits = {"g", "m/s^2", "cm/s^2"};
-
-AccelUnit unit_of(const std::string& u) {
-  if (u == "g") return AccelUnit::kG;
-  if (u == "m/s^2") return AccelUnit::kMetersPerSecond2;
-  return AccelUnit::kCentimetersPerSecond2;
-}
-
 // a record table {file, format, units, dt, name}; the record's bytes go into `hash`
 Record read_record(Keys& r, std::string& name, std::uint64_t* hash,
                    std::vector<std::string>& files) {
-  const std::string file = r.string("file", "a path to the record, relative to this file");
-  const std::string path = resolve(r.file(), file);
+  const detail::RecordKeys k =
+      detail::read_record_keys(r, "a path to the record, relative to this file");
+  const std::string& path = k.path;
   files.push_back(path);
-  std::string ext = fs::path(file).extension().string();
-  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  const std::string format =
-      r.choice("format", {"at2", "single_column", "time_series"}, ext == ".at2" ? "at2" : "");
-  std::optional<std::string> units;
-  if (r.has("units")) units = r.choice("units", kUnits, "g");
-  std::optional<double> dt;
-  if (format == "single_column") {
-    dt = r.positive_or("dt", 0.0, "[s] (sample spacing)");
-    if (!(*dt > 0.0))
-      r.fail("dt", "missing; expected the sample spacing [s] of a single_column record");
-  }
-  if (format != "at2" && !units) {
-    r.fail("units",
-           "missing; expected one of: " + join(kUnits) + " (the units of the file's values)");
-  }
-  name = r.string_opt("name", "a string").value_or(fs::path(file).stem().string());
+  name = r.string_opt("name", "a string").value_or(fs::path(k.file).stem().string());
   r.finish("for a record");
-  Record rec;
-  try {
-    if (format == "at2") {
-      rec = read_at2(path);
-      if (units && unit_of(*units) != rec.units) {
-        r.fail("units", "expected the units the AT2 file states (" +
-                            std::string(unit_name(rec.units)) + "), got \"" + *units + "\"");
-      }
-    } else if (format == "single_column") {
-      rec = read_single_column(path, *dt, unit_of(*units));
-    } else {
-      rec = read_time_series(path, unit_of(*units));
-    }
-  } catch (const InputError& e) {
-    const std::string what = e.what();
-    if (what.starts_with(r.file() + ":")) throw;
-    throw InputError(what + " (record named by key '" + r.full("file") + "' in " + r.file() + ")");
-  }
-  if (rec.npts() < 2) r.fail("file", "expected a record with at least 2 samples in " + path);
+  const Record rec = detail::read_record_file(r, k);
   if (hash) *hash = fnv1a(file_bytes(path), *hash);
   return rec;
 }
@@ -219,7 +156,7 @@ void check_name(Keys& r, const std::string& key, const std::string& name) {
 // spectrum
 
 SpectrumFile load_spectrum_file(const std::string& path) {
-  const toml::table doc = parse(path, "spectrum");
+  const toml::table doc = detail::parse_toml(path, "spectrum");
   Keys top(path, doc, "");
   SpectrumFile f;
   f.source = path;
@@ -233,7 +170,7 @@ SpectrumFile load_spectrum_file(const std::string& path) {
     const std::string b = top.string("body",
                                      "a path to a case or body file with a [body] table, "
                                      "or a [body] table here");
-    f.body_source = resolve(path, b);
+    f.body_source = detail::resolve_path(path, b);
   }
   f.input_files.push_back(path);
   f.body = load_body(f.body_source, nullptr, &f.input_files);
@@ -282,7 +219,8 @@ SpectrumFile load_spectrum_file(const std::string& path) {
       if (s.has("amplitude_units")) s.fail("amplitude_units", "only with axes = \"physical\"");
       if (s.has("frequency_units")) s.fail("frequency_units", "only with axes = \"physical\"");
     } else {
-      a_factor = to_si_factor(unit_of(s.choice("amplitude_units", kUnits, "m/s^2")));
+      a_factor = to_si_factor(
+          detail::accel_unit(s.choice("amplitude_units", detail::accel_unit_names(), "m/s^2")));
       w_factor = s.choice("frequency_units", {"rad/s", "Hz"}, "rad/s") == "Hz"
                      ? 2.0 * std::numbers::pi
                      : 1.0;
@@ -421,7 +359,7 @@ void write_boundary_csv(std::ostream& out, const study::SpectrumResult& result, 
 // sweep
 
 SweepManifest load_sweep_manifest(const std::string& path) {
-  const toml::table doc = parse(path, "sweep manifest");
+  const toml::table doc = detail::parse_toml(path, "sweep manifest");
   Keys top(path, doc, "");
   SweepManifest m;
   m.source = path;
@@ -435,7 +373,7 @@ SweepManifest load_sweep_manifest(const std::string& path) {
   for (Keys& b : top.tables("body", "a body: { name, file } (a case or body file)")) {
     study::SweepBody sb;
     const std::string file = b.string("file", "a path to a case or body file with a [body] table");
-    const std::string full = resolve(path, file);
+    const std::string full = detail::resolve_path(path, file);
     sb.name = b.string_opt("name", "a string").value_or(fs::path(file).stem().string());
     check_name(b, "name", sb.name);
     if (!names.insert("body:" + sb.name).second)
@@ -473,8 +411,8 @@ SweepManifest load_sweep_manifest(const std::string& path) {
     if (sk->has("units")) sk->fail("units", "only with 'target_pga'");
   } else {
     m.spec.scale_kind = study::ScaleKind::kTargetPga;
-    m.spec.level_units = sk->choice("units", kUnits, "g");
-    const double u = to_si_factor(unit_of(m.spec.level_units));
+    m.spec.level_units = sk->choice("units", detail::accel_unit_names(), "g");
+    const double u = to_si_factor(detail::accel_unit(m.spec.level_units));
     m.spec.scales = *grid_opt(*sk, "target_pga", "(units)");
     m.spec.levels = m.spec.scales;  // as written, for the CSV's level column
     for (double& v : m.spec.scales) v *= u;

@@ -1,13 +1,15 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// Checked reads of one TOML table, shared by the case-file and study-file loaders: every error
-// names the file, the line and the full key, and says what was expected and what was found;
-// unknown keys are rejected with the closest known one. Internal to flexrock::io.
+// The TOML toolkit of the case-file and study-file loaders: checked reads of one table (every
+// error names the file, the line and the full key, and says what was expected and what was
+// found; unknown keys are rejected with the closest known one), parsing, paths relative to the
+// file, acceleration units and record tables. Internal to flexrock::io.
 #pragma once
 
 #include <toml++/toml.h>
 
+#include <cctype>
 #include <cmath>
-#include <cstdio>
+#include <filesystem>
 #include <optional>
 #include <set>
 #include <string>
@@ -15,18 +17,17 @@
 #include <vector>
 
 #include "flexrock/core/error.hpp"
+#include "flexrock/core/format.hpp"
 #include "flexrock/core/types.hpp"
 #include "flexrock/io/case_file.hpp"
+#include "flexrock/io/files.hpp"
+#include "flexrock/io/records.hpp"
 #include "flexrock/sim/simulate.hpp"
 
 namespace flexrock::io::detail {
 
-// a number for messages: shortest form that reads back
-inline std::string num(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.10g", v);
-  return buf;
-}
+// a number for messages: 10 significant digits
+inline std::string num(double v) { return format_number(v, 10); }
 
 inline std::string join(const std::vector<std::string>& v) {
   std::string s;
@@ -299,6 +300,123 @@ inline void read_solver_keys(TableReader& r, SimulationOptions& o) {
   }
   o.max_steps = r.integer_or("max_steps", o.max_steps, 1, "an integer >= 1");
   o.max_impacts = r.integer_or("max_impacts", o.max_impacts, 1, "an integer >= 1");
+}
+
+// ---------------------------------------------------------------------------------------------
+// the TOML toolkit of the case and study loaders: parsing, paths, units, record tables
+
+// a TOML file, read through read_input_file; a syntax error names the file, line and column.
+// `what` names the file for messages ("case", "spectrum", "sweep manifest")
+inline toml::table parse_toml(const std::string& path, const std::string& what) {
+  const std::string text = read_input_file(path, what);
+  try {
+    return toml::parse(text, path);
+  } catch (const toml::parse_error& e) {
+    const auto& b = e.source().begin;
+    throw InputError(path + ":" + std::to_string(b.line) + ":" + std::to_string(b.column) +
+                     ": TOML syntax error: " + std::string(e.description()));
+  }
+}
+
+// a path written in `file`, relative to that file's directory (absolute paths as they are)
+inline std::string resolve_path(const std::string& file, const std::string& p) {
+  const std::filesystem::path path(p);
+  if (path.is_absolute()) return p;
+  return (std::filesystem::path(file).parent_path() / path).lexically_normal().string();
+}
+
+// the acceleration units a file may name, by their names in the files (records.hpp unit_name)
+inline const std::vector<std::string>& accel_unit_names() {
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> v;
+    for (AccelUnit u :
+         {AccelUnit::kG, AccelUnit::kMetersPerSecond2, AccelUnit::kCentimetersPerSecond2}) {
+      v.emplace_back(unit_name(u));
+    }
+    return v;
+  }();
+  return names;
+}
+
+// the unit of a name of accel_unit_names(); the reader's choice() has checked it
+inline AccelUnit accel_unit(const std::string& name) {
+  for (AccelUnit u :
+       {AccelUnit::kG, AccelUnit::kMetersPerSecond2, AccelUnit::kCentimetersPerSecond2}) {
+    if (name == unit_name(u)) return u;
+  }
+  throw InputError("expected an acceleration unit, one of: " + join(accel_unit_names()) +
+                   "; got \"" + name + "\"");
+}
+
+// one entry a record format: its name in `format`, whether it needs `dt` and `units` (an AT2
+// file states its own), and its reader (records.hpp)
+struct RecordFormat {
+  const char* name;
+  bool needs_dt;
+  bool needs_units;
+  Record (*read)(const std::string& path, double dt, AccelUnit units);
+};
+inline const std::vector<RecordFormat>& record_formats() {
+  static const std::vector<RecordFormat> formats = {
+      {"at2", false, false, [](const std::string& p, double, AccelUnit) { return read_at2(p); }},
+      {"single_column", true, true,
+       [](const std::string& p, double dt, AccelUnit u) { return read_single_column(p, dt, u); }},
+      {"time_series", false, true,
+       [](const std::string& p, double, AccelUnit u) { return read_time_series(p, u); }},
+  };
+  return formats;
+}
+
+// the keys of a record table: file, format, units, dt (the caller reads its own: scale, name)
+struct RecordKeys {
+  std::string file;  // as written
+  std::string path;  // resolved against the file that names it
+  const RecordFormat* format = nullptr;
+  std::optional<std::string> units;  // as written; AT2: optional, checked against the file
+  double dt = 0.0;                   // [s] single_column only
+  std::size_t line = 0;              // line of `file`
+};
+
+inline RecordKeys read_record_keys(TableReader& r, const std::string& file_what) {
+  RecordKeys k;
+  k.file = r.string("file", file_what);
+  k.path = resolve_path(r.file(), k.file);
+  k.line = line_of(*r.node("file"));
+  std::string ext = std::filesystem::path(k.file).extension().string();
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  std::vector<std::string> names;
+  for (const RecordFormat& f : record_formats()) names.emplace_back(f.name);
+  const std::string format = r.choice("format", names, ext == ".at2" ? "at2" : "");
+  for (const RecordFormat& f : record_formats()) {
+    if (format == f.name) k.format = &f;
+  }
+  if (r.has("units")) k.units = r.choice("units", accel_unit_names());
+  if (k.format->needs_dt) k.dt = r.positive("dt", "[s] (sample spacing)");
+  if (k.format->needs_units && !k.units) {
+    r.fail_at(r.line(), "units",
+              "missing; expected one of: " + join(accel_unit_names()) +
+                  " (the units of the file's values)");
+  }
+  return k;
+}
+
+// the record a table names; errors of the file name the key and the place that named it
+inline Record read_record_file(TableReader& r, const RecordKeys& k) {
+  Record rec;
+  try {
+    rec = k.format->read(k.path, k.dt, k.units ? accel_unit(*k.units) : AccelUnit::kG);
+    if (k.units && accel_unit(*k.units) != rec.units) {
+      r.fail("units", "expected the units the AT2 file states (" +
+                          std::string(unit_name(rec.units)) + "), got \"" + *k.units + "\"");
+    }
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    if (what.starts_with(r.file() + ":")) throw;
+    throw InputError(what + " (record named by key '" + r.full("file") + "' at " + r.file() + ":" +
+                     std::to_string(k.line) + ")");
+  }
+  if (rec.npts() < 2) r.fail("file", "expected a record with at least 2 samples in " + k.path);
+  return rec;
 }
 
 }  // namespace flexrock::io::detail

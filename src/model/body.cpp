@@ -10,16 +10,13 @@
 #include <utility>
 
 #include "flexrock/core/error.hpp"
+#include "flexrock/core/format.hpp"
 
 namespace flexrock {
 
 namespace {
 
-std::string num(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.6g", v);
-  return buf;
-}
+std::string num(double v) { return format_number(v, 6); }
 
 void require_positive(double v, const char* name, const char* meaning) {
   FLEXROCK_THROW_UNLESS(std::isfinite(v) && v > 0.0, std::string("body: ") + name + " (" + meaning +

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "flexrock/core/error.hpp"
+#include "flexrock/core/format.hpp"
 
 namespace flexrock {
 
@@ -31,11 +32,7 @@ constexpr double kOrthogonality = 1e-6;    // |m_ij| relative to sqrt(m_ii m_jj)
 constexpr double kPrintedOrthogonality = 1e-2;
 constexpr double kSymmetryTolerance = 1e-8;  // given stiffness, relative to its largest entry
 
-std::string num(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.6g", v);
-  return buf;
-}
+std::string num(double v) { return format_number(v, 6); }
 
 std::string idx(Eigen::Index i) { return std::to_string(i + 1); }
 
