@@ -35,6 +35,16 @@ def test_bad_case_file_message_equals_the_cli(cli, tmp_path):
     assert not (tmp_path / "out2").exists()
 
 
+def test_input_error_carries_file_line_and_key(tmp_path):
+    case = tmp_path / "bad.toml"
+    case.write_text('[body]\ntype = "rigid_block"\nwidth = -0.4\nheight = 1.8\nmass = 10\n'
+                    '[excitation.horizontal]\ntype = "none"\nduration = 1\n')
+    with pytest.raises(fr.InputError) as e:
+        fr.run_case(str(case), str(tmp_path / "out"))
+    assert (e.value.file, e.value.line, e.value.key) == (str(case), 3, "body.width")
+    assert str(e.value).startswith(f"{case}:3: key 'body.width': expected a number > 0")
+
+
 def test_missing_record_message_equals_the_cli(cli, tmp_path):
     case = tmp_path / "rec.toml"
     case.write_text('[body]\ntype = "rigid_block"\nwidth = 0.4\nheight = 1.8\nmass = 10\n'

@@ -345,11 +345,9 @@ BodyParameters read_body(Reader& r, std::string& type, bool& rigid,
   try {
     p = body_kind(type).read(r, notes);
   } catch (const InputError& e) {
-    const std::string what = e.what();
-    // errors that already name a place pass through; builder errors get the table's place
-    if (what.starts_with(r.file() + ":")) throw;
-    throw InputError(r.file() + ":" + std::to_string(r.line()) + ": [body] type '" + type +
-                     "': " + what);
+    // errors placed in this file pass through; builder errors get the table's place
+    if (e.file() == r.file()) throw;
+    throw InputError(r.file(), r.line(), "", "[body] type '" + type + "': " + e.what());
   }
   r.finish("for body type '" + type + "'");
   if (rigid) {
@@ -366,8 +364,7 @@ BodyParameters read_body(Reader& r, std::string& type, bool& rigid,
   try {
     Body body(p);
   } catch (const InputError& e) {
-    throw InputError(r.file() + ":" + std::to_string(r.line()) + ": [body] type '" + type +
-                     "': " + e.what());
+    throw InputError(r.file(), r.line(), "", "[body] type '" + type + "': " + e.what());
   }
   return p;
 }
@@ -465,10 +462,10 @@ Built read_component(Reader& r, bool vertical, ExcitationComponent& out) {
   try {
     b.motion = make_pulse(kind, std::move(args));
   } catch (const InputError& e) {
-    const std::string what = e.what();
-    if (what.starts_with(r.file() + ":")) throw;
-    throw InputError(r.file() + ":" + std::to_string(r.line()) + ": [" +
-                     r.full("").substr(0, r.full("").size() - 1) + "] " + out.type + ": " + what);
+    if (e.file() == r.file()) throw;
+    throw InputError(
+        r.file(), r.line(), "",
+        "[" + r.full("").substr(0, r.full("").size() - 1) + "] " + out.type + ": " + e.what());
   }
   r.finish("for type '" + out.type + "'");
   return b;
@@ -577,7 +574,7 @@ void read_excitation(Reader& r, Case& c) {
       c.motion = combine_any(std::move(hm), std::move(vm)).scaled(s);
     }
   } catch (const InputError& e) {
-    throw InputError(r.file() + ":" + std::to_string(r.line()) + ": [excitation]: " + e.what());
+    throw InputError(r.file(), r.line(), "", std::string("[excitation]: ") + e.what());
   }
 }
 

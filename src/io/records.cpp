@@ -51,7 +51,7 @@ std::string quote(std::string_view s) {
 
 // "path:line: message"
 [[noreturn]] void fail(const std::string& path, std::size_t line, const std::string& message) {
-  throw InputError(path + ":" + std::to_string(line) + ": " + message);
+  throw InputError(path, line, "", message);
 }
 
 std::string_view trim(std::string_view s) {

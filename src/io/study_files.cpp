@@ -125,7 +125,7 @@ void read_solver(Keys& r, SimulationOptions& o, const BodyParameters& body) {
   try {
     validate_options(Body(body), {}, o);
   } catch (const InputError& e) {
-    throw InputError(r.file() + ":" + std::to_string(r.line()) + ": table [solver]: " + e.what());
+    throw InputError(r.file(), r.line(), "", std::string("table [solver]: ") + e.what());
   }
 }
 

@@ -61,9 +61,7 @@ class TableReader {
   std::string full(std::string_view key) const { return prefix_ + std::string(key); }
 
   [[noreturn]] void fail_at(std::size_t line, std::string_view key, const std::string& msg) const {
-    std::string where = file_ + ":";
-    if (line > 0) where += std::to_string(line) + ":";
-    throw InputError(where + " key '" + full(key) + "': " + msg);
+    throw InputError(file_, line, full(key), msg);
   }
   [[noreturn]] void fail(std::string_view key, const std::string& msg) const {
     const toml::node* n = t_.get(key);
@@ -214,9 +212,9 @@ class TableReader {
   TableReader table(std::string_view key) {
     const toml::node* n = node(key);
     if (!n) {
-      throw InputError(file_ + ":" + (line_ ? std::to_string(line_) + ":" : std::string()) +
-                       " table [" + full(key) + "]: missing; expected a [" + full(key) +
-                       "] table (see docs/case-file.md)");
+      throw InputError(file_, line_, "",
+                       "table [" + full(key) + "]: missing; expected a [" + full(key) +
+                           "] table (see docs/case-file.md)");
     }
     if (!n->is_table()) expected(key, "a table");
     return TableReader(file_, *n->as_table(), full(key) + ".", line_of(*n));
@@ -410,10 +408,10 @@ inline Record read_record_file(TableReader& r, const RecordKeys& k) {
                           std::string(unit_name(rec.units)) + "), got \"" + *k.units + "\"");
     }
   } catch (const InputError& e) {
-    const std::string what = e.what();
-    if (what.starts_with(r.file() + ":")) throw;
-    throw InputError(what + " (record named by key '" + r.full("file") + "' at " + r.file() + ":" +
-                     std::to_string(k.line) + ")");
+    // errors placed in this file pass through; the record's own get the key that named it
+    if (e.file() == r.file()) throw;
+    throw InputError(std::string(e.what()) + " (record named by key '" + r.full("file") + "' at " +
+                     r.file() + ":" + std::to_string(k.line) + ")");
   }
   if (rec.npts() < 2) r.fail("file", "expected a record with at least 2 samples in " + k.path);
   return rec;

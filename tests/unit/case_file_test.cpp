@@ -10,11 +10,14 @@
 #include <fstream>
 #include <functional>
 #include <initializer_list>
+#include <numbers>
 #include <string>
 
 #include "flexrock/core/error.hpp"
 #include "flexrock/excitation/intensity.hpp"
+#include "flexrock/excitation/pulses.hpp"
 #include "flexrock/model/builders.hpp"
+#include "support/expect_error.hpp"
 
 namespace flexrock::io {
 namespace {
@@ -381,6 +384,71 @@ TEST_F(CaseFile, UnknownChoiceSuggestsTheClosest) {
 TEST_F(CaseFile, WrongTypeSaysExpectedAndGot) {
   expect_error("[body]\ntype = \"rigid_block\"\nwidth = \"wide\"\nheight = 2\nmass = 1\n" + kPulse,
                {"case.toml:3:", "key 'body.width'", "expected a number > 0 [m]", "got \"wide\""});
+}
+
+TEST_F(CaseFile, ErrorCarriesFileLineAndKeyAsFields) {
+  const std::string path = write(
+      "case.toml", "[body]\ntype = \"rigid_block\"\nwidth = -0.4\nheight = 2\nmass = 1\n" + kPulse);
+  try {
+    load_case(path);
+    ADD_FAILURE() << "no InputError";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.file(), path);
+    EXPECT_EQ(e.line(), 3u);
+    EXPECT_EQ(e.key(), "body.width");
+    EXPECT_EQ(e.detail(), "expected a number > 0 [m], got -0.4");
+    // the message is built from the fields
+    EXPECT_EQ(std::string(e.what()), path + ":3: key 'body.width': " + e.detail());
+  }
+  // a pulse function's own check is placed at the component's table
+  const std::string late = write("late.toml", kBlock + R"(
+[excitation.horizontal]
+type = "one_sine"
+amplitude = 0.3
+units = "g"
+period = 2.0
+duration = 1.0
+)");
+  try {
+    load_case(late);
+    ADD_FAILURE() << "no InputError";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.file(), late);
+    EXPECT_EQ(e.line(), 8u);
+    EXPECT_NE(e.detail().find("one_sine_pulse: argument 'duration' = 1 s"), std::string::npos)
+        << e.what();
+  }
+}
+
+TEST_F(CaseFile, EveryPulseTypeOfTheTableLoads) {
+  // the loader reads each type's keys from the table: a case of every type with its required
+  // keys loads, and its motion is the one make_pulse gives with the table's defaults
+  for (const PulseKind& k : pulse_kinds()) {
+    std::string keys;
+    PulseArgs args{
+        0.3 * 9.80665, k.frequency ? 2.0 * std::numbers::pi : 0.0, 5.0, Component::kHorizontal, {}};
+    for (const PulseKey& key : k.keys) {
+      if (!key.required) continue;
+      keys += std::string(key.name) + " = 0.5\n";
+      args.keys.emplace(key.name, 0.5);
+    }
+    const std::string path = write(std::string(k.name) + ".toml",
+                                   kBlock + "[excitation.horizontal]\ntype = \"" + k.name +
+                                       "\"\namplitude = 0.3\nunits = \"g\"\nduration = 5.0\n" +
+                                       (k.frequency ? "frequency_hz = 1.0\n" : "") + keys);
+    const Case c = load_case(path);
+    EXPECT_EQ(c.horizontal.type, k.name);
+    const GroundMotion expected = make_pulse(k, args);
+    for (const double t : {0.05, 0.3, 0.71, 1.9, 4.2}) {
+      EXPECT_EQ(c.motion.at(t).x, expected.at(t).x) << k.name << " at t = " << t;
+    }
+  }
+  test::expect_input_error([] { pulse_kind("one-sine"); }, {"one_sine", "rectangular", "one-sine"});
+  test::expect_input_error(
+      [] {
+        make_pulse(pulse_kind("one_sine"), {1.0, 1.0, 10.0, Component::kHorizontal, {{"n", 2.0}}});
+      },
+      {"one_sine: unknown key 'n'", "none"});
 }
 
 TEST_F(CaseFile, NegativeOrZeroSizeIsRejected) {
