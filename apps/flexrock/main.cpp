@@ -409,7 +409,9 @@ int main(int argc, char** argv) {
 
   bool markdown = false;
   CLI::App* keys = app.add_subcommand(
-      "keys", "Print the key reference of the synthetic motion types (docs/case-file.md)");
+      "keys",
+      "Print the references of docs/case-file.md written from the library's tables: the "
+      "synthetic motion types and the time-history columns");
   keys->add_flag("--markdown", markdown,
                  "as the Markdown table of docs/case-file.md (the default)");
 
@@ -432,7 +434,7 @@ int main(int argc, char** argv) {
     if (*check) return cmd_check(check_files, quiet);
     if (*params) return cmd_params(params_file);
     if (*keys) {
-      fmt::print("{}", io::pulse_key_reference());
+      fmt::print("{}{}", io::pulse_key_reference(), io::time_history_column_reference());
       return 0;
     }
     if (studies.selected()) return studies.run();

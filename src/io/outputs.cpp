@@ -309,58 +309,148 @@ std::string resolve_out(const std::string& dir, const std::string& p) {
 
 }  // namespace
 
+namespace {
+
+// a History vector as a column: one value per output time, NaN where the engine left none
+template <std::vector<double> History::*kMember>
+std::vector<double> member(const SimulationResult& r, const Body&, std::size_t) {
+  std::vector<double> c(r.history.*kMember);
+  c.resize(r.history.size(), std::nan(""));  // a column the engine did not fill is not a number
+  return c;
+}
+
+// mode i's column of a row-major History vector (q or q_dot)
+template <std::vector<double> History::*kMember>
+std::vector<double> modal(const SimulationResult& r, const Body&, std::size_t i) {
+  const History& h = r.history;
+  const auto modes = static_cast<std::size_t>(h.modes);
+  std::vector<double> c(h.size());
+  for (std::size_t k = 0; k < c.size(); ++k) c[k] = (h.*kMember)[k * modes + i];
+  return c;
+}
+
+// one column of the time history: name (a modal column's has "{i}" for the mode number), unit,
+// meaning, and its values from a run (mode i of a modal column). The CSV, the Python arrays
+// and the column reference of docs/case-file.md are written from this table.
+struct HistoryColumn {
+  const char* name;
+  const char* unit;
+  const char* doc;
+  bool modal;  // one column a mode
+  std::vector<double> (*values)(const SimulationResult& r, const Body& body, std::size_t mode);
+};
+
+const HistoryColumn kHistoryColumns[] = {
+    {"time_s", "s", "time", false,
+     [](const SimulationResult& r, const Body&, std::size_t) { return r.history.time; }},
+    {"phase", "-",
+     "contact mode: 0 full contact, 1 rocking on edge 1, 2 rocking on edge 2, 3 flight", false,
+     [](const SimulationResult& r, const Body&, std::size_t) {
+       return std::vector<double>(r.history.phase.begin(), r.history.phase.end());
+     }},
+    {"theta_rad", "rad", "tilt", false,
+     [](const SimulationResult& r, const Body&, std::size_t) { return r.history.theta; }},
+    {"theta_dot_rad_per_s", "rad/s", "tilt rate", false,
+     [](const SimulationResult& r, const Body&, std::size_t) { return r.history.theta_dot; }},
+    {"uplift_m", "m",
+     "height of the higher tipping point: (b1 + b2) sin\\|theta\\| while rocking, plus `lift_m` "
+     "in flight",
+     false,
+     [](const SimulationResult& r, const Body& body, std::size_t) {
+       // the base width swung through |theta|, plus the lower edge's height in flight
+       const History& h = r.history;
+       const double width = body.params().b1 + body.params().b2;
+       std::vector<double> uplift(h.size(), 0.0);
+       for (std::size_t k = 0; k < h.size(); ++k) {
+         const double lift = k < h.lift.size() ? h.lift[k] : 0.0;
+         if (h.phase[k] != 0) uplift[k] = lift + width * std::sin(std::abs(h.theta[k]));
+       }
+       return uplift;
+     }},
+    {"q{i}", "-", "modal coordinates (n = body modes; none for a rigid body)", true,
+     modal<&History::q>},
+    {"q{i}_dot_per_s", "1/s", "their rates", true, modal<&History::q_dot>},
+    {"base_acc_x_m_per_s2", "m/s^2", "ground acceleration, horizontal", false,
+     member<&History::base_acc_x>},
+    {"base_acc_y_m_per_s2", "m/s^2", "ground acceleration, vertical", false,
+     member<&History::base_acc_y>},
+    {"reaction_x_N", "N", "floor reaction on the body, horizontal", false,
+     member<&History::reaction_x>},
+    {"reaction_y_N", "N", "floor reaction on the body, vertical", false,
+     member<&History::reaction_y>},
+    {"resultant_m", "m",
+     "where the reaction acts, from the c.g. projection (the pivot while rocking)", false,
+     member<&History::resultant>},
+    {"friction_demand", "-", "abs(reaction_x)/reaction_y (0 in flight)", false,
+     member<&History::friction_demand>},
+    {"kinetic_J", "J", "relative kinetic energy", false, member<&History::kinetic>},
+    {"potential_J", "J", "gravity + strain energy", false, member<&History::potential>},
+    {"input_work_J", "J", "work of the base motion, cumulative", false,
+     member<&History::input_work>},
+    {"damping_loss_J", "J", "energy lost to modal damping, cumulative", false,
+     member<&History::damping_loss>},
+    {"impact_loss_J", "J", "energy lost in impacts, cumulative", false,
+     member<&History::impact_loss>},
+    {"offset_m", "m",
+     "horizontal offset of the base centre (below the undeformed c.g.) from where the body "
+     "stood: changes only in flight",
+     false, member<&History::offset>},
+    {"lift_m", "m", "height of the lower tipping point above the floor: > 0 only in flight", false,
+     member<&History::lift>},
+};
+
+// a modal column's name for mode `i` (1-based); appended, not concatenated: GCC 12 warns
+// (-Wrestrict) on "q" + std::to_string(i)
+std::string column_name(const HistoryColumn& c, const std::string& i) {
+  std::string name(c.name);
+  const std::size_t at = name.find("{i}");
+  if (at != std::string::npos) name.replace(at, 3, i);
+  return name;
+}
+
+}  // namespace
+
 std::vector<std::string> time_history_columns(int modes) {
-  std::vector<std::string> c = {"time_s", "phase", "theta_rad", "theta_dot_rad_per_s", "uplift_m"};
-  // appended, not concatenated: GCC 12 warns (-Wrestrict) on "q" + std::to_string(i)
-  for (int i = 1; i <= modes; ++i) c.push_back(std::string("q").append(std::to_string(i)));
-  for (int i = 1; i <= modes; ++i) {
-    c.push_back(std::string("q").append(std::to_string(i)).append("_dot_per_s"));
-  }
-  for (const char* s :
-       {"base_acc_x_m_per_s2", "base_acc_y_m_per_s2", "reaction_x_N", "reaction_y_N", "resultant_m",
-        "friction_demand", "kinetic_J", "potential_J", "input_work_J", "damping_loss_J",
-        "impact_loss_J", "offset_m", "lift_m"}) {
-    c.push_back(s);
+  std::vector<std::string> c;
+  for (const HistoryColumn& col : kHistoryColumns) {
+    if (!col.modal) {
+      c.emplace_back(col.name);
+      continue;
+    }
+    for (int i = 1; i <= modes; ++i) c.push_back(column_name(col, std::to_string(i)));
   }
   return c;
 }
 
 std::vector<std::vector<double>> time_history_values(const SimulationResult& r, const Body& body) {
-  const History& h = r.history;
-  const int n = h.modes;
-  const std::size_t rows = h.size();
-  const auto modes = static_cast<std::size_t>(n);
+  const auto modes = static_cast<std::size_t>(r.history.modes);
   std::vector<std::vector<double>> cols;
-  cols.reserve(5 + 2 * modes + 13);
-  cols.push_back(h.time);
-  cols.emplace_back(h.phase.begin(), h.phase.end());
-  cols.push_back(h.theta);
-  cols.push_back(h.theta_dot);
-  // the height of the raised edge: the base width swung through |theta|, plus the lower
-  // edge's height in flight
-  const double width = body.params().b1 + body.params().b2;
-  std::vector<double> uplift(rows, 0.0);
-  for (std::size_t k = 0; k < rows; ++k) {
-    const double lift = k < h.lift.size() ? h.lift[k] : 0.0;
-    if (h.phase[k] != 0) uplift[k] = lift + width * std::sin(std::abs(h.theta[k]));
-  }
-  cols.push_back(std::move(uplift));
-  for (const std::vector<double>* v : {&h.q, &h.q_dot}) {
-    for (std::size_t i = 0; i < modes; ++i) {
-      std::vector<double> c(rows);
-      for (std::size_t k = 0; k < rows; ++k) c[k] = (*v)[k * modes + i];
-      cols.push_back(std::move(c));
-    }
-  }
-  for (const std::vector<double>* col :
-       {&h.base_acc_x, &h.base_acc_y, &h.reaction_x, &h.reaction_y, &h.resultant,
-        &h.friction_demand, &h.kinetic, &h.potential, &h.input_work, &h.damping_loss,
-        &h.impact_loss, &h.offset, &h.lift}) {
-    std::vector<double> c(*col);
-    c.resize(rows, std::nan(""));  // a column the engine did not fill is not a number
-    cols.push_back(std::move(c));
+  for (const HistoryColumn& col : kHistoryColumns) {
+    for (std::size_t i = 0; i < (col.modal ? modes : 1); ++i)
+      cols.push_back(col.values(r, body, i));
   }
   return cols;
+}
+
+std::string time_history_column_reference() {
+  std::string s =
+      "<!-- begin: written by `flexrock keys --markdown` from the table of time-history columns "
+      "(src/io/outputs.cpp); edit the table, not these lines -->\n"
+      "| column | unit | meaning |\n"
+      "|---|---|---|\n";
+  for (const HistoryColumn& c : kHistoryColumns) {
+    // appended, not concatenated: GCC 12 warns falsely on "`" + std::string (PR 105651)
+    std::string name("`");
+    if (c.modal) {
+      name.append(column_name(c, "1")).append("` ... `").append(column_name(c, "n"));
+    } else {
+      name.append(c.name);
+    }
+    name.append("`");
+    s += "| " + name + " | " + c.unit + " | " + c.doc + " |\n";
+  }
+  s += "<!-- end: written by `flexrock keys --markdown` -->\n";
+  return s;
 }
 
 void write_time_history(std::ostream& out, const SimulationResult& r, const Body& body) {

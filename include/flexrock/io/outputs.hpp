@@ -41,6 +41,10 @@ std::vector<std::string> time_history_columns(int modes);
 std::vector<std::vector<double>> time_history_values(const SimulationResult& result,
                                                      const Body& body);
 
+/// The column reference of the time history, as the Markdown table of docs/case-file.md, written
+/// from the table of columns with its begin and end marker lines (`flexrock keys --markdown`).
+std::string time_history_column_reference();
+
 /// The time history as CSV text (a header row, then one row per output time).
 void write_time_history(std::ostream& out, const SimulationResult& result, const Body& body);
 
