@@ -24,6 +24,7 @@
 #include "flexrock/core/error.hpp"
 #include "flexrock/io/case_file.hpp"
 #include "flexrock/io/outputs.hpp"
+#include "flexrock/io/study_files.hpp"
 #include "flexrock/sim/simulate.hpp"
 #include "flexrock/version.hpp"
 #include "plot_command.hpp"
@@ -411,7 +412,8 @@ int main(int argc, char** argv) {
   CLI::App* keys = app.add_subcommand(
       "keys",
       "Print the references of docs/case-file.md written from the library's tables: the "
-      "synthetic motion types and the time-history columns");
+      "synthetic motion types and the time-history columns; and of docs/studies.md: the "
+      "spectrum and sweep CSV columns");
   keys->add_flag("--markdown", markdown,
                  "as the Markdown table of docs/case-file.md (the default)");
 
@@ -434,7 +436,8 @@ int main(int argc, char** argv) {
     if (*check) return cmd_check(check_files, quiet);
     if (*params) return cmd_params(params_file);
     if (*keys) {
-      fmt::print("{}{}", io::pulse_key_reference(), io::time_history_column_reference());
+      fmt::print("{}{}{}", io::pulse_key_reference(), io::time_history_column_reference(),
+                 io::study_column_reference());
       return 0;
     }
     if (studies.selected()) return studies.run();

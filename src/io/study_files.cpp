@@ -274,35 +274,75 @@ SpectrumFile load_spectrum_file(const std::string& path) {
   return f;
 }
 
+namespace {
+
+// one column of the spectrum CSV: name, unit, meaning and its field of a cell. The header, the
+// rows and the column reference of docs/studies.md are written from this table
+struct SpectrumColumn {
+  const char* name;
+  const char* unit;
+  const char* doc;
+  std::string (*field)(const study::SpectrumResult& res, const study::SpectrumCell& c, double g);
+};
+
+using Res = study::SpectrumResult;
+using Cell = study::SpectrumCell;
+
+const SpectrumColumn kSpectrumColumns[] = {
+    {"row", "-", "grid index of the amplitude",
+     [](const Res&, const Cell& c, double) { return std::to_string(c.row); }},
+    {"column", "-", "grid index of the frequency",
+     [](const Res&, const Cell& c, double) { return std::to_string(c.column); }},
+    {"a_p_m_per_s2", "m/s^2", "pulse amplitude (record: the scaled record's PGA)",
+     [](const Res&, const Cell& c, double) { return num(c.amplitude_si); }},
+    {"a_p_over_g_tan_alpha", "-", "the same over g tan alpha",
+     [](const Res& res, const Cell& c, double g) {
+       return num(c.amplitude_si / (g * res.tan_alpha));
+     }},
+    {"omega_p_rad_per_s", "rad/s", "pulse frequency (record: 0)",
+     [](const Res&, const Cell& c, double) { return num(c.omega_si); }},
+    {"omega_p_over_p", "-", "the same over p",
+     [](const Res& res, const Cell& c, double) { return num(c.omega_si / res.p); }},
+    {"scale", "-", "record spectra: the factor (pulse spectra: empty)",
+     [](const Res&, const Cell& c, double) {
+       return c.omega_si == 0.0 ? num(c.amplitude) : std::string("");
+     }},
+    {"outcome", "-", "the outcome class above",
+     [](const Res&, const Cell& c, double) {
+       return std::string(study::to_string(c.run.outcome));
+     }},
+    {"overturned", "0/1", "1 for an overturning class",
+     [](const Res&, const Cell& c, double) {
+       return std::string(study::overturned(c.run.outcome) ? "1" : "0");
+     }},
+    {"max_theta_over_alpha", "-", "largest tilt over the overturning angle",
+     [](const Res&, const Cell& c, double) { return num(c.run.max_theta_over_alpha); }},
+    {"impacts", "-", "impacts during the run",
+     [](const Res&, const Cell& c, double) { return std::to_string(c.run.impacts); }},
+    {"first_uplift_time_s", "s", "-1: never",
+     [](const Res&, const Cell& c, double) { return num(c.run.first_uplift_time); }},
+    {"overturn_time_s", "s", "-1: never",
+     [](const Res&, const Cell& c, double) { return num(c.run.overturn_time); }},
+    {"energy_lost_J", "J", "impacts + chatter cut-offs + material damping",
+     [](const Res&, const Cell& c, double) { return num(c.run.energy_lost); }},
+    {"status", "-", "engine status: completed, overturned, stopped",
+     [](const Res&, const Cell& c, double) { return std::string(to_string(c.run.status)); }},
+};
+
+}  // namespace
+
 std::vector<std::string> spectrum_columns() {
-  return {"row",
-          "column",
-          "a_p_m_per_s2",
-          "a_p_over_g_tan_alpha",
-          "omega_p_rad_per_s",
-          "omega_p_over_p",
-          "scale",
-          "outcome",
-          "overturned",
-          "max_theta_over_alpha",
-          "impacts",
-          "first_uplift_time_s",
-          "overturn_time_s",
-          "energy_lost_J",
-          "status"};
+  std::vector<std::string> v;
+  for (const SpectrumColumn& c : kSpectrumColumns) v.emplace_back(c.name);
+  return v;
 }
 
 std::string spectrum_row(const study::SpectrumResult& res, const study::SpectrumCell& c, double g) {
-  const bool record = c.omega_si == 0.0;
-  const study::RunSummary& r = c.run;
-  std::string s = std::to_string(c.row) + "," + std::to_string(c.column) + ",";
-  s += num(c.amplitude_si) + "," + num(c.amplitude_si / (g * res.tan_alpha)) + ",";
-  s += num(c.omega_si) + "," + num(c.omega_si / res.p) + ",";
-  s += (record ? num(c.amplitude) : std::string("")) + ",";
-  s += std::string(study::to_string(r.outcome)) + "," + (study::overturned(r.outcome) ? "1" : "0");
-  s += "," + num(r.max_theta_over_alpha) + "," + std::to_string(r.impacts) + ",";
-  s += num(r.first_uplift_time) + "," + num(r.overturn_time) + "," + num(r.energy_lost) + ",";
-  s += to_string(r.status);
+  std::string s;
+  for (const SpectrumColumn& col : kSpectrumColumns) {
+    if (&col != kSpectrumColumns) s += ',';
+    s += col.field(res, c, g);
+  }
   return s;
 }
 
@@ -443,47 +483,125 @@ SweepManifest load_sweep_manifest(const std::string& path) {
   return m;
 }
 
+namespace {
+
+// one column of the sweep CSV: name, unit, meaning and its field of a row. The header, the rows
+// and the column reference of docs/studies.md are written from this table
+struct SweepColumn {
+  const char* name;
+  const char* unit;
+  const char* doc;
+  std::string (*field)(const study::SweepSpec& spec, const study::SweepRow& row);
+};
+
+using Spec = study::SweepSpec;
+using Row = study::SweepRow;
+
+const SweepColumn kSweepColumns[] = {
+    {"index", "-", "run index", [](const Spec&, const Row& r) { return std::to_string(r.index); }},
+    {"body", "-", "name of the body",
+     [](const Spec& s, const Row& r) { return s.bodies.at(r.body).name; }},
+    {"record", "-", "name of the record",
+     [](const Spec& s, const Row& r) { return s.records.at(r.record).name; }},
+    {"requested_level", "`requested_units`",
+     "the level as `[scales]` gives it: the factor, or the target PGA in `[scales] units`; the "
+     "same number for every record at one level (`pga_g` is computed and differs in the last "
+     "digits between records: group or pivot on `requested_level`)",
+     [](const Spec& s, const Row& r) {
+       const std::vector<double>& levels = s.levels.empty() ? s.scales : s.levels;
+       return num(levels.at(r.scale_index));
+     }},
+    {"requested_units", "-", "`-` for factors, else the `[scales] units` (`g`, `m/s^2`, `cm/s^2`)",
+     [](const Spec& s, const Row&) {
+       if (s.scale_kind == study::ScaleKind::kFactor) return std::string("-");
+       return s.level_units.empty() ? std::string("m/s^2") : s.level_units;
+     }},
+    {"scale", "-", "factor applied to the record",
+     [](const Spec&, const Row& r) { return num(r.scale); }},
+    {"pga_m_per_s2", "m/s^2",
+     "scaled record's peak \\|abs\\| horizontal acceleration over its samples",
+     [](const Spec&, const Row& r) { return num(r.pga); }},
+    {"pga_g", "g", "the same in g",
+     [](const Spec&, const Row& r) { return num(r.pga / kStandardGravity); }},
+    {"pgv_m_per_s", "m/s",
+     "scaled record's peak \\|velocity\\|: the trapezoidal integral of the acceleration from 0 at "
+     "the first sample, no baseline correction (the record's own processing is trusted); the "
+     "factor times the unscaled record's PGV",
+     [](const Spec&, const Row& r) { return num(r.pgv); }},
+    {"duration_s", "s", "simulated span: record + free motion",
+     [](const Spec&, const Row& r) { return num(r.duration); }},
+    {"outcome", "-", "outcome class",
+     [](const Spec&, const Row& r) { return std::string(study::to_string(r.run.outcome)); }},
+    {"overturned", "0/1", "1 for an overturning class",
+     [](const Spec&, const Row& r) {
+       return std::string(study::overturned(r.run.outcome) ? "1" : "0");
+     }},
+    {"overturn_edge", "-", "1 or 2 (0: none)",
+     [](const Spec&, const Row& r) { return std::to_string(r.run.overturn_edge); }},
+    {"overturn_time_s", "s", "-1: none",
+     [](const Spec&, const Row& r) { return num(r.run.overturn_time); }},
+    {"max_theta_rad", "rad", "largest tilt",
+     [](const Spec&, const Row& r) { return num(r.run.max_theta); }},
+    {"max_theta_over_alpha", "-", "largest tilt over the overturning angle",
+     [](const Spec&, const Row& r) { return num(r.run.max_theta_over_alpha); }},
+    {"impacts", "-", "impacts",
+     [](const Spec&, const Row& r) { return std::to_string(r.run.impacts); }},
+    {"first_uplift_time_s", "s", "-1: never",
+     [](const Spec&, const Row& r) { return num(r.run.first_uplift_time); }},
+    {"max_uplift_m", "m", "largest height of a lifted tipping point",
+     [](const Spec&, const Row& r) { return num(r.run.max_uplift); }},
+    {"max_impulse_N_s", "N s", "largest vertical impact impulse",
+     [](const Spec&, const Row& r) { return num(r.run.max_impulse); }},
+    {"energy_lost_J", "J", "impacts + chatter + damping",
+     [](const Spec&, const Row& r) { return num(r.run.energy_lost); }},
+    {"max_friction_demand", "-", "largest \\|F_I\\|/F_J, impulses included",
+     [](const Spec&, const Row& r) { return num(r.run.max_friction_demand); }},
+    {"status", "-", "engine status",
+     [](const Spec&, const Row& r) { return std::string(to_string(r.run.status)); }},
+    {"message", "-", "why a stopped run stopped (commas replaced by `;`)",
+     [](const Spec&, const Row& r) {
+       std::string msg = r.message;
+       for (char& c : msg) {
+         if (c == ',' || c == '"') c = ';';
+         if (c == '\n' || c == '\r') c = ' ';
+       }
+       return msg;
+     }},
+};
+
+}  // namespace
+
 std::vector<std::string> sweep_columns() {
-  return {"index",           "body",
-          "record",          "requested_level",
-          "requested_units", "scale",
-          "pga_m_per_s2",    "pga_g",
-          "pgv_m_per_s",     "duration_s",
-          "outcome",         "overturned",
-          "overturn_edge",   "overturn_time_s",
-          "max_theta_rad",   "max_theta_over_alpha",
-          "impacts",         "first_uplift_time_s",
-          "max_uplift_m",    "max_impulse_N_s",
-          "energy_lost_J",   "max_friction_demand",
-          "status",          "message"};
+  std::vector<std::string> v;
+  for (const SweepColumn& c : kSweepColumns) v.emplace_back(c.name);
+  return v;
 }
 
 std::string sweep_row(const study::SweepSpec& spec, const study::SweepRow& row) {
-  const study::RunSummary& r = row.run;
-  std::string msg = row.message;
-  for (char& c : msg) {
-    if (c == ',' || c == '"') c = ';';
-    if (c == '\n' || c == '\r') c = ' ';
+  std::string s;
+  for (const SweepColumn& col : kSweepColumns) {
+    if (&col != kSweepColumns) s += ',';
+    s += col.field(spec, row);
   }
-  std::string s = std::to_string(row.index) + "," + spec.bodies.at(row.body).name + "," +
-                  spec.records.at(row.record).name + ",";
-  // the level as requested: the same number for every record at that level (pga_g is not)
-  const bool factor = spec.scale_kind == study::ScaleKind::kFactor;
-  const std::vector<double>& levels = spec.levels.empty() ? spec.scales : spec.levels;
-  s += num(levels.at(row.scale_index)) + "," +
-       (factor                     ? std::string("-")
-        : spec.level_units.empty() ? "m/s^2"
-                                   : spec.level_units) +
-       ",";
-  s += num(row.scale) + "," + num(row.pga) + "," + num(row.pga / kStandardGravity) + "," +
-       num(row.pgv) + "," + num(row.duration) + ",";
-  s += std::string(study::to_string(r.outcome)) + "," + (study::overturned(r.outcome) ? "1" : "0");
-  s += "," + std::to_string(r.overturn_edge) + "," + num(r.overturn_time) + ",";
-  s += num(r.max_theta) + "," + num(r.max_theta_over_alpha) + "," + std::to_string(r.impacts) + ",";
-  s += num(r.first_uplift_time) + "," + num(r.max_uplift) + "," + num(r.max_impulse) + "," +
-       num(r.energy_lost) + "," + num(r.max_friction_demand) + ",";
-  s += std::string(to_string(r.status)) + "," + msg;
   return s;
+}
+
+std::string study_column_reference() {
+  auto block = [](const char* what, auto& columns) {
+    std::string s = std::string(
+                        "<!-- begin: written by `flexrock keys --markdown` from the table "
+                        "of ") +
+                    what +
+                    " columns (src/io/study_files.cpp); edit the table, not these lines -->\n"
+                    "| column | unit | meaning |\n"
+                    "|---|---|---|\n";
+    for (const auto& c : columns) {
+      s.append("| `").append(c.name).append("` | ").append(c.unit).append(" | ").append(c.doc);
+      s.append(" |\n");
+    }
+    return s + "<!-- end: written by `flexrock keys --markdown` -->\n";
+  };
+  return block("spectrum", kSpectrumColumns) + block("sweep", kSweepColumns);
 }
 
 // ---------------------------------------------------------------------------------------------
