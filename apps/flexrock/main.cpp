@@ -144,6 +144,14 @@ void print_summary(const io::Case& c, const Body& body, const SimulationResult& 
   if (r.impact_gained_energy) {
     fmt::print("warning: an impact gained energy (check restitution_factor)\n");
   }
+  if (r.energy_unbalanced) {
+    fmt::print(
+        "warning: the energy balance does not close: |residual| {:.3g} J is above its bound "
+        "{:.3g} J ({:g} of the scale + {:g} M g h, docs/reliability.md); the results are "
+        "suspect: tighten rtol/atol or report the case (events: energy_unbalanced)\n",
+        std::abs(e.residual), energy_residual_bound(body, e.scale), kEnergyResidualRelative,
+        kEnergyResidualFloor);
+  }
   if (!quiet) {
     for (const std::string* s : {&paths.time_history, &paths.events, &paths.summary}) {
       if (!s->empty()) fmt::print("wrote {}\n", *s);

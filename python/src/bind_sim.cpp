@@ -57,7 +57,8 @@ void bind_sim(py::module_& m) {
       .value("pivot_tension", EventKind::kPivotTension)
       .value("friction_exceeded", EventKind::kFrictionExceeded)
       .value("impact_gained_energy", EventKind::kImpactGainedEnergy)
-      .value("stopped", EventKind::kStopped);
+      .value("stopped", EventKind::kStopped)
+      .value("energy_unbalanced", EventKind::kEnergyUnbalanced);
   py::enum_<OverturnCriterion>(m, "OverturnCriterion")
       .value("static_instability", OverturnCriterion::kStaticInstability)
       .value("half_pi", OverturnCriterion::kHalfPi);
@@ -172,6 +173,7 @@ void bind_sim(py::module_& m) {
       .def_readonly("friction_exceeded", &SimulationResult::friction_exceeded)
       .def_readonly("chatter_cut_off", &SimulationResult::chatter_cut_off)
       .def_readonly("impact_gained_energy", &SimulationResult::impact_gained_energy)
+      .def_readonly("energy_unbalanced", &SimulationResult::energy_unbalanced)
       .def_readonly("pivot_tension", &SimulationResult::pivot_tension)
       .def_readonly("final_offset", &SimulationResult::final_offset, "[m]")
       .def_readonly("history", &SimulationResult::history)

@@ -144,6 +144,22 @@ def test_flexible_body_history_has_one_column_per_mode():
     np.testing.assert_array_equal(th["q1_dot_per_s"], r.history.q_dot[:, 0])
 
 
+def test_a_run_whose_energy_balance_does_not_close_says_so():
+    # a cantilever rocking under 0.5 g: the default tolerances close the balance to ~1e-8 of
+    # the scale; rtol = atol = 1e-3 leaves a residual of 2 % of it, above 1e-5 scale + 1e-10 M g h
+    p = fr.uniform_cantilever(10.0, 3.0, 2000.0, 5e9, modes=2, base_mass=1000.0)
+    motion = fr.harmonic(0.5 * 9.81, 2.0, 4.0)
+    ok = fr.simulate(p, motion)
+    assert ok.extremes.impacts > 0
+    assert not ok.energy_unbalanced
+    assert all(e.kind != fr.EventKind.energy_unbalanced for e in ok.events)
+    bad = fr.simulate(p, motion, rtol=1e-3, atol=1e-3)
+    assert abs(bad.energy.residual) > 1e-3 * bad.energy.scale
+    assert bad.energy_unbalanced
+    assert bad.events[-1].kind == fr.EventKind.energy_unbalanced
+    assert bad.events[-1].energy_loss == bad.energy.residual
+
+
 def test_options_by_keyword_and_initial_state():
     body = fr.rigid_block(0.4, 1.8, 800.0)
     init = fr.InitialState(theta=0.1)

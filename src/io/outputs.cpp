@@ -567,7 +567,8 @@ std::string summary_json(const Case& c, const Body& body, const SimulationResult
   j["warnings"] = {{"friction_exceeded", r.friction_exceeded},
                    {"chatter_cut_off", r.chatter_cut_off},
                    {"impact_gained_energy", r.impact_gained_energy},
-                   {"pivot_tension", r.pivot_tension}};
+                   {"pivot_tension", r.pivot_tension},
+                   {"energy_unbalanced", r.energy_unbalanced}};
   const SimulationOptions& o = c.options;
   j["solver"] = {
       {"rtol", o.rtol},

@@ -50,6 +50,8 @@ const char* to_string(EventKind k) {
       return "impact_gained_energy";
     case EventKind::kStopped:
       return "stopped";
+    case EventKind::kEnergyUnbalanced:
+      return "energy_unbalanced";
   }
   return "?";
 }
@@ -112,10 +114,25 @@ template <int N, int MaxN>
 SimulationResult run(const Body& body, const GroundMotion& motion, const InitialState& init,
                      const SimulationOptions& opt) {
   detail::Simulator<N, MaxN> sim(body, motion, opt);
-  return sim.run(init);
+  SimulationResult r = sim.run(init);
+  // no silent physics: a balance that does not close says so
+  if (!(std::abs(r.energy.residual) <= energy_residual_bound(body, r.energy.scale))) {
+    r.energy_unbalanced = true;
+    Event ev;
+    ev.time = r.t_end;
+    ev.kind = EventKind::kEnergyUnbalanced;
+    ev.energy_loss = r.energy.residual;
+    r.events.push_back(ev);
+  }
+  return r;
 }
 
 }  // namespace
+
+double energy_residual_bound(const Body& body, double scale) {
+  const BodyParameters& p = body.params();
+  return kEnergyResidualRelative * scale + kEnergyResidualFloor * p.mass * p.gravity * p.height;
+}
 
 void validate_options(const Body& body, const InitialState& init,
                       const SimulationOptions& options) {

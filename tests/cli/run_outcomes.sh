@@ -47,6 +47,22 @@ run "$FLEXROCK" run -o "$WORK/file/sub" "$WORK/ok.toml"
 expect_rc 1 "unwritable output directory"
 expect_in "$WORK/err" "could not write the outputs"
 
+# a run whose energy balance does not close says so on the console and in the summary: the
+# flexible tank at rtol = atol = 1e-3 (its default run closes the balance, checked as well)
+cp "$SRC/examples/cases/flexible_tank.toml" "$WORK/tank.toml"
+run "$FLEXROCK" run -o "$WORK/res3" "$WORK/tank.toml"
+expect_rc 0 "tank at the default tolerances"
+if grep -q "energy balance does not close" "$WORK/out"; then fail "default run flagged"; fi
+[ "$(json_get "$WORK/res3/tank.summary.json" warnings.energy_unbalanced)" = 'false' ] ||
+  fail "default run: warnings.energy_unbalanced"
+printf '\n[solver]\nrtol = 1e-3\natol = 1e-3\n[output]\nevents = "tank.events.csv"\n' >>"$WORK/tank.toml"
+run "$FLEXROCK" run -o "$WORK/res3" "$WORK/tank.toml"
+expect_rc 0 "tank at rtol 1e-3"
+expect_in "$WORK/out" "warning: the energy balance does not close"
+[ "$(json_get "$WORK/res3/tank.summary.json" warnings.energy_unbalanced)" = 'true' ] ||
+  fail "loose run: warnings.energy_unbalanced"
+expect_in "$WORK/res3/tank.events.csv" "energy_unbalanced"
+
 # params: the derived parameters of a flexible body
 run "$FLEXROCK" params "$SRC/examples/cases/flexible_tank.toml"
 expect_rc 0 "params"

@@ -7,9 +7,11 @@
 
 #include <atomic>
 #include <cmath>
+#include <random>
 #include <vector>
 
 #include "flexrock/core/error.hpp"
+#include "support/bodies.hpp"
 
 namespace flexrock {
 namespace {
@@ -61,6 +63,47 @@ TEST(Simulate, RestitutionFactorThatAddsEnergyIsFlagged) {
   // the balance still closes: the "loss" is negative and booked as such
   EXPECT_LT(r.energy.impact_loss, 0.0);
   EXPECT_LT(std::abs(r.energy.residual), 1e-8 * r.energy.scale);
+}
+
+TEST(Simulate, EnergyBalanceThatDoesNotCloseIsFlagged) {
+  // a two-mode body rocking under 4 s of 0.6 g noise: at the default tolerances the residual is
+  // ~1e-8 of the scale; at rtol = atol = 1e-3 the integration error breaks the balance by ~3e-3
+  // of the scale, far above the documented bound 1e-5 scale + 1e-10 M g h
+  BodyParameters p = test::random_lumped_body(2, 7u, 1e4);
+  p.damping.kind = DampingKind::kModal;
+  p.damping.modal_ratios = VectorX::Constant(2, 0.05);
+  const Body body(p);
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  std::vector<double> ax;
+  for (int k = 0; k < 400; ++k) ax.push_back(0.6 * g * u(rng));
+  const GroundMotion m = GroundMotion::uniform(0.01, ax, {});
+  const double mgh = p.mass * p.gravity * p.height;
+  SimulationOptions opt;
+  const SimulationResult ok = simulate(body, m, {}, opt);
+  ASSERT_GT(ok.extremes.first_uplift_time, 0.0);
+  EXPECT_FALSE(ok.energy_unbalanced);
+  EXPECT_FALSE(has_event(ok, EventKind::kEnergyUnbalanced));
+  EXPECT_LT(std::abs(ok.energy.residual), 1e-5 * ok.energy.scale);
+  opt.rtol = opt.atol = 1e-3;
+  const SimulationResult bad = simulate(body, m, {}, opt);
+  EXPECT_EQ(bad.status, Status::kCompleted);
+  EXPECT_GT(std::abs(bad.energy.residual), 1e-4 * bad.energy.scale + 1e-10 * mgh);
+  EXPECT_TRUE(bad.energy_unbalanced);
+  ASSERT_FALSE(bad.events.empty());
+  // the event is the last, at the end, and carries the residual
+  const Event& last = bad.events.back();
+  EXPECT_EQ(last.kind, EventKind::kEnergyUnbalanced);
+  EXPECT_EQ(last.time, bad.t_end);
+  EXPECT_EQ(last.energy_loss, bad.energy.residual);
+  EXPECT_STREQ(to_string(EventKind::kEnergyUnbalanced), "energy_unbalanced");
+}
+
+TEST(Simulate, EnergyResidualBoundIsTheDocumentedOne) {
+  // 1e-5 of the scale plus 1e-10 M g h (docs/reliability.md), M g h from the inputs
+  const Body body(BodyParameters::rectangular_block(250.0, 0.4, 1.0));  // h = 1 m
+  EXPECT_DOUBLE_EQ(energy_residual_bound(body, 0.0), 1e-10 * 250.0 * g * 1.0);
+  EXPECT_DOUBLE_EQ(energy_residual_bound(body, 3.0), 3e-5 + 1e-10 * 250.0 * g * 1.0);
 }
 
 TEST(Simulate, StepLimitStopsWithAReason) {

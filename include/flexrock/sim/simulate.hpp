@@ -52,7 +52,15 @@ enum class EventKind {
   kTensileLanding,      // a plastic landing needed a pulling impulse: the sticking model breaks
   kPivotTension,        // the vertical reaction vanished but the body cannot fly off its sticking
                         // pivot (it would have to slide): the floor is let pull until it presses
+  kEnergyUnbalanced,    // at the end: |energy residual| above its bound (`energy_loss`: residual)
 };
+
+/// The bound on the energy balance's residual that runs at the default tolerances meet
+/// (docs/reliability.md): |residual| <= kEnergyResidualRelative * scale + kEnergyResidualFloor *
+/// M g h. A run above it is flagged (`energy_unbalanced`, an `energy_unbalanced` event), not
+/// stopped: its numbers are suspect (a loose rtol/atol, or a defect).
+inline constexpr double kEnergyResidualRelative = 1e-5;
+inline constexpr double kEnergyResidualFloor = 1e-10;
 
 const char* to_string(Status s);
 const char* to_string(EventKind k);
@@ -175,7 +183,12 @@ struct SimulationResult {
   EnergyBalance energy;
   std::vector<Event> events;
   long steps = 0, rejected_steps = 0, rhs_evaluations = 0;
+  bool energy_unbalanced = false;  // |energy.residual| above energy_residual_bound
 };
+
+/// The largest |energy residual| [J] a run of `body` with this energy scale may have
+/// (kEnergyResidualRelative, kEnergyResidualFloor); a NaN residual is above any bound.
+double energy_residual_bound(const Body& body, double scale);
 
 /// The one overturning rule of every entry point (run, sweep, spectrum, Python): the engine's
 /// status, set when |theta| reaches the criterion's angle in any contact mode.
