@@ -1,43 +1,85 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// The modes of the full-contact state matrix, for the exact propagation (contact_propagator.hpp).
+// The pinned-base modes of the full-contact equations and the exact step of one mode, for the
+// exact propagation (contact_propagator.hpp).
 #include <Eigen/Eigenvalues>
-#include <Eigen/LU>
+#include <algorithm>
 #include <cmath>
 
 #include "contact_propagator.hpp"
 
 namespace flexrock::detail {
 
-bool decompose_contact_matrix(const MatrixX& a, ContactModes& out) {
-  Eigen::EigenSolver<MatrixX> es(a);
-  if (es.info() != Eigen::Success) return false;
-  out.v = es.eigenvectors();
-  out.lambda = es.eigenvalues();
-  out.v_inv = Eigen::PartialPivLU<Eigen::MatrixXcd>(out.v).inverse();
-  // a nearly defective A (repeated eigenvalues, critical damping) has nearly parallel
-  // eigenvectors: its exponential from them would lose digits
-  const double cond =
-      out.v.cwiseAbs().rowwise().sum().maxCoeff() * out.v_inv.cwiseAbs().rowwise().sum().maxCoeff();
-  if (!(cond < 1e6)) return false;
-  const Eigen::MatrixXcd back = out.v * out.lambda.asDiagonal() * out.v_inv;
-  if (!((back.real() - a).cwiseAbs().maxCoeff() <= 1e-10 * a.cwiseAbs().maxCoeff())) return false;
-  // A is singular only with a zero-frequency mode, which a body cannot have; guard anyway
-  const Eigen::PartialPivLU<MatrixX> lu(a);
-  if (!(lu.rcond() > 1e-12)) return false;
-  out.a_inv = lu.inverse();
-  out.scratch.setZero(a.rows());
-  out.product.setZero(a.rows(), a.cols());
-  out.full.setZero(a.rows(), a.cols());
-  out.transition.setZero(a.rows(), a.cols());
-  return true;
+bool decompose_contact_matrix(const MatrixX& mu, const MatrixX& k, const MatrixX& c,
+                              ContactModes& out) {
+  const Eigen::Index n = mu.rows();
+  if (n == 0 || !mu.allFinite() || !k.allFinite() || !c.allFinite()) return false;
+  // K phi = omega^2 mu phi with phi^T mu phi = I: a mu-orthonormal basis, so the change of
+  // coordinates is perfectly conditioned in the energy norm whatever the spread of frequencies
+  Eigen::GeneralizedSelfAdjointEigenSolver<MatrixX> ges(k, mu);
+  if (ges.info() != Eigen::Success) return false;
+  const VectorX w2 = ges.eigenvalues();
+  if (!(w2.minCoeff() > 0.0) || !w2.allFinite()) return false;
+  out.from_modal = ges.eigenvectors();
+  out.to_modal = out.from_modal.transpose() * mu;
+  out.omega = w2.cwiseSqrt();
+  // the damping must decouple the modes (Rayleigh and modal damping do, up to rounding): a
+  // coupled damping matrix is left to the integrator
+  const MatrixX d = out.from_modal.transpose() * c * out.from_modal;
+  const double scale = std::max(d.cwiseAbs().maxCoeff(), 1e-300);
+  out.damping = d.diagonal();
+  for (Eigen::Index i = 0; i < n; ++i) {
+    for (Eigen::Index j = 0; j < n; ++j) {
+      if (i != j && !(std::abs(d(i, j)) <= 1e-9 * scale)) return false;
+    }
+    if (!(out.damping(i) >= -1e-12 * scale)) return false;
+    out.damping(i) = std::max(out.damping(i), 0.0);
+  }
+  // the largest |eigenvalue| of a mode's 2x2 matrix [0 w; -w -c]: w underdamped, else the fast
+  // real root (c + sqrt(c^2 - 4 w^2)) / 2
+  out.rate = 0.0;
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const double w = out.omega(i), cd = out.damping(i);
+    const double r = cd <= 2.0 * w ? w : 0.5 * (cd + std::sqrt(cd * cd - 4.0 * w * w));
+    out.rate = std::max(out.rate, r);
+  }
+  return std::isfinite(out.rate) && out.rate > 0.0;
 }
 
-void contact_transition(ContactModes& modes, double tau) {
-  for (Eigen::Index i = 0; i < modes.lambda.size(); ++i)
-    modes.scratch(i) = std::exp(modes.lambda(i) * tau);
-  modes.product.noalias() = modes.v * modes.scratch.asDiagonal();
-  modes.full.noalias() = modes.product * modes.v_inv;
-  modes.transition = modes.full.real();
+void mode_step(double omega, double damping, double tau, ModeStep& out) {
+  // e^{X}, phi1(X) = sum X^k/(k+1)! and phi2(X) = sum X^k/(k+2)! of X = B t, t = tau / 2^s,
+  // by their Taylor series where |X| <= 1/2 (every term positive in norm, no cancellation), then
+  // doubled s times:  E(2t) = E(t)^2,  I1(2t) = (I + E(t)) I1(t),
+  // I2(2t) = (I + E(t)) I2(t) + t I1(t)  for I1 = int_0^t e^{Bs} ds = t phi1 and
+  // I2 = int_0^t e^{B(t-s)} s ds = t^2 phi2 (only their velocity columns: the forcing's).
+  // Van Loan's exponential of [B t, I, 0; 0, 0, I; 0, 0, 0] gives the same, at several times
+  // the cost (it is the reference of the test).
+  const double norm = tau * std::max(omega, omega + damping);  // >= |B tau| (inf-norm)
+  int s = 0;
+  if (norm > 0.5) s = std::max(0, static_cast<int>(std::ceil(std::log2(norm / 0.5))));
+  const double t = std::ldexp(tau, -s);
+  Eigen::Matrix2d x;
+  x << 0.0, omega * t, -omega * t, -damping * t;
+  Eigen::Matrix2d term = Eigen::Matrix2d::Identity(), e = term, p1 = term, p2 = 0.5 * term;
+  for (int k = 1; k < 40; ++k) {
+    term = term * x / static_cast<double>(k);
+    const double kk = static_cast<double>(k);
+    e += term;
+    p1 += term / (kk + 1.0);
+    p2 += term / ((kk + 1.0) * (kk + 2.0));
+    if (term.cwiseAbs().maxCoeff() < 1e-18) break;
+  }
+  Eigen::Vector2d i1 = t * p1.col(1), i2 = t * t * p2.col(1);
+  double ti = t;
+  for (int j = 0; j < s; ++j) {
+    const Eigen::Vector2d i1_old = i1;
+    i2 += e * i2 + ti * i1_old;
+    i1 += e * i1_old;
+    e = e * e;
+    ti *= 2.0;
+  }
+  out.e = e;
+  out.p1 = i1;
+  out.p2 = i2;
 }
 
 }  // namespace flexrock::detail

@@ -3,27 +3,28 @@
 //
 // In full contact the modal equations are linear with constant coefficients (docs/theory.md,
 // "Exact propagation in full contact"):
-//   y' = A y + f(t),   y = (q, q_dot),   A = [0 I; -mu^-1 K  -mu^-1 C],
-//   f = (0, -(g/h) mu^-1 (psi_x Xdd/g + psi_y (1 + Ydd/g))),
-// and a sampled record is linear between samples, so f = f0 + f1 tau on each step. With the
-// particular solution c0 + c1 tau (c1 = -A^-1 f1, c0 = A^-1 (c1 - f0)) the step is exact:
-//   y(t0 + tau) = e^{A tau} (y0 - c0) + c0 + c1 tau,
-// which is the Nigam-Jennings idea of response-spectrum codes. e^{A tau} = V e^{Lambda tau} V^-1
-// from the eigenvectors of A, computed once per run; a body whose A is defective or nearly so
-// (a mode damped exactly critically) is left to the integrator. The input work and the damping
-// loss are Gauss-Legendre quadratures of their exact integrands.
+//   mu q'' + C q' + K q = -(g/h) (psi_x Xdd/g + psi_y (1 + Ydd/g)),
+// and a sampled record is linear between samples. In the pinned-base modes (K phi = w^2 mu phi,
+// phi^T mu phi = I; C decouples them) each mode is a 2x2 system in energy coordinates
+//   s = (w (eta - eta_static), eta'),   s' = [0 w; -w -c] s + (0, g0 + g1 tau),
+// whose exact step s(tau) = e^{B tau} s0 + tau phi1(B tau) (0, g0) + tau^2 phi2(B tau) (0, g1)
+// comes from the Taylor series of e^X, phi1 and phi2 at |X| <= 1/2 and doubling (mode_step; equal
+// to Van Loan's 6x6 exponential to 2e-15 for |B tau| up to the step cap). Nothing is inverted or
+// cancelled: the change of coordinates is orthonormal in the energy norm and |e^{B tau}| <= 1, so
+// the rounding of a step is a few ulp of the state's energy however far apart the frequencies
+// are. (The former V e^{Lambda tau} V^-1 (y0 - c0) + c0 + c1 tau on the first-order system lost
+// digits twice: cond(V) ~ 1e4-1e5 on coupled, widely spread modes, times a particular solution
+// c0 ~ 1e4 times the state.) The input work and the damping loss are Gauss-Legendre quadratures
+// of their exact integrands.
 //
 // Hand-written: no packaged propagator takes piecewise-linear forcing with a dense output at
-// arbitrary times, and Eigen's matrix exponential (unsupported/MatrixFunctions) costs a Pade
-// approximant and a scaling-and-squaring per call, where this costs one complex exponential per
-// eigenvalue and reuses those of the usual step length.
+// arbitrary times; the usual step's exponentials are computed once and kept.
 #pragma once
 
 #include <Eigen/Core>
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <complex>
 #include <vector>
 
 #include "flexrock/excitation/ground_motion.hpp"
@@ -32,35 +33,36 @@
 
 namespace flexrock::detail {
 
-// The modes of the full-contact state matrix A, found once per run on dynamic sizes (one
-// instantiation of the eigensolver for every body size keeps the build short).
+// The pinned-base modes of the full-contact equations, found once per run on dynamic sizes.
 struct ContactModes {
-  Eigen::MatrixXcd v, v_inv;  // eigenvectors of A and their inverse
-  Eigen::VectorXcd lambda;    // eigenvalues of A
-  MatrixX a_inv;              // A^-1
-  Eigen::VectorXcd scratch;   // e^{lambda tau}
-  Eigen::MatrixXcd product;   // V e^{Lambda tau}
-  Eigen::MatrixXcd full;      // V e^{Lambda tau} V^-1
-  MatrixX transition;         // e^{A tau}, real
+  MatrixX from_modal;  // phi: q = phi eta
+  MatrixX to_modal;    // phi^T mu: eta = phi^T mu q
+  VectorX omega;       // [rad/s] pinned-base frequencies
+  VectorX damping;     // [1/s] c_i = phi_i^T C phi_i
+  double rate = 0.0;   // [1/s] the largest |eigenvalue| of the full-contact equations
 };
 
-/// Decomposes A = V Lambda V^-1; false when A is (nearly) defective or singular, where the
-/// body is integrated instead. (src/sim/contact_modes.cpp)
-bool decompose_contact_matrix(const MatrixX& a, ContactModes& out);
-/// out.transition = e^{A tau}; allocates nothing after the decomposition.
-void contact_transition(ContactModes& modes, double tau);
+// The exact step of one mode over tau: e^{B tau}, and the velocity columns of tau phi1(B tau)
+// and tau^2 phi2(B tau) (s = (w (eta - eta_static), eta'))
+struct ModeStep {
+  Eigen::Matrix2d e = Eigen::Matrix2d::Zero();
+  Eigen::Vector2d p1 = Eigen::Vector2d::Zero();
+  Eigen::Vector2d p2 = Eigen::Vector2d::Zero();
+};
+
+/// The mu-orthonormal pinned-base modes of (mu, K, C); false when they cannot be found or C does
+/// not decouple them, where the body is integrated instead. (src/sim/contact_modes.cpp)
+bool decompose_contact_matrix(const MatrixX& mu, const MatrixX& k, const MatrixX& c,
+                              ContactModes& out);
+/// The exact step of the mode (omega, damping) over tau; allocates nothing.
+void mode_step(double omega, double damping, double tau, ModeStep& out);
 
 template <int N, int MaxN, class State>
 class ContactPropagator {
  public:
-  static constexpr int Y = N == Eigen::Dynamic ? Eigen::Dynamic : 2 * N;
-  static constexpr int MaxY = MaxN == Eigen::Dynamic ? Eigen::Dynamic : 2 * MaxN;
-  using Real = Eigen::Matrix<double, Y, 1, Eigen::ColMajor, MaxY, 1>;
-  using RealMat = Eigen::Matrix<double, Y, Y, Eigen::ColMajor, MaxY, MaxY>;
-  using Cplx = Eigen::Matrix<std::complex<double>, Y, 1, Eigen::ColMajor, MaxY, 1>;
-  using CplxMat = Eigen::Matrix<std::complex<double>, Y, Y, Eigen::ColMajor, MaxY, MaxY>;
   using Dyn = Dynamics<N, MaxN>;
   using Vec = typename Dyn::Vec;
+  using Mat = typename Dyn::Mat;
 
   // the largest |lambda| tau of a step: keeps the event samples a fraction of the fastest
   // period apart and the 8-point Gauss-Legendre quadrature of the energies near round-off
@@ -71,26 +73,22 @@ class ContactPropagator {
                     bool enabled)
       : dyn_(dyn), motion_(motion), n_(dyn.modes()), samples_(samples), max_step_(max_step) {
     if (!enabled || n_ == 0 || !motion.is_sampled()) return;
-    const int m = 2 * n_;
-    MatrixX a = MatrixX::Zero(m, m);
-    a.topRightCorner(n_, n_).setIdentity();
-    a.bottomLeftCorner(n_, n_) = -(dyn.mu_inverse() * dyn.stiffness());
-    a.bottomRightCorner(n_, n_) = -(dyn.mu_inverse() * dyn.damping());
-    if (!decompose_contact_matrix(a, modes_)) return;
-    v_ = modes_.v;
-    v_inv_ = modes_.v_inv;
-    lambda_ = modes_.lambda;
-    a_inv_ = modes_.a_inv;
-    a_ = a;
-    h_cap_ = kMaxPhase / lambda_.cwiseAbs().maxCoeff();
-    gx_ = -dyn.g_over_h() * (dyn.mu_inverse() * dyn.psi_x()) / dyn.g();
-    gy_ = -dyn.g_over_h() * (dyn.mu_inverse() * dyn.psi_y());
-    for (Real* v : {&c0_, &c1_, &z_, &az_, &f_, &yt_, &yd_, &zd_}) v->setZero(m);
-    ex_.setZero(m);
-    w_.setZero(m);
-    cache_.assign(static_cast<std::size_t>(samples_ + 1 + kNodes), RealMat::Zero(m, m));
-    q_.setZero(n_);
-    qd_.setZero(n_);
+    ContactModes modes;
+    if (!decompose_contact_matrix(dyn.mu(), dyn.stiffness(), dyn.damping(), modes)) return;
+    from_modal_ = modes.from_modal;
+    to_modal_ = modes.to_modal;
+    omega_ = modes.omega;
+    damp_ = modes.damping;
+    h_cap_ = kMaxPhase / modes.rate;
+    // the modal forcing per unit base acceleration, and gravity's static part
+    gxm_ = -dyn.g_over_h() * (from_modal_.transpose() * dyn.psi_x()) / dyn.g();
+    gym_ = -dyn.g_over_h() * (from_modal_.transpose() * dyn.psi_y());
+    eta_static_ = gym_.cwiseQuotient(omega_.cwiseProduct(omega_));
+    for (Vec* v : {&g0_, &g1_, &sd0_, &sv0_, &eta_, &etad_, &q_, &qd_, &qo_, &qdo_}) v->setZero(n_);
+    const auto cells =
+        static_cast<std::size_t>(samples_ + 1 + kNodes) * static_cast<std::size_t>(n_);
+    cache_.assign(cells, ModeStep{});
+    scratch_.assign(static_cast<std::size_t>(n_), ModeStep{});
     available_ = true;
   }
 
@@ -135,10 +133,10 @@ class ContactPropagator {
   /// ends are cubic Hermite in their values and rates there (exact at the ends).
   void dense(double t, State& out) const {
     const double tau = t - t0_;
-    at(tau, yd_);
+    at(tau, qo_, qdo_);
     out = x0_;
-    out.segment(1, n_) = yd_.head(n_);
-    out.segment(n_ + 2, n_) = yd_.tail(n_);
+    out.segment(1, n_) = qo_;
+    out.segment(n_ + 2, n_) = qdo_;
     const double s = h_ > 0.0 ? tau / h_ : 0.0, s2 = s * s, s3 = s2 * s;
     const double h00 = 2 * s3 - 3 * s2 + 1, h10 = s3 - 2 * s2 + s, h01 = -2 * s3 + 3 * s2,
                  h11 = s3 - s2;
@@ -162,99 +160,102 @@ class ContactPropagator {
     a0_ = {l.x - slope_.x * h / 3.0, l.y - slope_.y * h / 3.0};
   }
 
-  // f's lower half for a base acceleration
-  Vec lower(BaseAcceleration a) const { return gx_ * a.x + gy_ * (1.0 + a.y / dyn_.g()); }
-
-  void transition(double tau, RealMat& e) {
-    contact_transition(modes_, tau);
-    e = modes_.transition;
-  }
-
-  // the usual step length (a record interval, or a part of it): e^{A tau} at its event-sample
-  // fractions and quadrature nodes, kept. Steps of a uniform record differ from it by rounding
-  // (a few ulp of t); e^{A (tau + d)} z = e^{A tau} (z + d A z) + O((|lambda| d)^2) corrects that
-  // to ~1e-20.
+  // the usual step length (a record interval, or a part of it): the modes' steps at its
+  // event-sample fractions and quadrature nodes, kept. Steps of a uniform record differ from it
+  // by rounding (a few ulp of t); s(tau + d) = s(tau) + d s'(tau) + O((|lambda| d)^2) corrects
+  // that to ~1e-20.
   bool usual(double h) const { return std::abs(h - cache_h_) <= 1e-9 * h; }
   void fill_cache(double h) {
     cache_h_ = h;
-    for (int k = 0; k <= samples_; ++k)
-      transition(h * k / samples_, cache_[static_cast<std::size_t>(k)]);
-    for (int j = 0; j < kNodes; ++j)
-      transition(h * kGaussX[j], cache_[static_cast<std::size_t>(samples_ + 1 + j)]);
+    for (int k = 0; k <= samples_ + kNodes; ++k) {
+      const double tau = k <= samples_ ? h * k / samples_ : h * kGaussX[k - samples_ - 1];
+      for (int i = 0; i < n_; ++i) mode_step(omega_(i), damp_(i), tau, cell(k, i));
+    }
+  }
+  ModeStep& cell(int k, int i) {
+    return cache_[static_cast<std::size_t>(k) * static_cast<std::size_t>(n_) +
+                  static_cast<std::size_t>(i)];
+  }
+  const ModeStep* row(int k) const {
+    return &cache_[static_cast<std::size_t>(k) * static_cast<std::size_t>(n_)];
   }
 
-  // y(tau) in the current step: from the cache at the usual fractions, else from the modes
-  void at(double tau, Real& y) const {
+  // q, q_dot at tau in the current step, from the modes' steps `ms` at tau_k = tau - d
+  void eval(const ModeStep* ms, double tau_k, double d, Vec& q, Vec& qd) const {
+    for (int i = 0; i < n_; ++i) {
+      const ModeStep& m = ms[i];
+      const double g = g0_(i), g1 = g1_(i);
+      double sd = m.e(0, 0) * sd0_(i) + m.e(0, 1) * sv0_(i) + m.p1(0) * g + m.p2(0) * g1;
+      double sv = m.e(1, 0) * sd0_(i) + m.e(1, 1) * sv0_(i) + m.p1(1) * g + m.p2(1) * g1;
+      if (d != 0.0) {
+        const double w = omega_(i), dsd = w * sv, dsv = -w * sd - damp_(i) * sv + g + g1 * tau_k;
+        sd += d * dsd;
+        sv += d * dsv;
+      }
+      eta_(i) = sd / omega_(i) + eta_static_(i);
+      etad_(i) = sv;
+    }
+    q.noalias() = from_modal_ * eta_;
+    qd.noalias() = from_modal_ * etad_;
+  }
+
+  // q, q_dot at tau in the current step: from the cache at the usual fractions, else computed
+  void at(double tau, Vec& q, Vec& qd) const {
     if (cached_) {
       const double k = tau * samples_ / h_;
       const double kr = std::round(k);
       if (std::abs(k - kr) <= 1e-9 && kr >= 0 && kr <= samples_) {
-        zd_ = z_ + (tau - kr * cache_h_ / samples_) * az_;
-        y.noalias() = cache_[static_cast<std::size_t>(kr)] * zd_;
-        y += c0_ + c1_ * tau;
+        const double tk = kr * cache_h_ / samples_;
+        eval(row(static_cast<int>(kr)), tk, tau - tk, q, qd);
         return;
       }
     }
-    from_modes(tau, y);
+    for (int i = 0; i < n_; ++i)
+      mode_step(omega_(i), damp_(i), tau, scratch_[static_cast<std::size_t>(i)]);
+    eval(scratch_.data(), tau, 0.0, q, qd);
   }
 
-  // y(tau) = Re(V e^{Lambda tau} V^-1 z) + c0 + c1 tau, with V^-1 z formed once per step
-  void from_modes(double tau, Real& y) const {
-    if (!modal_ready_) {
-      w_.noalias() = v_inv_ * z_.template cast<std::complex<double>>();
-      modal_ready_ = true;
-    }
-    for (int i = 0; i < 2 * n_; ++i) ex_(i) = std::exp(lambda_(i) * tau) * w_(i);
-    y.noalias() = (v_ * ex_).real();
-    y += c0_ + c1_ * tau;
-  }
-
-  // input power and damping power at y and base acceleration a [W]
-  void powers(const Real& y, BaseAcceleration a, double& p, double& d) {
-    q_ = y.head(n_);
-    qd_ = y.tail(n_);
-    p = dyn_.input_power(0.0, 0.0, q_, 0.0, qd_, a);
-    d = dyn_.damping_power(qd_);
+  // input power and damping power at (q, q_dot) and base acceleration a [W]
+  void powers(const Vec& q, const Vec& qd, BaseAcceleration a, double& p, double& d) const {
+    p = dyn_.input_power(0.0, 0.0, q, 0.0, qd, a);
+    d = dyn_.damping_power(qd);
   }
 
   void propagate(double t, const State& x, double h, State& out) {
     forcing(t, h);
-    yt_.head(n_) = x.segment(1, n_);
-    yt_.tail(n_) = x.segment(n_ + 2, n_);
-    // particular solution c0 + c1 tau of y' = A y + f0 + f1 tau
-    f_.head(n_).setZero();
-    f_.tail(n_) = lower(slope_) - gy_;  // f1: the slope carries no gravity
-    c1_.noalias() = -(a_inv_ * f_);
-    f_.tail(n_) = lower(a0_);
-    f_ = c1_ - f_;
-    c0_.noalias() = a_inv_ * f_;
-    z_ = yt_ - c0_;
-    modal_ready_ = false;
+    // the modal forcing g0 + g1 tau net of gravity's static part, and the state in the modes
+    g0_ = gxm_ * a0_.x + gym_ * (a0_.y / dyn_.g());
+    g1_ = gxm_ * slope_.x + gym_ * (slope_.y / dyn_.g());
+    q_ = x.segment(1, n_);
+    qd_ = x.segment(n_ + 2, n_);
+    eta_.noalias() = to_modal_ * q_;
+    sv0_.noalias() = to_modal_ * qd_;
+    sd0_ = omega_.cwiseProduct(eta_ - eta_static_);
     h_ = h;
     // the usual step fills the cache; a short one after an event computes its own
     if (!usual(h) && h >= 0.5 * std::min(max_step_, h_cap_)) fill_cache(h);
     cached_ = usual(h);
-    if (cached_) az_.noalias() = a_ * z_;
     const int iw = 2 * n_ + 2, id = 2 * n_ + 3;
-    powers(yt_, a0_, p0_, d0_);
-    at(h, yd_);
+    powers(q_, qd_, a0_, p0_, d0_);
+    at(h, q_, qd_);
     out = x;
-    out.segment(1, n_) = yd_.head(n_);
-    out.segment(n_ + 2, n_) = yd_.tail(n_);
-    powers(yd_, {a0_.x + slope_.x * h, a0_.y + slope_.y * h}, p1_, d1_);
+    out.segment(1, n_) = q_;
+    out.segment(n_ + 2, n_) = qd_;
+    powers(q_, qd_, {a0_.x + slope_.x * h, a0_.y + slope_.y * h}, p1_, d1_);
     // the energies by 8-point Gauss-Legendre on the exact integrands
     double work = 0.0, loss = 0.0;
     for (int j = 0; j < kNodes; ++j) {
       const double tau = h * kGaussX[j];
       if (cached_) {
-        zd_ = z_ + (h - cache_h_) * kGaussX[j] * az_;
-        yt_.noalias() = cache_[static_cast<std::size_t>(samples_ + 1 + j)] * zd_;
-        yt_ += c0_ + c1_ * tau;
+        const double tk = cache_h_ * kGaussX[j];
+        eval(row(samples_ + 1 + j), tk, tau - tk, q_, qd_);
       } else {
-        from_modes(tau, yt_);
+        for (int i = 0; i < n_; ++i)
+          mode_step(omega_(i), damp_(i), tau, scratch_[static_cast<std::size_t>(i)]);
+        eval(scratch_.data(), tau, 0.0, q_, qd_);
       }
       double p = 0.0, d = 0.0;
-      powers(yt_, {a0_.x + slope_.x * tau, a0_.y + slope_.y * tau}, p, d);
+      powers(q_, qd_, {a0_.x + slope_.x * tau, a0_.y + slope_.y * tau}, p, d);
       work += kGaussW[j] * p;
       loss += kGaussW[j] * d;
     }
@@ -280,19 +281,15 @@ class ContactPropagator {
   double max_step_ = 0.01;
   double h_cap_ = 0.0;
   bool available_ = false;
-  ContactModes modes_;
-  CplxMat v_, v_inv_;
-  Cplx lambda_;
-  mutable Cplx ex_;
-  RealMat a_, a_inv_;
-  mutable Cplx w_;  // V^-1 z of this step
-  mutable bool modal_ready_ = false;
-  std::vector<RealMat> cache_;  // e^{A tau} of the usual step: sample fractions, then nodes
+  Mat from_modal_, to_modal_;                  // phi and phi^T mu
+  Vec omega_, damp_, gxm_, gym_, eta_static_;  // per mode: w, c, forcing per X'' and per g
+  Vec g0_, g1_, sd0_, sv0_;                    // this step: modal forcing and initial s
+  mutable Vec eta_, etad_, qo_, qdo_;
+  Vec q_, qd_;
+  std::vector<ModeStep> cache_;            // the usual step's modes: sample fractions, then nodes
+  mutable std::vector<ModeStep> scratch_;  // one step of each mode at an unusual tau
   double cache_h_ = -1.0;
   bool cached_ = false;  // this step has the usual length
-  Vec gx_, gy_, q_, qd_;
-  Real c0_, c1_, z_, az_, f_, yt_;
-  mutable Real yd_, zd_;
   GroundMotion::Cursor cursor_;
   BaseAcceleration a0_, slope_;
   double h_ = 0.0;

@@ -3,7 +3,10 @@
 // integral definitions) and the closed-form parameters of an oscillator on a rocking slab.
 #pragma once
 
+#include <Eigen/Cholesky>
+#include <Eigen/QR>
 #include <algorithm>
+#include <cmath>
 #include <random>
 #include <vector>
 
@@ -100,6 +103,66 @@ inline LumpedBody random_lumped(int n, unsigned seed, double stiffness_scale = 2
 inline BodyParameters random_lumped_body(int n, unsigned seed, double stiffness_scale = 2e5,
                                          double vertical_scale = 0.03) {
   return random_lumped(n, seed, stiffness_scale, vertical_scale).params();
+}
+
+/// A random point-mass body whose n modes are coupled and widely spread: every mode moves every
+/// mass (horizontally and vertically), the modal mass m_ij = sum m phi_i.phi_j is full, and the
+/// modal stiffness k = L Q diag(omega^2) Q^T L^T (m = L L^T, Q a random rotation) is full too, so
+/// that the natural frequencies are exactly `hz` (ascending, [Hz]) and the eigenvectors of the
+/// pinned-base problem are neither unit vectors nor orthogonal. `vertical_scale` sizes the vertical
+/// shape components (a soft mode with a large vertical component sags g/omega^2 under gravity).
+inline LumpedBody random_coupled(const std::vector<double>& hz, unsigned seed,
+                                 double vertical_scale = 0.01) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  const int n = static_cast<int>(hz.size());
+  LumpedBody lb;
+  const double half = 0.3 + 0.4 * u(rng);
+  const int masses = std::max(7, n);
+  for (int k = 0; k < masses; ++k) {
+    PointMass p;
+    p.m = 50 + 200 * u(rng);
+    p.x = half * (2 * u(rng) - 1) * 0.9;
+    p.y = 0.1 + 1.9 * u(rng);
+    for (int i = 0; i < n; ++i) {
+      p.phix.push_back(0.1 * (2 * u(rng) - 1) * p.y);
+      p.phiy.push_back(vertical_scale * (2 * u(rng) - 1) * p.y);
+    }
+    lb.pts.push_back(p);
+  }
+  MatrixX m = MatrixX::Zero(n, n);
+  for (const auto& p : lb.pts)
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < n; ++j) m(i, j) += p.m * (p.phix[i] * p.phix[j] + p.phiy[i] * p.phiy[j]);
+  MatrixX r(n, n);
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) r(i, j) = 2 * u(rng) - 1;
+  const MatrixX q = Eigen::HouseholderQR<MatrixX>(r).householderQ();
+  VectorX w2(n);
+  for (int i = 0; i < n; ++i)
+    w2(i) = std::pow(2 * 3.14159265358979323846 * hz[static_cast<std::size_t>(i)], 2);
+  const MatrixX l = m.llt().matrixL();
+  const MatrixX lq = l * q;
+  lb.k = lq * w2.asDiagonal() * lq.transpose();
+  lb.k = 0.5 * (lb.k + lb.k.transpose());
+  lb.x1 = -half;
+  lb.x2 = half;
+  return lb;
+}
+
+/// n frequencies log-uniform over [lo, hi] Hz with both ends present (the widest spread),
+/// ascending.
+inline std::vector<double> spread_frequencies(int n, unsigned seed, double lo = 0.1,
+                                              double hi = 1000.0) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::vector<double> f;
+  for (int i = 0; i < n; ++i) {
+    const double s = n == 1 ? u(rng) : (i == 0 ? 0.0 : (i == n - 1 ? 1.0 : u(rng)));
+    f.push_back(lo * std::pow(hi / lo, s));
+  }
+  std::sort(f.begin(), f.end());
+  return f;
 }
 
 /// An elastic oscillator on a rocking base slab: top mass m at height H on a lateral spring k,
