@@ -7,6 +7,7 @@
 #   build/release/tests/flexrock_soak --runs 100000 --threads 2
 find_package(Threads REQUIRED)
 add_executable(flexrock_soak soak/soak.cpp)
+target_include_directories(flexrock_soak PRIVATE ${PROJECT_SOURCE_DIR}/tests)
 target_link_libraries(flexrock_soak PRIVATE flexrock::core flexrock_warnings Threads::Threads)
 flexrock_apply_sanitizers(flexrock_soak)
 set(FLEXROCK_SOAK_RUNS 2000 CACHE STRING "Cases of the soak test in ctest (the long soak: 100000)")

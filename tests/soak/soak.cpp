@@ -4,7 +4,10 @@
 // used for safety decisions must never do: run without end, return NaN or inf, let an impact add
 // energy, or break the energy balance.
 //
-// Usage: flexrock_soak [--runs N] [--seed S] [--threads T] [--only I] [--verbose]
+// Usage: flexrock_soak [--runs N] [--seed S] [--threads T] [--only I] [--coupled] [--verbose]
+// --coupled draws from the harsh generator instead: point-mass bodies whose modes are coupled and
+// spread over 0.1 Hz - 1 kHz, b/h 0.01-1.5, spiky sampled records (the exact full-contact path),
+// vertical shaking from -0.9999 g to +5 g.
 // Case I depends only on (S, I), so the figures do not depend on the thread count. Exit code 0
 // when every run passes, 1 otherwise (each failure is printed with the case that reproduces it:
 // --only I). Wall times are reported, never checked.
@@ -28,6 +31,7 @@
 #include "flexrock/model/body.hpp"
 #include "flexrock/model/builders.hpp"
 #include "flexrock/sim/simulate.hpp"
+#include "support/bodies.hpp"
 
 namespace {
 
@@ -74,7 +78,8 @@ struct RunResult {
   long steps = 0;
   long impacts = 0;
   bool chatter = false;
-  double seconds = 0;  // [s] wall time (reported only)
+  bool uplifted = false;  // the body left full contact (else the exact path ran alone)
+  double seconds = 0;     // [s] wall time (reported only)
 };
 
 class Random {
@@ -298,6 +303,108 @@ SoakCase make_case(std::uint64_t seed, std::uint64_t index) {
   return c;
 }
 
+// the harsh generator: a point-mass body with n coupled modes (every mode moves every mass; full
+// modal mass and stiffness) at frequencies log-uniform over 0.1 Hz - 1 kHz, its half-width over
+// its c.g. height b/h log-uniform over 0.01-1.5; bodies that cannot stand are drawn again
+BodyParameters random_coupled_body(Random& r, std::string& what) {
+  for (int attempt = 0;; ++attempt) {
+    const int n = r.integer(1, 4);
+    std::vector<double> hz(static_cast<std::size_t>(n));
+    for (double& f : hz) f = r.log_uniform(0.1, 1000.0);
+    std::sort(hz.begin(), hz.end());
+    flexrock::test::LumpedBody lb = flexrock::test::random_coupled(
+        hz, static_cast<unsigned>(r.integer(0, 1 << 30)), r.log_uniform(1e-3, 0.05));
+    BodyParameters p = lb.params();
+    // widen or narrow the base (x only: shapes, modal mass and frequencies stay)
+    const double b_over_h = r.log_uniform(0.01, 1.5);
+    const double stretch = b_over_h * p.height / (0.5 * (p.b1 + p.b2));
+    for (auto& pt : lb.pts) pt.x *= stretch;
+    lb.x1 *= stretch;
+    lb.x2 *= stretch;
+    p = lb.params();
+    const int damping = r.integer(0, 3);
+    std::string dwhat = "none";
+    if (damping == 1) {
+      p.damping.kind = flexrock::DampingKind::kModal;
+      p.damping.modal_ratios = flexrock::VectorX(n);
+      for (int i = 0; i < n; ++i) p.damping.modal_ratios(i) = r.uniform(0.0, 0.2);
+      dwhat = "modal";
+    } else if (damping == 2) {
+      // Rayleigh: 1-10 % at the lowest and the highest frequency
+      const double w1 = 2 * kPi * hz.front(), w2 = 2 * kPi * hz.back(), z = r.uniform(0.01, 0.1);
+      p.damping.kind = flexrock::DampingKind::kRayleigh;
+      p.damping.rayleigh_mass = n > 1 ? 2 * z * w1 * w2 / (w1 + w2) : 2 * z * w1;
+      p.damping.rayleigh_stiffness = n > 1 ? 2 * z / (w1 + w2) : 0.0;
+      dwhat = "rayleigh";
+    } else if (damping == 3) {
+      // critical and overdamped modes (once left to the integrator)
+      p.damping.kind = flexrock::DampingKind::kModal;
+      p.damping.modal_ratios = flexrock::VectorX(n);
+      for (int i = 0; i < n; ++i)
+        p.damping.modal_ratios(i) = r.chance(0.5) ? 1.0 : r.uniform(0.5, 3.0);
+      dwhat = "critical";
+    }
+    try {
+      const Body check(p);
+      what = "coupled n=" + std::to_string(n) + " f=" + fmt(hz.front()) + ".." + fmt(hz.back()) +
+             "Hz b/h=" + fmt(b_over_h) + " damping " + dwhat +
+             (attempt > 0 ? " (draw " + std::to_string(attempt + 1) + ")" : "");
+      return p;
+    } catch (const flexrock::InputError&) {
+      if (attempt > 200) throw;
+    }
+  }
+}
+
+SoakCase make_coupled_case(std::uint64_t seed, std::uint64_t index) {
+  std::seed_seq seq{static_cast<std::uint32_t>(seed), static_cast<std::uint32_t>(seed >> 32),
+                    static_cast<std::uint32_t>(index), static_cast<std::uint32_t>(index >> 32),
+                    0x636f75u};
+  std::mt19937_64 g(seq);
+  Random r(g());
+  SoakCase c;
+  std::string body_what;
+  c.body = random_coupled_body(r, body_what);
+  const double duration = r.uniform(1.0, 6.0);
+  const double pga = kG * r.log_uniform(0.02, 1.5);
+  const bool vertical = r.chance(0.5);
+  const double down = kG * r.uniform(0.0, 0.9999), up = kG * r.uniform(0.0, 5.0);
+  // a spiky noise record, uniform or unevenly sampled: 2 % of the samples 3-10 times the rest
+  const double dt = r.chance(0.5) ? 0.01 : r.uniform(0.001, 0.02);
+  const bool uneven = r.chance(0.3);
+  std::vector<double> t{0.0}, ax{0.0}, ay{0.0};
+  while (t.back() < duration) {
+    t.push_back(t.back() + (uneven ? dt * r.uniform(0.3, 1.7) : dt));
+    const double spike = r.chance(0.02) ? r.uniform(3.0, 10.0) : 1.0;
+    ax.push_back(pga * spike / 3 * std::clamp(r.normal() / 3, -1.0, 1.0));
+    const double v = std::clamp(r.normal() / 3, -1.0, 1.0);
+    ay.push_back(vertical ? (v > 0 ? up * v : down * v) : 0.0);
+  }
+  c.motion = GroundMotion::sampled(std::move(t), std::move(ax), std::move(ay));
+  const Body body(c.body);
+  if (r.chance(0.3)) {
+    const int edge = r.chance(0.5) ? 1 : 2;
+    const double tilt = body.tipping_angle(edge) * r.uniform(0.0, 0.9);
+    c.initial.theta = edge == 1 ? tilt : -tilt;
+    c.initial.theta_dot =
+        r.uniform(-0.5, 0.5) * body.tipping_angle(edge) * body.rocking_frequency();
+  }
+  c.options.restitution_factor = r.chance(0.5) ? 1.0 : r.uniform(0.3, 1.0);
+  c.options.overturn = r.chance(0.3) ? flexrock::OverturnCriterion::kHalfPi
+                                     : flexrock::OverturnCriterion::kStaticInstability;
+  c.options.output_dt = 0.02;
+  c.options.max_steps = kMaxSteps;
+  c.options.max_impacts = kMaxImpacts;
+  c.description = "case " + std::to_string(index) + " (coupled): " + body_what +
+                  " M=" + fmt(c.body.mass) + "; spiky noise dt=" + fmt(dt) +
+                  (uneven ? " uneven" : "") + " pga=" + fmt(pga / kG) + "g; vertical " +
+                  (vertical ? "-" + fmt(down / kG) + "g..+" + fmt(up / kG) + "g" : "none") +
+                  "; theta0=" + fmt(c.initial.theta) + " theta_dot0=" + fmt(c.initial.theta_dot) +
+                  " e=" + fmt(c.options.restitution_factor) +
+                  (c.options.overturn == flexrock::OverturnCriterion::kHalfPi ? " half_pi" : "");
+  return c;
+}
+
 bool all_finite(const std::vector<double>& v) {
   return std::all_of(v.begin(), v.end(), [](double x) { return std::isfinite(x); });
 }
@@ -317,6 +424,8 @@ RunResult run_case(const SoakCase& c) {
     out.steps = res.steps;
     out.impacts = res.extremes.impacts;
     out.chatter = res.chatter_cut_off;
+    out.uplifted = res.extremes.first_uplift_time >= 0.0 || c.initial.theta != 0.0 ||
+                   c.initial.theta_dot != 0.0;
     if (res.status == flexrock::Status::kStopped) fail("stopped: " + res.message);
     if (res.impact_gained_energy) fail("an impact gained energy");
     const auto& e = res.energy;
@@ -376,8 +485,21 @@ int main(int argc, char** argv) {
   // diagnostics: a tighter tolerance shows whether a residual is integration error
   const char* rtol_arg = std::getenv("FLEXROCK_SOAK_RTOL");
   const double rtol = rtol_arg ? std::atof(rtol_arg) : 0.0;
-  bool verbose = only >= 0;
-  for (int i = 1; i < argc; ++i) verbose = verbose || std::string(argv[i]) == "--verbose";
+  bool verbose = only >= 0, coupled = false;
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    verbose = verbose || a == "--verbose";
+    coupled = coupled || a == "--coupled";
+    if (a == "--help" || a == "-h") {
+      std::printf(
+          "usage: flexrock_soak [--runs N] [--seed S] [--threads T] [--only I] [--coupled] "
+          "[--verbose]\n"
+          "  --coupled  the harsh generator: coupled modes over 0.1 Hz - 1 kHz, b/h 0.01-1.5,\n"
+          "             spiky sampled records, vertical shaking -0.9999 g .. +5 g\n"
+          "  FLEXROCK_SOAK_RUNS, FLEXROCK_SOAK_RTOL: default runs, tighter tolerances\n");
+      return 0;
+    }
+  }
 
   const long first = only >= 0 ? only : 0;
   const long count = only >= 0 ? 1 : runs;
@@ -390,7 +512,7 @@ int main(int argc, char** argv) {
       auto& res = results[static_cast<std::size_t>(k)];
       descriptions[static_cast<std::size_t>(k)] = "case " + std::to_string(idx);
       try {
-        SoakCase c = make_case(seed, idx);
+        SoakCase c = coupled ? make_coupled_case(seed, idx) : make_case(seed, idx);
         if (rtol > 0) c.options.rtol = rtol;
         if (rtol > 0) c.options.atol = rtol * 1e-2;
         descriptions[static_cast<std::size_t>(k)] = c.description;
@@ -410,6 +532,8 @@ int main(int argc, char** argv) {
   // figures, gathered in case order (independent of the threads)
   long failures = 0, completed = 0, overturned = 0, lost = 0, chatter = 0;
   std::size_t worst_res = 0, worst_use = 0, most_events = 0, slowest = 0, most_steps = 0;
+  long full_contact_only = 0;
+  std::size_t worst_exact = results.size();  // the worst residual of the runs never uplifted
   for (std::size_t k = 0; k < results.size(); ++k) {
     const auto& r = results[k];
     if (verbose) {
@@ -426,6 +550,11 @@ int main(int argc, char** argv) {
     lost += r.status == "contact_lost";
     chatter += r.chatter;
     if (r.rel_residual > results[worst_res].rel_residual) worst_res = k;
+    if (!r.uplifted && !r.status.empty()) {
+      ++full_contact_only;
+      if (worst_exact == results.size() || r.bound_use > results[worst_exact].bound_use)
+        worst_exact = k;
+    }
     if (r.bound_use > results[worst_use].bound_use) worst_use = k;
     if (r.events > results[most_events].events) most_events = k;
     if (r.seconds > results[slowest].seconds) slowest = k;
@@ -439,14 +568,17 @@ int main(int argc, char** argv) {
         what, descriptions[k].c_str(), r.status.c_str(), r.events, r.steps, r.impacts,
         r.rel_residual, r.mgh_residual, r.bound_use, r.seconds);
   };
-  std::printf("soak: %ld runs (seed %llu, cases %ld..%ld), %ld failures\n", count,
-              static_cast<unsigned long long>(seed), first, first + count - 1, failures);
+  std::printf("soak%s: %ld runs (seed %llu, cases %ld..%ld), %ld failures\n",
+              coupled ? " (coupled generator)" : "", count, static_cast<unsigned long long>(seed),
+              first, first + count - 1, failures);
   std::printf("status: %ld completed, %ld overturned, %ld contact_lost; %ld with chatter cut-off\n",
               completed, overturned, lost, chatter);
   std::printf("bounds: |residual| <= %.0e scale + %.0e M g h, steps < %ld, impacts < %ld\n",
               kResidualBound, kResidualFloor, kMaxSteps, kMaxImpacts);
   if (count > 0) {
     show("worst residual (relative to the scale)", worst_res);
+    std::printf("runs that stayed in full contact: %ld\n", full_contact_only);
+    if (worst_exact < results.size()) show("closest to the bound in full contact", worst_exact);
     show("closest to the residual bound", worst_use);
     show("most events", most_events);
     show("most steps", most_steps);
