@@ -84,6 +84,7 @@ class ContactPropagator {
     gxm_ = -dyn.g_over_h() * (from_modal_.transpose() * dyn.psi_x()) / dyn.g();
     gym_ = -dyn.g_over_h() * (from_modal_.transpose() * dyn.psi_y());
     eta_static_ = gym_.cwiseQuotient(omega_.cwiseProduct(omega_));
+    inv_omega_ = omega_.cwiseInverse();
     for (Vec* v : {&g0_, &g1_, &sd0_, &sv0_, &eta_, &etad_, &q_, &qd_, &qo_, &qdo_}) v->setZero(n_);
     const auto cells =
         static_cast<std::size_t>(samples_ + 1 + kNodes) * static_cast<std::size_t>(n_);
@@ -192,7 +193,7 @@ class ContactPropagator {
         sd += d * dsd;
         sv += d * dsv;
       }
-      eta_(i) = sd / omega_(i) + eta_static_(i);
+      eta_(i) = sd * inv_omega_(i) + eta_static_(i);
       etad_(i) = sv;
     }
     q.noalias() = from_modal_ * eta_;
@@ -283,6 +284,7 @@ class ContactPropagator {
   bool available_ = false;
   Mat from_modal_, to_modal_;                  // phi and phi^T mu
   Vec omega_, damp_, gxm_, gym_, eta_static_;  // per mode: w, c, forcing per X'' and per g
+  Vec inv_omega_;                              // 1/w: no division per evaluation
   Vec g0_, g1_, sd0_, sv0_;                    // this step: modal forcing and initial s
   mutable Vec eta_, etad_, qo_, qdo_;
   Vec q_, qd_;
