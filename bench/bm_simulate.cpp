@@ -83,6 +83,15 @@ void BM_B_RigidPulse2pi_OldOptions(benchmark::State& s) {
   run_case(s, pre_flight_options(case_b(2.0 * kPi)));
 }
 void BM_C_RigidKobe_OldOptions(benchmark::State& s) { run_case(s, pre_flight_options(case_c())); }
+void BM_B_RigidPulse6pi_OldOptions(benchmark::State& s) {
+  run_case(s, pre_flight_options(case_b(6.0 * kPi)));
+}
+void BM_D_OscillatorKobe_OldOptions(benchmark::State& s) {
+  run_case(s, pre_flight_options(case_d_oscillator()));
+}
+void BM_D_Cantilever4Kobe_OldOptions(benchmark::State& s) {
+  run_case(s, pre_flight_options(case_d_cantilever()));
+}
 
 // medians over repetitions: the machine is shared, single runs are noisy
 #define FLEXROCK_WHOLE_RUN(fn)                                      \
@@ -102,5 +111,8 @@ FLEXROCK_WHOLE_RUN(BM_D_Cantilever4Kobe);
 FLEXROCK_WHOLE_RUN(BM_A_RigidFreeRocking_OldOptions);
 FLEXROCK_WHOLE_RUN(BM_B_RigidPulse2pi_OldOptions);
 FLEXROCK_WHOLE_RUN(BM_C_RigidKobe_OldOptions);
+FLEXROCK_WHOLE_RUN(BM_B_RigidPulse6pi_OldOptions);
+FLEXROCK_WHOLE_RUN(BM_D_OscillatorKobe_OldOptions);
+FLEXROCK_WHOLE_RUN(BM_D_Cantilever4Kobe_OldOptions);
 
 }  // namespace

@@ -13,22 +13,6 @@ Recorder::Recorder(SimulationResult& res, double mass, double g, double height, 
   res_.history.modes = n;
 }
 
-void Recorder::observe(const Observation& o) {
-  Extremes& ex = res_.extremes;
-  if (o.theta > 0.0) ex.max_theta_edge1 = std::max(ex.max_theta_edge1, o.theta);
-  if (o.theta < 0.0) ex.max_theta_edge2 = std::max(ex.max_theta_edge2, -o.theta);
-  ex.max_uplift = std::max(ex.max_uplift, o.high);
-  ex.max_offset = std::max(ex.max_offset, std::abs(o.offset));
-  if (o.mode == ContactMode::kFlight) ex.max_flight_height = std::max(ex.max_flight_height, o.lift);
-  for (int i = 0; i < n_; ++i) ex.max_abs_q(i) = std::max(ex.max_abs_q(i), std::abs(o.q[i]));
-  ex.max_base_shear = std::max(ex.max_base_shear, mg_ * std::abs(o.fi));
-  ex.max_overturning_moment =
-      std::max(ex.max_overturning_moment, mg_ * height_ * std::abs(o.moment));
-  if (o.fj >= kPressingFraction)
-    ex.max_friction_demand = std::max(ex.max_friction_demand, std::abs(o.fi) / o.fj);
-  energy_scale_ = std::max({energy_scale_, std::abs(o.input_work), std::abs(o.damping_loss)});
-}
-
 void Recorder::row(const Observation& o, BaseAcceleration base, double kinetic, double potential,
                    double resultant, double impact_loss) {
   History& h = res_.history;

@@ -2,7 +2,7 @@
 // The event loop as a hybrid automaton: each contact mode's equations of motion and guard
 // functions, the reset maps between modes, and the loop that integrates the current mode, locates
 // the earliest guard crossing and applies its reset. Which modes exist and which guard leads where
-// is the table in automaton.cpp (docs/theory.md, "Contact modes and transitions"); event location
+// is the table in automaton.hpp (docs/theory.md, "Contact modes and transitions"); event location
 // and recording are ordinary code (event_location.cpp, recorder.cpp). Internal header; explicit
 // instantiations in simulator_n*.cpp.
 #pragma once
@@ -14,6 +14,7 @@
 #include <limits>
 #include <numbers>
 #include <string>
+#include <type_traits>
 
 #include "automaton.hpp"
 #include "contact_propagator.hpp"
@@ -47,11 +48,16 @@ class Simulator final : private GuardProbe {
  public:
   static constexpr int S = N == Eigen::Dynamic ? Eigen::Dynamic : 2 * N + 8;
   static constexpr int MaxS = MaxN == Eigen::Dynamic ? Eigen::Dynamic : 2 * MaxN + 8;
+  static constexpr int SC = N == Eigen::Dynamic ? Eigen::Dynamic : 2 * N + 4;
+  static constexpr int MaxSC = MaxN == Eigen::Dynamic ? Eigen::Dynamic : 2 * MaxN + 4;
   using Dyn = Dynamics<N, MaxN>;
   using Vec = typename Dyn::Vec;
   // theta, q[n], theta_dot, q_dot[n], input work, damping loss, then the flight coordinates
-  // x_c, y_c, xc_dot, yc_dot of the c.g. relative to the base (used in flight only)
+  // x_c, y_c, xc_dot, yc_dot of the c.g. relative to the base (meaningful in flight only)
   using State = Eigen::Matrix<double, S, 1, Eigen::ColMajor, MaxS, 1>;
+  // the first 2n + 4 entries of State, which is all the contact modes integrate: a rocking step
+  // on it costs markedly less than on the whole State
+  using ContactState = Eigen::Matrix<double, SC, 1, Eigen::ColMajor, MaxSC, 1>;
 
   Simulator(const Body& body, const GroundMotion& motion, const SimulationOptions& opt);
   SimulationResult run(const InitialState& init);
@@ -71,13 +77,24 @@ class Simulator final : private GuardProbe {
   bool flying() const { return mode_ == ContactMode::kFlight; }
   Eigen::Vector2d cg_velocity(const State& x) const { return {x(ixc() + 2), x(ixc() + 3)}; }
 
-  void unpack(const State& x) {
+  template <class X>
+  void unpack(const X& x) {
     q_ = x.segment(iq(), n_);
     qd_ = x.segment(iqd(), n_);
   }
+  // a stepper's state (contact or flight) into the head of a State
+  template <class X>
+  static void put(const X& from, State& to) {
+    if constexpr (X::RowsAtCompileTime != Eigen::Dynamic) {
+      to.template head<X::RowsAtCompileTime>() = from;
+    } else {
+      to.head(from.size()) = from;
+    }
+  }
 
-  // ---- equations of motion of the current mode
-  void rhs(double t, const State& x, State& dx);
+  // ---- equations of motion: full contact and rocking, and flight
+  void contact_rhs(double t, const ContactState& x, ContactState& dx);
+  void flight_rhs(double t, const State& x, State& dx);
   // ---- guard functions of the current mode, in its slot order, with the floor reaction
   void evaluate(double t, const State& x, GuardSample& s);
   double guard_value(int slot, double t) override;
@@ -85,8 +102,9 @@ class Simulator final : private GuardProbe {
   // ---- the loop
   bool enter_mode(double t, State& x);
   bool advance(double& t, State& x);
-  template <class Stepper>
-  bool advance_with(Stepper& integ, double& t, State& x);
+  // `buf`: scratch for the stepper's dense output (a vector of the stepper's state)
+  template <class Stepper, class System, class Buffer>
+  bool advance_with(Stepper& integ, System&& sys, Buffer& buf, double& t, State& x);
   bool advance_still(double& t, State& x);
   double scan_record(double t);
   bool step_guards(int samples, double t1, double& t_hit, int& slot_hit);
@@ -103,9 +121,19 @@ class Simulator final : private GuardProbe {
   void record(int slot, double t);
   void friction_exceeded(double t, const GuardSample& s);
   void count_impact(const Event& ev, double impulse_y, double loss, bool chatter);
+  // an event at t on edge `e` (0: none) with the base centre's offset in contact
+  Event make_event(double t, EventKind kind, int e) const {
+    Event ev;
+    ev.time = t;
+    ev.kind = kind;
+    ev.edge = e;
+    ev.offset = offset_;
+    return ev;
+  }
 
   // ---- outputs
   Observation observation(double t, const State& x, const GuardSample& s);
+  void flight_heights(const State& x, Observation& o);  // the tipping points' heights, offset
   double kinetic_energy(const State& x);
   double potential_energy(const State& x);
   double offset_of(const State& x);
@@ -121,7 +149,10 @@ class Simulator final : private GuardProbe {
   int n_;
   StepControl ctl_;
   int samples_ = 4;
-  Dopri5<State> integ_;
+  Dopri5<ContactState> integ_;  // rocking, and full contact when not stepped exactly
+  Dopri5<State> flight_integ_;
+  mutable ContactState dense_buf_;
+  mutable State flight_buf_;
   ContactPropagator<N, MaxN, State> prop_;
   SimulationResult res_;
   Recorder rec_;
@@ -145,6 +176,7 @@ class Simulator final : private GuardProbe {
   bool tension_ = false;  // the floor pulls (pivot_tension): lift-off disarmed until it presses
   bool suppress_uplift_at_start_ = false;
   double chatter_interval_ = 0.0;
+  double base_width_ = 0.0;  // [m] b1 + b2
   double last_contact_change_ = 0.0;
   double flight_start_ = 0.0;
   double t_end_ = 0.0;
@@ -176,6 +208,7 @@ Simulator<N, MaxN>::Simulator(const Body& body, const GroundMotion& motion,
   if (n_ > 0)
     shortest = std::min(shortest, 2.0 * std::numbers::pi / body.natural_frequencies().maxCoeff());
   chatter_interval_ = opt.chatter_ratio * shortest;
+  base_width_ = body.params().b1 + body.params().b2;
   const bool half_pi = opt.overturn == OverturnCriterion::kHalfPi;
   overturn_limit_[0] = half_pi ? 0.5 * std::numbers::pi : body.tipping_angle(1);
   overturn_limit_[1] = half_pi ? 0.5 * std::numbers::pi : body.tipping_angle(2);
@@ -183,6 +216,9 @@ Simulator<N, MaxN>::Simulator(const Body& body, const GroundMotion& motion,
   ctl_.atol = opt.atol;
   ctl_.max_step = opt.max_step;
   for (State& xk : sample_states_) xk.setZero(2 * n_ + 8);
+  dense_buf_.setZero(2 * n_ + 4);
+  xr_.setZero(2 * n_ + 8);  // written through put(): sized once, as on the heap path
+  flight_buf_.setZero(2 * n_ + 8);
 }
 
 template <int N, int MaxN>
@@ -215,43 +251,47 @@ SimulationResult Simulator<N, MaxN>::run(const InitialState& init) {
 // ---- equations of motion
 // -------------------------------------------------------------------------
 
+// full contact (theory §4, theta = 0) and rocking (theory §4); writes every entry
 template <int N, int MaxN>
-void Simulator<N, MaxN>::rhs(double t, const State& x, State& dx) {
+void Simulator<N, MaxN>::contact_rhs(double t, const ContactState& x, ContactState& dx) {
   const BaseAcceleration a = motion_.at(t, rhs_cursor_);
   unpack(x);
-  dx.setZero(x.size());
+  dx.resize(x.size());
   double thdd = 0.0;
-  switch (mode_) {
-    case ContactMode::kFullContact:
-      // theory §4, theta = 0
-      dyn_.full_contact_acceleration(q_, qd_, a, qdd_);
-      dx(iw()) = dyn_.input_power(0.0, 0.0, q_, 0.0, qd_, a);
-      break;
-    case ContactMode::kRockingEdge1:
-    case ContactMode::kRockingEdge2: {
-      // theory §4
-      const double sn = std::sin(x(0)), cs = std::cos(x(0));
-      dyn_.rocking_acceleration_sc(edge(), sn, cs, q_, x(ithd()), qd_, a, thdd, qdd_);
-      dx(0) = x(ithd());
-      dx(iw()) = dyn_.input_power_sc(dyn_.alpha(edge()), sn, cs, q_, x(ithd()), qd_, a);
-      break;
-    }
-    case ContactMode::kFlight: {
-      // theory "Flight": the c.g. is ballistic relative to the base, the rest feels no gravity
-      dyn_.flight_acceleration(q_, x(ithd()), qd_, thdd, qdd_);
-      dx(0) = x(ithd());
-      dx(ixc()) = x(ixc() + 2);
-      dx(ixc() + 1) = x(ixc() + 3);
-      dx(ixc() + 2) = -a.x;
-      dx(ixc() + 3) = -dyn_.g() - a.y;
-      dx(iw()) = dyn_.flight_input_power(cg_velocity(x), a);
-      break;
-    }
+  if (mode_ == ContactMode::kFullContact) {
+    dyn_.full_contact_acceleration(q_, qd_, a, qdd_);
+    dx(0) = 0.0;
+    dx(iw()) = dyn_.input_power(0.0, 0.0, q_, 0.0, qd_, a);
+  } else {
+    const double sn = std::sin(x(0)), cs = std::cos(x(0));
+    dyn_.rocking_acceleration_sc(edge(), sn, cs, q_, x(ithd()), qd_, a, thdd, qdd_);
+    dx(0) = x(ithd());
+    dx(iw()) = dyn_.input_power_sc(dyn_.alpha(edge()), sn, cs, q_, x(ithd()), qd_, a);
   }
   dx.segment(iq(), n_) = qd_;
   dx(ithd()) = thdd;
   dx.segment(iqd(), n_) = qdd_;
   dx(id()) = dyn_.damping_power(qd_);
+}
+
+// theory "Flight": the c.g. is ballistic relative to the base, the rest feels no gravity
+template <int N, int MaxN>
+void Simulator<N, MaxN>::flight_rhs(double t, const State& x, State& dx) {
+  const BaseAcceleration a = motion_.at(t, rhs_cursor_);
+  unpack(x);
+  dx.resize(x.size());
+  double thdd = 0.0;
+  dyn_.flight_acceleration(q_, x(ithd()), qd_, thdd, qdd_);
+  dx(0) = x(ithd());
+  dx.segment(iq(), n_) = qd_;
+  dx(ithd()) = thdd;
+  dx.segment(iqd(), n_) = qdd_;
+  dx(iw()) = dyn_.flight_input_power(cg_velocity(x), a);
+  dx(id()) = dyn_.damping_power(qd_);
+  dx(ixc()) = x(ixc() + 2);
+  dx(ixc() + 1) = x(ixc() + 3);
+  dx(ixc() + 2) = -a.x;
+  dx(ixc() + 3) = -dyn_.g() - a.y;
 }
 
 // ---- guard functions
@@ -262,77 +302,58 @@ void Simulator<N, MaxN>::evaluate(double t, const State& x, GuardSample& s) {
   const BaseAcceleration a = motion_.at(t, event_cursor_);
   unpack(x);
   s.t = t;
-  const ModeSpec& spec = mode_spec(mode_);
-  double u1 = 0.0, u2 = 0.0, y1 = 0.0, y2 = 0.0, sg = 1.0;
+  // each value goes to its guard's slot in the mode's list (the table fixes them at compile time)
+  auto slot = [&s](ContactMode m, Guard g) -> double& {
+    return s.v[static_cast<std::size_t>(guard_slot(m, g))];
+  };
+  const double mu = opt_.friction_coefficient;
   switch (mode_) {
     case ContactMode::kFullContact: {
+      constexpr ContactMode m = ContactMode::kFullContact;
       dyn_.full_contact_acceleration(q_, qd_, a, qdd_);
       const Eigen::Vector2d r = dyn_.full_contact_reaction(qdd_, a);
       const Eigen::Vector2d u = dyn_.uplift_functions(q_, qdd_, a);
       s.fi = r(0);
       s.fj = r(1);
-      u1 = u(0);
-      u2 = u(1);
       s.moment = dyn_.contact_moment(0.0, q_, qdd_, a);
+      slot(m, Guard::kUpliftEdge1) = u(0);
+      slot(m, Guard::kUpliftEdge2) = u(1);
+      slot(m, Guard::kLiftOff) = s.fj;
+      slot(m, Guard::kFrictionLimit) = std::isfinite(mu) ? mu * s.fj - std::abs(s.fi) : 1.0;
       break;
     }
     case ContactMode::kRockingEdge1:
     case ContactMode::kRockingEdge2: {
-      sg = edge_sign(edge());
+      constexpr ContactMode m = ContactMode::kRockingEdge1;  // both edges list the same guards
+      static_assert(mode_spec(ContactMode::kRockingEdge1).guards ==
+                    mode_spec(ContactMode::kRockingEdge2).guards);
+      const int e = edge();
+      const double sg = edge_sign(e);
       double thdd = 0.0;
       const double sn = std::sin(x(0)), cs = std::cos(x(0));
-      dyn_.rocking_acceleration_sc(edge(), sn, cs, q_, x(ithd()), qd_, a, thdd, qdd_);
+      dyn_.rocking_acceleration_sc(e, sn, cs, q_, x(ithd()), qd_, a, thdd, qdd_);
       const Eigen::Vector2d r =
-          dyn_.rocking_reaction_sc(edge(), sn, cs, q_, x(ithd()), qd_, thdd, qdd_, a);
+          dyn_.rocking_reaction_sc(e, sn, cs, q_, x(ithd()), qd_, thdd, qdd_, a);
       s.fi = r(0);
       s.fj = r(1);
       // reaction at the pivot, moment about the c.g. projection: alpha h F_j(body)
-      s.moment = dyn_.alpha(edge()) * (-r(0) * sn + r(1) * cs);
+      s.moment = dyn_.alpha(e) * (-r(0) * sn + r(1) * cs);
+      slot(m, Guard::kImpact) = sg * x(0);
+      slot(m, Guard::kOverturn) = overturn_limit_[static_cast<std::size_t>(e - 1)] - sg * x(0);
+      slot(m, Guard::kLiftOff) = s.fj;
+      slot(m, Guard::kFrictionLimit) = std::isfinite(mu) ? mu * s.fj - std::abs(s.fi) : 1.0;
+      slot(m, Guard::kPeak) = sg * x(ithd());
       break;
     }
     case ContactMode::kFlight: {
+      constexpr ContactMode m = ContactMode::kFlight;
       const double sn = std::sin(x(0)), cs = std::cos(x(0)), h = dyn_.height();
-      y1 = dyn_.corner_height(1, sn, cs, q_, x(ixc() + 1)) / h;
-      y2 = dyn_.corner_height(2, sn, cs, q_, x(ixc() + 1)) / h;
       s.fi = s.fj = s.moment = 0.0;
+      slot(m, Guard::kLandingEdge1) = dyn_.corner_height(1, sn, cs, q_, x(ixc() + 1)) / h;
+      slot(m, Guard::kLandingEdge2) = dyn_.corner_height(2, sn, cs, q_, x(ixc() + 1)) / h;
+      slot(m, Guard::kOverturn) = std::min(overturn_limit_[0] - x(0), overturn_limit_[1] + x(0));
       break;
     }
-  }
-  for (int j = 0; j < spec.count; ++j) {
-    double v = 1.0;
-    switch (spec.guards[static_cast<std::size_t>(j)]) {
-      case Guard::kUpliftEdge1:
-        v = u1;
-        break;
-      case Guard::kUpliftEdge2:
-        v = u2;
-        break;
-      case Guard::kLiftOff:
-        v = s.fj;
-        break;
-      case Guard::kFrictionLimit:
-        v = std::isfinite(opt_.friction_coefficient)
-                ? opt_.friction_coefficient * s.fj - std::abs(s.fi)
-                : 1.0;
-        break;
-      case Guard::kImpact:
-        v = sg * x(0);
-        break;
-      case Guard::kOverturn:
-        v = flying() ? std::min(overturn_limit_[0] - x(0), overturn_limit_[1] + x(0))
-                     : overturn_limit_[edge() - 1] - sg * x(0);
-        break;
-      case Guard::kPeak:
-        v = sg * x(ithd());
-        break;
-      case Guard::kLandingEdge1:
-        v = y1;
-        break;
-      case Guard::kLandingEdge2:
-        v = y2;
-        break;
-    }
-    s.v[static_cast<std::size_t>(j)] = v;
   }
 }
 
@@ -365,8 +386,14 @@ bool Simulator<N, MaxN>::enter_mode(double t, State& x) {
   } else if (exact_) {
     // a flexible body in full contact under a record: exact steps between its samples
     prop_.start(t, x);
+  } else if (flying()) {
+    flight_integ_.start([this](double tt, const State& xx, State& dd) { flight_rhs(tt, xx, dd); },
+                        ctl_, t, x);
   } else {
-    integ_.start([this](double tt, const State& xx, State& dd) { rhs(tt, xx, dd); }, ctl_, t, x);
+    dense_buf_ = x.head(2 * n_ + 4);
+    integ_.start(
+        [this](double tt, const ContactState& xx, ContactState& dd) { contact_rhs(tt, xx, dd); },
+        ctl_, t, dense_buf_);
   }
   evaluate(t, x, s0_);
   observe(s0_, x);
@@ -407,8 +434,18 @@ bool Simulator<N, MaxN>::enter_mode(double t, State& x) {
 template <int N, int MaxN>
 bool Simulator<N, MaxN>::advance(double& t, State& x) {
   if (still_) return advance_still(t, x);
-  if (exact_) return advance_with(prop_, t, x);
-  return advance_with(integ_, t, x);
+  // the exact propagator takes no right-hand side
+  if (exact_)
+    return advance_with(
+        prop_, [](double, const State&, State&) {}, flight_buf_, t, x);
+  if (flying()) {
+    auto sys = [this](double tt, const State& xx, State& dd) { flight_rhs(tt, xx, dd); };
+    return advance_with(flight_integ_, sys, flight_buf_, t, x);
+  }
+  auto sys = [this](double tt, const ContactState& xx, ContactState& dd) {
+    contact_rhs(tt, xx, dd);
+  };
+  return advance_with(integ_, sys, dense_buf_, t, x);
 }
 
 // the earliest crossing of a resetting guard among the step's samples, after recording the
@@ -443,14 +480,15 @@ bool Simulator<N, MaxN>::step_guards(int samples, double t1, double& t_hit, int&
 
 // the step of `integ` (the integrator, or the exact propagator in full contact)
 template <int N, int MaxN>
-template <class Stepper>
-bool Simulator<N, MaxN>::advance_with(Stepper& integ, double& t, State& x) {
-  auto sys = [this](double tt, const State& xx, State& dd) { rhs(tt, xx, dd); };
+template <class Stepper, class System, class Buffer>
+bool Simulator<N, MaxN>::advance_with(Stepper& integ, System&& sys, Buffer& buf, double& t,
+                                      State& x) {
   const double t_stop = std::min(t_end_, motion_.next_breakpoint(t, break_cursor_));
   if (++res_.steps > opt_.max_steps)
     return stop(
         t, "step limit reached (" + std::to_string(opt_.max_steps) + " steps; raise max_steps)");
-  if (integ.step(sys, t_stop) != Dopri5<State>::Status::kAccepted) {
+  const auto status = integ.step(sys, t_stop);
+  if (status != std::remove_cv_t<decltype(status)>::kAccepted) {
     // the step limit is relative (min_step x max(1 s, t)); while rocking the usual cause is
     // impacts accumulating with the chatter cut-off disabled, so the message says so
     const double h_min = ctl_.min_step * std::max(1.0, std::abs(t));
@@ -471,9 +509,10 @@ bool Simulator<N, MaxN>::advance_with(Stepper& integ, double& t, State& x) {
     const double tk = k == samples_ ? t1 : t0 + (t1 - t0) * k / samples_;
     State& xk = sample_states_[static_cast<std::size_t>(k)];
     if (k == samples_) {
-      xk = integ.x1();
+      put(integ.x1(), xk);
     } else {
-      integ.dense(tk, xk);
+      integ.dense(tk, buf);
+      put(buf, xk);
     }
     evaluate(tk, xk, smp[static_cast<std::size_t>(k)]);
   }
@@ -493,7 +532,7 @@ bool Simulator<N, MaxN>::advance_with(Stepper& integ, double& t, State& x) {
     }
     emit_rows_until(t1);
     t = t1;
-    x = integ.x1();
+    put(integ.x1(), x);
     s0_ = smp[static_cast<std::size_t>(samples_)];
     zero_start_.fill(false);
     const int friction = guard_slot(mode_, Guard::kFrictionLimit);
@@ -506,7 +545,7 @@ bool Simulator<N, MaxN>::advance_with(Stepper& integ, double& t, State& x) {
   if (t_hit > t0) integ.restep_to(sys, t_hit);
   emit_rows_until(t_hit);
   t = t_hit;
-  x = t_hit > t0 ? integ.x1() : integ.x0();
+  put(t_hit > t0 ? integ.x1() : integ.x0(), x);
   return fire(slot_hit, t, x);
 }
 
@@ -556,8 +595,12 @@ bool Simulator<N, MaxN>::advance_still(double& t, State& x) {
     emit_rows_until(tb);
     t = tb;
     s0_ = smp[static_cast<std::size_t>(samples)];
-    if (s0_.v[3] > 0.0) friction_over_ = false;  // slot 3: the friction margin
-    if (s0_.v[2] > 0.0) tension_ = false;        // slot 2: the vertical reaction
+    constexpr auto kFriction =
+        static_cast<std::size_t>(guard_slot(ContactMode::kFullContact, Guard::kFrictionLimit));
+    constexpr auto kLift =
+        static_cast<std::size_t>(guard_slot(ContactMode::kFullContact, Guard::kLiftOff));
+    if (s0_.v[kFriction] > 0.0) friction_over_ = false;
+    if (s0_.v[kLift] > 0.0) tension_ = false;
     return true;
   }
   emit_rows_until(t_hit);
@@ -617,8 +660,11 @@ void Simulator<N, MaxN>::state_at(double t, State& out) const {
     out = x_still_;
   } else if (exact_) {
     prop_.dense(t, out);
+  } else if (flying()) {
+    flight_integ_.dense(t, out);
   } else {
-    integ_.dense(t, out);
+    integ_.dense(t, dense_buf_);
+    put(dense_buf_, out);
   }
 }
 
@@ -645,7 +691,9 @@ bool Simulator<N, MaxN>::fire(int slot, double t, State& x) {
       // guards and the lift-off guard cross together, and the body flies (theory §15)
       GuardSample now;
       evaluate(t, x, now);
-      if (!tension_ && now.v[2] <= 0.0) return lift_off(t, x);  // slot 2: F_J
+      const int lift = guard_slot(mode_, Guard::kLiftOff);
+      if (!tension_ && lift >= 0 && now.v[static_cast<std::size_t>(lift)] <= 0.0)
+        return lift_off(t, x);
       return uplift(t, x, g.edge);
     }
     case Reset::kLiftOff:
@@ -664,11 +712,7 @@ bool Simulator<N, MaxN>::fire(int slot, double t, State& x) {
 
 template <int N, int MaxN>
 bool Simulator<N, MaxN>::uplift(double t, State& x, int e) {
-  Event ev;
-  ev.time = t;
-  ev.kind = EventKind::kUplift;
-  ev.edge = e;
-  ev.offset = offset_;
+  Event ev = make_event(t, EventKind::kUplift, e);
   rec_.event(ev);
   if (res_.extremes.first_uplift_time < 0.0) {
     res_.extremes.first_uplift_time = t;
@@ -729,11 +773,10 @@ bool Simulator<N, MaxN>::impact(double t, State& x) {
   const bool chatter = t - last_contact_change_ < chatter_interval_;
   const auto out =
       resolve_impact(dyn_, landing, q_, thd_minus, qd_, opt_.restitution_factor, chatter);
-  Event ev;
-  ev.time = t;
-  ev.kind = chatter ? EventKind::kChatterCutoff
-                    : (out.both_edges ? EventKind::kRockingEnded : EventKind::kImpact);
-  ev.edge = landing;
+  Event ev = make_event(t,
+                        chatter ? EventKind::kChatterCutoff
+                                : (out.both_edges ? EventKind::kRockingEnded : EventKind::kImpact),
+                        landing);
   ev.theta_dot_before = thd_minus;
   ev.theta_dot_after = out.theta_dot;
   ev.energy_loss = out.energy_loss;
@@ -741,7 +784,6 @@ bool Simulator<N, MaxN>::impact(double t, State& x) {
   ev.impulse_y = out.impulse(1);
   ev.friction_demand = out.impulse(1) > 0.0 ? std::abs(out.impulse(0)) / out.impulse(1)
                                             : std::numeric_limits<double>::infinity();
-  ev.offset = offset_;
   count_impact(ev, out.impulse(1), out.energy_loss, chatter);
   x(0) = 0.0;
   x(ithd()) = out.theta_dot;
@@ -776,13 +818,9 @@ bool Simulator<N, MaxN>::lift_off(double t, State& x) {
   if (dives) {
     tension_ = true;
     res_.pivot_tension = true;
-    Event ev;
-    ev.time = t;
-    ev.kind = EventKind::kPivotTension;
-    ev.edge = rocking() ? e : 0;
+    Event ev = make_event(t, EventKind::kPivotTension, rocking() ? e : 0);
     ev.theta = x(0);
     ev.theta_dot_before = ev.theta_dot_after = x(ithd());
-    ev.offset = offset_;
     rec_.event(ev);
     return enter_mode(t, x);
   }
@@ -792,13 +830,9 @@ bool Simulator<N, MaxN>::lift_off(double t, State& x) {
   x(ixc() + 1) = r(1);
   x(ixc() + 2) = v(0);
   x(ixc() + 3) = v(1);
-  Event ev;
-  ev.time = t;
-  ev.kind = EventKind::kLiftOff;
-  ev.edge = mode_ == ContactMode::kFullContact ? 0 : e;
+  Event ev = make_event(t, EventKind::kLiftOff, mode_ == ContactMode::kFullContact ? 0 : e);
   ev.theta = x(0);
   ev.theta_dot_before = ev.theta_dot_after = x(ithd());
-  ev.offset = offset_;
   rec_.event(ev);
   ++res_.extremes.lift_offs;
   const ContactMode from = mode_;
@@ -865,10 +899,7 @@ bool Simulator<N, MaxN>::land(double t, State& x, int e) {
   // construction: the jump's c.g. velocity and its motion about the c.g. (theory §16)
   const Vec dqd = qd_plus - qd_;
   const double loss = dyn_.flight_kinetic_energy(q_, thd_plus - thd_minus, dqd, v_after - v_c);
-  Event ev;
-  ev.time = t;
-  ev.kind = EventKind::kLanding;
-  ev.edge = flat ? 0 : e;
+  Event ev = make_event(t, EventKind::kLanding, flat ? 0 : e);
   ev.theta = th;
   ev.theta_dot_before = thd_minus;
   ev.theta_dot_after = thd_plus;
@@ -877,7 +908,6 @@ bool Simulator<N, MaxN>::land(double t, State& x, int e) {
   ev.impulse_y = impulse(1);
   ev.friction_demand = impulse(1) > 0.0 ? std::abs(impulse(0)) / impulse(1)
                                         : std::numeric_limits<double>::infinity();
-  ev.offset = offset_;
   res_.extremes.flight_time += t - flight_start_;
   // a flight shorter than the chatter interval is below what the model resolves (a tipping point
   // grazing the floor): the landing is a chatter cut-off, and the floor may pull until it presses
@@ -913,10 +943,7 @@ bool Simulator<N, MaxN>::overturned(double t, State& x) {
   res_.extremes.overturn_time = t;
   res_.extremes.overturn_edge = side;
   if (flying()) res_.extremes.flight_time += t - flight_start_;
-  Event ev;
-  ev.time = t;
-  ev.kind = EventKind::kOverturn;
-  ev.edge = side;
+  Event ev = make_event(t, EventKind::kOverturn, side);
   ev.theta = x(0);
   ev.offset = offset_of(x);
   rec_.event(ev);
@@ -943,12 +970,8 @@ void Simulator<N, MaxN>::record(int slot, double t) {
   GuardSample s;
   evaluate(t, xr_, s);
   if (mode_spec(mode_).guards[static_cast<std::size_t>(slot)] == Guard::kPeak) {
-    Event e;
-    e.time = t;
-    e.kind = EventKind::kPeak;
-    e.edge = edge();
+    Event e = make_event(t, EventKind::kPeak, edge());
     e.theta = xr_(0);
-    e.offset = offset_;
     rec_.event(e);
     Observation o = observation(t, xr_, s);
     rec_.observe(o);
@@ -961,12 +984,8 @@ template <int N, int MaxN>
 void Simulator<N, MaxN>::friction_exceeded(double t, const GuardSample& s) {
   friction_over_ = true;
   res_.friction_exceeded = true;
-  Event e;
-  e.time = t;
-  e.kind = EventKind::kFrictionExceeded;
-  e.edge = rocking() ? edge() : 0;
+  Event e = make_event(t, EventKind::kFrictionExceeded, rocking() ? edge() : 0);
   e.friction_demand = s.fj > 0.0 ? std::abs(s.fi) / s.fj : std::numeric_limits<double>::infinity();
-  e.offset = offset_;
   rec_.event(e);
 }
 
@@ -1000,7 +1019,7 @@ double Simulator<N, MaxN>::offset_of(const State& x) {
 }
 
 template <int N, int MaxN>
-Observation Simulator<N, MaxN>::observation(double t, const State& x, const GuardSample& s) {
+inline Observation Simulator<N, MaxN>::observation(double t, const State& x, const GuardSample& s) {
   Observation o;
   o.t = t;
   o.mode = mode_;
@@ -1013,20 +1032,24 @@ Observation Simulator<N, MaxN>::observation(double t, const State& x, const Guar
   o.moment = s.moment;
   o.input_work = x(iw());
   o.damping_loss = x(id());
-  const double base = body_.params().b1 + body_.params().b2;
   if (flying()) {
-    unpack(x);
-    const double sn = std::sin(x(0)), cs = std::cos(x(0));
-    const double y1 = dyn_.corner_height(1, sn, cs, q_, x(ixc() + 1));
-    const double y2 = dyn_.corner_height(2, sn, cs, q_, x(ixc() + 1));
-    o.lift = std::min(y1, y2);
-    o.high = std::max(y1, y2);
-    o.offset = offset_of(x);
+    flight_heights(x, o);
   } else {
-    o.high = base * std::sin(std::abs(x(0)));
+    o.high = base_width_ * std::sin(std::abs(x(0)));
     o.offset = offset_;
   }
   return o;
+}
+
+template <int N, int MaxN>
+void Simulator<N, MaxN>::flight_heights(const State& x, Observation& o) {
+  unpack(x);
+  const double sn = std::sin(x(0)), cs = std::cos(x(0));
+  const double y1 = dyn_.corner_height(1, sn, cs, q_, x(ixc() + 1));
+  const double y2 = dyn_.corner_height(2, sn, cs, q_, x(ixc() + 1));
+  o.lift = std::min(y1, y2);
+  o.high = std::max(y1, y2);
+  o.offset = offset_of(x);
 }
 
 template <int N, int MaxN>
@@ -1035,7 +1058,11 @@ void Simulator<N, MaxN>::emit_rows_until(double t_cut) {
   for (;;) {
     const double to = static_cast<double>(next_output_) * opt_.output_dt;
     if (to > t_cut || to > t_end_ * (1.0 + 1e-14)) break;
-    state_at(std::min(to, still_ ? still_t1_ : (exact_ ? prop_.t1() : integ_.t1())), xr_);
+    const double t1 = still_     ? still_t1_
+                      : exact_   ? prop_.t1()
+                      : flying() ? flight_integ_.t1()
+                                 : integ_.t1();
+    state_at(std::min(to, t1), xr_);
     emit_row(to, xr_);
     ++next_output_;
   }
@@ -1085,8 +1112,8 @@ void Simulator<N, MaxN>::finish(double t, const State& x) {
                                e.impact_loss + e.chatter_loss);
   e.scale = std::max({rec_.energy_scale(), std::abs(energy0_ - pot), std::abs(kin), kinetic0_,
                       impact_loss_ + chatter_loss_});
-  res_.rejected_steps = integ_.rejected_steps();
-  res_.rhs_evaluations = integ_.rhs_evaluations();
+  res_.rejected_steps = integ_.rejected_steps() + flight_integ_.rejected_steps();
+  res_.rhs_evaluations = integ_.rhs_evaluations() + flight_integ_.rhs_evaluations();
   if (res_.status == Status::kCompleted) res_.message = "completed";
 }
 
