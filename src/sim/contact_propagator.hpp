@@ -85,6 +85,11 @@ class ContactPropagator {
     gym_ = -dyn.g_over_h() * (from_modal_.transpose() * dyn.psi_y());
     eta_static_ = gym_.cwiseQuotient(omega_.cwiseProduct(omega_));
     inv_omega_ = omega_.cwiseInverse();
+    // the input and damping powers in the modes: -M h a.(psi . q_dot) and M h^2 sum c_i eta_i'^2
+    pxm_ = from_modal_.transpose() * dyn.psi_x();
+    pym_ = from_modal_.transpose() * dyn.psi_y();
+    mh_ = dyn.mass() * dyn.height();
+    mh2_ = mh_ * dyn.height();
     for (Vec* v : {&g0_, &g1_, &sd0_, &sv0_, &eta_, &etad_, &q_, &qd_, &qo_, &qdo_}) v->setZero(n_);
     const auto cells =
         static_cast<std::size_t>(samples_ + 1 + kNodes) * static_cast<std::size_t>(n_);
@@ -182,6 +187,27 @@ class ContactPropagator {
   }
 
   // q, q_dot at tau in the current step, from the modes' steps `ms` at tau_k = tau - d
+  // the input and damping powers [W] at tau in the current step (base acceleration a), from the
+  // modes' steps `ms` at tau_k = tau - d, without going back to q
+  void node_powers(const ModeStep* ms, double tau_k, double d, BaseAcceleration a, double& p,
+                   double& dl) const {
+    double px = 0.0, py = 0.0, dd = 0.0;
+    for (int i = 0; i < n_; ++i) {
+      const ModeStep& m = ms[i];
+      const double g = g0_(i), g1 = g1_(i);
+      double sv = m.e(1, 0) * sd0_(i) + m.e(1, 1) * sv0_(i) + m.p1(1) * g + m.p2(1) * g1;
+      if (d != 0.0) {
+        const double sd = m.e(0, 0) * sd0_(i) + m.e(0, 1) * sv0_(i) + m.p1(0) * g + m.p2(0) * g1;
+        sv += d * (-omega_(i) * sd - damp_(i) * sv + g + g1 * tau_k);
+      }
+      px += pxm_(i) * sv;
+      py += pym_(i) * sv;
+      dd += damp_(i) * sv * sv;
+    }
+    p = -mh_ * (a.x * px + a.y * py);
+    dl = mh2_ * dd;
+  }
+
   void eval(const ModeStep* ms, double tau_k, double d, Vec& q, Vec& qd) const {
     for (int i = 0; i < n_; ++i) {
       const ModeStep& m = ms[i];
@@ -247,16 +273,16 @@ class ContactPropagator {
     double work = 0.0, loss = 0.0;
     for (int j = 0; j < kNodes; ++j) {
       const double tau = h * kGaussX[j];
+      const BaseAcceleration a{a0_.x + slope_.x * tau, a0_.y + slope_.y * tau};
+      double p = 0.0, d = 0.0;
       if (cached_) {
         const double tk = cache_h_ * kGaussX[j];
-        eval(row(samples_ + 1 + j), tk, tau - tk, q_, qd_);
+        node_powers(row(samples_ + 1 + j), tk, tau - tk, a, p, d);
       } else {
         for (int i = 0; i < n_; ++i)
           mode_step(omega_(i), damp_(i), tau, scratch_[static_cast<std::size_t>(i)]);
-        eval(scratch_.data(), tau, 0.0, q_, qd_);
+        node_powers(scratch_.data(), tau, 0.0, a, p, d);
       }
-      double p = 0.0, d = 0.0;
-      powers(q_, qd_, {a0_.x + slope_.x * tau, a0_.y + slope_.y * tau}, p, d);
       work += kGaussW[j] * p;
       loss += kGaussW[j] * d;
     }
@@ -284,7 +310,8 @@ class ContactPropagator {
   bool available_ = false;
   Mat from_modal_, to_modal_;                  // phi and phi^T mu
   Vec omega_, damp_, gxm_, gym_, eta_static_;  // per mode: w, c, forcing per X'' and per g
-  Vec inv_omega_;                              // 1/w: no division per evaluation
+  Vec inv_omega_, pxm_, pym_;                  // 1/w, Phi^T psi_x, Phi^T psi_y
+  double mh_ = 0.0, mh2_ = 0.0;                // M h [kg m], M h^2 [kg m^2]
   Vec g0_, g1_, sd0_, sv0_;                    // this step: modal forcing and initial s
   mutable Vec eta_, etad_, qo_, qdo_;
   Vec q_, qd_;
