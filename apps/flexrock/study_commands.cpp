@@ -621,20 +621,22 @@ int StudyCommands::Impl::run_sweep(const Processes& procs) {
                      journal.path() + "): " + e.what(),
                  kExitRunFailed);
   }
-  std::size_t over = 0, stopped = 0;
+  std::size_t over = 0, stopped = 0, lost = 0;
   for (const auto& [i, line] : lines) {
     if (line.find(",overturned_") != std::string::npos) ++over;
     // the outcome column, followed by overturned = 0
-    if (line.find(",stopped,0,") != std::string::npos) {
-      ++stopped;
-    }
+    if (line.find(",stopped,0,") != std::string::npos) ++stopped;
+    // a row resumed from a journal written before the engine followed flight
+    if (line.find(",contact_lost,0,") != std::string::npos) ++lost;
   }
   journal.finish(true);
   fmt::print(
-      "sweep: {} bodies x {} records x {} scales = {} runs: {} overturned, {} not "
-      "classified (stopped or contact lost)\n",
+      "sweep: {} bodies x {} records x {} scales = {} runs: {} overturned, {} not classified "
+      "(stopped){}\n",
       m.spec.bodies.size(), m.spec.records.size(), m.spec.scales.size(), runs.size(), over,
-      stopped);
+      stopped + lost,
+      lost == 0 ? std::string()
+                : fmt::format(", of which {} contact_lost from an older journal", lost));
   if (!quiet) {
     fmt::print("time: {:.3g} s for {} new runs on {} process{} x {} thread{}\n", seconds,
                remaining.size(), procs.size(), procs.size() == 1 ? "" : "es", options.threads,
