@@ -51,18 +51,19 @@ SimulationOptions tight(double p) {
   return o;
 }
 
-// outcome of one pulse run: overturned, and whether an impact came before the overturn
+// outcome of one pulse run: overturned, whether an impact came before the overturn, and whether
+// the run stopped (could not go on: neither safe nor overturned, so not counted as safe)
 struct Outcome {
   bool overturned = false;
   bool after_impact = false;
-  bool contact_lost = false;
+  bool stopped = false;
 };
 
 Outcome run_outcome(const Body& body, const GroundMotion& m, const SimulationOptions& o) {
   const auto r = simulate(body, m, {}, o);
   Outcome out;
   out.overturned = flexrock::overturned(r);
-  out.contact_lost = false;  // the engine follows flight: every run is classified
+  out.stopped = r.status == Status::kStopped;
   out.after_impact = out.overturned && r.extremes.impacts > 0;
   return out;
 }
@@ -217,8 +218,8 @@ json zhang_makris() {
         o.overturn = OverturnCriterion::kHalfPi;
         return run_outcome(body, m, o);
       };
-      // the map: 0 safe, 1 overturned after impacts, 2 overturned without impact, 3 contact
-      // lost below the tipping angle (unresolved)
+      // the map: 0 safe, 1 overturned after impacts, 2 overturned without impact, 3 stopped
+      // (the run could not go on: unresolved)
       const auto ws = linspace(1.0, 10.0, quick ? 10 : 37);
       const auto As = linspace(1.0, 20.0, quick ? 12 : 58);
       json map = json::array();
@@ -226,7 +227,7 @@ json zhang_makris() {
         json row = json::array();
         for (double w : ws) {
           const auto o = run(A, w);
-          row.push_back(o.overturned ? (o.after_impact ? 1 : 2) : (o.contact_lost ? 3 : 0));
+          row.push_back(o.overturned ? (o.after_impact ? 1 : 2) : (o.stopped ? 3 : 0));
         }
         map.push_back(row);
       }
@@ -393,8 +394,8 @@ json flexible() {
     const Body rigid(BodyParameters::rigid(pr.mass, pr.height, pr.b1, pr.b2, pr.zeta2));
     const double p = rigid.rocking_frequency();
     struct Landing {
-      double loss = -1.0;        // [J] energy lost at the first landing
-      std::string kind, status;  // its event kind, and how the run ended
+      double loss = -1.0;                 // [J] energy lost at the first landing
+      std::string kind, status, message;  // its event kind, how the run ended and why
     };
     auto first_loss = [&](const Body& body) {
       InitialState init;
@@ -406,8 +407,8 @@ json flexible() {
       // a flexible body may land on both edges (the both-edges rule): that is its impact too
       for (const auto& e : r.events)
         if (e.kind == EventKind::kImpact || e.kind == EventKind::kRockingEnded)
-          return Landing{e.energy_loss, to_string(e.kind), to_string(r.status)};
-      return Landing{-1.0, "", to_string(r.status)};
+          return Landing{e.energy_loss, to_string(e.kind), to_string(r.status), r.message};
+      return Landing{-1.0, "", to_string(r.status), r.message};
     };
     const double e_rigid = first_loss(rigid).loss;
     json rows = json::array();
@@ -419,7 +420,8 @@ json flexible() {
                       {"omega_n_over_p", 2 * M_PI * f / p},
                       {"loss_ratio", l.loss / e_rigid},
                       {"event", l.kind},
-                      {"status", l.status}});
+                      {"status", l.status},
+                      {"message", l.message}});
     }
     out["impact_energy"] = {{"rigid_loss", e_rigid}, {"rows", rows}};
   }
