@@ -58,6 +58,13 @@ class Simulator final : private GuardProbe {
   // the first 2n + 4 entries of State, which is all the contact modes integrate: a rocking step
   // on it costs markedly less than on the whole State
   using ContactState = Eigen::Matrix<double, SC, 1, Eigen::ColMajor, MaxSC, 1>;
+  // slot of guard G in mode M's list (the automaton table), as a compile-time constant
+  template <ContactMode M, Guard G>
+  static constexpr std::size_t kSlot = [] {
+    constexpr int j = guard_slot(M, G);
+    static_assert(j >= 0, "the mode does not watch this guard");
+    return static_cast<std::size_t>(j);
+  }();
 
   Simulator(const Body& body, const GroundMotion& motion, const SimulationOptions& opt);
   SimulationResult run(const InitialState& init);
@@ -302,10 +309,8 @@ void Simulator<N, MaxN>::evaluate(double t, const State& x, GuardSample& s) {
   const BaseAcceleration a = motion_.at(t, event_cursor_);
   unpack(x);
   s.t = t;
-  // each value goes to its guard's slot in the mode's list (the table fixes them at compile time)
-  auto slot = [&s](ContactMode m, Guard g) -> double& {
-    return s.v[static_cast<std::size_t>(guard_slot(m, g))];
-  };
+  // each value goes to its guard's slot in the mode's list, which the table fixes at compile time
+  auto& v = s.v;
   const double mu = opt_.friction_coefficient;
   switch (mode_) {
     case ContactMode::kFullContact: {
@@ -316,10 +321,10 @@ void Simulator<N, MaxN>::evaluate(double t, const State& x, GuardSample& s) {
       s.fi = r(0);
       s.fj = r(1);
       s.moment = dyn_.contact_moment(0.0, q_, qdd_, a);
-      slot(m, Guard::kUpliftEdge1) = u(0);
-      slot(m, Guard::kUpliftEdge2) = u(1);
-      slot(m, Guard::kLiftOff) = s.fj;
-      slot(m, Guard::kFrictionLimit) = std::isfinite(mu) ? mu * s.fj - std::abs(s.fi) : 1.0;
+      v[kSlot<m, Guard::kUpliftEdge1>] = u(0);
+      v[kSlot<m, Guard::kUpliftEdge2>] = u(1);
+      v[kSlot<m, Guard::kLiftOff>] = s.fj;
+      v[kSlot<m, Guard::kFrictionLimit>] = std::isfinite(mu) ? mu * s.fj - std::abs(s.fi) : 1.0;
       break;
     }
     case ContactMode::kRockingEdge1:
@@ -338,20 +343,21 @@ void Simulator<N, MaxN>::evaluate(double t, const State& x, GuardSample& s) {
       s.fj = r(1);
       // reaction at the pivot, moment about the c.g. projection: alpha h F_j(body)
       s.moment = dyn_.alpha(e) * (-r(0) * sn + r(1) * cs);
-      slot(m, Guard::kImpact) = sg * x(0);
-      slot(m, Guard::kOverturn) = overturn_limit_[static_cast<std::size_t>(e - 1)] - sg * x(0);
-      slot(m, Guard::kLiftOff) = s.fj;
-      slot(m, Guard::kFrictionLimit) = std::isfinite(mu) ? mu * s.fj - std::abs(s.fi) : 1.0;
-      slot(m, Guard::kPeak) = sg * x(ithd());
+      v[kSlot<m, Guard::kImpact>] = sg * x(0);
+      v[kSlot<m, Guard::kOverturn>] = overturn_limit_[static_cast<std::size_t>(e - 1)] - sg * x(0);
+      v[kSlot<m, Guard::kLiftOff>] = s.fj;
+      v[kSlot<m, Guard::kFrictionLimit>] = std::isfinite(mu) ? mu * s.fj - std::abs(s.fi) : 1.0;
+      v[kSlot<m, Guard::kPeak>] = sg * x(ithd());
       break;
     }
     case ContactMode::kFlight: {
       constexpr ContactMode m = ContactMode::kFlight;
       const double sn = std::sin(x(0)), cs = std::cos(x(0)), h = dyn_.height();
       s.fi = s.fj = s.moment = 0.0;
-      slot(m, Guard::kLandingEdge1) = dyn_.corner_height(1, sn, cs, q_, x(ixc() + 1)) / h;
-      slot(m, Guard::kLandingEdge2) = dyn_.corner_height(2, sn, cs, q_, x(ixc() + 1)) / h;
-      slot(m, Guard::kOverturn) = std::min(overturn_limit_[0] - x(0), overturn_limit_[1] + x(0));
+      v[kSlot<m, Guard::kLandingEdge1>] = dyn_.corner_height(1, sn, cs, q_, x(ixc() + 1)) / h;
+      v[kSlot<m, Guard::kLandingEdge2>] = dyn_.corner_height(2, sn, cs, q_, x(ixc() + 1)) / h;
+      v[kSlot<m, Guard::kOverturn>] =
+          std::min(overturn_limit_[0] - x(0), overturn_limit_[1] + x(0));
       break;
     }
   }
