@@ -128,6 +128,14 @@ class Simulator final : private GuardProbe {
   void record(int slot, double t);
   void friction_exceeded(double t, const GuardSample& s);
   void count_impact(const Event& ev, double impulse_y, double loss, bool chatter);
+  // after a step with no event: a positive friction margin re-arms the friction report, a
+  // pressing floor ends the pivot-tension hold
+  void release_latches(const GuardSample& s) {
+    const int friction = guard_slot(mode_, Guard::kFrictionLimit);
+    if (friction >= 0 && s.v[static_cast<std::size_t>(friction)] > 0.0) friction_over_ = false;
+    const int lift = guard_slot(mode_, Guard::kLiftOff);
+    if (lift >= 0 && s.v[static_cast<std::size_t>(lift)] > 0.0) tension_ = false;
+  }
   // an event at t on edge `e` (0: none) with the base centre's offset in contact
   Event make_event(double t, EventKind kind, int e) const {
     Event ev;
@@ -541,10 +549,7 @@ bool Simulator<N, MaxN>::advance_with(Stepper& integ, System&& sys, Buffer& buf,
     put(integ.x1(), x);
     s0_ = smp[static_cast<std::size_t>(samples_)];
     zero_start_.fill(false);
-    const int friction = guard_slot(mode_, Guard::kFrictionLimit);
-    if (friction >= 0 && s0_.v[static_cast<std::size_t>(friction)] > 0.0) friction_over_ = false;
-    const int lift = guard_slot(mode_, Guard::kLiftOff);
-    if (lift >= 0 && s0_.v[static_cast<std::size_t>(lift)] > 0.0) tension_ = false;
+    release_latches(s0_);
     return true;
   }
   // land exactly on the event and act on it
@@ -601,12 +606,7 @@ bool Simulator<N, MaxN>::advance_still(double& t, State& x) {
     emit_rows_until(tb);
     t = tb;
     s0_ = smp[static_cast<std::size_t>(samples)];
-    constexpr auto kFriction =
-        static_cast<std::size_t>(guard_slot(ContactMode::kFullContact, Guard::kFrictionLimit));
-    constexpr auto kLift =
-        static_cast<std::size_t>(guard_slot(ContactMode::kFullContact, Guard::kLiftOff));
-    if (s0_.v[kFriction] > 0.0) friction_over_ = false;
-    if (s0_.v[kLift] > 0.0) tension_ = false;
+    release_latches(s0_);
     return true;
   }
   emit_rows_until(t_hit);
