@@ -242,6 +242,26 @@ GroundMotion sum_of(const GroundMotion& h, const GroundMotion& v, double duratio
       duration, std::move(breaks));
 }
 
+// the initial state and the options of a case whose body and motion are drawn (both generators:
+// the same draws in the same order, so a case's seed keeps its meaning)
+void random_start_and_options(Random& r, SoakCase& c) {
+  const Body body(c.body);
+  if (r.chance(0.3)) {
+    // start rocking: a tilt below the overturning angle, or a kick
+    const int edge = r.chance(0.5) ? 1 : 2;
+    const double tilt = body.tipping_angle(edge) * r.uniform(0.0, 0.9);
+    c.initial.theta = edge == 1 ? tilt : -tilt;
+    c.initial.theta_dot =
+        r.uniform(-0.5, 0.5) * body.tipping_angle(edge) * body.rocking_frequency();
+  }
+  c.options.restitution_factor = r.chance(0.5) ? 1.0 : r.uniform(0.3, 1.0);
+  c.options.overturn = r.chance(0.3) ? flexrock::OverturnCriterion::kHalfPi
+                                     : flexrock::OverturnCriterion::kStaticInstability;
+  c.options.output_dt = 0.02;
+  c.options.max_steps = kMaxSteps;
+  c.options.max_impacts = kMaxImpacts;
+}
+
 SoakCase make_case(std::uint64_t seed, std::uint64_t index) {
   // one generator per case: the case depends on (seed, index) only
   std::seed_seq seq{static_cast<std::uint32_t>(seed), static_cast<std::uint32_t>(seed >> 32),
@@ -279,21 +299,7 @@ SoakCase make_case(std::uint64_t seed, std::uint64_t index) {
       c.motion = h;
     }
   }
-  const Body body(c.body);
-  if (r.chance(0.3)) {
-    // start rocking: a tilt below the overturning angle, or a kick
-    const int edge = r.chance(0.5) ? 1 : 2;
-    const double tilt = body.tipping_angle(edge) * r.uniform(0.0, 0.9);
-    c.initial.theta = edge == 1 ? tilt : -tilt;
-    c.initial.theta_dot =
-        r.uniform(-0.5, 0.5) * body.tipping_angle(edge) * body.rocking_frequency();
-  }
-  c.options.restitution_factor = r.chance(0.5) ? 1.0 : r.uniform(0.3, 1.0);
-  c.options.overturn = r.chance(0.3) ? flexrock::OverturnCriterion::kHalfPi
-                                     : flexrock::OverturnCriterion::kStaticInstability;
-  c.options.output_dt = 0.02;
-  c.options.max_steps = kMaxSteps;
-  c.options.max_impacts = kMaxImpacts;
+  random_start_and_options(r, c);
   c.description = "case " + std::to_string(index) + ": " + body_what + " M=" + fmt(c.body.mass) +
                   "; " + h_what + " pga=" + fmt(pga / kG) + "g; vertical " + v_what + " " +
                   fmt(vert / kG) + "g; theta0=" + fmt(c.initial.theta) +
@@ -381,20 +387,7 @@ SoakCase make_coupled_case(std::uint64_t seed, std::uint64_t index) {
     ay.push_back(vertical ? (v > 0 ? up * v : down * v) : 0.0);
   }
   c.motion = GroundMotion::sampled(std::move(t), std::move(ax), std::move(ay));
-  const Body body(c.body);
-  if (r.chance(0.3)) {
-    const int edge = r.chance(0.5) ? 1 : 2;
-    const double tilt = body.tipping_angle(edge) * r.uniform(0.0, 0.9);
-    c.initial.theta = edge == 1 ? tilt : -tilt;
-    c.initial.theta_dot =
-        r.uniform(-0.5, 0.5) * body.tipping_angle(edge) * body.rocking_frequency();
-  }
-  c.options.restitution_factor = r.chance(0.5) ? 1.0 : r.uniform(0.3, 1.0);
-  c.options.overturn = r.chance(0.3) ? flexrock::OverturnCriterion::kHalfPi
-                                     : flexrock::OverturnCriterion::kStaticInstability;
-  c.options.output_dt = 0.02;
-  c.options.max_steps = kMaxSteps;
-  c.options.max_impacts = kMaxImpacts;
+  random_start_and_options(r, c);
   c.description = "case " + std::to_string(index) + " (coupled): " + body_what +
                   " M=" + fmt(c.body.mass) + "; spiky noise dt=" + fmt(dt) +
                   (uneven ? " uneven" : "") + " pga=" + fmt(pga / kG) + "g; vertical " +
