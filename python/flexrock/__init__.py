@@ -529,15 +529,11 @@ class Result:
         """The event log as columns (docs/case-file.md): ``time_s`` [s], ``event`` (the
         kind's name), ``edge``, ``theta_rad`` [rad], ``theta_dot_before_rad_per_s``,
         ``theta_dot_after_rad_per_s`` [rad/s], ``energy_loss_J`` [J], ``impulse_x_N_s``,
-        ``impulse_y_N_s`` [N s], ``friction_demand`` [-]; numbers as float arrays."""
-        ev = self.raw.events
-        fields = ("time", "edge", "theta", "theta_dot_before", "theta_dot_after", "energy_loss",
-                  "impulse_x", "impulse_y", "friction_demand")
-        values = {f: np.array([getattr(e, f) for e in ev], dtype=float) for f in fields}
-        names = event_columns()
-        out = {names[0]: values["time"], names[1]: np.array([e.kind.name for e in ev], dtype=object)}
-        for name, f in zip(names[2:], fields[1:]):
-            out[name] = values[f]
+        ``impulse_y_N_s`` [N s], ``friction_demand`` [-]; numbers as float arrays, names as an
+        object array. The columns are those of the library's table (``event_columns()``)."""
+        out = {}
+        for name, values in zip(event_columns(), _flexrock.event_values(self.raw)):
+            out[name] = values if isinstance(values, np.ndarray) else np.array(values, dtype=object)
         return out
 
     def write(

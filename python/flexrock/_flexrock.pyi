@@ -993,6 +993,20 @@ def event_columns() -> list[str]:
         energy_loss_J, impulse_x_N_s, impulse_y_N_s, friction_demand.
     """
 
+def event_values(result: SimulationResult) -> list:
+    """The event log as columns, in the order of event_columns().
+
+    Parameters
+    ----------
+    result : SimulationResult
+
+    Returns
+    -------
+    list
+        One column per entry, one element per event: a float array, or a list of str for the
+        ``event`` column (the kind's name). The values ``write_events`` prints.
+    """
+
 def events_csv(result: SimulationResult) -> str:
     """The event-log CSV text ``flexrock run`` writes.
 

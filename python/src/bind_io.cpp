@@ -9,6 +9,7 @@
 #include <cmath>
 #include <sstream>
 #include <string>
+#include <variant>
 
 #include "bindings.hpp"
 #include "flexrock/io/case_file.hpp"
@@ -195,6 +196,32 @@ Returns
 list of str
     time_s, event, edge, theta_rad, theta_dot_before_rad_per_s, theta_dot_after_rad_per_s,
     energy_loss_J, impulse_x_N_s, impulse_y_N_s, friction_demand.)doc");
+  m.def(
+      "event_values",
+      [](const SimulationResult& r) {
+        // numbers as float arrays, names as lists of str (also when there is no event)
+        py::list cols;
+        for (io::EventColumnValues& c : io::event_values(r)) {
+          if (auto* v = std::get_if<std::vector<double>>(&c)) {
+            cols.append(py::array_t<double>(static_cast<py::ssize_t>(v->size()), v->data()));
+          } else {
+            cols.append(py::cast(std::get<std::vector<std::string>>(c)));
+          }
+        }
+        return cols;
+      },
+      py::arg("result"),
+      R"doc(The event log as columns, in the order of event_columns().
+
+Parameters
+----------
+result : SimulationResult
+
+Returns
+-------
+list
+    One column per entry, one element per event: a float array, or a list of str for the
+    ``event`` column (the kind's name). The values ``write_events`` prints.)doc");
   m.def(
       "time_history_csv",
       [](const SimulationResult& r, const Body& body) {

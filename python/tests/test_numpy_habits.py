@@ -58,6 +58,11 @@ def test_time_history_is_built_from_the_engine_arrays_equal_to_the_csv():
     assert list(ev) == list(ref)
     for name in ref:
         np.testing.assert_array_equal(ev[name], ref[name], err_msg=name)
+    # no event: the same columns, empty, with the kinds' column still an object array
+    quiet = fr.simulate(p, fr.free_rocking(0.5)).events_table()
+    assert list(quiet) == fr.event_columns()
+    assert all(len(v) == 0 for v in quiet.values())
+    assert quiet["event"].dtype == object and quiet["time_s"].dtype == np.float64
 
 
 def test_to_dataframe_equals_pandas_reading_the_csv():

@@ -463,26 +463,93 @@ void write_time_history(std::ostream& out, const SimulationResult& r, const Body
   }
 }
 
+namespace {
+
+// one column of the event log: name, unit, meaning and its value of an event (a number, or the
+// kind's name). The CSV, the Python arrays and the column reference of docs/case-file.md are
+// written from this table
+struct EventColumn {
+  const char* name;
+  const char* unit;
+  const char* doc;
+  double (*value)(const Event& e);      // nullptr: a text column
+  const char* (*text)(const Event& e);  // the text of a text column
+};
+
+const EventColumn kEventColumns[] = {
+    {"time_s", "s", "when", [](const Event& e) { return e.time; }, nullptr},
+    {"event", "-", "what happened: one of the kinds below", nullptr,
+     [](const Event& e) { return to_string(e.kind); }},
+    {"edge", "-",
+     "1 or 2: the pivot after an uplift or impact, the overturning side; 0: both (a level "
+     "landing) or none",
+     [](const Event& e) { return static_cast<double>(e.edge); }, nullptr},
+    {"theta_rad", "rad", "tilt (peaks)", [](const Event& e) { return e.theta; }, nullptr},
+    {"theta_dot_before_rad_per_s", "rad/s", "tilt rate before (impacts)",
+     [](const Event& e) { return e.theta_dot_before; }, nullptr},
+    {"theta_dot_after_rad_per_s", "rad/s", "tilt rate after (impacts)",
+     [](const Event& e) { return e.theta_dot_after; }, nullptr},
+    {"energy_loss_J", "J",
+     "energy lost (impacts, chatter cut-off); for `energy_unbalanced`, the residual",
+     [](const Event& e) { return e.energy_loss; }, nullptr},
+    {"impulse_x_N_s", "N s", "horizontal impulse of the floor (impacts)",
+     [](const Event& e) { return e.impulse_x; }, nullptr},
+    {"impulse_y_N_s", "N s", "vertical impulse of the floor (impacts)",
+     [](const Event& e) { return e.impulse_y; }, nullptr},
+    {"friction_demand", "-", "\\|F_I\\|/F_J, or \\|impulse_x\\|/impulse_y at an impact",
+     [](const Event& e) { return e.friction_demand; }, nullptr},
+};
+
+}  // namespace
+
 std::vector<std::string> event_columns() {
-  return {"time_s",
-          "event",
-          "edge",
-          "theta_rad",
-          "theta_dot_before_rad_per_s",
-          "theta_dot_after_rad_per_s",
-          "energy_loss_J",
-          "impulse_x_N_s",
-          "impulse_y_N_s",
-          "friction_demand"};
+  std::vector<std::string> v;
+  for (const EventColumn& c : kEventColumns) v.emplace_back(c.name);
+  return v;
+}
+
+std::vector<EventColumnValues> event_values(const SimulationResult& r) {
+  std::vector<EventColumnValues> cols;
+  for (const EventColumn& c : kEventColumns) {
+    if (c.value) {
+      std::vector<double> v;
+      for (const Event& e : r.events) v.push_back(c.value(e));
+      cols.emplace_back(std::move(v));
+    } else {
+      std::vector<std::string> v;
+      for (const Event& e : r.events) v.emplace_back(c.text(e));
+      cols.emplace_back(std::move(v));
+    }
+  }
+  return cols;
+}
+
+std::string event_column_reference() {
+  std::string s =
+      "<!-- begin: written by `flexrock keys --markdown` from the table of event-log columns "
+      "(src/io/outputs.cpp); edit the table, not these lines -->\n"
+      "| column | unit | meaning |\n"
+      "|---|---|---|\n";
+  for (const EventColumn& c : kEventColumns) {
+    s.append("| `").append(c.name).append("` | ").append(c.unit).append(" | ").append(c.doc);
+    s.append(" |\n");
+  }
+  s += "<!-- end: written by `flexrock keys --markdown` -->\n";
+  return s;
 }
 
 void write_events(std::ostream& out, const SimulationResult& r) {
   put_header(out, event_columns());
   for (const Event& e : r.events) {
-    put(out, e.time);
-    out << ',' << to_string(e.kind) << ',' << e.edge << ',';
-    put_row(out, std::vector<double>{e.theta, e.theta_dot_before, e.theta_dot_after, e.energy_loss,
-                                     e.impulse_x, e.impulse_y, e.friction_demand});
+    for (const EventColumn& c : kEventColumns) {
+      if (&c != kEventColumns) out << ',';
+      if (c.value) {
+        put(out, c.value(e));
+      } else {
+        out << c.text(e);
+      }
+    }
+    out << '\n';
   }
 }
 

@@ -346,18 +346,79 @@ std::string spectrum_row(const study::SpectrumResult& res, const study::Spectrum
   return s;
 }
 
+namespace {
+
+// what a boundary row is written from: the grid, g, and the spec's units in SI
+struct BoundaryContext {
+  const study::SpectrumResult& res;
+  double g;       // [m/s^2]
+  double a_unit;  // [m/s^2] one amplitude unit of the spec (record spectra: the record's PGA)
+  double omega;   // [rad/s] the column's frequency (record spectra: 0)
+};
+
+using Boundary = study::OverturnBoundary;
+
+bool found(const Boundary& b) { return b.kind != Boundary::Kind::kNone; }
+
+// one column of the boundary CSV: name, unit, meaning and its field of a row. The header, the
+// rows and the column reference of docs/studies.md are written from this table
+struct BoundaryColumn {
+  const char* name;
+  const char* unit;
+  const char* doc;
+  std::string (*field)(const BoundaryContext& x, const Boundary& b);
+};
+
+const BoundaryColumn kBoundaryColumns[] = {
+    {"column", "-", "grid index of the frequency",
+     [](const BoundaryContext&, const Boundary& b) { return std::to_string(b.column); }},
+    {"frequency", "grid",
+     "the column's frequency as the grid holds it: omega_p/p on normalized axes, rad/s on "
+     "physical ones",
+     [](const BoundaryContext&, const Boundary& b) { return num(b.frequency); }},
+    {"omega_p_rad_per_s", "rad/s", "the same in rad/s (record: 0)",
+     [](const BoundaryContext& x, const Boundary&) { return num(x.omega); }},
+    {"omega_p_over_p", "-", "the same over p",
+     [](const BoundaryContext& x, const Boundary&) { return num(x.omega / x.res.p); }},
+    {"kind", "-",
+     "`found`; `below_grid`: the smallest grid amplitude already overturns; `none`: no cell of "
+     "the column overturns",
+     [](const BoundaryContext&, const Boundary& b) {
+       return std::string(study::to_string(b.kind));
+     }},
+    {"min_overturning", "grid",
+     "the upper end of the bracket: an amplitude shown to overturn, as the grid holds it "
+     "(a_p/(g tan alpha) on normalized axes, m/s^2 on physical ones, the factor on a record); "
+     "empty for `none`",
+     [](const BoundaryContext&, const Boundary& b) {
+       return found(b) ? num(b.overturning) : std::string();
+     }},
+    {"safe_below", "grid", "the lower end: shown not to overturn (empty unless `found`)",
+     [](const BoundaryContext&, const Boundary& b) {
+       return b.kind == Boundary::Kind::kFound ? num(b.safe) : std::string();
+     }},
+    {"min_overturning_m_per_s2", "m/s^2", "`min_overturning` in m/s^2",
+     [](const BoundaryContext& x, const Boundary& b) {
+       return found(b) ? num(b.overturning * x.a_unit) : std::string();
+     }},
+    {"min_overturning_over_g_tan_alpha", "-", "`min_overturning` over g tan alpha",
+     [](const BoundaryContext& x, const Boundary& b) {
+       return found(b) ? num(b.overturning * x.a_unit / (x.g * x.res.tan_alpha)) : std::string();
+     }},
+    {"mode", "-", "the outcome class at `min_overturning` (which overturning mode)",
+     [](const BoundaryContext&, const Boundary& b) {
+       return std::string(found(b) ? study::to_string(b.mode) : "");
+     }},
+    {"bisection_runs", "-", "simulations the bisection took",
+     [](const BoundaryContext&, const Boundary& b) { return std::to_string(b.bisection_runs); }},
+};
+
+}  // namespace
+
 std::vector<std::string> boundary_columns() {
-  return {"column",
-          "frequency",
-          "omega_p_rad_per_s",
-          "omega_p_over_p",
-          "kind",
-          "min_overturning",
-          "safe_below",
-          "min_overturning_m_per_s2",
-          "min_overturning_over_g_tan_alpha",
-          "mode",
-          "bisection_runs"};
+  std::vector<std::string> v;
+  for (const BoundaryColumn& c : kBoundaryColumns) v.emplace_back(c.name);
+  return v;
 }
 
 std::string boundary_row(const study::SpectrumResult& res, const study::OverturnBoundary& b,
@@ -371,14 +432,12 @@ std::string boundary_row(const study::SpectrumResult& res, const study::Overturn
     a_unit = c0.amplitude > 0.0 ? c0.amplitude_si / c0.amplitude : 0.0;  // the record's PGA
     omega = 0.0;
   }
-  const bool found = b.kind != study::OverturnBoundary::Kind::kNone;
-  std::string s = std::to_string(b.column) + "," + num(b.frequency) + "," + num(omega) + "," +
-                  num(omega / res.p) + "," + study::to_string(b.kind) + ",";
-  s += (found ? num(b.overturning) : "") + ",";
-  s += (b.kind == study::OverturnBoundary::Kind::kFound ? num(b.safe) : "") + ",";
-  s += (found ? num(b.overturning * a_unit) : "") + ",";
-  s += (found ? num(b.overturning * a_unit / (g * res.tan_alpha)) : "") + ",";
-  s += std::string(found ? study::to_string(b.mode) : "") + "," + std::to_string(b.bisection_runs);
+  const BoundaryContext x{res, g, a_unit, omega};
+  std::string s;
+  for (const BoundaryColumn& col : kBoundaryColumns) {
+    if (&col != kBoundaryColumns) s += ',';
+    s += col.field(x, b);
+  }
   return s;
 }
 
@@ -586,24 +645,6 @@ std::string sweep_row(const study::SweepSpec& spec, const study::SweepRow& row) 
   return s;
 }
 
-std::string study_column_reference() {
-  auto block = [](const char* what, auto& columns) {
-    std::string s = std::string(
-                        "<!-- begin: written by `flexrock keys --markdown` from the table "
-                        "of ") +
-                    what +
-                    " columns (src/io/study_files.cpp); edit the table, not these lines -->\n"
-                    "| column | unit | meaning |\n"
-                    "|---|---|---|\n";
-    for (const auto& c : columns) {
-      s.append("| `").append(c.name).append("` | ").append(c.unit).append(" | ").append(c.doc);
-      s.append(" |\n");
-    }
-    return s + "<!-- end: written by `flexrock keys --markdown` -->\n";
-  };
-  return block("spectrum", kSpectrumColumns) + block("sweep", kSweepColumns);
-}
-
 // ---------------------------------------------------------------------------------------------
 // journal lines
 
@@ -724,59 +765,92 @@ JournalCheck sweep_journal_check(const study::SweepSpec& spec) {
 
 JournalCheck spectrum_journal_check(const study::SpectrumResult& grid, bool normalized, double g) {
   auto res = std::make_shared<study::SpectrumResult>(grid);
-  const std::size_t cell_columns = spectrum_columns().size();
-  const std::size_t boundary_fields = boundary_columns().size();
-  return [res, normalized, g, cell_columns, boundary_fields](
-             std::size_t index, const std::string& line) -> std::string {
+  // where the fields are, by column name
+  struct Fields {
+    std::size_t count, inputs, outcome, ratio, impacts, uplift, overturn, energy, status;
+  };
+  struct BoundaryFields {
+    std::size_t count, inputs, kind, min, safe, min_si, min_norm, mode, runs;
+  };
+  auto at = [](const std::vector<std::string>& names, const char* name) {
+    const auto it = std::find(names.begin(), names.end(), name);
+    FLEXROCK_DEMAND(it != names.end());
+    return static_cast<std::size_t>(it - names.begin());
+  };
+  const std::vector<std::string> cn = spectrum_columns(), bn = boundary_columns();
+  // a cell's inputs: row, column, amplitudes, frequencies, scale: as the spec makes this cell
+  const Fields c{cn.size(),
+                 at(cn, "scale") + 1,
+                 at(cn, "outcome"),
+                 at(cn, "max_theta_over_alpha"),
+                 at(cn, "impacts"),
+                 at(cn, "first_uplift_time_s"),
+                 at(cn, "overturn_time_s"),
+                 at(cn, "energy_lost_J"),
+                 at(cn, "status")};
+  // a boundary's inputs: column and frequencies
+  const BoundaryFields bf{bn.size(),
+                          at(bn, "omega_p_over_p") + 1,
+                          at(bn, "kind"),
+                          at(bn, "min_overturning"),
+                          at(bn, "safe_below"),
+                          at(bn, "min_overturning_m_per_s2"),
+                          at(bn, "min_overturning_over_g_tan_alpha"),
+                          at(bn, "mode"),
+                          at(bn, "bisection_runs")};
+  return [res, normalized, g, c, bf](std::size_t index, const std::string& line) -> std::string {
     const std::vector<std::string_view> f = fields_of(line);
     const std::size_t cells = res->cells.size();
     if (index < cells) {
-      if (std::string why = check_fields(f, cell_columns); !why.empty()) return why;
-      // row, column, amplitudes, frequencies, scale: as the spec makes this cell
-      const std::string expected(first_fields(spectrum_row(*res, res->cells[index], g), 7));
-      if (first_fields(line, 7) != expected) {
+      if (std::string why = check_fields(f, c.count); !why.empty()) return why;
+      const std::string expected(first_fields(spectrum_row(*res, res->cells[index], g), c.inputs));
+      if (first_fields(line, c.inputs) != expected) {
         return "its first fields are not those of cell " + std::to_string(index) + " (" + expected +
                ")";
       }
-      if (std::string why = check_outcome(f[7], f[8]); !why.empty()) return why;
-      for (const std::size_t k : {9u, 11u, 12u, 13u}) {
+      if (std::string why = check_outcome(f[c.outcome], f[c.outcome + 1]); !why.empty()) return why;
+      for (const std::size_t k : {c.ratio, c.uplift, c.overturn, c.energy}) {
         if (!is_number(f[k])) return "field " + std::to_string(k + 1) + " is not a number";
       }
-      if (!is_count(f[10])) return "impacts is not a count";
-      if (!is_status(f[14])) return "unknown status \"" + std::string(f[14]) + "\"";
+      if (!is_count(f[c.impacts])) return "impacts is not a count";
+      if (!is_status(f[c.status])) return "unknown status \"" + std::string(f[c.status]) + "\"";
       return "";
     }
     const std::size_t j = index - cells;
     if (j >= res->boundary.size()) return "no such cell or boundary";
-    if (std::string why = check_fields(f, boundary_fields); !why.empty()) return why;
+    if (std::string why = check_fields(f, bf.count); !why.empty()) return why;
     const std::string expected(
-        first_fields(boundary_row(*res, res->boundary[j], normalized, g), 4));
-    if (first_fields(line, 4) != expected) {
+        first_fields(boundary_row(*res, res->boundary[j], normalized, g), bf.inputs));
+    if (first_fields(line, bf.inputs) != expected) {
       return "its first fields are not those of the boundary of column " + std::to_string(j) +
              " (" + expected + ")";
     }
-    const bool none = f[4] == "none";
-    if (!none && f[4] != "found" && f[4] != "below_grid") {
-      return "unknown kind \"" + std::string(f[4]) + "\"";
+    const std::string_view kind = f[bf.kind];
+    const bool none = kind == "none";
+    if (!none && kind != "found" && kind != "below_grid") {
+      return "unknown kind \"" + std::string(kind) + "\"";
     }
-    for (const std::size_t k : {5u, 6u, 7u, 8u}) {
-      const bool empty_ok = none || (k == 6 && f[4] == "below_grid");
+    for (const std::size_t k : {bf.min, bf.safe, bf.min_si, bf.min_norm}) {
+      const bool empty_ok = none || (k == bf.safe && kind == "below_grid");
       if (!(is_number(f[k]) || (empty_ok && f[k].empty()))) {
         return "field " + std::to_string(k + 1) + " is not a number";
       }
     }
-    if (!none && (!outcome_named(f[9]) || !study::overturned(*outcome_named(f[9])))) {
-      return "mode \"" + std::string(f[9]) + "\" is not an overturning outcome";
+    if (!none && (!outcome_named(f[bf.mode]) || !study::overturned(*outcome_named(f[bf.mode])))) {
+      return "mode \"" + std::string(f[bf.mode]) + "\" is not an overturning outcome";
     }
-    if (!is_count(f[10])) return "bisection_runs is not a count";
+    if (!is_count(f[bf.runs])) return "bisection_runs is not a count";
     return "";
   };
 }
 
 study::Outcome spectrum_line_outcome(const std::string& line) {
   const std::vector<std::string_view> f = fields_of(line);
+  const std::vector<std::string> names = spectrum_columns();
+  const auto at =
+      static_cast<std::size_t>(std::find(names.begin(), names.end(), "outcome") - names.begin());
   const std::optional<study::Outcome> o =
-      f.size() > 7 ? outcome_named(f[7]) : std::optional<study::Outcome>();
+      f.size() > at ? outcome_named(f[at]) : std::optional<study::Outcome>();
   if (!o) throw InputError("no outcome in the spectrum line \"" + line + "\"");
   return *o;
 }
@@ -895,18 +969,86 @@ std::vector<FragilityData> fragility_data(const CsvTable& t, const FragilityQuer
   return out;
 }
 
+namespace {
+
+// one column of the fragility fit CSV: name, unit, meaning and its field of a body's fit. The
+// header, the rows and the column reference of docs/studies.md are written from this table
+struct FragilityColumn {
+  const char* name;
+  const char* unit;
+  const char* doc;
+  std::string (*field)(const FragilityData& d, const study::FragilityFit& f);
+};
+
+using Fit = study::FragilityFit;
+
+const FragilityColumn kFragilityColumns[] = {
+    {"body", "-", "name of the body", [](const FragilityData& d, const Fit&) { return d.body; }},
+    {"samples", "-", "observations used",
+     [](const FragilityData&, const Fit& f) { return std::to_string(f.samples); }},
+    {"failures", "-", "of which failed",
+     [](const FragilityData&, const Fit& f) { return std::to_string(f.failures); }},
+    {"excluded", "-", "rows left out: outcome `stopped` or `contact_lost`",
+     [](const FragilityData& d, const Fit&) { return std::to_string(d.excluded); }},
+    {"theta", "IM", "median capacity, in the units of the intensity measure",
+     [](const FragilityData&, const Fit& f) { return num(f.theta); }},
+    {"beta", "-", "lognormal standard deviation",
+     [](const FragilityData&, const Fit& f) { return num(f.beta); }},
+    {"se_ln_theta", "-", "standard error of ln(theta)",
+     [](const FragilityData&, const Fit& f) { return num(f.se_ln_theta); }},
+    {"se_beta", "-", "standard error of beta",
+     [](const FragilityData&, const Fit& f) { return num(f.se_beta); }},
+    {"confidence", "-", "level of the bounds (two-sided)",
+     [](const FragilityData&, const Fit& f) { return num(f.confidence); }},
+    {"theta_lower", "IM", "lower bound on theta",
+     [](const FragilityData&, const Fit& f) { return num(f.theta_lower); }},
+    {"theta_upper", "IM", "upper bound on theta",
+     [](const FragilityData&, const Fit& f) { return num(f.theta_upper); }},
+    {"beta_lower", "-", "lower bound on beta (>= 0)",
+     [](const FragilityData&, const Fit& f) { return num(f.beta_lower); }},
+    {"beta_upper", "-", "upper bound on beta",
+     [](const FragilityData&, const Fit& f) { return num(f.beta_upper); }},
+    {"log_likelihood", "-", "at the maximum",
+     [](const FragilityData&, const Fit& f) { return num(f.log_likelihood); }},
+};
+
+// the column reference of one table, as a Markdown table between begin and end markers
+template <class Column, std::size_t N>
+std::string column_block(const char* what, const Column (&columns)[N]) {
+  std::string s = std::string(
+                      "<!-- begin: written by `flexrock keys --markdown` from the table "
+                      "of ") +
+                  what +
+                  " columns (src/io/study_files.cpp); edit the table, not these lines -->\n"
+                  "| column | unit | meaning |\n"
+                  "|---|---|---|\n";
+  for (const Column& c : columns) {
+    s.append("| `").append(c.name).append("` | ").append(c.unit).append(" | ").append(c.doc);
+    s.append(" |\n");
+  }
+  return s + "<!-- end: written by `flexrock keys --markdown` -->\n";
+}
+
+}  // namespace
+
 std::vector<std::string> fragility_columns() {
-  return {"body",        "samples",     "failures",   "excluded",      "theta",
-          "beta",        "se_ln_theta", "se_beta",    "confidence",    "theta_lower",
-          "theta_upper", "beta_lower",  "beta_upper", "log_likelihood"};
+  std::vector<std::string> v;
+  for (const FragilityColumn& c : kFragilityColumns) v.emplace_back(c.name);
+  return v;
 }
 
 std::string fragility_row(const FragilityData& d, const study::FragilityFit& f) {
-  return d.body + "," + std::to_string(f.samples) + "," + std::to_string(f.failures) + "," +
-         std::to_string(d.excluded) + "," + num(f.theta) + "," + num(f.beta) + "," +
-         num(f.se_ln_theta) + "," + num(f.se_beta) + "," + num(f.confidence) + "," +
-         num(f.theta_lower) + "," + num(f.theta_upper) + "," + num(f.beta_lower) + "," +
-         num(f.beta_upper) + "," + num(f.log_likelihood);
+  std::string s;
+  for (const FragilityColumn& col : kFragilityColumns) {
+    if (&col != kFragilityColumns) s += ',';
+    s += col.field(d, f);
+  }
+  return s;
+}
+
+std::string study_column_reference() {
+  return column_block("spectrum", kSpectrumColumns) + column_block("boundary", kBoundaryColumns) +
+         column_block("sweep", kSweepColumns) + column_block("fragility fit", kFragilityColumns);
 }
 
 }  // namespace flexrock::io

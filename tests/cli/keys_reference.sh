@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: BSD-3-Clause
-# the references of docs/case-file.md (synthetic motion types, time-history columns) and of
-# docs/studies.md (spectrum and sweep CSV columns) are the ones `flexrock keys --markdown` writes
-# from the library's tables: the docs cannot drift from them
+# the references of docs/case-file.md (synthetic motion types, time-history and event-log columns)
+# and of docs/studies.md (spectrum, boundary, sweep and fragility fit CSV columns) are the ones
+# `flexrock keys --markdown` writes from the library's tables: the docs cannot drift from them
 source "$(dirname "$0")/common.sh"
 
 run "$FLEXROCK" keys --markdown
@@ -11,6 +11,9 @@ expect_in "$WORK/out" "| \`one_sine\` |"
 expect_in "$WORK/out" "| \`none\` |"
 expect_in "$WORK/out" "| \`lift_m\` | m |"
 expect_in "$WORK/out" "| \`max_friction_demand\` | - |"
+expect_in "$WORK/out" "| \`impulse_y_N_s\` | N s |"
+expect_in "$WORK/out" "| \`bisection_runs\` | - |"
+expect_in "$WORK/out" "| \`log_likelihood\` | - |"
 
 # the lines from each begin marker to its end marker, in the docs
 sed -n '/^<!-- begin: written by `flexrock keys --markdown`/,/^<!-- end: written by `flexrock keys --markdown`/p' \

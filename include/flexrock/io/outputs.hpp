@@ -8,6 +8,7 @@
 #include <functional>
 #include <iosfwd>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include "flexrock/io/case_file.hpp"
@@ -48,9 +49,21 @@ std::string time_history_column_reference();
 /// The time history as CSV text (a header row, then one row per output time).
 void write_time_history(std::ostream& out, const SimulationResult& result, const Body& body);
 
-/// Column names of the event log: time_s, event, edge, theta_rad, theta_dot_before_rad_per_s,
-/// theta_dot_after_rad_per_s, energy_loss_J, impulse_x_N_s, impulse_y_N_s, friction_demand.
+/// Column names of the event log, from its table of columns (src/io/outputs.cpp): time_s,
+/// event, edge, theta_rad, theta_dot_before_rad_per_s, theta_dot_after_rad_per_s, energy_loss_J,
+/// impulse_x_N_s, impulse_y_N_s, friction_demand.
 std::vector<std::string> event_columns();
+
+/// One column of the event log: numbers, or text (the event kind's name).
+using EventColumnValues = std::variant<std::vector<double>, std::vector<std::string>>;
+
+/// The event log as columns, in the order of event_columns(), one element per event: what
+/// write_events prints (the Python module's arrays).
+std::vector<EventColumnValues> event_values(const SimulationResult& result);
+
+/// The column reference of the event log, as the Markdown table of docs/case-file.md, written
+/// from the table of columns with its begin and end marker lines (`flexrock keys --markdown`).
+std::string event_column_reference();
 
 /// The event log as CSV text.
 void write_events(std::ostream& out, const SimulationResult& result);

@@ -82,9 +82,9 @@ SweepManifest load_sweep_manifest(const std::string& path);
 /// Columns of the sweep CSV.
 std::vector<std::string> sweep_columns();
 
-/// The column references of the spectrum and sweep CSVs, as the Markdown tables of
-/// docs/studies.md, written from the tables of columns with their begin and end marker lines
-/// (`flexrock keys --markdown`).
+/// The column references of the spectrum, boundary, sweep and fragility fit CSVs, as the Markdown
+/// tables of docs/studies.md, written from the tables of columns with their begin and end marker
+/// lines (`flexrock keys --markdown`).
 std::string study_column_reference();
 /// One CSV line (no line end) of a row; its first field is the run index.
 std::string sweep_row(const study::SweepSpec& spec, const study::SweepRow& row);
