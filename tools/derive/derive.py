@@ -16,7 +16,9 @@ modulo cos^2+sin^2-1.  For n <= --symbolic-flight-n (default 2) the same is done
 for free flight in the c.g. coordinates (x_c, y_c, theta, q), for lift-off (the
 rocking and flight descriptions of one motion; rocking = flight + the floor
 reaction at the corner), for plastic landing on a corner at any tilt (general
-alpha_e) and for the flat landing.
+alpha_e) and for the flat landing; and Coulomb friction: Lagrange's equations in (d, theta, q)
+with the pivot (or the base) sliding, the floor force, the resultant and the energy rate of the
+sliding modes, and the impact of a corner that may slide afterwards (plus rigid-block closed forms).
 
 Part (b): numeric, realizable bodies.  Random discrete bodies (point masses,
 massless tipping points at base level so phi = 0 there), parameters computed by
@@ -25,7 +27,11 @@ from the point masses (per-mass Lagrange terms derived symbolically with sin/cos
 and summed) in 30-digit mpmath, compared with the closed forms (assert 1e-12).
 Flight uses its own per-mass kernel in the coordinates (u, v, theta, q) of the
 base point O'; landings are solved from the momentum balances over the masses
-and checked against the closed forms and against A_f dnu = J_e^T Lambda.
+and checked against the closed forms and against A_f dnu = J_e^T Lambda.  Friction: the sliding
+modes' accelerations solved from the masses' rows and Coulomb's law, energy rates with the friction
+power, impacts with Coulomb's law on the impulse (stick or slip, loss >= 0), the rigid block's regime
+at initiation (every candidate mode tried) and pure sliding under pulses (exact piecewise solution
+against a fixed-step integration).
 
 Usage:  derive.py --out FILE.json [--seed 12345] [--print]
 """
@@ -308,6 +314,36 @@ def conv_landing_loss(P, q, vt_m, nu_m, vt_p, nu_p):
 def conv_flat_landing_rhs(P, q, vt, thd, qd):
     """flat landing: theta_dot+ = 0, base stuck, mu qd+ = p- / (M h^2) = psi^T vt + b_cg thd + mu_cg qd."""
     return conv_landing_system(P, 0, q, vt, thd, qd)[1][1:]
+
+
+# --- Coulomb friction: sliding and impacts with friction (docs/theory.md, Sliding) ------------
+# d: offset of the base along I relative to the floor (the pivot at X + d + h alpha); sg = +-1 the
+# slip sign (sign of d_dot); mu_k kinetic, mu_s static friction coefficients.
+
+
+def conv_e_I(s, c):
+    """the inertial unit vector I in body components."""
+    return (c, -s)
+
+
+def conv_dfdax(P, alpha, q, s, c, g):
+    """d f / d a_x = -(g/h) B^T e_I: the sliding acceleration enters the rocking rows as a_x + d_ddot/g."""
+    B = conv_B(P, alpha, q)
+    e = conv_e_I(s, c)
+    return [-(g / P['h']) * (B[0][i] * e[0] + B[1][i] * e[1]) for i in range(P['n'] + 1)]
+
+
+def conv_T_slide(P, alpha, q, thd, qd, dd, s, c):
+    """kinetic energy relative to the floor: T_rel + M d_dot v_cm,I + 1/2 M d_dot^2."""
+    vin = body_to_inertial(conv_vcm_body(P, alpha, q, thd, qd), s, c)
+    return conv_Trel(P, alpha, q, thd, qd) + P['M'] * dd * vin[0] + P['M'] * dd ** 2 / 2
+
+
+def conv_L(P, alpha_e, q, V):
+    """L(V) = (1/h) [w_e x V ; psi . V], V a velocity of the tipping point (body components)."""
+    w = conv_w(P, alpha_e, q)
+    return [(w[0] * V[1] - w[1] * V[0]) / P['h']] + [(P['psi_x'][j] * V[0] + P['psi_y'][j] * V[1]) / P['h']
+                                                     for j in range(P['n'])]
 
 
 # ---------------------------------------------------------------------------
@@ -685,6 +721,131 @@ class General:
             res['flat_landing_energy_loss'] = is_zero(Ef - Efc + M * h ** 2 * dot(qdp, residf))
         return res
 
+    # Coulomb friction: sliding modes and impacts with friction ---------------------------
+    def derive_sliding(self):
+        """Rocking with a sliding pivot and full-contact sliding in (d, theta, q); the floor force,
+        the resultant, the energy rate with friction; impacts with a sliding landing corner."""
+        n, M, h, g, alpha = self.n, self.M, self.h, self.g, self.alpha
+        P, q, qd, thd, thdd = self.P, self.q, self.qd, self.thd, self.thdd
+        res = {}
+        dd, ddd = sp.symbols('dd ddd')  # d_dot, d_ddot (T and V do not depend on d itself)
+        vb = ((self.Xd + dd) * C + self.Yd * S, -(self.Xd + dd) * S + self.Yd * C)
+        u = self.u_body(alpha, thd, qd)
+        v = (vb[0] + u[0], vb[1] + u[1])
+        T_in = self.integrate((v[0] ** 2 + v[1] ** 2) / 2)
+        V = self.V
+
+        def ddt(e):
+            return sp.expand(self.ddt(e) + sp.diff(e, dd) * ddd)
+        coords = [(None, dd), (None, thd)] + list(zip(q, qd))
+        EL = []
+        for i, (x, xd) in enumerate(coords):
+            if i == 0:  # d: cyclic in T and V
+                EL.append(ddt(sp.diff(T_in, xd)))
+                continue
+            dTdx = self.d_th(T_in) if x is None else sp.diff(T_in, x)
+            dVdx = self.d_th(V) if x is None else sp.diff(V, x)
+            EL.append(sp.expand(ddt(sp.diff(T_in, xd)) - dTdx + dVdx))
+        ax, ay = self.Xdd / g, 1 + self.Ydd / g
+        axs = ax + ddd / g  # the sliding base: a_x -> a_x + d_ddot / g
+        acc = [thdd] + self.qdd
+        A_c = conv_A(P, alpha, q)
+        f_s = conv_f(P, alpha, q, thd, qd, S, C, axs, ay, g)
+        # (i) theta- and q-rows: those of rocking with a_x -> a_x + d_ddot/g
+        res['slide_rows'] = all(is_zero(EL[i + 1] - M * h ** 2 * (dot(A_c[i], acc) - f_s[i])) for i in range(n + 1))
+        # (ii) d-row: the generalized force of the floor force at the pivot, F_I of theory 5 (same replacement)
+        Fs = body_to_inertial(conv_F_body(P, alpha, q, thd, qd, thdd, self.qdd, S, C, axs, ay, g), S, C)
+        res['slide_d_row_is_F_I'] = is_zero(EL[0] - Fs[0] + M * g * 0)
+        # and the whole floor force from dP/dt + M g J
+        vin = body_to_inertial(v, S, C)
+        Pm = [self.integrate(vin[0]), self.integrate(vin[1])]
+        res['slide_reaction'] = is_zero(ddt(Pm[0]) - Fs[0]) and is_zero(ddt(Pm[1]) + M * g - Fs[1])
+        # the reaction's dependence on the accelerations: dF_body/da_x = M g e_I, dF_body/dnu_dd = M h B,
+        # and df/da_x = -(g/h) B^T e_I, so dF/dd_ddot = M (I - B A^-1 B^T) e_I = W^-1 I (theory 15)
+        axsym = sp.Symbol('ax_')
+        Fb = conv_F_body(P, alpha, q, thd, qd, thdd, self.qdd, S, C, axsym, ay, g)
+        Bm, eI = conv_B(P, alpha, q), conv_e_I(S, C)
+        ok = all(is_zero(sp.diff(Fb[r], axsym) - M * g * eI[r]) for r in range(2))
+        ok = ok and all(is_zero(sp.diff(Fb[r], acc[i]) - M * h * Bm[r][i]) for r in range(2) for i in range(n + 1))
+        fa = conv_f(P, alpha, q, thd, qd, S, C, axsym, ay, g)
+        dfa = conv_dfdax(P, alpha, q, S, C, g)
+        ok = ok and all(is_zero(sp.diff(fa[i], axsym) - dfa[i]) for i in range(n + 1))
+        res['slide_affine_structure'] = ok
+        # (iii) full contact sliding: q-rows and d-row at theta = thd = thdd = 0
+        full = {S: 0, C: 1, thd: 0, thdd: 0}
+        res['slide_full_contact'] = (all(is_zero((EL[j + 2] - M * h ** 2 * (dot(A_c[j + 1], acc) - f_s[j + 1])).subs(full))
+                                         for j in range(n))
+                                     and is_zero((EL[0] - Fs[0]).subs(full)))
+        # (iv) kinetic energy relative to the floor and the energy rate with friction
+        Tb = conv_T_slide(P, alpha, q, thd, qd, dd, S, C)
+        vcm_in = body_to_inertial(conv_vcm_body(P, alpha, q, thd, qd), S, C)
+        res['slide_kinetic_energy'] = is_zero(T_in - M * (self.Xd ** 2 + self.Yd ** 2) / 2
+                                              - M * (self.Xd * (vcm_in[0] + dd) + self.Yd * vcm_in[1]) - Tb)
+        nu = [thd] + qd
+        Vr = conv_V(P, alpha, q, S, C, g)
+        dE = ddt(Tb + Vr) - M * h ** 2 * dot(nu, [dot(A_c[i], acc) - f_s[i] for i in range(n + 1)])
+        res['slide_energy_rate'] = is_zero(dE + M * (self.Xdd * (vcm_in[0] + dd) + self.Ydd * vcm_in[1])
+                                           - Fs[0] * dd)
+        # (v) resultant of a sliding base: moment about the moving projection of the c.g.
+        acc_pt = [ddt(vin[0]), ddt(vin[1])]
+        s_ = self.s_body(alpha)
+        r_in = body_to_inertial(s_, S, C)
+        r_in = (h * alpha + r_in[0], r_in[1])
+        mom = self.integrate(sp.expand((r_in[0] * (acc_pt[1] + g) - r_in[1] * acc_pt[0]).subs(full)))
+        num, den = conv_alpha_star_parts(P, q, self.qdd, axs, ay, g)
+        res['slide_resultant'] = is_zero(mom - M * g * h * num) and is_zero(Fs[1].subs(full) - M * g * den)
+        self.slide_EL = EL
+        # (vi) impact with friction: flight (or any) state -> rocking on alpha_e with the corner sliding
+        ae = sp.Symbol('alpha_e')
+        vtx, vty, vbx, vby, ddp = sp.symbols('vtx vty vbx vby ddp')
+        thm, thp = sp.symbols('thd_m thd_p')
+        qdm = [sp.Symbol('qdm%d' % j) for j in range(1, n + 1)]
+        qdp = [sp.Symbol('qdp%d' % j) for j in range(1, n + 1)]
+        psq = (dot(self.psi_x, q), dot(self.psi_y, q))
+        rho_c = (self.rx + dot(self.fx, q) - h * psq[0], self.ry + dot(self.fy, q) - h * psq[1])
+        uf = (-thm * rho_c[1] + dot(self.fx, qdm) - h * dot(self.psi_x, qdm),
+              thm * rho_c[0] + dot(self.fy, qdm) - h * dot(self.psi_y, qdm))
+        um = (vbx + h * vtx + uf[0], vby + h * vty + uf[1])
+        Vp = (ddp * C, -ddp * S)  # the corner's velocity after: d_dot+ I, body components
+        ur = self.u_body(ae, thp, qdp)
+        up = (vbx + Vp[0] + ur[0], vby + Vp[1] + ur[1])
+        s_e = self.s_body(ae)
+        H = lambda u_: self.integrate(s_e[0] * u_[1] - s_e[1] * u_[0])
+        pm = lambda u_, j: self.integrate(self.fx[j] * u_[0] + self.fy[j] * u_[1])
+        Ae_, rhs = conv_landing_system(P, ae, q, (vtx, vty), thm, qdm)  # A_e nu- + L(V-)
+        nup = [thp] + qdp
+        Lp = conv_L(P, ae, q, Vp)
+        resid = [dot(Ae_[i], nup) + Lp[i] - rhs[i] for i in range(n + 1)]
+        cons = [H(up) - H(um)] + [pm(up, j) - pm(um, j) for j in range(n)]
+        res['friction_impact_map'] = all(is_zero(cons[i] - M * h ** 2 * resid[i]) for i in range(n + 1))
+        # A_e nu- + L(V-) with V- the corner's velocity before: the right-hand side of the landing map
+        Be = conv_B(P, ae, q)
+        Vm = (h * (vtx - dot(Be[0], [thm] + qdm)), h * (vty - dot(Be[1], [thm] + qdm)))
+        Lm = conv_L(P, ae, q, Vm)
+        res['friction_impact_rhs'] = all(is_zero(dot(Ae_[i], [thm] + qdm) + Lm[i] - rhs[i]) for i in range(n + 1))
+        Lam = [self.integrate(up[i] - um[i]) for i in range(2)]
+        vcp = (Vp[0] + h * dot(Be[0], nup), Vp[1] + h * dot(Be[1], nup))
+        res['friction_impact_impulse'] = all(is_zero(Lam[i] - M * (vcp[i] - h * (vtx, vty)[i])) for i in range(2))
+        Tin = lambda u_: self.integrate((u_[0] ** 2 + u_[1] ** 2) / 2)
+        E = vbx * Lam[0] + vby * Lam[1] - (Tin(up) - Tin(um))
+        # E = kinetic energy of the jump - Lambda . V+ (= + mu_k Lambda_J |d_dot+| when sliding)
+        vtp = (vcp[0] / h, vcp[1] / h)
+        Ec = conv_landing_loss(P, q, (vtx, vty), [thm] + qdm, vtp, nup) - (Lam[0] * Vp[0] + Lam[1] * Vp[1])
+        res['friction_impact_energy_loss'] = is_zero(E - Ec + M * h ** 2 * dot(nup, resid))
+        # flat landing with sliding: theta_dot+ = 0, modal momenta mu qd+ + psi_x d_dot+/h = r_q
+        if n:
+            upf = (vbx + Vp[0] + dot(self.fx, qdp), vby + Vp[1] + dot(self.fy, qdp))
+            upf = tuple(sp.expand(x.subs({S: 0, C: 1})) for x in upf)
+            umf = tuple(sp.expand(x.subs({S: 0, C: 1})) for x in um)
+            prhs = conv_flat_landing_rhs(P, q, (vtx, vty), thm, qdm)
+            residf = [dot(self.mu[j], qdp) + self.psi_x[j] * ddp / h - prhs[j] for j in range(n)]
+            res['flat_friction_modal'] = all(is_zero(pm(upf, j) - pm(umf, j) - M * h ** 2 * residf[j])
+                                             for j in range(n))
+            Lf = [self.integrate(upf[i] - umf[i]) for i in range(2)]
+            res['flat_friction_impulse'] = (is_zero(Lf[0] - M * (ddp + h * dot(self.psi_x, qdp) - h * vtx))
+                                            and is_zero(Lf[1] - M * (h * dot(self.psi_y, qdp) - h * vty)))
+        return res
+
 
 def symbolic_checks(nlist, verbose=False, flight_n=2):
     allres = {}
@@ -695,6 +856,7 @@ def symbolic_checks(nlist, verbose=False, flight_n=2):
         r = G.derive()
         if n <= flight_n:
             r.update(G.derive_flight())
+            r.update(G.derive_sliding())
         allres[n] = r
         gens[n] = G
         if verbose:
@@ -1528,6 +1690,736 @@ def flight_cases(K, FK, body, rng, chk, stats):
     return dict(flight=fl, liftoff=lo, landings=la, flat_landings=fla)
 
 
+# --- Coulomb friction: direct point-mass mechanics of the sliding modes and impacts ---------------
+
+def mu_quad(P, a, b):
+    """a^T mu^-1 b."""
+    return dot(a, mu_solve(P, b)) if P['n'] else mp.mpf(0)
+
+
+def conv_k_slide_full(P, sg, mu_k):
+    """k_s / M in full contact: (1 - psi_x^T mu^-1 psi_x) - s mu_k psi_y^T mu^-1 psi_x."""
+    return 1 - mu_quad(P, P['psi_x'], P['psi_x']) - sg * mu_k * mu_quad(P, P['psi_y'], P['psi_x'])
+
+
+def conv_Winv(P, alpha, q, th):
+    """W^-1 = M (I - R B A^-1 B^T R^T): the floor force per unit acceleration of the tipping point."""
+    n, M = P['n'], P['M']
+    A = mp.matrix(conv_A(P, alpha, q))
+    B = conv_B(P, alpha, q)
+    Bm = mp.matrix([[B[i][j] for j in range(n + 1)] for i in range(2)])
+    s, c = mp.sin(th), mp.cos(th)
+    R = mp.matrix([[c, -s], [s, c]])
+    return M * (mp.eye(2) - R * Bm * mp.inverse(A) * Bm.T * R.T)
+
+
+def conv_k_slide_rock(P, alpha, q, th, sg, mu_k):
+    """k_s / M while rocking: (W^-1_II + s mu_k W^-1_JI) / M."""
+    Wi = conv_Winv(P, alpha, q, th)
+    return (Wi[0, 0] + sg * mu_k * Wi[1, 0]) / P['M']
+
+
+def conv_slide_rock(P, alpha, q, th, thd, qd, ax, ay, g, sg, mu_k):
+    """rocking with the pivot sliding (sign sg): d_ddot = -(F_I0 + s mu_k F_J0) / k_s, then theory 4
+    and 5 with a_x -> a_x + d_ddot / g."""
+    n, M = P['n'], P['M']
+    s, c = mp.sin(th), mp.cos(th)
+    A = mp.matrix(conv_A(P, alpha, q))
+
+    def state(axx):
+        nudd = solve_lin(A, mp.matrix(conv_f(P, alpha, q, thd, qd, s, c, axx, ay, g)))
+        nudd = [nudd[i] for i in range(n + 1)]
+        F = body_to_inertial(conv_F_body(P, alpha, q, thd, qd, nudd[0], nudd[1:], s, c, axx, ay, g), s, c)
+        return nudd, F
+    _, F0 = state(ax)
+    k = M * conv_k_slide_rock(P, alpha, q, th, sg, mu_k)
+    ddd = -(F0[0] + sg * mu_k * F0[1]) / k
+    nudd, F = state(ax + ddd / g)
+    return ddd, nudd, F, k
+
+
+def conv_slide_full(P, q, qd, ax, ay, g, sg, mu_k):
+    """full contact sliding: mu qdd = -(g/h)(kappa q + psi_x (a_x + d_ddot/g) + psi_y a_y)."""
+    n, M, h = P['n'], P['M'], P['h']
+
+    def state(axx):
+        qdd = mu_solve(P, [-(g / h) * (dot(P['kappa'][j], q) + P['psi_x'][j] * axx + P['psi_y'][j] * ay)
+                           for j in range(n)]) if n else []
+        F = (M * g * axx + M * h * dot(P['psi_x'], qdd), M * g * ay + M * h * dot(P['psi_y'], qdd))
+        return qdd, F
+    _, F0 = state(ax)
+    k = M * conv_k_slide_full(P, sg, mu_k)
+    ddd = -(F0[0] + sg * mu_k * F0[1]) / k
+    qdd, F = state(ax + ddd / g)
+    return ddd, qdd, F, k
+
+
+def conv_friction_impact(P, alpha_e, q, th, nu_m, Vm, mu_s, mu_k):
+    """impact of the tipping point alpha_e with Coulomb friction (plastic normal part).
+    nu_m = (theta_dot, q_dot) before, Vm the tipping point's velocity before (inertial components,
+    relative to the floor).  A_e nu+ + L(V+) = A_e nu- + L(V-), V+ = d_dot+ I; the impulse
+    Lambda = M (v_c+ - v_c-) is affine in d_dot+.  Returns (mode, sg, d_dot+, nu+, Lambda)."""
+    n, M, h = P['n'], P['M'], P['h']
+    s, c = mp.sin(th), mp.cos(th)
+    A = mp.matrix(conv_A(P, alpha_e, q))
+    B = conv_B(P, alpha_e, q)
+    Vmb = rotT(Vm, th)
+    rhs0 = [dot(conv_A(P, alpha_e, q)[i], nu_m) + conv_L(P, alpha_e, q, Vmb)[i] for i in range(n + 1)]
+    vcm = [Vm[i] + h * rot((dot(B[0], nu_m), dot(B[1], nu_m)), th)[i] for i in range(2)]
+
+    def post(ddp):
+        Vp = (ddp * c, -ddp * s)
+        Lp = conv_L(P, alpha_e, q, Vp)
+        nu = solve_lin(A, mp.matrix([rhs0[i] - Lp[i] for i in range(n + 1)]))
+        nu = [nu[i] for i in range(n + 1)]
+        vr = rot((dot(B[0], nu), dot(B[1], nu)), th)
+        Lam = [M * ((ddp if i == 0 else 0) + h * vr[i] - vcm[i]) for i in range(2)]
+        return nu, Lam
+    nu0, L0 = post(0)
+    if L0[1] >= 0 and abs(L0[0]) <= mu_s * L0[1]:
+        return 'stick', 0, mp.mpf(0), nu0, L0
+    sg = -1 if L0[0] > 0 else 1
+    Wi = conv_Winv(P, alpha_e, q, th)
+    k = Wi[0, 0] + sg * mu_k * Wi[1, 0]  # d Lambda / d d_dot+ = W^-1 I
+    ddp = -(L0[0] + sg * mu_k * L0[1]) / k
+    nu, Lam = post(ddp)
+    return 'slip', sg, ddp, nu, Lam
+
+
+def slide_direct(K, body, x0, ex, th, q, thd, qd, dd, base, sg, mu_k, full=False):
+    """sliding state from the point masses: unknowns (d_ddot, theta_ddot, q_ddot) [full contact:
+    (d_ddot, q_ddot)]; the theta- and q-rows of the masses with the base acceleration X_ddot + d_ddot,
+    and Coulomb F_I + s mu_k F_J = 0 with F = sum m R_ddot + M g J.  x0: the pivot's abscissa from O'."""
+    n, M = body.n, body.M
+    pts = list(body.pts())
+
+    # everything is affine in the accelerations: evaluate at the origin and the unit vectors
+    def residual(xacc):
+        ddd, thdd, qdd = xacc[0], xacc[1], list(xacc[2:])
+        b = [dd, 0, base[0] + ddd, base[1], G]
+        EL = [mp.mpf(0)] * (n + 1)
+        F = [mp.mpf(0), M * G]
+        for pt in pts:
+            e0 = kcall(K, K.EL0, pt, x0, ex, th, q, thd, qd, 0, [0] * n, b)
+            eA = kcall(K, K.ELA, pt, x0, ex, th, q, thd, qd, 0, [0] * n, b)
+            acc = [thdd] + qdd
+            for i in range(n + 1):
+                EL[i] += e0[i] + sum(eA[i, j] * acc[j] for j in range(n + 1))
+            a_ = kcall(K, K.Rdd, pt, x0, ex, th, q, thd, qd, thdd, qdd, b)
+            F[0] += pt[0] * a_[0]
+            F[1] += pt[0] * a_[1]
+        for j in range(n):
+            EL[j + 1] += sum(body.k[j][i] * q[i] for i in range(n))
+        out = ([EL[i] for i in range(1 if full else 0, n + 1)] + [F[0] + sg * mu_k * F[1]])
+        return out, F
+    N = n + 2
+    z = [mp.mpf(0)] * N
+    r0, _ = residual(z)
+    cols = []
+    for kk in range(N):
+        if full and kk == 1:
+            continue
+        e = list(z)
+        e[kk] = mp.mpf(1)
+        rk, _ = residual(e)
+        cols.append([rk[i] - r0[i] for i in range(len(r0))])
+    Am = mp.matrix([[cols[j][i] for j in range(len(cols))] for i in range(len(r0))])
+    sol = solve_lin(Am, mp.matrix([-x for x in r0]))
+    sol = [sol[i] for i in range(len(cols))]
+    xacc = [sol[0], mp.mpf(0)] + sol[1:] if full else sol
+    _, F = residual(xacc)
+    return xacc, F
+
+
+def slide_energy_direct(K, body, x0, ex, th, q, thd, qd, dd, base, xacc):
+    """T relative to the floor, V, and d/dt (T + V) from the masses."""
+    n, M = body.n, body.M
+    ddd, thdd, qdd = xacc[0], xacc[1], list(xacc[2:])
+    b = [dd, 0, base[0] + ddd, base[1], G]
+    T = mp.mpf(0)
+    V = sum(q[i] * body.k[i][j] * q[j] for i in range(n) for j in range(n)) / 2
+    dE = sum(q[i] * body.k[i][j] * qd[j] for i in range(n) for j in range(n))
+    vcm = [mp.mpf(0)] * 2
+    for pt in body.pts():
+        m = pt[0]
+        v_ = kcall(K, K.Rd, pt, x0, ex, th, q, thd, qd, thdd, qdd, b)  # relative to the floor
+        a_ = kcall(K, K.Rdd, pt, x0, ex, th, q, thd, qd, thdd, qdd, b)  # inertial
+        r_ = kcall(K, K.Rrel, pt, x0, ex, th, q, thd, qd, thdd, qdd, b)
+        T += m * (v_[0] ** 2 + v_[1] ** 2) / 2
+        V += m * G * r_[1]
+        dE += m * (v_[0] * (a_[0] - base[0]) + v_[1] * (a_[1] - base[1]) + G * v_[1])
+        vcm = [vcm[i] + m * v_[i] / M for i in range(2)]
+    return T, V, dE, vcm
+
+
+def sliding_cases(K, body, rng, chk, stats):
+    """rocking with a sliding pivot and full-contact sliding: closed forms against the masses."""
+    n, P, M, h = body.n, body.P, body.M, body.h
+    u = lambda a, b: mpf(rng.uniform(a, b))
+    sgh = mp.sqrt(G * h)
+    out_r, out_f = [], []
+    for i in range(4):
+        edge = 1 + i % 2
+        ae = alpha_of(body, edge)
+        x0 = h * ae
+        th = u(0.0, 0.4) * (1 if edge == 1 else -1)
+        q = [mpf(0.05 * rng.normal()) for _ in range(n)]
+        qd = [mpf(rng.normal()) for _ in range(n)]
+        thd = u(-1.5, 1.5)
+        sg = 1 if i < 2 else -1
+        dd = sg * u(0.01, 0.5) * sgh
+        mu_k = u(0.05, 0.6)
+        base = [u(-0.3, 0.3) * G, u(-0.3, 0.3) * G]
+        xacc, F = slide_direct(K, body, x0, x0 + u(-0.2, 0.2) * h, th, q, thd, qd, dd, base, sg, mu_k)
+        ax, ay = base[0] / G, 1 + base[1] / G
+        ddd, nudd, Fc, k = conv_slide_rock(P, ae, q, th, thd, qd, ax, ay, G, sg, mu_k)
+        chk.eq(xacc, [ddd] + nudd, 'sliding rocking accelerations')
+        chk.eq(F, Fc, 'sliding rocking reaction')
+        chk.eq(F[0], -sg * mu_k * F[1], 'sliding rocking Coulomb')
+        # k_s: the d_ddot-coefficient of F_I + s mu_k F_J with the rows solved, from the closed forms
+        d1 = conv_slide_rock(P, ae, q, th, thd, qd, ax + 1 / G, ay, G, sg, mu_k)
+        _, _, Fa, _ = conv_slide_rock(P, ae, q, th, thd, qd, ax, ay, G, sg, mu_k)
+        # W^-1 = M (I - R B A^-1 B^T R^T) = (M W_corner)^-1 ... (theory 15): Woodbury
+        chk.eq([x for x in conv_Winv(P, ae, q, th)], [x for x in mp.inverse(W_corner(P, ae, q, th))], 'W^-1 (Woodbury)')
+        if n == 0:  # rigid: k_s = (M / A)(zeta^2 + X^2 + s mu_k X Y), (X, Y) = R(theta) w
+            X, Y = rot(conv_w(P, ae, []), th)
+            chk.eq(k, M * (P['zeta2'] + X ** 2 + sg * mu_k * X * Y) / (1 + P['zeta2'] + ae ** 2), 'rigid k_s')
+        # energy: d/dt (T + V) = -M a_b . (v_cm + d_dot I) + F_I d_dot = input - mu_k F_J |d_dot|
+        T, V, dE, vcm = slide_energy_direct(K, body, x0, x0, th, q, thd, qd, dd, base, xacc)
+        s, c = mp.sin(th), mp.cos(th)
+        chk.eq(T, conv_T_slide(P, ae, q, thd, qd, dd, s, c), 'sliding T')
+        vc_rel = body_to_inertial(conv_vcm_body(P, ae, q, thd, qd), s, c)
+        chk.eq(vcm, [vc_rel[0] + dd, vc_rel[1]], 'sliding c.g. velocity')
+        inp = -M * (base[0] * (vc_rel[0] + dd) + base[1] * vc_rel[1])
+        chk.eq(dE, inp + F[0] * dd, 'sliding energy rate')
+        chk.eq(dE, inp - mu_k * F[1] * abs(dd), 'sliding energy rate (friction dissipation)')
+        stats['slide_rock'] += 1
+        if k <= 0:
+            stats['k_nonpositive'] += 1
+        out_r.append(dict(edge=edge, theta=th, q=q, theta_dot=thd, q_dot=qd, d_dot=dd, slip_sign=sg, mu_k=mu_k,
+                          base_acc=base, d_ddot=ddd, accelerations=nudd, reaction=F, k_s=k, kinetic_energy=T,
+                          energy_rate=dE))
+    for i in range(2):
+        q = [mpf(0.05 * rng.normal()) for _ in range(n)]
+        qd = [mpf(rng.normal()) for _ in range(n)]
+        sg = 1 - 2 * i
+        dd = sg * u(0.01, 0.5) * sgh
+        mu_k = u(0.05, 0.6)
+        base = [u(-0.3, 0.3) * G, u(-0.3, 0.3) * G]
+        x0 = -body.b1
+        xacc, F = slide_direct(K, body, x0, x0, 0, q, 0, qd, dd, base, sg, mu_k, full=True)
+        ax, ay = base[0] / G, 1 + base[1] / G
+        ddd, qdd, Fc, k = conv_slide_full(P, q, qd, ax, ay, G, sg, mu_k)
+        chk.eq([xacc[0]] + xacc[2:], [ddd] + qdd, 'full contact sliding accelerations')
+        chk.eq(F, Fc, 'full contact sliding reaction')
+        # the resultant of the sliding base (moment about the moving c.g. projection) = theory 6, a_x + d_ddot/g
+        mom = mp.mpf(0)
+        b = [dd, 0, base[0] + ddd, base[1], G]
+        for pt in body.pts():
+            a_ = kcall(K, K.Rdd, pt, x0, x0, 0, q, 0, qd, 0, qdd, b)
+            r_ = kcall(K, K.Rrel, pt, x0, x0, 0, q, 0, qd, 0, qdd, b)
+            mom += pt[0] * (r_[0] * (a_[1] + G) - r_[1] * a_[0])
+        num, den = conv_alpha_star_parts(P, q, qdd, ax + ddd / G, ay, G)
+        chk.eq(mom / (h * F[1]), num / den, 'sliding resultant')
+        U1 = den * (num / den + body.alpha1)
+        U2 = den * (body.alpha2 - num / den)
+        # uplift while sliding: rocking-sliding on edge e at theta = thd = 0 has
+        #   theta_ddot = -+ (g/h) U_e k_fc / (S_e k_rock)  (U_e, k_fc of full-contact sliding)
+        for edge, U, sgn in ((1, U1, -1), (2, U2, 1)):
+            ae = alpha_of(body, edge)
+            dr, nr, _, kr = conv_slide_rock(P, ae, q, 0, 0, qd, ax, ay, G, sg, mu_k)
+            chk.eq(nr[0], sgn * (G / h) * U * k / (schur(P, ae, q) * kr), 'uplift while sliding')
+        T, V, dE, vcm = slide_energy_direct(K, body, x0, x0, 0, q, 0, qd, dd, base, xacc)
+        chk.eq(T, conv_T_slide(P, 0, q, 0, qd, dd, 0, 1), 'full contact sliding T')
+        inp = -M * (base[0] * vcm[0] + base[1] * vcm[1])
+        chk.eq(dE, inp - mu_k * F[1] * abs(dd), 'full contact sliding energy rate')
+        stats['slide_full'] += 1
+        out_f.append(dict(q=q, q_dot=qd, d_dot=dd, slip_sign=sg, mu_k=mu_k, base_acc=base, d_ddot=ddd,
+                          q_ddot=qdd, reaction=F, k_s=k, resultant=num / den, kinetic_energy=T, energy_rate=dE))
+    return out_r, out_f
+
+
+def friction_landing(K, FK, body, edge, th, q, x, xd, vb, mu_s, mu_k, chk, stats, what='friction landing'):
+    """flight state (x, xd) in (u, v, theta, q) with corner `edge` on the floor; plastic impact with
+    Coulomb friction.  From the masses: for a given d_dot+ the post state (rocking on `edge`, the corner
+    sliding at d_dot+ I) follows from the moment of momentum about the corner and the modal momenta;
+    the impulse is the change of momentum (affine in d_dot+); Coulomb's law picks d_dot+."""
+    n, P, M, h = body.n, body.P, body.M, body.h
+    ae = alpha_of(body, edge)
+    x0 = h * ae
+    ce = rot((x0, 0), th)
+    xe = x[0] + ce[0]
+    b = [vb[0], vb[1], 0, 0, G]
+    pts = list(body.pts())
+
+    def phi_in(pt, j):
+        return rot((pt[3][j], pt[4][j]), th)
+
+    def conserved(vels):
+        out = [mp.mpf(0)] * (n + 1)
+        for pt, v_ in zip(pts, vels):
+            r = FK.call(FK.Rrel, pt, x, xd, [0] * (n + 3), b)
+            out[0] += pt[0] * ((r[0] - xe) * v_[1] - r[1] * v_[0])
+            for j in range(n):
+                ph = phi_in(pt, j)
+                out[j + 1] += pt[0] * (ph[0] * v_[0] + ph[1] * v_[1])
+        return out
+    vm = [FK.call(FK.Rd, pt, x, xd, [0] * (n + 3), b) for pt in pts]
+    pre = conserved(vm)
+
+    def post(ddp):
+        bp = [vb[0] + ddp, vb[1], 0, 0, G]
+        pv = lambda thd_, qd_: [kcall(K, K.Rd, pt, x0, xe, th, q, thd_, qd_, 0, [0] * n, bp) for pt in pts]
+        b0 = conserved(pv(0, [0] * n))
+        cols = []
+        for kk in range(n + 1):
+            e = [0] * (n + 1)
+            e[kk] = 1
+            ck = conserved(pv(e[0], e[1:]))
+            cols.append([ck[i] - b0[i] for i in range(n + 1)])
+        A = mp.matrix([[cols[j][i] for j in range(n + 1)] for i in range(n + 1)])
+        sol = solve_lin(A, mp.matrix([pre[i] - b0[i] for i in range(n + 1)]))
+        nu = [sol[i] for i in range(n + 1)]
+        vp = pv(nu[0], nu[1:])
+        Lam = [sum(pt[0] * (vp_[i] - vm_[i]) for pt, vp_, vm_ in zip(pts, vp, vm)) for i in range(2)]
+        dT = sum(pt[0] * (vp_[0] ** 2 + vp_[1] ** 2 - vm_[0] ** 2 - vm_[1] ** 2) / 2
+                 for pt, vp_, vm_ in zip(pts, vp, vm))
+        return nu, Lam, vb[0] * Lam[0] + vb[1] * Lam[1] - dT
+    nu0, L0, E0 = post(0)
+    nu1, L1, _ = post(1)
+    dL = [L1[i] - L0[i] for i in range(2)]
+    Wi = conv_Winv(P, ae, q, th)
+    chk.eq(dL, [Wi[0, 0], Wi[1, 0]], what + ': dLambda/dd_dot+ = W^-1 I')
+    if L0[1] >= 0 and abs(L0[0]) <= mu_s * L0[1]:
+        mode, sg, ddp, nu, Lam, E = 'stick', 0, mp.mpf(0), nu0, L0, E0
+    else:
+        mode, sg = 'slip', (-1 if L0[0] > 0 else 1)
+        ks = dL[0] + sg * mu_k * dL[1]
+        ddp = -(L0[0] + sg * mu_k * L0[1]) / ks
+        nu, Lam, E = post(ddp)
+        if ks > 0:
+            assert ddp * sg > 0 and Lam[1] > 0, what + ': sliding impact inconsistent with k_s > 0'
+            # Moreau: the slip solution is unique (the other slip sign gives no solution)
+            ko = dL[0] - sg * mu_k * dL[1]
+            do = -(L0[0] - sg * mu_k * L0[1]) / ko
+            assert not (do * (-sg) > 0 and (L0[1] + do * dL[1]) > 0 and ko > 0), what + ': two slip solutions'
+        else:
+            stats['impact_k_nonpositive'] += 1
+    # the closed-form law (design: A_e nu+ + L(V+) = A_e nu- + L(V-))
+    vc = [sum(pt[0] * (v_[i] - vb[i]) for pt, v_ in zip(pts, vm)) / M for i in range(2)]
+    thdm, qdm = xd[2], list(xd[3:])
+    s, c = mp.sin(th), mp.cos(th)
+    Vm = conv_corner_vel(P, ae, q, vc, thdm, qdm, s, c)
+    mode_c, sg_c, ddp_c, nu_c, Lam_c = conv_friction_impact(P, ae, q, th, [thdm] + qdm, Vm, mu_s, mu_k)
+    assert mode_c == mode and sg_c == sg, what + ': stick / slip decision'
+    chk.eq([ddp] + nu + Lam, [ddp_c] + nu_c + Lam_c, what + ' map and impulse')
+    # loss: E = 1/2 Lambda^T W Lambda - Lambda . V+ = 1/2 Lambda^T W Lambda + mu_k Lambda_J |d_dot+| >= 0
+    W = W_corner(P, ae, q, th)
+    quad = sum(Lam[i] * W[i, j] * Lam[j] for i in range(2) for j in range(2)) / 2
+    chk.eq(E, quad - Lam[0] * ddp, what + ' energy loss')
+    if mode == 'slip':
+        chk.eq(E, quad + mu_k * Lam[1] * abs(ddp), what + ' energy loss (friction)')
+    assert E > -mp.mpf('1e-20') * M * G * h, what + ': negative loss'
+    # mu = infinity: the sticking law of theory 16
+    Ae, rhs = conv_landing_system(P, ae, q, tuple(a / h for a in rotT(vc, th)), thdm, qdm)
+    sl = solve_lin(mp.matrix(Ae), mp.matrix(rhs))
+    chk.eq(nu0, [sl[i] for i in range(n + 1)], what + ': stick = theory 16')
+    stats['friction_landings'] += 1
+    stats['mode_' + mode] += 1
+    if L0[1] < 0:
+        stats['tensile_stick'] += 1
+        if mode == 'slip' and Lam[1] > 0:
+            stats['tensile_resolved'] += 1
+    return dict(edge=edge, theta=th, q=q, cg_velocity=vc, theta_dot_minus=thdm, q_dot_minus=qdm,
+                corner_velocity_minus=Vm, base_velocity=list(vb), mu_s=mu_s, mu_k=mu_k, mode=mode, slip_sign=sg,
+                d_dot_plus=ddp, theta_dot_plus=nu[0], q_dot_plus=nu[1:], impulse=Lam, stick_impulse=L0,
+                energy_loss=E)
+
+
+def flat_friction_landing(K, FK, body, d, q, vd_, thd, qd, vb, mu_s, mu_k, chk, stats):
+    """flat landing (theta = 0, theta_dot+ = 0) with the base sliding at d_dot+ after: modal momenta
+    mu qd+ + psi_x d_dot+/h = r_q, Coulomb's law on the total impulse."""
+    n, P, M, h = body.n, body.P, body.M, body.h
+    x, xd = [d, 0, 0] + list(q), [vd_[0], vd_[1], thd] + list(qd)
+    b = [vb[0], vb[1], 0, 0, G]
+    pts = list(body.pts())
+    vm = [FK.call(FK.Rd, pt, x, xd, [0] * (n + 3), b) for pt in pts]
+
+    def pvel(ddp, qd_):
+        return [FK.call(FK.Rd, pt, x, [ddp, 0, 0] + list(qd_), [0] * (n + 3), b) for pt in pts]
+
+    def moms(vels):
+        return [sum(pt[0] * (pt[3][j] * v_[0] + pt[4][j] * v_[1]) for pt, v_ in zip(pts, vels)) for j in range(n)]
+    pre = moms(vm)
+
+    def post(ddp):
+        if n:
+            b0 = moms(pvel(ddp, [0] * n))
+            cols = []
+            for kk in range(n):
+                e = [0] * n
+                e[kk] = 1
+                ck = moms(pvel(ddp, e))
+                cols.append([ck[i] - b0[i] for i in range(n)])
+            A = mp.matrix([[cols[j][i] for j in range(n)] for i in range(n)])
+            sol = solve_lin(A, mp.matrix([pre[i] - b0[i] for i in range(n)]))
+            qdp = [sol[i] for i in range(n)]
+        else:
+            qdp = []
+        vp = pvel(ddp, qdp)
+        Lam = [sum(pt[0] * (vp_[i] - vm_[i]) for pt, vp_, vm_ in zip(pts, vp, vm)) for i in range(2)]
+        dT = sum(pt[0] * (vp_[0] ** 2 + vp_[1] ** 2 - vm_[0] ** 2 - vm_[1] ** 2) / 2
+                 for pt, vp_, vm_ in zip(pts, vp, vm))
+        return qdp, Lam, vb[0] * Lam[0] + vb[1] * Lam[1] - dT, vp
+    q0, L0, E0, vp0 = post(0)
+    q1, L1, _, _ = post(1)
+    dL = [L1[i] - L0[i] for i in range(2)]
+    chk.eq(dL, [M * conv_k_slide_full(P, 1, 0), -M * mu_quad(P, P['psi_y'], P['psi_x'])],
+           'flat friction landing dLambda/dd_dot+')
+    if L0[1] >= 0 and abs(L0[0]) <= mu_s * L0[1]:
+        mode, sg, ddp, qdp, Lam, E, vp = 'stick', 0, mp.mpf(0), q0, L0, E0, vp0
+    else:
+        mode, sg = 'slip', (-1 if L0[0] > 0 else 1)
+        ks = M * conv_k_slide_full(P, sg, mu_k)
+        chk.eq(ks, dL[0] + sg * mu_k * dL[1], 'flat friction landing k_s')
+        ddp = -(L0[0] + sg * mu_k * L0[1]) / ks
+        qdp, Lam, E, vp = post(ddp)
+        if ks > 0:
+            assert ddp * sg > 0 and Lam[1] > 0, 'flat sliding impact inconsistent'
+    vt = [sum(pt[0] * (v_[i] - vb[i]) for pt, v_ in zip(pts, vm)) / (M * h) for i in range(2)]
+    prhs = conv_flat_landing_rhs(P, q, vt, thd, qd)
+    if n:
+        chk.eq(qdp, mu_solve(P, [prhs[j] - P['psi_x'][j] * ddp / h for j in range(n)]), 'flat friction landing qd+')
+    chk.eq(Lam, [M * (ddp + h * dot(P['psi_x'], qdp) - h * vt[0]), M * (h * dot(P['psi_y'], qdp) - h * vt[1])],
+           'flat friction landing impulse')
+    assert E > -mp.mpf('1e-20') * M * G * h, 'negative flat friction loss'
+    assert E + mp.mpf('1e-20') * M * G * h >= -Lam[0] * ddp, 'flat friction loss below the friction work'
+    # split of the vertical impulse (moments about each corner; horizontal impulses have no moment there)
+    split = []
+    for e, o in ((1, 2), (2, 1)):
+        xe, xo = d + h * alpha_of(body, e), d + h * alpha_of(body, o)
+        Hm = sum(pt[0] * ((FK.call(FK.Rrel, pt, x, xd, [0] * (n + 3), b)[0] - xe) * v_[1]
+                          - FK.call(FK.Rrel, pt, x, xd, [0] * (n + 3), b)[1] * v_[0]) for pt, v_ in zip(pts, vm))
+        Hp = sum(pt[0] * ((FK.call(FK.Rrel, pt, x, xd, [0] * (n + 3), b)[0] - xe) * v_[1]
+                          - FK.call(FK.Rrel, pt, x, xd, [0] * (n + 3), b)[1] * v_[0]) for pt, v_ in zip(pts, vp))
+        Lo = (Hp - Hm) / (xo - xe)
+        # closed form: -M h H^_e(V+) / (alpha_o - alpha_e), H^_e with the corner's L(V+) moved to the right
+        ae = alpha_of(body, e)
+        Ae, rhs = conv_landing_system(P, ae, q, vt, thd, qd)
+        Lp = conv_L(P, ae, q, (ddp, 0))
+        r = [rhs[i] - Lp[i] for i in range(n + 1)]
+        Hh = r[0] - (dot(conv_b(P, ae, q), mu_solve(P, r[1:])) if n else 0)
+        chk.eq(Lo, -M * h * Hh / (alpha_of(body, o) - ae), 'flat friction landing corner impulse')
+        split.append(Lo)
+    chk.eq(split[0] + split[1], Lam[1], 'flat friction landing vertical split')
+    stats['flat_friction'] += 1
+    stats['flat_' + mode] += 1
+    return dict(d=d, q=q, cg_velocity=[v * h for v in vt], theta_dot_minus=thd, q_dot_minus=list(qd),
+                base_velocity=list(vb), mu_s=mu_s, mu_k=mu_k, mode=mode, slip_sign=sg, d_dot_plus=ddp,
+                q_dot_plus=qdp, impulse=Lam, energy_loss=E, corner_impulse_y=[split[1], split[0]])
+
+
+def friction_cases(K, FK, body, rng, chk, stats):
+    n, P, h = body.n, body.P, body.h
+    u = lambda a, b: mpf(rng.uniform(a, b))
+    sgh = mp.sqrt(G * h)
+    sr, sf = sliding_cases(K, body, rng, chk, stats)
+    la, fla = [], []
+    for i in range(6):
+        edge = 1 + i % 2
+        sg = 1 if edge == 1 else -1
+        ae = alpha_of(body, edge)
+        q = [mpf(0.05 * rng.normal()) for _ in range(n)]
+        qd = [mpf(rng.normal()) for _ in range(n)]
+        vb = [u(-0.5, 0.5), u(-0.5, 0.5)]
+        mu_s = u(0.05, 0.8)
+        mu_k = mu_s * u(0.6, 1.0)
+        if i < 4:  # a free landing at a tilt, the corner coming down, fast sideways at times
+            th = u(0.0, 0.4) * sg
+            thd = u(-1.5, 1.5)
+            ce = rot((h * ae, 0), th)
+            x = [u(-0.2, 0.2) * h - ce[0], -ce[1], th] + q
+            xd = [u(-1.5, 1.5) * sgh, -thd * ce[0] - u(0.05, 1.0) * sgh, thd] + qd
+            la.append(friction_landing(K, FK, body, edge, th, q, x, xd, vb, mu_s, mu_k, chk, stats))
+        else:  # rocking (the pivot sliding at d_dot-) on the other edge at theta = 0: the impact of theory 8
+            other = 2 if edge == 1 else 1
+            thdm = u(0.05, 1.5) * sg
+            ddm = u(-0.5, 0.5) * sgh
+            ao = alpha_of(body, other)
+            x = [u(-0.2, 0.2) * h, 0, 0] + q
+            xd = [ddm, -thdm * h * ao, thdm] + qd
+            r = friction_landing(K, FK, body, edge, 0, q, x, xd, vb, mu_s, mu_k, chk, stats,
+                                 'friction impact at theta=0')
+            # the landing corner's velocity before: d_dot- I + theta_dot- h (alpha_e - alpha_pre) J
+            chk.eq(r['corner_velocity_minus'], [ddm, thdm * h * (ae - ao)], 'impact corner velocity')
+            la.append(r)
+    for i in range(2):
+        q = [mpf(0.05 * rng.normal()) for _ in range(n)]
+        qd = [mpf(rng.normal()) for _ in range(n)]
+        thd = u(-1.0, 1.0)
+        vd = min(h * body.alpha1 * thd, -h * body.alpha2 * thd) - u(0.05, 1.0) * sgh
+        mu_s = u(0.05, 0.8)
+        fla.append(flat_friction_landing(K, FK, body, u(-0.2, 0.2) * h, q, (u(-1.0, 1.0) * sgh, vd), thd, qd,
+                                         [u(-0.5, 0.5), u(-0.5, 0.5)], mu_s, mu_s * u(0.6, 1.0), chk, stats))
+    return dict(sliding_rocking=sr, sliding_full_contact=sf, friction_landings=la, flat_friction_landings=fla)
+
+
+# --- rigid-block closed forms with friction (docs/theory.md, Sliding: rigid block) ----------------
+
+def rigid_friction_demand(alpha, zeta2, a):
+    """|F_I|/F_J of a rigid block sticking on edge 1 at theta = theta_dot = 0 under a_x = a >= alpha, a_y = 1
+    (rocking just begun): (a (zeta^2 + alpha^2) + alpha) / (1 + zeta^2 + alpha a); alpha at a = alpha."""
+    return (a * (zeta2 + alpha ** 2) + alpha) / (1 + zeta2 + alpha * a)
+
+
+def rigid_slide_rock_acc(alpha, zeta2, mu):
+    """a_x + d_ddot/g while rocking on edge 1 with the pivot sliding backwards at theta = 0 (mu_k = mu):
+    a* = (mu (1 + zeta^2) - alpha) / (zeta^2 + alpha^2 - mu alpha), the a at which the demand equals mu."""
+    return (mu * (1 + zeta2) - alpha) / (zeta2 + alpha ** 2 - mu * alpha)
+
+
+def rigid_regime(alpha, zeta2, a, mu):
+    """regime at initiation from rest under a step a_x = a > 0 (a_y = 1), mu_s = mu_k = mu."""
+    if a <= alpha and a <= mu:
+        return 'rest'
+    if mu < alpha:
+        return 'slide'
+    if mu >= (zeta2 + alpha ** 2) / alpha or a <= rigid_slide_rock_acc(alpha, zeta2, mu):
+        return 'rock'
+    return 'slide_rock'
+
+
+def rigid_block(alpha):
+    """uniform rectangle, half-width alpha h, height 2h (h = 1 m), four Gauss-point masses (zeta^2 exact)."""
+    h, M = mp.mpf(1), mp.mpf(1000)
+    b = mp.mpf(alpha) * h
+    r3 = 1 / mp.sqrt(3)
+    pos = [(sx * b * r3, h + sy * h * r3) for sx in (-1, 1) for sy in (-1, 1)]
+    return Body(0, [M / 4] * 4, pos, [[] for _ in range(4)], [], b, b, 'rigid block b/h=%s' % alpha)
+
+
+def rigid_friction_checks(K, chk):
+    """the regime at initiation from the general machinery (every candidate mode tried, its
+    consistency conditions checked) against the closed forms; the demand at and after uplift."""
+    out = []
+    for al in ('0.25', '0.5', '1.0'):
+        body = rigid_block(al)
+        P, M = body.P, body.M
+        alpha, z2 = body.alpha1, P['zeta2']
+        chk.eq(z2, (1 + alpha ** 2) / 3, 'uniform rectangle zeta^2')
+        ae = -alpha
+        D = 1 + z2 + alpha ** 2
+        mu_P = (z2 + alpha ** 2) / alpha
+        grid_a = [alpha * mp.mpf(f) for f in ('0.5', '0.99', '1.01', '1.3', '2', '4')]
+        grid_mu = [alpha * mp.mpf(f) for f in ('0.5', '0.99', '1.01', '1.2', '2', '4')] + [mu_P * mp.mpf('1.01')]
+        table = []
+        for a in grid_a:
+            # the demand right after uplift: sticking rocking at theta = thd = 0 (theory 4, 5 and 11)
+            if a >= alpha:
+                ELA, EL0 = direct_dynamics(K, body, -body.b1, 0, [], 0, [], [a * G, 0], G)
+                thdd = -EL0[0] / ELA[0, 0]
+                chk.eq(thdd, (G / body.h) * (a - alpha) / D, 'rigid uplift theta_ddot (theory 11)')
+                F = body_to_inertial(conv_F_body(P, ae, [], 0, [], thdd, [], 0, 1, a, 1, G), 0, 1)
+                chk.eq(F[0] / F[1], rigid_friction_demand(alpha, z2, a), 'rigid friction demand after uplift')
+            for mu in grid_mu:
+                cands = []
+                # stick, full contact: |F_I| <= mu F_J, U1 >= 0
+                if a <= mu and a <= alpha:
+                    cands.append('rest')
+                # full-contact sliding backwards (s = -1): a + d_ddot/g = mu; no uplift: U1 = alpha - mu >= 0;
+                # the slip grows: s d_ddot > 0
+                ddd, _, Fs, k = conv_slide_full(P, [], [], a, 1, G, -1, mu)
+                chk.eq(a + ddd / G, mu, 'rigid full-contact sliding')
+                if -ddd > 0 and alpha - (a + ddd / G) >= 0:
+                    cands.append('slide')
+                # sticking rocking on edge 1: theta_ddot > 0 and |F_I| <= mu F_J
+                if a > alpha and rigid_friction_demand(alpha, z2, a) <= mu:
+                    cands.append('rock')
+                # rocking with the pivot sliding backwards: k_s > 0, s d_ddot > 0, theta_ddot > 0
+                ddd, nudd, Fr, k = conv_slide_rock(P, ae, [], 0, 0, [], a, 1, G, -1, mu)
+                if k > 0 and -ddd > 0 and nudd[0] > 0:
+                    cands.append('slide_rock')
+                    chk.eq(a + ddd / G, rigid_slide_rock_acc(alpha, z2, mu), 'rigid slide-rock a*')
+                    chk.eq(k, M * (z2 + alpha ** 2 - mu * alpha) / D, 'rigid k_s at theta = 0')
+                reg = rigid_regime(alpha, z2, a, mu)
+                assert cands == [reg], 'regime at initiation: candidates %s, closed form %s (a=%s, mu=%s)' % (
+                    cands, reg, a, mu)
+                table.append(dict(a=a, mu=mu, regime=reg))
+        out.append(dict(b_over_h=alpha, zeta2=z2, painleve_mu=mu_P, demand_at_uplift=alpha,
+                        demand_after_uplift=[dict(a=a, demand=rigid_friction_demand(alpha, z2, a))
+                                             for a in grid_a if a >= alpha],
+                        regimes=table))
+    return out
+
+
+# --- pure sliding of a rigid block under pulses: the exact piecewise solution ---------------------
+
+def pulse_integrals(kind, A, t1, t):
+    """base acceleration X_ddot(t) and its first two integrals from 0 (rect: A on [0, t1); half-sine:
+    A sin(pi t/t1); one-sine: A sin(2 pi t/t1); zero after t1)."""
+    if kind == 'rect':
+        if t <= t1:
+            return (A if t < t1 else mp.mpf(0)), A * t, A * t ** 2 / 2
+        return mp.mpf(0), A * t1, A * t1 ** 2 / 2 + A * t1 * (t - t1)
+    w = (mp.pi if kind == 'half_sine' else 2 * mp.pi) / t1
+    tt = min(t, t1)
+    a = A * mp.sin(w * tt) if t < t1 else mp.mpf(0)
+    I1 = A / w * (1 - mp.cos(w * tt))
+    I2 = A / w * (tt - mp.sin(w * tt) / w)
+    if t > t1:
+        I2 += I1 * (t - t1)
+    return a, I1, I2
+
+
+def slide_pulse_exact(kind, A, t1, mu_s, mu_k, g=G):
+    """the rigid block on the floor (no rocking): stick while |X_ddot| <= mu_s g; slip with
+    d_ddot = -X_ddot - s mu_k g, s = sign(d_dot); d relative to the floor.  Phases in closed form,
+    their ends by root finding on the closed forms.  Returns the phase list and the final offset."""
+    Xdd = lambda t: pulse_integrals(kind, A, t1, t)[0]
+    phases = []
+    t, d, dd, s = mp.mpf(0), mp.mpf(0), mp.mpf(0), 0
+    nscan = 4000
+    while True:
+        if s == 0:  # stuck: wait until |X_ddot| exceeds mu_s g (only while the pulse lasts)
+            f = lambda tt: abs(Xdd(tt)) - mu_s * g
+            grid = [t + (t1 - t) * i / nscan for i in range(nscan + 1)] if t < t1 else []
+            start = None
+            for ta, tb in zip(grid, grid[1:]):
+                if f(tb) > 0:
+                    start = tb if f(ta) > 0 else (mp.findroot(f, (ta, tb), solver='anderson') if kind != 'rect'
+                                                   else ta)
+                    break
+            if start is None:
+                phases.append(dict(kind='stick', t0=t, d=d))
+                return phases, d
+            if kind == 'rect':
+                start = t
+            phases.append(dict(kind='stick', t0=t, t1=start, d=d))
+            t = start
+            s = -1 if Xdd(t + (t1 - t) * mp.mpf('1e-20')) > 0 else 1
+            continue
+        # slipping from (t, d, dd) with sign s
+        ta, da, dda = t, d, dd
+        _, I1a, I2a = pulse_integrals(kind, A, t1, ta)
+
+        def vel(tt):
+            return dda - (pulse_integrals(kind, A, t1, tt)[1] - I1a) - s * mu_k * g * (tt - ta)
+
+        def pos(tt):
+            _, I1, I2 = pulse_integrals(kind, A, t1, tt)
+            return da + dda * (tt - ta) - (I2 - I2a - I1a * (tt - ta)) - s * mu_k * g * (tt - ta) ** 2 / 2
+        stop = None
+        if ta < t1:
+            grid = [ta + (t1 - ta) * i / nscan for i in range(1, nscan + 1)]
+            prev = ta
+            for tb in grid:
+                if s * vel(tb) <= 0:
+                    stop = mp.findroot(lambda tt: vel(tt), (prev, tb), solver='anderson') if prev > ta else \
+                        mp.findroot(lambda tt: vel(tt), (ta + (tb - ta) * mp.mpf('1e-12'), tb), solver='anderson')
+                    break
+                prev = tb
+        if stop is None:  # after the pulse: d_ddot = -s mu_k g
+            v1 = vel(max(ta, t1))
+            stop = max(ta, t1) + s * v1 / (mu_k * g)
+        phases.append(dict(kind='slip', sign=s, t0=ta, t1=stop, d0=da, d1=pos(stop)))
+        t, d, dd = stop, pos(stop), mp.mpf(0)
+        a = Xdd(t)
+        s = 0 if (t >= t1 or abs(a) <= mu_s * g) else (-1 if a > 0 else 1)
+
+
+def slide_pulse_stepping(kind, A, t1, mu_s, mu_k, g=9.80665, n=200000):
+    """an independent fixed-step integration (floats, velocity-level stick test each step)."""
+    import math
+    A, t1, mu_s, mu_k = float(A), float(t1), float(mu_s), float(mu_k)
+    w = (math.pi if kind == 'half_sine' else 2 * math.pi) / t1
+    acc = (lambda t: A if t < t1 else 0.0) if kind == 'rect' else (lambda t: A * math.sin(w * t) if t < t1 else 0.0)
+    T = t1 * (1 + 2 * A / (mu_k * g)) + t1
+    dt = T / n
+    d, v, t = 0.0, 0.0, 0.0
+    for i in range(n):
+        a = acc(t + dt / 2)
+        if v == 0.0:
+            if abs(a) <= mu_s * g:
+                t += dt
+                continue
+            s = -1.0 if a > 0 else 1.0
+        else:
+            s = 1.0 if v > 0 else -1.0
+        vn = v + (-a - s * mu_k * g) * dt
+        if vn * s < 0:  # the slip stops inside the step
+            tau = v / (a + s * mu_k * g)
+            d += v * tau / 2
+            vn = 0.0
+        else:
+            d += (v + vn) / 2 * dt
+        v = vn
+        t += dt
+    return d
+
+
+def pulse_checks(chk):
+    out = []
+    g = G
+    for kind in ('rect', 'half_sine', 'one_sine'):
+        for A, mu_s, mu_k, t1 in ((mp.mpf('0.5') * g, mp.mpf('0.2'), mp.mpf('0.2'), mp.mpf('0.5')),
+                                  (mp.mpf('0.5') * g, mp.mpf('0.2'), mp.mpf('0.15'), mp.mpf('0.5')),
+                                  (mp.mpf('0.3') * g, mp.mpf('0.1'), mp.mpf('0.1'), mp.mpf('1.0'))):
+            phases, d = slide_pulse_exact(kind, A, t1, mu_s, mu_k)
+            if kind == 'rect':
+                chk.eq(d, -A * (A - mu_k * g) * t1 ** 2 / (2 * mu_k * g), 'rectangular pulse slip distance')
+            ds = slide_pulse_stepping(kind, A, t1, mu_s, mu_k)
+            peak = max([abs(p.get('d1', 0)) for p in phases] + [abs(d)])
+            # the stepping converges at first order (its error is a few 1e-4 of the peak at 2e5 steps)
+            assert abs(ds - float(d)) < 1e-3 * float(peak), 'pulse %s: exact %s vs stepping %s' % (kind, d, ds)
+            out.append(dict(kind=kind, A=A, t1=t1, mu_s=mu_s, mu_k=mu_k, final_offset=d, peak_offset=peak,
+                            phases=phases, stepping_final_offset=ds))
+    return out
+
+
+def derive_rigid_friction():
+    """rigid block (n = 0) closed forms with friction, derived from the general closed forms with
+    sympy and compared with the formulas of docs/theory.md (Sliding: rigid block)."""
+    al, z2, a, mu, g, h, M, th = sp.symbols('alpha zeta2 a mu g h M theta', positive=True)
+    P = dict(n=0, M=M, h=h, zeta2=z2, mu=[], kappa=[], gamma=[], psi_x=[], psi_y=[], delta=[], beta=[])
+    res, out = {}, {}
+    D = 1 + z2 + al ** 2
+    # sticking on edge 1 (alpha = -alpha_1) at theta = thd = 0 under a_x = a: theta_ddot from theory 4
+    thdd = conv_f(P, -al, [], 0, [], 0, 1, a, 1, g)[0] / conv_A(P, -al, [])[0][0]
+    F = conv_F_body(P, -al, [], 0, [], thdd, [], 0, 1, a, 1, g)
+    demand = sp.simplify(F[0] / F[1])
+    res['rigid_demand_after_uplift'] = is_zero(demand - rigid_friction_demand(al, z2, a))
+    res['rigid_demand_at_uplift'] = is_zero(demand.subs(a, al) - al)
+    out['friction demand after uplift |F_I|/F_J'] = sp.factor(demand)
+    # rocking with the pivot sliding backwards (s = -1): F_I = mu F_J with a -> a_eff
+    ae = sp.Symbol('a_eff')
+    thdd_e = conv_f(P, -al, [], 0, [], 0, 1, ae, 1, g)[0] / D
+    Fe = conv_F_body(P, -al, [], 0, [], thdd_e, [], 0, 1, ae, 1, g)
+    sol = sp.solve(sp.Eq(Fe[0], mu * Fe[1]), ae)
+    res['rigid_slide_rock_acc'] = len(sol) == 1 and is_zero(sol[0] - rigid_slide_rock_acc(al, z2, mu))
+    out['slide-rock: a + d_ddot/g'] = sp.factor(sol[0])
+    # k_s at theta = 0 for s = -1: d(F_I - mu F_J)/d(a_eff) / g ... per unit d_ddot
+    ks = sp.diff(Fe[0] - mu * Fe[1], ae) / g
+    res['rigid_k_s_theta0'] = is_zero(ks - M * (z2 + al ** 2 - mu * al) / D)
+    out['k_s (rocking on edge 1, s = -1, theta = 0)'] = sp.factor(ks)
+    # rigid k_s at any tilt: (M / A)(zeta^2 + X^2 + s mu X Y), (X, Y) = R(theta) w
+    s_, c_, sg = sp.symbols('s c sg')
+    A = D
+    w = conv_w(P, -al, [])
+    fa = conv_dfdax(P, -al, [], s_, c_, g)[0] / A  # d theta_ddot / d a_x
+    dFb = [M * g * conv_e_I(s_, c_)[i] + M * h * conv_B(P, -al, [])[i][0] * fa for i in range(2)]
+    dF = body_to_inertial(dFb, s_, c_)
+    X, Y = body_to_inertial(w, s_, c_)
+    res['rigid_k_s'] = is_zero((dF[0] + sg * mu * dF[1]) / g - M * (z2 + X ** 2 + sg * mu * X * Y) / A)
+    # pure sliding under a rectangular pulse: slip during the pulse, then decelerate at mu g
+    A_, t1, t = sp.symbols('A t1 t', positive=True)
+    v1 = -(A_ - mu * g) * t1
+    d1 = -(A_ - mu * g) * t1 ** 2 / 2
+    dist = d1 - v1 ** 2 / (2 * mu * g)
+    res['rect_pulse_distance'] = is_zero(sp.simplify(dist + A_ * (A_ - mu * g) * t1 ** 2 / (2 * mu * g)))
+    out['rectangular pulse: final offset'] = sp.factor(dist)
+    return res, out
+
+
 # ---------------------------------------------------------------------------
 # body generation
 # ---------------------------------------------------------------------------
@@ -1574,6 +2466,8 @@ def squat_block():
 # ---------------------------------------------------------------------------
 
 def fmt(x):
+    if isinstance(x, str):
+        return json.dumps(x)
     if isinstance(x, dict):
         return '{' + ', '.join('"%s": %s' % (k, fmt(v)) for k, v in x.items()) + '}'
     if isinstance(x, (list, tuple)):
@@ -1661,12 +2555,25 @@ def main():
     args = ap.parse_args()
     t0 = time.time()
     sres, gens = symbolic_checks(range(0, args.symbolic_n + 1), verbose=True, flight_n=args.symbolic_flight_n)
+    rres, rforms = derive_rigid_friction()
+    sres['rigid_friction'] = rres
+    print('  symbolic rigid block with friction: %s' % rres, file=sys.stderr)
     failed = [(n, k) for n, r in sres.items() for k, v in r.items()
               if (isinstance(v, bool) and not v) or (isinstance(v, list) and v)]
     print('symbolic checks (n=0..%d): %s  [%.1f s]' % (args.symbolic_n, 'ALL PASS' if not failed else
                                                       'FAILED %s' % failed, time.time() - t0), file=sys.stderr)
     if args.do_print:
         print_equations(gens)
+        print('=' * 72)
+        print('Coulomb friction (n <= %d): Lagrange in (d, theta, q) with the pivot at X + d + h alpha;' %
+              args.symbolic_flight_n)
+        for n, Gn in sorted(gens.items()):
+            if hasattr(Gn, 'slide_EL') and n <= 1:
+                print('n = %d: d-row (= F_I, the floor force at the pivot):' % n)
+                print('   ', sp.collect(trig_reduce(Gn.slide_EL[0]), [Gn.thd, Gn.thdd, sp.Symbol('ddd')]))
+        print('rigid block (uniform or not; a = a_x, a_y = 1, edge 1, alpha = b_1/h):')
+        for k, v in rforms.items():
+            print('   %s = %s' % (k, v))
     if not args.out:
         return 1 if failed else 0
     rng = np.random.RandomState(args.seed)
@@ -1674,6 +2581,9 @@ def main():
     stats = dict(impacts=0, both_applies=0, both_negative=[], min_ratio=1e9)
     fstats = dict(liftoff=0, landings=0, tensile_landing=0, flat=0, flat_compressive=0,
                   both_single_admissible=0)
+    xstats = dict(slide_rock=0, slide_full=0, k_nonpositive=0, friction_landings=0, mode_stick=0, mode_slip=0,
+                  impact_k_nonpositive=0, tensile_stick=0, tensile_resolved=0, flat_friction=0, flat_stick=0,
+                  flat_slip=0)
     cases = []
     kernels, fkernels = {}, {}
     for n in range(4):
@@ -1688,6 +2598,10 @@ def main():
         frng = np.random.RandomState(args.seed + 1 + n)
         for b, c in zip(bodies, cases[-len(bodies):]):
             c.update(flight_cases(K, FK, b, frng, chk, fstats))
+        # Coulomb friction: sliding modes and impacts with friction (another separate stream)
+        xrng = np.random.RandomState(args.seed + 101 + n)
+        for b, c in zip(bodies, cases[-len(bodies):]):
+            c['friction'] = friction_cases(K, FK, b, xrng, chk, xstats)
     # extra impacts (not written): wide-base flexible bodies, large modal rates, to exercise
     # the both-edges rule and check that both edge impulses are compressive where it applies
     st2 = dict(impacts=0, both_applies=0, both_negative=[], min_ratio=1e9)
@@ -1723,6 +2637,38 @@ def main():
                 x = [-ce[0], -ce[1], th] + q
                 xd = [mpf(rng.uniform(-2, 2)) * sgh, -thd * ce[0] - mpf(rng.uniform(0.02, 0.5)) * sgh, thd] + qd
                 landing(K, FK, b, edge, 0, th, q, x, xd, [0, 0], chk, fst2, 'stress landing')
+    # extra landings with friction (not written): the same fast corners; with Coulomb friction a
+    # sticking corner that would need a tensile impulse slides instead
+    for n in (0, 1, 2):
+        K, FK = kernels[n], fkernels[n]
+        for i in range(2):
+            b = random_body(rng, n, 'friction landing stress n=%d #%d' % (n, i))
+            h = b.h
+            for k in range(6):
+                edge = 1 + k % 2
+                sg = 1 if edge == 1 else -1
+                q = [mpf(0.05 * rng.normal()) for _ in range(n)]
+                qd = [mpf(rng.normal()) for _ in range(n)]
+                th = mpf(rng.uniform(0.0, 0.4)) * sg
+                thd = mpf(rng.uniform(-1.5, 1.5))
+                ce = rot((h * alpha_of(b, edge), 0), th)
+                sgh = mp.sqrt(G * h)
+                x = [-ce[0], -ce[1], th] + q
+                xd = [mpf(rng.uniform(-2, 2)) * sgh, -thd * ce[0] - mpf(rng.uniform(0.02, 0.5)) * sgh, thd] + qd
+                mu_s = mpf(rng.uniform(0.05, 1.0))
+                friction_landing(K, FK, b, edge, th, q, x, xd, [0, 0], mu_s, mu_s * mpf(rng.uniform(0.6, 1.0)),
+                                 chk, xstats, 'friction stress landing')
+    rigid_friction = rigid_friction_checks(kernels[0], chk)
+    pulses = pulse_checks(chk)
+    for rb in rigid_friction:
+        print('rigid block b/h = %.2f: friction demand at uplift b/h, after uplift %s; Painleve mu = %.4f' %
+              (rb['b_over_h'], ', '.join('%.2f -> %.4f' % (x['a'], x['demand']) for x in rb['demand_after_uplift']),
+               rb['painleve_mu']), file=sys.stderr)
+    for pu in pulses:
+        print('sliding under a %s pulse A = %.3g g, t1 = %.3g s, mu_s = %.3g, mu_k = %.3g: final offset %.9g m '
+              '(fixed-step integration %.9g m), %d phases' %
+              (pu['kind'], pu['A'] / G, pu['t1'], pu['mu_s'], pu['mu_k'], pu['final_offset'],
+               pu['stepping_final_offset'], len(pu['phases'])), file=sys.stderr)
     rl = rigid_liftoff_condition(kernels[0], fkernels[0], chk)
     print('rigid lift-off at F_J = 0 (theta, a_x/g, corner ydd in flight): %s' %
           ', '.join('(%.1f, %+.1f, %+.3f)' % x for x in rl), file=sys.stderr)
@@ -1736,7 +2682,7 @@ def main():
     with open(args.out, 'w') as fh:
         fh.write('{"g": 9.80665, "seed": %d, "cases": [\n' % args.seed)
         fh.write(',\n'.join(fmt(c) for c in cases))
-        fh.write('\n]}\n')
+        fh.write('\n], "rigid_block_friction": %s, "sliding_pulses": %s}\n' % (fmt(rigid_friction), fmt(pulses)))
     json.load(open(args.out))
     print('numeric cases: %d, max relative (a)-vs-(b) difference %.2e (%s)' %
           (len(cases), float(chk.maxerr), chk.where), file=sys.stderr)
@@ -1747,6 +2693,13 @@ def main():
           '%d (both corners compressive in %d, both single-corner maps admissible in %d)' %
           (fstats['liftoff'], fstats['landings'], fstats['tensile_landing'], fstats['flat'],
            fstats['flat_compressive'], fstats['both_single_admissible']), file=sys.stderr)
+    print('friction: sliding states %d rocking, %d full contact (k_s <= 0 in %d); impacts %d (stick %d, slip %d, '
+          'k_s <= 0 in %d; a sticking corner would need a tensile impulse in %d, all resolved by sliding: %d); '
+          'flat %d (stick %d, slip %d)' %
+          (xstats['slide_rock'], xstats['slide_full'], xstats['k_nonpositive'], xstats['friction_landings'],
+           xstats['mode_stick'], xstats['mode_slip'], xstats['impact_k_nonpositive'], xstats['tensile_stick'],
+           xstats['tensile_resolved'], xstats['flat_friction'], xstats['flat_stick'], xstats['flat_slip']),
+          file=sys.stderr)
     print('total %.1f s' % (time.time() - t0), file=sys.stderr)
     return 1 if failed else 0
 
