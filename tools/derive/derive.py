@@ -2420,6 +2420,70 @@ def derive_rigid_friction():
     return res, out
 
 
+def theta0_rule_with_friction(seed, trials, stats):
+    """at theta = 0 with both corners coming down: the three candidates (corner 1, corner 2, flat), each
+    with Coulomb's law of theory 19; a corner is consistent if the body then turns away from the other
+    corner, the flat one if both corners press (H^_1(V+) <= 0 <= H^_2(V+)).  Counts how many are
+    consistent and how often the frictionless choice of theory 16 (sticking H^) is one of them."""
+    rng = np.random.RandomState(seed)
+    for trial in range(trials):
+        n = trial % 3
+        b = random_body(rng, n, 'theta=0 rule n=%d' % n)
+        if trial % 2:
+            b.b1, b.b2 = b.h * mpf(rng.uniform(0.1, 2.5)), b.h * mpf(rng.uniform(0.1, 2.5))
+            b.params()
+        P, h, M = b.P, b.h, b.M
+        sgh = mp.sqrt(G * h)
+        q = [mpf(0.05 * rng.normal()) for _ in range(n)]
+        qd = [mpf(rng.normal()) for _ in range(n)]
+        thd = mpf(rng.uniform(-1.0, 1.0))
+        nu = [thd] + qd
+        vO = (mpf(rng.uniform(-2, 2)) * sgh,
+              min(h * b.alpha1 * thd, -h * b.alpha2 * thd) - mpf(rng.uniform(0.02, 1.0)) * sgh)
+        B0 = conv_B(P, 0, q)
+        vt = ((vO[0] + h * dot(B0[0], nu)) / h, (vO[1] + h * dot(B0[1], nu)) / h)
+        mu_s = mpf(10 ** rng.uniform(-1.3, 0.3))
+        mu_k = mu_s * mpf(rng.uniform(0.6, 1))
+        ok = []
+        for e in (1, 2):
+            ae = alpha_of(b, e)
+            Be = conv_B(P, ae, q)
+            Vm = (h * (vt[0] - dot(Be[0], nu)), h * (vt[1] - dot(Be[1], nu)))
+            assert Vm[1] < 0
+            mode, sg, ddp, nup, Lam = conv_friction_impact(P, ae, q, 0, nu, Vm, mu_s, mu_k)
+            if (1 if e == 1 else -1) * nup[0] > 0:
+                ok.append('corner%d' % e)
+        prhs = conv_flat_landing_rhs(P, q, vt, thd, qd)
+
+        def flat(ddp):
+            qdp = mu_solve(P, [prhs[j] - P['psi_x'][j] * ddp / h for j in range(n)]) if n else []
+            return [M * (ddp + h * dot(P['psi_x'], qdp) - h * vt[0]), M * (h * dot(P['psi_y'], qdp) - h * vt[1])]
+        L0 = flat(0)
+        ddp = mp.mpf(0)
+        if not (L0[1] >= 0 and abs(L0[0]) <= mu_s * L0[1]):
+            sg = -1 if L0[0] > 0 else 1
+            ddp = -(L0[0] + sg * mu_k * L0[1]) / (M * conv_k_slide_full(P, sg, mu_k))
+
+        def Hhat(e, ddp_):
+            ae = alpha_of(b, e)
+            _, rhs = conv_landing_system(P, ae, q, vt, thd, qd)
+            Lp = conv_L(P, ae, q, (ddp_, 0))
+            r = [rhs[i] - Lp[i] for i in range(n + 1)]
+            return r[0] - (dot(conv_b(P, ae, q), mu_solve(P, r[1:])) if n else 0)
+        if Hhat(1, ddp) <= 0 <= Hhat(2, ddp):
+            ok.append('flat')
+        choice = 'corner1' if Hhat(1, 0) > 0 else ('corner2' if Hhat(2, 0) < 0 else 'flat')
+        assert ok, 'theta = 0 with friction: no consistent outcome'
+        stats['cases'] += 1
+        stats['consistent_%d' % len(ok)] += 1
+        if choice not in ok:
+            stats['frictionless_choice_inconsistent'] += 1
+        if len(ok) > 1:
+            stats['ambiguous_min_mu_s'] = min(stats['ambiguous_min_mu_s'], float(mu_s))
+            if choice in ok:
+                stats['ambiguous_frictionless_choice_consistent'] += 1
+
+
 # ---------------------------------------------------------------------------
 # body generation
 # ---------------------------------------------------------------------------
@@ -2658,6 +2722,15 @@ def main():
                 mu_s = mpf(rng.uniform(0.05, 1.0))
                 friction_landing(K, FK, b, edge, th, q, x, xd, [0, 0], mu_s, mu_s * mpf(rng.uniform(0.6, 1.0)),
                                  chk, xstats, 'friction stress landing')
+    t0r = dict(cases=0, consistent_1=0, consistent_2=0, consistent_3=0, frictionless_choice_inconsistent=0,
+               ambiguous_min_mu_s=1e9, ambiguous_frictionless_choice_consistent=0)
+    theta0_rule_with_friction(args.seed + 7, 600, t0r)
+    print('theta = 0 with friction (corner 1 / corner 2 / flat, each with Coulomb): %d cases, one consistent '
+          'outcome in %d, two in %d (smallest mu_s %.3g; the frictionless choice among them in %d), three in %d; '
+          'the frictionless choice of theory 16 is inconsistent in %d' %
+          (t0r['cases'], t0r['consistent_1'], t0r['consistent_2'], t0r['ambiguous_min_mu_s'],
+           t0r['ambiguous_frictionless_choice_consistent'], t0r['consistent_3'],
+           t0r['frictionless_choice_inconsistent']), file=sys.stderr)
     rigid_friction = rigid_friction_checks(kernels[0], chk)
     pulses = pulse_checks(chk)
     for rb in rigid_friction:
