@@ -179,6 +179,26 @@ void print_records(const io::Case& c) {
   }
 }
 
+// the [body] keys as read, with the units of the table of body types, and the synthetic motions
+void print_inputs(const io::Case& c) {
+  std::string keys;
+  for (const io::BodyKeyRead& k : c.body_keys) {
+    keys += (keys.empty() ? "" : ", ") + k.name + " = " + k.value;
+    if (!k.unit.empty() && k.unit != "-") keys += " " + k.unit;
+    if (!k.given) keys += " (default)";
+  }
+  fmt::print("  body {}{}: {}\n", c.body_type, c.rigid ? " (taken as rigid)" : "", keys);
+  for (const auto* comp : {&c.horizontal, &c.vertical}) {
+    if (comp->type.empty() || comp->type == "record" || comp->type == "none") continue;
+    const double a = comp->amplitude;
+    fmt::print(
+        "  {} {}: amplitude {:.4g} g ({:.4g} m/s^2){}\n",
+        comp == &c.horizontal ? "horizontal" : "vertical", comp->type, a / kStandardGravity, a,
+        c.excitation_scale == 1.0 ? std::string()
+                                  : fmt::format(", run scaled by {:.6g}", c.excitation_scale));
+  }
+}
+
 // what reading changed in the data, on stderr
 void print_notes(const io::Case& c) {
   for (const std::string& n : c.notes) fmt::print(stderr, "flexrock: note: {}: {}\n", c.source, n);
@@ -281,6 +301,7 @@ int cmd_check(const std::vector<std::string>& args, bool quiet) {
                    c.vertical.type.empty() ? "" : " (with vertical)",
                    c.output.time_history.empty() ? "" : c.output.time_history + " ",
                    c.output.events.empty() ? "" : c.output.events + " ", c.output.summary);
+        print_inputs(c);
         print_records(c);
       }
       print_notes(c);
@@ -444,8 +465,9 @@ int main(int argc, char** argv) {
     if (*check) return cmd_check(check_files, quiet);
     if (*params) return cmd_params(params_file);
     if (*keys) {
-      fmt::print("{}{}{}{}", io::pulse_key_reference(), io::time_history_column_reference(),
-                 io::event_column_reference(), io::study_column_reference());
+      fmt::print("{}{}{}{}{}", io::body_key_reference(), io::pulse_key_reference(),
+                 io::time_history_column_reference(), io::event_column_reference(),
+                 io::study_column_reference());
       return 0;
     }
     if (studies.selected()) return studies.run();

@@ -13,7 +13,7 @@ after ``flexrock: error:``. The GIL is released while simulating: Python threads
 from __future__ import annotations
 
 import csv
-import functools
+import inspect
 import io
 import json
 import math
@@ -25,6 +25,7 @@ from . import _csv, _flexrock
 from ._flexrock import (  # noqa: F401  (re-exported API)
     AccelUnit,
     Body,
+    BodyKeyValue,
     BodyParameters,
     Case,
     Component,
@@ -55,14 +56,10 @@ from ._flexrock import (  # noqa: F401  (re-exported API)
     from_lumped_model,
     load_body,
     load_case,
-    oscillator_on_slab,
     read_at2,
     read_single_column,
     read_time_series,
-    rigid_block,
-    rigid_body,
     time_history_columns,
-    uniform_cantilever,
 )
 
 # the library's version, set once in CMake's project(VERSION) (also `flexrock --version`)
@@ -242,32 +239,89 @@ def _unit_name(rec: Record) -> str:
     return {AccelUnit.g: "g", AccelUnit.m_per_s2: "m/s^2", AccelUnit.cm_per_s2: "cm/s^2"}[rec.units]
 
 
-_OLD_ARGS = {  # the engine's arguments of each pulse, in order (SI: m/s^2, rad/s, s)
-    "harmonic": ("amplitude", "omega", "duration", "phase", "component"),
-    "harmonic_cycles": ("amplitude", "omega", "cycles", "duration", "phase", "component"),
-    "ricker": ("a_p", "omega_p", "t_c", "duration", "component"),
-    "rectangular": ("a_p", "t_1", "duration", "component"),
-    "cycloidal_c": ("a_p", "omega_p", "duration", "n", "component"),
-}
+def _table_body(kind):
+    # the keyword function of a body type with a builder, from the table of body types: its keys
+    # in the table's order (required ones first), positional or by name, defaults from the table
+    params = []
+    for k in kind.keys:
+        default = inspect.Parameter.empty
+        if not k.required:
+            default = int(k.default) if k.value == BodyKeyValue.integer else k.default
+        params.append(inspect.Parameter(k.name, inspect.Parameter.POSITIONAL_OR_KEYWORD, default=default))
+    sig = inspect.Signature(params, return_annotation="BodyParameters")
+
+    def fn(*args, **kwargs):
+        bound = sig.bind(*args, **kwargs)  # a TypeError for a missing or unknown argument
+        bound.apply_defaults()
+        return _flexrock.make_body(kind.name, {k: float(v) for k, v in bound.arguments.items()})
+
+    def line(k):
+        kind_of = "int" if k.value == BodyKeyValue.integer else "float"
+        default = k.default_text if k.required else f"default {k.default_text}"
+        return f"{k.name} : {kind_of}\n    [{k.unit}] {k.doc} ({default}).\n"
+
+    fn.__signature__ = sig
+    fn.__name__ = fn.__qualname__ = kind.function
+    fn.__module__ = __name__
+    fn.__doc__ = (
+        f"A ``{kind.name}`` body: {kind.doc}, as a case file's ``type = \"{kind.name}\"`` makes it\n"
+        "(docs/case-file.md; the keys and units of the library's table of body types).\n\n"
+        "Parameters\n----------\n" + "".join(line(k) for k in kind.keys)
+        + "\nReturns\n-------\nBodyParameters\n"
+    )
+    return fn
+
+
+_BODY_KINDS = {k.name: k for k in _flexrock.body_kinds()}  # the library's table of body types
+rigid_block = _table_body(_BODY_KINDS["rigid_block"])
+rigid_body = _table_body(_BODY_KINDS["rigid_body"])
+oscillator_on_slab = _table_body(_BODY_KINDS["oscillator_on_slab"])
+uniform_cantilever = _table_body(_BODY_KINDS["uniform_cantilever"])
+for _kind in _BODY_KINDS.values():
+    # a body type of the table without a function above gets one here
+    if _kind.numbers and _kind.function not in globals():
+        globals()[_kind.function] = _table_body(_kind)
+    if _kind.numbers:
+        __all__.append(_kind.function)
+
+
 _PULSE_KINDS = {k.name: k for k in _flexrock.pulse_kinds()}  # the library's table of pulse types
-# a case file's names of the engine's arguments, where they differ
-_TOML_KEYS = {k.name: k.argument for kind in _PULSE_KINDS.values() for k in kind.keys if k.name != k.argument}
 
 
-def _synthetic(fn, type_name: str, args=("a_p", "omega_p", "duration", "component")):
-    # a pulse builder taking the case file's keys and units (amplitude= with units=, or
-    # amplitude_g= / amplitude_m_per_s2=; frequency_hz= or period=) as well as the engine's
-    # SI arguments; it notes its type and amplitude [m/s^2] for the summary
-    amp, omega = args[0], (args[1] if args[1].startswith("omega") else None)
+def _synthetic(kind, function: Optional[str] = None, needs: tuple = ()):
+    # a pulse builder from the table of pulse types: the case file's keys and units (amplitude=
+    # with units=, or amplitude_g= / amplitude_m_per_s2=; frequency_hz= or period=; the extra keys
+    # by their case-file names) as well as the SI form the table gives: a_p [m/s^2], omega_p
+    # [rad/s] (types with a frequency), duration [s], the extra keys' engine arguments,
+    # component, positionally or by those names. It notes its type and amplitude [m/s^2] for the
+    # summary. `needs`: extra keys this function requires (harmonic_cycles: cycles)
+    type_name, function = kind.name, function or kind.function
+    args = ("a_p",) + (("omega_p",) if kind.frequency else ()) + ("duration",)
+    args += tuple(k.argument for k in kind.keys) + ("component",)
+    key_of = {k.argument: k.name for k in kind.keys}  # engine argument -> case-file key
+    names = {k.name: k.argument for k in kind.keys}
 
-    @functools.wraps(fn)
     def make(*pos, amplitude=None, units=None, amplitude_g=None, amplitude_m_per_s2=None,
              frequency_hz=None, period=None, **kwargs):
-        for key, arg in _TOML_KEYS.items():
-            if key in kwargs:
-                if arg not in args:
-                    raise InputError(f"{type_name}: unknown argument {key!r}")
+        if len(pos) > len(args):
+            raise TypeError(f"{function}() takes at most {len(args)} positional arguments "
+                            f"({', '.join(args)}), {len(pos)} given")
+        for key, arg in names.items():
+            if key != arg and key in kwargs:
+                if arg in kwargs:
+                    raise InputError(f"{type_name}: give {key}= or {arg}=, not both")
                 kwargs[arg] = kwargs.pop(key)
+        for key in kwargs:
+            if key not in args:
+                raise TypeError(f"{function}() got an unexpected keyword argument {key!r}; it takes "
+                                + ", ".join(["amplitude", "units", "amplitude_g", "amplitude_m_per_s2"]
+                                            + (["frequency_hz", "period"] if kind.frequency else [])
+                                            + ["duration"] + list(names) + ["component"]))
+        values = dict(zip(args, pos))
+        for key, v in kwargs.items():
+            if key in values:
+                raise TypeError(f"{function}() got multiple values for argument {key!r}")
+            values[key] = v
         given = [k for k, v in (("amplitude", amplitude if units is not None else None),
                                 ("amplitude_g", amplitude_g),
                                 ("amplitude_m_per_s2", amplitude_m_per_s2)) if v is not None]
@@ -278,9 +332,9 @@ def _synthetic(fn, type_name: str, args=("a_p", "omega_p", "duration", "componen
             raise InputError(f"{type_name}: give one of {', '.join(given)}")
         if len(new_freq) > 1:
             raise InputError(f"{type_name}: give one of frequency_hz [Hz] or period [s], not both")
-        if new_freq and omega is None:
+        if new_freq and not kind.frequency:
             raise InputError(f"{type_name}: no frequency (it takes {', '.join(args[1:-1])})")
-        if amplitude is not None and units is None and amp != "amplitude":
+        if amplitude is not None and units is None:
             raise InputError(
                 f"{type_name}: amplitude={amplitude!r} needs its units, as in a case file: "
                 f"amplitude={amplitude!r}, units=\"g\" (or \"m/s^2\", \"cm/s^2\"), or "
@@ -291,102 +345,79 @@ def _synthetic(fn, type_name: str, args=("a_p", "omega_p", "duration", "componen
             if pos:
                 raise InputError(
                     f"{type_name}: positional arguments {pos!r} with keywords in a case file's "
-                    f"units: give every value by keyword, e.g. {type_name}_pulse(amplitude=0.3, "
+                    f"units: give every value by keyword, e.g. {function}(amplitude=0.3, "
                     f"units=\"g\", frequency_hz=2.0, duration=4.0)"
                 )
-            for old in (amp, omega):
-                if old is not None and old in kwargs:
+            for old in ("a_p", "omega_p"):
+                if old in kwargs:
                     raise InputError(
-                        f"{type_name}: {old}= is in SI units ({'m/s^2' if old == amp else 'rad/s'}); "
+                        f"{type_name}: {old}= is in SI units ({'m/s^2' if old == 'a_p' else 'rad/s'}); "
                         "do not mix it with amplitude=/units=, amplitude_g=, frequency_hz= or period="
                     )
             if amplitude_g is not None:
-                a = float(amplitude_g) * STANDARD_GRAVITY
+                values["a_p"] = float(amplitude_g) * STANDARD_GRAVITY
             elif amplitude_m_per_s2 is not None:
-                a = float(amplitude_m_per_s2)
+                values["a_p"] = float(amplitude_m_per_s2)
             elif amplitude is not None:
-                a = float(amplitude) * _unit(units)[1]
-            else:
-                raise InputError(
-                    f"{type_name}: amplitude: missing; give amplitude= with units=, or amplitude_g="
-                )
-            kwargs[amp] = a
-            if omega is not None:
-                if not new_freq:
-                    raise InputError(f"{type_name}: frequency: missing; give frequency_hz= [Hz] or period= [s]")
+                values["a_p"] = float(amplitude) * _unit(units)[1]
+            if new_freq:
                 f = float(frequency_hz) if frequency_hz is not None else 1.0 / float(period)
-                kwargs[omega] = 2.0 * math.pi * f
-        elif amplitude is not None:  # the engine's own keyword (harmonic): m/s^2
-            kwargs[amp] = amplitude
-        m = fn(*pos, **kwargs)
-        a_si = pos[0] if pos else kwargs.get(amp)
-        comp = {"type": type_name, "amplitude_m_per_s2": float(a_si)}
-        if kwargs.get("component") == Component.vertical or (
-            len(pos) == len(args) and pos[-1] == Component.vertical
-        ):
+                values["omega_p"] = 2.0 * math.pi * f
+        if values.get("a_p") is None:
+            raise InputError(f"{type_name}: amplitude: missing; give amplitude= with units=, or amplitude_g=")
+        if kind.frequency and values.get("omega_p") is None:
+            raise InputError(f"{type_name}: frequency: missing; give frequency_hz= [Hz] or period= [s]")
+        if values.get("duration") is None:
+            raise InputError(f"{type_name}: duration: missing; give duration= [s]")
+        keys = {key_of[a]: float(values[a]) for a in key_of if values.get(a) is not None}
+        for key in needs:
+            if key not in keys:
+                raise InputError(f"{function}: {key}: missing; give {key}=")
+        component = values.get("component", Component.horizontal)
+        a_si = float(values["a_p"])
+        m = _flexrock.make_pulse(type_name, a_si, float(values.get("omega_p", 0.0)),
+                                 float(values["duration"]), component, keys)
+        comp = {"type": type_name, "amplitude_m_per_s2": a_si}
+        if component == Component.vertical:
             return _note(m, {"type": "none"}, comp)
         return _note(m, comp)
 
+    def key_doc(k) -> str:
+        return f"{k.name} : float\n    [{k.unit}] {k.doc} (default: {k.default_text}).\n"
+
+    make.__name__ = make.__qualname__ = function
+    make.__module__ = __name__
     make.__doc__ = (
-        f"A ``{type_name}`` motion, as a case file's ``type = \"{type_name}\"`` makes it.\n\n"
+        f"A ``{type_name}`` motion, as a case file's ``type = \"{type_name}\"`` makes it: {kind.doc}.\n\n"
         "Parameters\n----------\n"
         "amplitude : float\n    Peak acceleration in ``units``; or ``amplitude_g`` [g] or\n"
         "    ``amplitude_m_per_s2`` [m/s^2].\n"
         "units : {\"g\", \"m/s^2\", \"cm/s^2\"}\n"
-        + ("frequency_hz : float\n    [Hz]; or ``period`` [s].\n" if omega else "")
+        + ("frequency_hz : float\n    [Hz]; or ``period`` [s].\n" if kind.frequency else "")
         + "duration : float\n    [s] length of the motion (free vibration after the pulse).\n"
-        + "".join(_key_doc(type_name, k) for k in args[2:-1] if k != "duration")
+        + "".join(key_doc(k) for k in kind.keys)
         + "component : Component\n    horizontal (default) or vertical.\n\n"
-        f"The engine's SI form ``{fn.__name__}({', '.join(args)})`` (m/s^2, rad/s, s) is\n"
-        "accepted too, positionally or by those names.\n\n"
+        f"The SI form ``{function}({', '.join(args)})`` (m/s^2, rad/s, s; the keys by their\n"
+        "engine names) is accepted too, positionally or by those names.\n\n"
         "Returns\n-------\nGroundMotion\n"
     )
     return make
 
 
-def _key_name(arg: str) -> str:
-    return {v: k for k, v in _TOML_KEYS.items()}.get(arg, arg)
-
-
-def _key_doc(type_name: str, arg: str) -> str:
-    # the docstring lines of one extra argument, from the table of pulse types
-    for k in _PULSE_KINDS[type_name].keys:
-        if k.argument == arg:
-            return f"{k.name} : float\n    [{k.unit}] {k.doc} (default: {k.default_text}).\n"
-    return f"{_key_name(arg)} : float\n    As the case file's key.\n"
-
-
-def _table_pulse(kind) -> tuple:
-    # the keyword function of a pulse type that has no function of its own in the module: the
-    # engine's arguments in the table's order, made by make_pulse
-    args = ("a_p",) + (("omega_p",) if kind.frequency else ()) + ("duration",)
-    args += tuple(k.argument for k in kind.keys) + ("component",)
-
-    def fn(*pos, **kw):
-        values = dict(zip(args, pos))
-        values.update(kw)
-        keys = {k.name: values[k.argument] for k in kind.keys if values.get(k.argument) is not None}
-        return _flexrock.make_pulse(kind.name, values["a_p"], values.get("omega_p", 0.0), values["duration"],
-                                    values.get("component", Component.horizontal), keys)
-
-    fn.__name__ = kind.function
-    return fn, args
-
-
-harmonic = _synthetic(_flexrock.harmonic, "harmonic", _OLD_ARGS["harmonic"])
-harmonic_cycles = _synthetic(_flexrock.harmonic_cycles, "harmonic", _OLD_ARGS["harmonic_cycles"])
-one_sine_pulse = _synthetic(_flexrock.one_sine_pulse, "one_sine")
-half_sine_pulse = _synthetic(_flexrock.half_sine_pulse, "half_sine")
-cycloidal_pulse_a = _synthetic(_flexrock.cycloidal_pulse_a, "cycloidal_a")
-cycloidal_pulse_b = _synthetic(_flexrock.cycloidal_pulse_b, "cycloidal_b")
-cycloidal_pulse_c = _synthetic(_flexrock.cycloidal_pulse_c, "cycloidal_c", _OLD_ARGS["cycloidal_c"])
-ricker_wavelet = _synthetic(_flexrock.ricker_wavelet, "ricker", _OLD_ARGS["ricker"])
-rectangular_pulse = _synthetic(_flexrock.rectangular_pulse, "rectangular", _OLD_ARGS["rectangular"])
+harmonic = _synthetic(_PULSE_KINDS["harmonic"])
+# harmonic with `cycles` required: `cycles` cycles, then free vibration
+harmonic_cycles = _synthetic(_PULSE_KINDS["harmonic"], "harmonic_cycles", needs=("cycles",))
+one_sine_pulse = _synthetic(_PULSE_KINDS["one_sine"])
+half_sine_pulse = _synthetic(_PULSE_KINDS["half_sine"])
+cycloidal_pulse_a = _synthetic(_PULSE_KINDS["cycloidal_a"])
+cycloidal_pulse_b = _synthetic(_PULSE_KINDS["cycloidal_b"])
+cycloidal_pulse_c = _synthetic(_PULSE_KINDS["cycloidal_c"])
+ricker_wavelet = _synthetic(_PULSE_KINDS["ricker"])
+rectangular_pulse = _synthetic(_PULSE_KINDS["rectangular"])
 for _kind in _PULSE_KINDS.values():
     # a pulse type of the table without a function above gets one here
     if _kind.function not in globals():
-        _fn, _args = _table_pulse(_kind)
-        globals()[_kind.function] = _synthetic(_fn, _kind.name, _args)
+        globals()[_kind.function] = _synthetic(_kind)
         __all__.append(_kind.function)
 __all__ += [
     "harmonic",

@@ -58,6 +58,72 @@ class Body:
     def tipping_angle(self, edge: int) -> float:
         """static overturning angle about edge 1 or 2 [rad], positive"""
 
+class BodyKey:
+    """One key of a body type."""
+    def __repr__(self) -> str: ...
+    @property
+    def default(self) -> Optional[float]: ...
+    @property
+    def default_text(self) -> str: ...
+    @property
+    def doc(self) -> str: ...
+    @property
+    def name(self) -> str: ...
+    @property
+    def required(self) -> bool: ...
+    @property
+    def rule(self) -> BodyKeyRule: ...
+    @property
+    def unit(self) -> str: ...
+    @property
+    def value(self) -> BodyKeyValue: ...
+
+class BodyKeyRule:
+    finite: ClassVar[BodyKeyRule]
+    positive: ClassVar[BodyKeyRule]
+    nonnegative: ClassVar[BodyKeyRule]
+    __members__: ClassVar[dict[str, BodyKeyRule]]
+    def __init__(self, value: int) -> None: ...
+    def __eq__(self, other: object) -> bool: ...
+    def __hash__(self) -> int: ...
+    def __index__(self) -> int: ...
+    def __int__(self) -> int: ...
+    @property
+    def name(self) -> str: ...
+    @property
+    def value(self) -> int: ...
+
+class BodyKeyValue:
+    number: ClassVar[BodyKeyValue]
+    integer: ClassVar[BodyKeyValue]
+    array: ClassVar[BodyKeyValue]
+    matrix: ClassVar[BodyKeyValue]
+    path: ClassVar[BodyKeyValue]
+    __members__: ClassVar[dict[str, BodyKeyValue]]
+    def __init__(self, value: int) -> None: ...
+    def __eq__(self, other: object) -> bool: ...
+    def __hash__(self) -> int: ...
+    def __index__(self) -> int: ...
+    def __int__(self) -> int: ...
+    @property
+    def name(self) -> str: ...
+    @property
+    def value(self) -> int: ...
+
+class BodyKind:
+    """One body type of the case file."""
+    def __repr__(self) -> str: ...
+    @property
+    def doc(self) -> str: ...
+    @property
+    def function(self) -> str: ...
+    @property
+    def keys(self) -> list[BodyKey]: ...
+    @property
+    def name(self) -> str: ...
+    @property
+    def numbers(self) -> bool: ...
+
 class BodyParameters:
     """The paper's parameters of a deformable body on two tipping points (SI units; mu, kappa, ... dimensionless)."""
     def __init__(self) -> None: ...
@@ -835,6 +901,14 @@ class SweepSpec:
     scales: list[float]
     solver: SimulationOptions
 
+def body_kinds() -> list[BodyKind]:
+    """Every body type, in the order of the docs.
+
+    Returns
+    -------
+    list of BodyKind
+    """
+
 def boundary_columns() -> list[str]:
     """Columns of the minimum-overturning CSV.
 
@@ -1269,6 +1343,21 @@ def lognormal_log_likelihood(im: list[float], failed: list[int], theta: float, b
     float
     """
 
+def make_body(type: str, keys: dict[str, float]) -> BodyParameters:
+    """A body of a type whose keys are all numbers, as a case file's [body] makes it.
+
+    Parameters
+    ----------
+    type : str
+        A body type (``body_kinds()``).
+    keys : dict of str to float
+        Its keys, in the units of the table; keys not given take their defaults.
+
+    Returns
+    -------
+    BodyParameters
+    """
+
 def make_pulse(type: str, a_p: float, omega_p: float, duration: float, component: Component = ..., keys: dict[str, float] = ...) -> GroundMotion:
     """A motion of any pulse type, in SI units.
 
@@ -1311,29 +1400,6 @@ def one_sine_pulse(a_p: float, omega_p: float, duration: float, component: Compo
     GroundMotion
         Analytic. The package's ``flexrock.one_sine_pulse`` also takes the case file's keys
         (``amplitude=``, ``units=``, ``frequency_hz=`` or ``period=``).
-    """
-
-def oscillator_on_slab(top_mass: float, frequency_hz: float, base_mass: float, height: float, base_width: float, damping_ratio: float = ...) -> BodyParameters:
-    """An elastic single-degree-of-freedom oscillator on a rocking base slab.
-
-    Parameters
-    ----------
-    top_mass : float
-        [kg] the oscillator's mass.
-    frequency_hz : float
-        [Hz] its natural frequency on a fixed base.
-    base_mass : float
-        [kg] the slab's mass.
-    height : float
-        [m] of the top mass above the base.
-    base_width : float
-        [m] full width of the slab.
-    damping_ratio : float
-        [-] of the mode.
-
-    Returns
-    -------
-    BodyParameters
     """
 
 def overturned(outcome: Outcome) -> bool:
@@ -1482,42 +1548,6 @@ def ricker_wavelet(a_p: float, omega_p: float, t_c: float, duration: float, comp
     Returns
     -------
     GroundMotion
-    """
-
-def rigid_block(width: float, height: float, mass: float) -> BodyParameters:
-    """A uniform rigid rectangular block.
-
-    Parameters
-    ----------
-    width : float
-        [m] full width of the footprint (2 b).
-    height : float
-        [m] full height (2 h).
-    mass : float
-        [kg]
-
-    Returns
-    -------
-    BodyParameters
-    """
-
-def rigid_body(mass: float, inertia_cg: float, height: float, b1: float, b2: float) -> BodyParameters:
-    """A general rigid body on two tipping points.
-
-    Parameters
-    ----------
-    mass : float
-        [kg]
-    inertia_cg : float
-        [kg m^2] moment of inertia about the c.g.
-    height : float
-        [m] c.g. above the base.
-    b1, b2 : float
-        [m] c.g. to tipping points 1 (left) and 2 (right).
-
-    Returns
-    -------
-    BodyParameters
     """
 
 def run_pulse_cell(body: Body, spec: SpectrumSpec, a_p: float, omega_p: float) -> RunSummary:
@@ -1714,31 +1744,6 @@ def time_history_csv(result: SimulationResult, body: Body) -> str:
     Returns
     -------
     str
-    """
-
-def uniform_cantilever(height: float, width: float, mass_per_length: float, bending_stiffness: float, modes: int, base_mass: float = ..., damping_ratio: float = ...) -> BodyParameters:
-    """A uniform flexible cantilever on a rigid base plate.
-
-    Parameters
-    ----------
-    height : float
-        [m]
-    width : float
-        [m] of the base (tipping points at -+ width/2).
-    mass_per_length : float
-        [kg/m]
-    bending_stiffness : float
-        [N m^2] EI.
-    modes : int
-        Bending modes kept.
-    base_mass : float
-        [kg] of the base plate.
-    damping_ratio : float
-        [-] of every mode.
-
-    Returns
-    -------
-    BodyParameters
     """
 
 def write_outputs(case: Case, body: Body, result: SimulationResult, output_dir: str = ...) -> OutputPaths:

@@ -4,7 +4,10 @@
 #include <pybind11/eigen.h>
 #include <pybind11/stl.h>
 
+#include <cmath>
+#include <map>
 #include <numbers>
+#include <optional>
 #include <sstream>
 #include <string>
 
@@ -103,82 +106,67 @@ void bind_model(py::module_& m) {
         return o.str();
       });
 
-  m.def("rigid_block", &rigid_block, py::arg("width"), py::arg("height"), py::arg("mass"),
-        R"doc(A uniform rigid rectangular block.
-
-Parameters
-----------
-width : float
-    [m] full width of the footprint (2 b).
-height : float
-    [m] full height (2 h).
-mass : float
-    [kg]
-
-Returns
--------
-BodyParameters)doc");
-  m.def("rigid_body", &rigid_body, py::arg("mass"), py::arg("inertia_cg"), py::arg("height"),
-        py::arg("b1"), py::arg("b2"), R"doc(A general rigid body on two tipping points.
-
-Parameters
-----------
-mass : float
-    [kg]
-inertia_cg : float
-    [kg m^2] moment of inertia about the c.g.
-height : float
-    [m] c.g. above the base.
-b1, b2 : float
-    [m] c.g. to tipping points 1 (left) and 2 (right).
-
-Returns
--------
-BodyParameters)doc");
-  m.def("oscillator_on_slab", &oscillator_on_slab, py::arg("top_mass"), py::arg("frequency_hz"),
-        py::arg("base_mass"), py::arg("height"), py::arg("base_width"),
-        py::arg("damping_ratio") = 0.0,
-        R"doc(An elastic single-degree-of-freedom oscillator on a rocking base slab.
-
-Parameters
-----------
-top_mass : float
-    [kg] the oscillator's mass.
-frequency_hz : float
-    [Hz] its natural frequency on a fixed base.
-base_mass : float
-    [kg] the slab's mass.
-height : float
-    [m] of the top mass above the base.
-base_width : float
-    [m] full width of the slab.
-damping_ratio : float
-    [-] of the mode.
+  // the table of body types: the package makes a keyword function of every type with a builder
+  // (flexrock.rigid_block, ...) from it
+  py::enum_<BodyKeyValue>(m, "BodyKeyValue")
+      .value("number", BodyKeyValue::kNumber)
+      .value("integer", BodyKeyValue::kInteger)
+      .value("array", BodyKeyValue::kArray)
+      .value("matrix", BodyKeyValue::kMatrix)
+      .value("path", BodyKeyValue::kPath);
+  py::enum_<BodyKeyRule>(m, "BodyKeyRule")
+      .value("finite", BodyKeyRule::kFinite)
+      .value("positive", BodyKeyRule::kPositive)
+      .value("nonnegative", BodyKeyRule::kNonnegative);
+  py::class_<BodyKey>(m, "BodyKey", "One key of a body type.")
+      .def_readonly("name", &BodyKey::name, "key in a case file and keyword in Python")
+      .def_readonly("unit", &BodyKey::unit)
+      .def_readonly("value", &BodyKey::value)
+      .def_readonly("rule", &BodyKey::rule)
+      .def_readonly("required", &BodyKey::required)
+      .def_property_readonly(
+          "default",
+          [](const BodyKey& k) -> std::optional<double> {
+            if (k.required || std::isnan(k.fixed)) return std::nullopt;
+            return k.fixed;
+          },
+          "the default of a number that is not required (None: required, or not a number)")
+      .def_property_readonly("default_text", [](const BodyKey& k) { return default_text(k); })
+      .def_readonly("doc", &BodyKey::doc)
+      .def("__repr__", [](const BodyKey& k) {
+        return std::string("<BodyKey ") + k.name + " [" + k.unit + "]>";
+      });
+  py::class_<BodyKind>(m, "BodyKind", "One body type of the case file.")
+      .def_readonly("name", &BodyKind::name, "body.type in case files")
+      .def_readonly("function", &BodyKind::function, "the Python function that makes it (or \"\")")
+      .def_readonly("keys", &BodyKind::keys)
+      .def_property_readonly(
+          "numbers", [](const BodyKind& k) { return k.make != nullptr; },
+          "whether its keys are all numbers (make_body builds it)")
+      .def_readonly("doc", &BodyKind::doc)
+      .def("__repr__", [](const BodyKind& k) { return std::string("<BodyKind ") + k.name + ">"; });
+  m.def("body_kinds", &body_kinds, py::return_value_policy::reference,
+        R"doc(Every body type, in the order of the docs.
 
 Returns
 -------
-BodyParameters)doc");
-  m.def("uniform_cantilever", &uniform_cantilever, py::arg("height"), py::arg("width"),
-        py::arg("mass_per_length"), py::arg("bending_stiffness"), py::arg("modes"),
-        py::arg("base_mass") = 0.0, py::arg("damping_ratio") = 0.0,
-        R"doc(A uniform flexible cantilever on a rigid base plate.
+list of BodyKind)doc");
+  m.def(
+      "make_body",
+      [](const std::string& type, const std::map<std::string, double>& keys) {
+        BodyArgs args;
+        args.keys.insert(keys.begin(), keys.end());
+        return make_body(body_kind(type), std::move(args));
+      },
+      py::arg("type"), py::arg("keys"),
+      R"doc(A body of a type whose keys are all numbers, as a case file's [body] makes it.
 
 Parameters
 ----------
-height : float
-    [m]
-width : float
-    [m] of the base (tipping points at -+ width/2).
-mass_per_length : float
-    [kg/m]
-bending_stiffness : float
-    [N m^2] EI.
-modes : int
-    Bending modes kept.
-base_mass : float
-    [kg] of the base plate.
-damping_ratio : float
-    [-] of every mode.
+type : str
+    A body type (``body_kinds()``).
+keys : dict of str to float
+    Its keys, in the units of the table; keys not given take their defaults.
 
 Returns
 -------

@@ -101,6 +101,17 @@ def test_pulses_take_the_case_file_keys_and_units(tmp_path):
     assert abs(r.at(1.5)[0]) == pytest.approx(0.2 * G, rel=1e-12)
     box = fr.rectangular_pulse(amplitude_g=0.1, length=0.5, duration=1.0)
     assert box.at(0.25)[0] == pytest.approx(0.1 * G) and box.at(0.75)[0] == 0.0
+    # the SI form follows the table's order: a_p, omega_p, duration, the keys' engine names
+    w = 2 * math.pi
+    same = fr.ricker_wavelet(0.2 * G, w, 4.0, 1.5)
+    assert same.at(1.5)[0] == r.at(1.5)[0]
+    assert fr.rectangular_pulse(0.1 * G, 1.0, 0.5).at(0.25)[0] == box.at(0.25)[0]
+    cyc = fr.harmonic_cycles(amplitude_g=0.1, frequency_hz=1.0, cycles=2, duration=4.0)
+    assert cyc.at(2.25)[0] == 0.0 and cyc.at(1.25)[0] == pytest.approx(0.1 * G)
+    with pytest.raises(fr.InputError, match="cycles: missing"):
+        fr.harmonic_cycles(amplitude_g=0.1, frequency_hz=1.0, duration=4.0)
+    with pytest.raises(TypeError, match="unexpected keyword argument 'centre'"):
+        fr.ricker_wavelet(amplitude_g=0.2, frequency_hz=1.0, centre=1.5, duration=4.0)
     # the summary says the amplitude in m/s^2 whatever the spelling
     s = fr.simulate(fr.rigid_block(0.4, 1.8, 800.0), spellings[0]).summary()
     assert s["excitation"]["horizontal"]["amplitude_m_per_s2"] == pytest.approx(0.3 * G)
@@ -183,7 +194,13 @@ def test_reprs_say_what_the_object_is(fit):
     assert repr(b).startswith("<Body ") and "2 mode(s) at" in repr(b) and "Hz" in repr(b)
     m = fr.motion_from_array([0.0, 1.0, -2.0, 0.5], dt=0.01)
     assert "4 samples" in repr(m) and "PGA = 2 m/s^2" in repr(m)
-    assert "analytic" in repr(fr.one_sine_pulse(amplitude_g=0.3, frequency_hz=2.0, duration=3.0))
+    pulse = repr(fr.one_sine_pulse(amplitude_g=0.3, frequency_hz=2.0, duration=3.0))
+    assert "analytic" in pulse and "no vertical" in pulse and "PGA = 2.942 m/s^2 (0.3 g)" in pulse
+    # every analytic motion could shake vertically (has_vertical() is true): the repr tells
+    up = fr.one_sine_pulse(amplitude_g=0.2, frequency_hz=2.0, duration=3.0, component=fr.Component.vertical)
+    assert "PGA = 0 m/s^2" in repr(up) and "with vertical: peak 1.961 m/s^2 (0.2 g)" in repr(up)
+    assert "no vertical" in repr(fr.free_rocking(1.0))
+    assert "no vertical" in repr(m)  # sampled, horizontal only
     assert repr(fit).startswith("<FragilityFit theta = ") and "95% bounds" in repr(fit)
     s = fr.spectrum(fr.Body(p), [1.5, 3.0], [2.0], bisect=False, threads=1)
     assert repr(s).startswith("<SpectrumResult 2 x 1 cells")
@@ -230,3 +247,36 @@ def test_cli_fragility_says_what_it_left_out(cli, tmp_path):
                        capture_output=True, text=True)
     assert p.returncode == 0, p.stderr
     assert "6 runs (3 with the outcome, 2 runs stopped or lost contact: left out)" in p.stdout
+
+
+def test_every_body_type_with_number_keys_has_its_keyword_function():
+    # the functions are made from the library's table of body types: the case file's keys, in
+    # its order and units, with its defaults; a case file's [body] gives the same parameters
+    import inspect
+
+    made = 0
+    for kind in fr._flexrock.body_kinds():
+        if not kind.numbers:
+            assert kind.function == ""
+            continue
+        fn = getattr(fr, kind.function)
+        assert [p.name for p in inspect.signature(fn).parameters.values()] == [k.name for k in kind.keys]
+        for k in kind.keys:
+            assert f"{k.name} : " in fn.__doc__ and f"[{k.unit}]" in fn.__doc__
+        values = {k.name: 1.5 + 0.25 * i for i, k in enumerate(k for k in kind.keys if k.required)}
+        by_name = fn(**values)
+        positional = fn(*values.values())
+        table = fr._flexrock.make_body(kind.name, values)
+        for a in (by_name, positional):
+            assert (a.mass, a.height, a.b1, a.zeta2) == (table.mass, table.height, table.b1, table.zeta2)
+            np.testing.assert_array_equal(a.kappa, table.kappa)
+        made += 1
+    assert made >= 4
+    with pytest.raises(TypeError):
+        fr.rigid_block(0.4, 1.8)  # mass missing, as for any Python function
+    with pytest.raises(TypeError):
+        fr.rigid_block(0.4, 1.8, 800.0, depth=1.0)
+    with pytest.raises(fr.InputError, match="modes must be an integer >= 1"):
+        fr.uniform_cantilever(10.0, 3.0, 2000.0, 5e9, modes=1.5)
+    with pytest.raises(fr.InputError, match="width"):
+        fr.rigid_block(-0.4, 1.8, 800.0)

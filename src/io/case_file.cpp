@@ -264,92 +264,111 @@ BodyParameters read_lumped_body(Reader& r, std::vector<std::string>& notes) {
   return from_lumped_model(m, notes);
 }
 
-// the names of a table's entries, in its order
-template <class Kind, std::size_t N>
-std::vector<std::string> names_of(const Kind (&kinds)[N]) {
-  std::vector<std::string> v;
-  for (const Kind& k : kinds) v.emplace_back(k.name);
-  return v;
-}
-
-// the entry of `name`, which r.choice() has already checked against the names
-template <class Kind, std::size_t N>
-const Kind& kind_of(const Kind (&kinds)[N], const std::string& name) {
-  for (const Kind& k : kinds) {
-    if (name == k.name) return k;
+// a number key of a body type (model/builders.hpp), checked by its rule; the default when not given
+double read_body_number(Reader& r, const BodyKey& k) {
+  const std::string unit = std::string("[") + k.unit + "]";
+  if (k.value == BodyKeyValue::kInteger) {
+    return static_cast<double>(r.integer_or(k.name, static_cast<long>(k.fixed), 1,
+                                            std::string("an integer >= 1 (") + k.doc + ")"));
   }
-  FLEXROCK_DEMAND(false);
-  return kinds[0];
+  if (k.required) {
+    switch (k.rule) {
+      case BodyKeyRule::kPositive:
+        return r.positive(k.name, unit);
+      case BodyKeyRule::kNonnegative: {
+        const double v = r.number(k.name, "a number >= 0 " + unit);
+        if (!(v >= 0.0)) r.expected(k.name, "a number >= 0 " + unit);
+        return v;
+      }
+      case BodyKeyRule::kFinite:
+        return r.number(k.name, "a number " + unit);
+    }
+  }
+  switch (k.rule) {
+    case BodyKeyRule::kPositive:
+      return r.positive_or(k.name, k.fixed, unit);
+    case BodyKeyRule::kNonnegative:
+      return r.nonnegative_or(k.name, k.fixed, unit);
+    case BodyKeyRule::kFinite:
+      return r.number_or(k.name, k.fixed, "a number " + unit);
+  }
+  return k.fixed;
 }
 
-BodyParameters read_rigid_block(Reader& r, std::vector<std::string>&) {
-  const double w = r.positive("width", "[m]");
-  const double h = r.positive("height", "[m]");
-  const double m = r.positive("mass", "[kg]");
-  return rigid_block(w, h, m);
-}
-
-BodyParameters read_rigid_body(Reader& r, std::vector<std::string>&) {
-  const double m = r.positive("mass", "[kg]");
-  const double i = r.positive("inertia_cg", "[kg m^2]");
-  const double h = r.positive("height", "[m]");
-  const double b1 = r.positive("b1", "[m]");
-  const double b2 = r.positive("b2", "[m]");
-  return rigid_body(m, i, h, b1, b2);
+// a body type whose keys are all numbers: each key by the table's rule, then its builder
+BodyParameters read_table_body(Reader& r, const BodyKind& kind) {
+  BodyArgs args;
+  for (const BodyKey& k : kind.keys) args.keys.emplace(k.name, read_body_number(r, k));
+  return make_body(kind, std::move(args));
 }
 
 BodyParameters read_paper(Reader& r, std::vector<std::string>&) { return read_paper_body(r); }
 
-BodyParameters read_oscillator_on_slab(Reader& r, std::vector<std::string>&) {
-  const double top = r.positive("top_mass", "[kg]");
-  const double f = r.positive("frequency_hz", "[Hz]");
-  const double base = r.positive("base_mass", "[kg]");
-  const double h = r.positive("height", "[m]");
-  const double w = r.positive("base_width", "[m]");
-  const double z = r.nonnegative_or("damping_ratio", 0.0, "[-]");
-  return oscillator_on_slab(top, f, base, h, w, z);
-}
-
-BodyParameters read_uniform_cantilever(Reader& r, std::vector<std::string>&) {
-  const double h = r.positive("height", "[m]");
-  const double w = r.positive("width", "[m]");
-  const double mpl = r.positive("mass_per_length", "[kg/m]");
-  const double ei = r.positive("bending_stiffness", "[N m^2]");
-  const auto modes = r.integer_or("modes", 1, 1, "an integer >= 1 (bending modes)");
-  const double base = r.nonnegative_or("base_mass", 0.0, "[kg]");
-  const double z = r.nonnegative_or("damping_ratio", 0.0, "[-]");
-  return uniform_cantilever(h, w, mpl, ei, static_cast<int>(modes), base, z);
-}
-
-// one entry a body type: its name in body.type and the reader of its keys (docs/case-file.md)
-struct BodyKind {
+// the readers of the body types whose keys are not all numbers (arrays, files): the table of
+// body types lists their keys, these functions read them
+struct BodyReader {
   const char* name;
   BodyParameters (*read)(Reader&, std::vector<std::string>& notes);
 };
-const BodyKind kBodyKinds[] = {
-    {"rigid_block", read_rigid_block},
-    {"rigid_body", read_rigid_body},
+const BodyReader kBodyReaders[] = {
     {"paper", read_paper},
     {"lumped", read_lumped_body},
-    {"oscillator_on_slab", read_oscillator_on_slab},
-    {"uniform_cantilever", read_uniform_cantilever},
 };
-const BodyKind& body_kind(const std::string& name) { return kind_of(kBodyKinds, name); }
 
-// [body] of any type; `rigid` receives body.rigid, `notes` what a builder changed in the data
-BodyParameters read_body(Reader& r, std::string& type, bool& rigid,
-                         std::vector<std::string>& notes) {
-  type = r.choice("type", names_of(kBodyKinds));
+BodyParameters read_body_of_kind(Reader& r, const BodyKind& kind, std::vector<std::string>& notes) {
+  if (kind.make) return read_table_body(r, kind);
+  for (const BodyReader& b : kBodyReaders) {
+    if (std::string_view(kind.name) == b.name) return b.read(r, notes);
+  }
+  FLEXROCK_DEMAND(false);  // a body type with neither a builder nor a reader
+  return {};
+}
+
+// what was read of a [body], key by key, for `flexrock check`: numbers with their units (a
+// default marked so), arrays by their size, paths as given
+std::vector<BodyKeyRead> body_keys_read(Reader& r, const BodyKind& kind) {
+  std::vector<BodyKeyRead> out;
+  for (const BodyKey& k : kind.keys) {
+    const toml::node* n = r.node(k.name);
+    std::string text;
+    bool given = n != nullptr;
+    if (!n) {
+      if (k.value != BodyKeyValue::kNumber && k.value != BodyKeyValue::kInteger) continue;
+      if (k.required || !std::isfinite(k.fixed)) continue;
+      text = num(k.fixed);
+    } else if (const toml::array* a = n->as_array()) {
+      const toml::array* row = a->empty() ? nullptr : (*a)[0].as_array();
+      text = "[" +
+             (row ? std::to_string(a->size()) + " x " + std::to_string(row->size())
+                  : std::to_string(a->size()) + (a->size() == 1 ? " value" : " values")) +
+             "]";
+    } else if (const auto* str = n->as_string()) {
+      text = str->get();
+    } else {
+      text = describe(*n);
+    }
+    out.push_back({k.name, text, k.unit, given});
+  }
+  return out;
+}
+
+// [body] of any type; `rigid` receives body.rigid, `notes` what a builder changed in the data,
+// `read` (when given) what was read key by key
+BodyParameters read_body(Reader& r, std::string& type, bool& rigid, std::vector<std::string>& notes,
+                         std::vector<BodyKeyRead>* read = nullptr) {
+  type = r.choice("type", body_kind_names());
+  const BodyKind& kind = body_kind(type);
   rigid = r.boolean_or("rigid", false);
   BodyParameters p;
   try {
-    p = body_kind(type).read(r, notes);
+    p = read_body_of_kind(r, kind, notes);
   } catch (const InputError& e) {
     // errors placed in this file pass through; builder errors get the table's place
     if (e.file() == r.file()) throw;
     throw InputError(r.file(), r.line(), "", "[body] type '" + type + "': " + e.what());
   }
   r.finish("for body type '" + type + "'");
+  if (read) *read = body_keys_read(r, kind);
   if (rigid) {
     p.mu.resize(0, 0);
     p.kappa.resize(0, 0);
@@ -655,7 +674,7 @@ Case load_case(const std::string& path) {
 
   Reader br = top.table("body");
   c.input_files.push_back(path);
-  c.body = read_body(br, c.body_type, c.rigid, c.notes);
+  c.body = read_body(br, c.body_type, c.rigid, c.notes, &c.body_keys);
   const Body body(c.body);
   Reader er = top.table("excitation");
   read_excitation(er, c);
@@ -683,6 +702,34 @@ BodyParameters load_body(const std::string& path, std::string* type,
   if (type) *type = t;
   if (files) files->insert(files->end(), read.begin(), read.end());
   return p;
+}
+
+std::string body_key_reference() {
+  std::string types;
+  for (const BodyKind& k : body_kinds())
+    types += (types.empty() ? "`" : ", `") + std::string(k.name) + "`";
+  std::string s =
+      "<!-- begin: written by `flexrock keys --markdown` from the table of body types "
+      "(src/model/builders.cpp); edit the table, not these lines -->\n"
+      "Common keys:\n\n"
+      "| key | unit | default | meaning |\n"
+      "|---|---|---|---|\n"
+      "| `type` | | required | " +
+      types +
+      " |\n"
+      "| `rigid` | | `false` | take the body as rigid: keep M, h, b1, b2 and zeta^2, drop every "
+      "deformation mode |\n";
+  for (const BodyKind& k : body_kinds()) {
+    s.append("\n`type = \"").append(k.name).append("\"`: ").append(k.doc);
+    if (*k.function) s.append(" (Python: `flexrock.").append(k.function).append("`)");
+    s.append(".\n\n| key | unit | default | meaning |\n|---|---|---|---|\n");
+    for (const BodyKey& key : k.keys) {
+      s.append("| `").append(key.name).append("` | ").append(key.unit).append(" | ");
+      s.append(default_text(key)).append(" | ").append(key.doc).append(" |\n");
+    }
+  }
+  s += "<!-- end: written by `flexrock keys --markdown` -->\n";
+  return s;
 }
 
 std::string pulse_key_reference() {

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <limits>
 #include <numbers>
 #include <string>
 #include <utility>
@@ -457,6 +458,227 @@ BodyParameters uniform_cantilever(double height, double width, double mass_per_l
   }
   p.damping = modal_damping(n, damping_ratio);
   return p;
+}
+
+}  // namespace flexrock
+
+// ---------------------------------------------------------------------------------------------
+// the table of body types
+
+namespace flexrock {
+
+namespace {
+
+constexpr double kNone = std::numeric_limits<double>::quiet_NaN();
+
+// a number that must be given, > 0
+BodyKey positive(const char* name, const char* unit, const char* doc) {
+  return {name, unit, BodyKeyValue::kNumber, BodyKeyRule::kPositive, true, kNone, nullptr, doc};
+}
+
+// a number >= 0 with a default
+BodyKey nonnegative_or(const char* name, const char* unit, double fixed, const char* doc) {
+  return {name, unit, BodyKeyValue::kNumber, BodyKeyRule::kNonnegative, false, fixed, nullptr, doc};
+}
+
+// a number > 0 with a default
+BodyKey positive_or(const char* name, const char* unit, double fixed, const char* doc) {
+  return {name, unit, BodyKeyValue::kNumber, BodyKeyRule::kPositive, false, fixed, nullptr, doc};
+}
+
+// a finite number that must be given
+BodyKey number(const char* name, const char* unit, const char* doc) {
+  return {name, unit, BodyKeyValue::kNumber, BodyKeyRule::kFinite, true, kNone, nullptr, doc};
+}
+
+// an integer >= 1 with a default
+BodyKey count_or(const char* name, double fixed, const char* doc) {
+  return {name, "-", BodyKeyValue::kInteger, BodyKeyRule::kPositive, false, fixed, nullptr, doc};
+}
+
+// an array, matrix or path, read by the case loader's reader of the type
+BodyKey data(const char* name, const char* unit, BodyKeyValue value, const char* default_text,
+             const char* doc) {
+  return {name, unit, value, BodyKeyRule::kFinite, false, kNone, default_text, doc};
+}
+
+// the damping keys of `paper` and `lumped`
+void add_damping(std::vector<BodyKey>& keys) {
+  keys.push_back(data("damping_ratios", "-", BodyKeyValue::kArray, "none",
+                      "modal damping: one ratio a pinned-base mode, ascending frequency"));
+  keys.push_back(data("rayleigh_mass", "1/s", BodyKeyValue::kNumber, "0",
+                      "a of Rayleigh damping C = a mu + b K (instead of `damping_ratios`), >= 0"));
+  keys.push_back(
+      data("rayleigh_stiffness", "s", BodyKeyValue::kNumber, "0", "b of Rayleigh damping, >= 0"));
+}
+
+const char* const kGravityDoc = "g";
+
+std::vector<BodyKind> make_body_kinds() {
+  std::vector<BodyKind> kinds;
+  kinds.push_back(
+      {"rigid_block",
+       "rigid_block",
+       {positive("width", "m", "full width of the footprint"),
+        positive("height", "m", "full height"), positive("mass", "kg", "mass")},
+       [](const BodyArgs& a) { return rigid_block(a.at("width"), a.at("height"), a.at("mass")); },
+       "uniform rigid rectangular block"});
+  kinds.push_back({"rigid_body",
+                   "rigid_body",
+                   {positive("mass", "kg", "M"),
+                    positive("inertia_cg", "kg m^2", "rotary inertia about the c.g."),
+                    positive("height", "m", "h, c.g. above the base"),
+                    positive("b1", "m", "c.g. to tipping point 1 (horizontal)"),
+                    positive("b2", "m", "c.g. to tipping point 2")},
+                   [](const BodyArgs& a) {
+                     return rigid_body(a.at("mass"), a.at("inertia_cg"), a.at("height"), a.at("b1"),
+                                       a.at("b2"));
+                   },
+                   "general rigid body"});
+  std::vector<BodyKey> paper = {
+      positive("mass", "kg", "M"),
+      positive("height", "m", "h, c.g. above the base"),
+      positive("b1", "m", "c.g. to tipping point 1 (horizontal)"),
+      positive("b2", "m", "c.g. to tipping point 2"),
+      positive("zeta2", "-", "zeta^2 = I_zz/(M h^2) about the c.g."),
+      positive_or("gravity", "m/s^2", kStandardGravity, kGravityDoc),
+      data("kappa", "-", BodyKeyValue::kMatrix, "none (rigid)",
+           "n x n stiffness, `[[...], ...]`, symmetric positive definite; n, the number of "
+           "modes, is its size"),
+      data("mu", "-", BodyKeyValue::kMatrix, "required with `kappa`",
+           "n x n modal mass, symmetric positive definite"),
+      data("gamma", "-", BodyKeyValue::kMatrix, "zeros", "n x n, antisymmetric"),
+      data("psi_x", "-", BodyKeyValue::kArray, "zeros", "n values"),
+      data("psi_y", "-", BodyKeyValue::kArray, "zeros", "n values"),
+      data("delta", "-", BodyKeyValue::kArray, "zeros", "n values"),
+      data("beta", "-", BodyKeyValue::kArray, "zeros", "n values")};
+  add_damping(paper);
+  kinds.push_back({"paper", "", std::move(paper), nullptr,
+                   "the paper's dimensionless parameters directly (Moran & McLennan; see "
+                   "docs/theory.md)"});
+  std::vector<BodyKey> lumped = {
+      number("tip1_x", "m", "x of tipping point 1, the left edge"),
+      number("tip2_x", "m", "x of tipping point 2, the right edge, > `tip1_x`"),
+      positive_or("gravity", "m/s^2", kStandardGravity, kGravityDoc),
+      data("nodes", "m, m, kg, kg m^2", BodyKeyValue::kMatrix, "one of `nodes`, `nodes_file`",
+           "`[[x, y, mass], [x, y, mass, rotary_inertia], ...]`"),
+      data("nodes_file", "", BodyKeyValue::kPath, "",
+           "table file of the nodes, columns named in a header row (below)"),
+      data("frequencies_hz", "Hz", BodyKeyValue::kArray, "one of these two",
+           "natural frequencies of the modes (n values)"),
+      data("stiffness", "N m", BodyKeyValue::kMatrix, "",
+           "n x n modal stiffness for the shapes as given"),
+      data("phi_x", "m", BodyKeyValue::kMatrix, "one of inline or `shapes_file`",
+           "one row a node, one value a mode: `[[phi_1, phi_2], ...]`"),
+      data("phi_y", "m", BodyKeyValue::kMatrix, "", "the same, vertical components"),
+      data("shapes_file", "m", BodyKeyValue::kPath, "",
+           "table file of the mode shapes as an FE program prints them (below)")};
+  add_damping(lumped);
+  kinds.push_back({"lumped", "", std::move(lumped), nullptr,
+                   "a lumped-mass modal model as a finite-element program exports it (below)"});
+  kinds.push_back(
+      {"oscillator_on_slab",
+       "oscillator_on_slab",
+       {positive("top_mass", "kg", "the oscillating mass"),
+        positive("frequency_hz", "Hz", "its natural frequency on a fixed base"),
+        positive("base_mass", "kg", "the slab"),
+        positive("height", "m", "the top mass above the base"),
+        positive("base_width", "m", "full width of the slab (between the tipping points)"),
+        nonnegative_or("damping_ratio", "-", 0.0, "of the mode")},
+       [](const BodyArgs& a) {
+         return oscillator_on_slab(a.at("top_mass"), a.at("frequency_hz"), a.at("base_mass"),
+                                   a.at("height"), a.at("base_width"), a.at("damping_ratio"));
+       },
+       "a top mass on a lateral spring above a rigid base slab (one mode)"});
+  kinds.push_back(
+      {"uniform_cantilever",
+       "uniform_cantilever",
+       {positive("height", "m", "length of the cantilever"),
+        positive("width", "m", "full width, between the tipping points"),
+        positive("mass_per_length", "kg/m", "mass of the cantilever a metre"),
+        positive("bending_stiffness", "N m^2", "EI"),
+        count_or("modes", 1.0, "clamped-free bending modes kept"),
+        nonnegative_or("base_mass", "kg", 0.0, "rigid base plate"),
+        nonnegative_or("damping_ratio", "-", 0.0, "of every mode")},
+       [](const BodyArgs& a) {
+         return uniform_cantilever(a.at("height"), a.at("width"), a.at("mass_per_length"),
+                                   a.at("bending_stiffness"), static_cast<int>(a.at("modes")),
+                                   a.at("base_mass"), a.at("damping_ratio"));
+       },
+       "a uniform flexible cantilever (tank, stack, column) clamped to a rigid base plate "
+       "standing on its two edges"});
+  return kinds;
+}
+
+std::string join_names(const std::vector<std::string>& names) {
+  std::string s;
+  for (const std::string& n : names) s += (s.empty() ? "" : ", ") + n;
+  return s;
+}
+
+}  // namespace
+
+double BodyArgs::at(std::string_view name) const {
+  const auto it = keys.find(name);
+  FLEXROCK_DEMAND(it != keys.end());
+  return it->second;
+}
+
+const std::vector<BodyKind>& body_kinds() {
+  static const std::vector<BodyKind> kinds = make_body_kinds();
+  return kinds;
+}
+
+std::vector<std::string> body_kind_names() {
+  std::vector<std::string> v;
+  for (const BodyKind& k : body_kinds()) v.emplace_back(k.name);
+  return v;
+}
+
+const BodyKind& body_kind(std::string_view name) {
+  for (const BodyKind& k : body_kinds()) {
+    if (name == k.name) return k;
+  }
+  throw InputError("expected a body type, one of: " + join_names(body_kind_names()) + "; got \"" +
+                   std::string(name) + "\"");
+}
+
+BodyParameters make_body(const BodyKind& kind, BodyArgs args) {
+  FLEXROCK_THROW_UNLESS(kind.make, std::string(kind.name) +
+                                       ": its keys are not all numbers; build it from "
+                                       "BodyParameters or a LumpedModel");
+  std::vector<std::string> names;
+  for (const BodyKey& k : kind.keys) names.emplace_back(k.name);
+  for (const auto& [name, value] : args.keys) {
+    FLEXROCK_THROW_UNLESS(
+        std::find(names.begin(), names.end(), name) != names.end(),
+        std::string(kind.name) + ": unknown key '" + name + "'; expected " + join_names(names));
+  }
+  for (const BodyKey& k : kind.keys) {
+    const auto it = args.keys.find(k.name);
+    if (it == args.keys.end()) {
+      FLEXROCK_THROW_UNLESS(!k.required,
+                            std::string(kind.name) + ": " + k.name + " [" + k.unit + "] missing");
+      args.keys.emplace(k.name, k.fixed);
+      continue;
+    }
+    if (k.value == BodyKeyValue::kInteger) {
+      const double v = it->second;
+      FLEXROCK_THROW_UNLESS(
+          std::isfinite(v) && v >= 1.0 && v == std::floor(v) && v <= 1e9,
+          std::string(kind.name) + ": " + k.name + " must be an integer >= 1, got " + num(v));
+    }
+  }
+  return kind.make(args);
+}
+
+std::string default_text(const BodyKey& key) {
+  if (key.default_text) return key.default_text;
+  const char* rule = key.value == BodyKeyValue::kInteger     ? ", integer >= 1"
+                     : key.rule == BodyKeyRule::kPositive    ? ", > 0"
+                     : key.rule == BodyKeyRule::kNonnegative ? ", >= 0"
+                                                             : "";
+  return (key.required ? std::string("required") : format_number(key.fixed)) + rule;
 }
 
 }  // namespace flexrock

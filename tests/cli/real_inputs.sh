@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: BSD-3-Clause
 # inputs as engineers have them: check/params report each record's PGA, PGV, duration and dt and
-# the factor to a target PGA; `run` takes several case files and wildcard patterns; a lumped
+# the factor to a target PGA, and check the body's keys with their units and each synthetic
+# motion's amplitude; `run` takes several case files and wildcard patterns; a lumped
 # body read from an ANSYS listing gets a note that its printed shapes were re-orthogonalised
 source "$(dirname "$0")/common.sh"
 
@@ -56,6 +57,8 @@ expect_in "$WORK/out" "PGV "
 expect_in "$WORK/out" "duration "
 expect_in "$WORK/out" "dt 0.01 s"
 expect_in "$WORK/out" "(to PGA 0.25 g): PGA 0.25 g"
+# the body as read, key by key with the units of the table of body types
+expect_in "$WORK/out" "  body rigid_block: width = 0.4 m, height = 2 m, mass = 100 kg"
 
 run "$FLEXROCK" params "$WORK/cases/kobe.toml"
 expect_rc 0 "params of a case with a record"
@@ -66,6 +69,9 @@ run "$FLEXROCK" check "$WORK/cases/frame.toml"
 expect_rc 0 "check a body from an ANSYS listing"
 expect_in "$WORK/err" "flexrock: note: $WORK/cases/frame.toml: lumped model: modes 1 and 2"
 expect_in "$WORK/err" "re-orthogonalised"
+expect_in "$WORK/out" "  body lumped: tip1_x = -0.6 m, tip2_x = 0.6 m, gravity = 9.80665 m/s^2 (default), "
+expect_in "$WORK/out" "frequencies_hz = [2 values] Hz"
+expect_in "$WORK/out" "  horizontal one_sine: amplitude 0.1 g (0.9807 m/s^2)"
 
 # several cases, one of them through a pattern the shell did not expand
 run "$FLEXROCK" run -q -o "$WORK/out1" "$WORK/cases/pulse.toml" "$WORK/cases/k*.toml"

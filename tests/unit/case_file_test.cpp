@@ -451,6 +451,74 @@ TEST_F(CaseFile, EveryPulseTypeOfTheTableLoads) {
       {"one_sine: unknown key 'n'", "none"});
 }
 
+TEST_F(CaseFile, EveryBodyTypeOfTheTableLoads) {
+  // the loader reads the keys of a body type with a builder from the table: a case of every such
+  // type with its required keys loads to the body make_body gives with the table's defaults
+  int built = 0;
+  for (const BodyKind& k : body_kinds()) {
+    if (!k.make) continue;
+    std::string keys;
+    BodyArgs args;
+    double v = 1.5;
+    for (const BodyKey& key : k.keys) {
+      if (!key.required) continue;
+      keys += std::string(key.name) + " = " + std::to_string(v) + "\n";
+      args.keys.emplace(key.name, v);
+      v += 0.25;
+    }
+    const std::string path =
+        write(std::string(k.name) + ".toml",
+              "[body]\ntype = \"" + std::string(k.name) + "\"\n" + keys + kPulse);
+    const Case c = load_case(path);
+    EXPECT_EQ(c.body_type, k.name);
+    const BodyParameters expected = make_body(k, args);
+    EXPECT_EQ(c.body.mass, expected.mass) << k.name;
+    EXPECT_EQ(c.body.height, expected.height) << k.name;
+    EXPECT_EQ(c.body.zeta2, expected.zeta2) << k.name;
+    EXPECT_EQ(c.body.kappa, expected.kappa) << k.name;
+    // what `flexrock check` prints: every number key, the defaults marked
+    ASSERT_EQ(c.body_keys.size(), k.keys.size()) << k.name;
+    for (std::size_t i = 0; i < k.keys.size(); ++i) {
+      EXPECT_EQ(c.body_keys[i].name, k.keys[i].name);
+      EXPECT_EQ(c.body_keys[i].unit, k.keys[i].unit);
+      EXPECT_EQ(c.body_keys[i].given, k.keys[i].required);
+    }
+    ++built;
+  }
+  EXPECT_GE(built, 4);
+  // an unknown type names the file, the line, the key and every type of the table
+  std::vector<std::string> want = {"case.toml:3:", "key 'body.type'", "cylinder"};
+  for (const std::string& n : body_kind_names()) want.push_back(n);
+  const std::string bad =
+      write("case.toml", "[body]\nrigid = false\ntype = \"cylinder\"\nwidth = 1\n" + kPulse);
+  try {
+    load_case(bad);
+    ADD_FAILURE() << "an unknown body type loaded";
+  } catch (const InputError& e) {
+    for (const std::string& p : want)
+      EXPECT_NE(std::string(e.what()).find(p), std::string::npos) << e.what();
+  }
+  // and so does an unknown key of a type (with the closest one)
+  expect_error("[body]\ntype = \"rigid_block\"\nwidth = 0.4\nheight = 2\nmas = 1\n" + kPulse,
+               {"case.toml:5:", "mas", "mass"});
+  test::expect_input_error([] { body_kind("cylinder"); }, {"rigid_block", "lumped", "cylinder"});
+  test::expect_input_error(
+      [] {
+        make_body(body_kind("rigid_block"), {{{"width", 1.0}}});
+      },
+      {"rigid_block", "height", "missing"});
+  test::expect_input_error(
+      [] {
+        make_body(body_kind("uniform_cantilever"), {{{"height", 10.0},
+                                                     {"width", 3.0},
+                                                     {"mass_per_length", 2000.0},
+                                                     {"bending_stiffness", 5e9},
+                                                     {"modes", 1.5}}});
+      },
+      {"uniform_cantilever", "modes", "integer >= 1", "1.5"});
+  test::expect_input_error([] { make_body(body_kind("paper"), {}); }, {"paper", "not all numbers"});
+}
+
 TEST_F(CaseFile, NegativeOrZeroSizeIsRejected) {
   expect_error("[body]\ntype = \"rigid_block\"\nwidth = -0.4\nheight = 2\nmass = 1\n" + kPulse,
                {"case.toml:3:", "key 'body.width'", "expected a number > 0", "got -0.4"});

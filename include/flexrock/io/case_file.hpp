@@ -42,6 +42,14 @@ struct ExcitationComponent {
   double dt = 0.0;        // [s] sample spacing; 0: not uniform
 };
 
+/// One key of a [body] as it was read, for `flexrock check`.
+struct BodyKeyRead {
+  std::string name;   // the key
+  std::string value;  // the number as given (or its default), "[2 x 2]" for a matrix, a path
+  std::string unit;   // of the key, from the table of body types
+  bool given = true;  // false: the default
+};
+
 /// A case, loaded and checked: everything a run needs.
 struct Case {
   std::string source;       // path of the case file as given
@@ -61,6 +69,7 @@ struct Case {
   std::vector<std::string> notes;  // what reading changed in the data (re-orthogonalised shapes)
   std::string scaled_to;  // the target intensity excitation_scale was chosen for ("PGA 0.3 g")
   std::vector<std::string> input_files;  // the case file and its record files
+  std::vector<BodyKeyRead> body_keys;    // the [body] keys read, in the table's order
 };
 
 /// Whether a case (or body) file has an [excitation] table. Throws InputError for a file that
@@ -81,6 +90,11 @@ Case load_case(const std::string& path);
 /// file itself, nodes and shapes files). Throws InputError like load_case.
 BodyParameters load_body(const std::string& path, std::string* type = nullptr,
                          std::vector<std::string>* files = nullptr);
+
+/// The key reference of the body types (body.type), as the Markdown tables of docs/case-file.md,
+/// written from the table of body types (model/builders.hpp) with its begin and end marker lines
+/// (`flexrock keys --markdown`).
+std::string body_key_reference();
 
 /// The key reference of the synthetic motion types (excitation.*.type), as the Markdown table of
 /// docs/case-file.md, written from the table of pulse types (excitation/pulses.hpp) with its

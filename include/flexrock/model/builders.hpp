@@ -4,7 +4,10 @@
 // to Body to validate. No files here: readers live in io/.
 #pragma once
 
+#include <map>
+#include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "flexrock/model/body.hpp"
@@ -71,5 +74,74 @@ BodyParameters oscillator_on_slab(double top_mass, double frequency_hz, double b
 BodyParameters uniform_cantilever(double height, double width, double mass_per_length,
                                   double bending_stiffness, int modes, double base_mass = 0.0,
                                   double damping_ratio = 0.0);
+
+// ---------------------------------------------------------------------------------------------
+// The table of body types: one entry a body.type, read by the case loader (and so by the study
+// loaders, which read bodies through it), the Python keyword functions, `flexrock check` and the
+// generated key reference of docs/case-file.md. A body type whose keys are all numbers is one
+// entry here and its builder above.
+
+/// What a key of a body type holds.
+enum class BodyKeyValue {
+  kNumber,   // a finite number, checked by its rule
+  kInteger,  // an integer >= 1
+  kArray,    // an array of numbers
+  kMatrix,   // an array of rows of numbers
+  kPath,     // a path to a file, relative to the case file
+};
+
+/// How a number key is checked.
+enum class BodyKeyRule {
+  kFinite,       // any finite number
+  kPositive,     // > 0
+  kNonnegative,  // >= 0
+};
+
+/// One key of a body type.
+struct BodyKey {
+  const char* name;  // key in a case file and keyword in Python
+  const char* unit;  // "m", "kg m^2", "-"
+  BodyKeyValue value;
+  BodyKeyRule rule;          // numbers only
+  bool required;             // no default: the key must be given (numbers)
+  double fixed;              // default of a number that is not required
+  const char* default_text;  // the default as the docs state it; nullptr: from the fields above
+  const char* doc;           // one line: what the key means
+};
+
+/// The numbers a body type is made from, by key name, in the units of its keys.
+struct BodyArgs {
+  std::map<std::string, double, std::less<>> keys;
+  /// The value of key `name` (given or defaulted by make_body); FLEXROCK_DEMAND if absent.
+  double at(std::string_view name) const;
+};
+
+/// One body type.
+struct BodyKind {
+  const char* name;      // body.type in case files ("rigid_block")
+  const char* function;  // the builder of this header, the Python function ("rigid_block")
+  std::vector<BodyKey> keys;
+  /// The builder, from the keys' values; nullptr: keys that are not all numbers (arrays, files),
+  /// which the case loader reads with its own reader of this type.
+  BodyParameters (*make)(const BodyArgs& args);
+  const char* doc;  // one line: what the body is
+};
+
+/// Every body type, in the order the docs list them.
+const std::vector<BodyKind>& body_kinds();
+
+/// The names of the body types, in the table's order.
+std::vector<std::string> body_kind_names();
+
+/// The body type of a name; throws InputError listing the known names.
+const BodyKind& body_kind(std::string_view name);
+
+/// Makes a body type with a builder from `args`: fills the defaults of keys not given, refuses
+/// missing required keys, keys the type does not have and integer keys that are not whole
+/// numbers >= 1; the builder checks the values. Throws InputError naming the key.
+BodyParameters make_body(const BodyKind& kind, BodyArgs args);
+
+/// The default of a key as the docs state it ("required, > 0", "0", "none").
+std::string default_text(const BodyKey& key);
 
 }  // namespace flexrock
