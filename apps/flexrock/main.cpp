@@ -465,9 +465,9 @@ int main(int argc, char** argv) {
     if (*check) return cmd_check(check_files, quiet);
     if (*params) return cmd_params(params_file);
     if (*keys) {
-      fmt::print("{}{}{}{}{}", io::body_key_reference(), io::pulse_key_reference(),
+      fmt::print("{}{}{}{}{}{}", io::body_key_reference(), io::pulse_key_reference(),
                  io::time_history_column_reference(), io::event_column_reference(),
-                 io::study_column_reference());
+                 io::study_column_reference(), cli::fragility_curve_column_reference());
       return 0;
     }
     if (studies.selected()) return studies.run();

@@ -646,6 +646,46 @@ int StudyCommands::Impl::run_sweep(const Processes& procs) {
   return kExitOk;
 }
 
+namespace {
+
+// one column of the fragility curve CSV (--curve): name, unit, meaning and its field at the
+// intensity measure x of a body's fit. The header, the rows and the column reference of
+// docs/studies.md are written from this table
+struct CurveColumn {
+  const char* name;
+  const char* unit;
+  const char* doc;
+  std::string (*field)(const io::FragilityData& d, const study::FragilityFit& f, double x);
+};
+
+const CurveColumn kCurveColumns[] = {
+    {"body", "-", "name of the body",
+     [](const io::FragilityData& d, const study::FragilityFit&, double) { return d.body; }},
+    {"im", "IM",
+     "intensity measure: `--curve-points` values evenly spaced over the body's observed range",
+     [](const io::FragilityData&, const study::FragilityFit&, double x) {
+       return fmt::format("{}", x);
+     }},
+    {"probability", "-", "P(failure \\| IM) = Phi(ln(im/theta)/beta)",
+     [](const io::FragilityData&, const study::FragilityFit& f, double x) {
+       return fmt::format("{}", study::fragility_probability(f, x));
+     }},
+    {"lower", "-", "lower end of the pointwise confidence band Phi(eta - z_q sd(eta))",
+     [](const io::FragilityData&, const study::FragilityFit& f, double x) {
+       double l = 0.0, u = 0.0;
+       study::fragility_band(f, x, l, u);
+       return fmt::format("{}", l);
+     }},
+    {"upper", "-", "upper end: Phi(eta + z_q sd(eta))",
+     [](const io::FragilityData&, const study::FragilityFit& f, double x) {
+       double l = 0.0, u = 0.0;
+       study::fragility_band(f, x, l, u);
+       return fmt::format("{}", u);
+     }},
+};
+
+}  // namespace
+
 int StudyCommands::Impl::run_fragility() {
   io::check_distinct_files({{"sweep CSV", input}}, {{"output", output}, {"curve", curve_output}});
   const io::CsvTable table = io::read_csv_table(input);
@@ -701,17 +741,19 @@ int StudyCommands::Impl::run_fragility() {
     }
     if (!curve_output.empty()) {
       io::write_atomically(curve_output, [&](std::ostream& out) {
-        out << "body,im,probability,lower,upper\n";
+        for (const CurveColumn& c : kCurveColumns)
+          out << (&c == kCurveColumns ? "" : ",") << c.name;
+        out << '\n';
         for (std::size_t k = 0; k < data.size(); ++k) {
           const double lo = *std::min_element(data[k].im.begin(), data[k].im.end());
           const double hi = *std::max_element(data[k].im.begin(), data[k].im.end());
           for (int i = 0; i < curve_points; ++i) {
             const double x =
                 curve_points == 1 ? lo : lo + (hi - lo) * i / static_cast<double>(curve_points - 1);
-            double l = 0.0, u = 0.0;
-            study::fragility_band(fits[k], x, l, u);
-            out << fmt::format("{},{},{},{},{}\n", data[k].body, x,
-                               study::fragility_probability(fits[k], x), l, u);
+            for (const CurveColumn& c : kCurveColumns) {
+              out << (&c == kCurveColumns ? "" : ",") << c.field(data[k], fits[k], x);
+            }
+            out << '\n';
           }
         }
       });
@@ -721,6 +763,19 @@ int StudyCommands::Impl::run_fragility() {
     return error(std::string("could not write the outputs: ") + e.what(), kExitRunFailed);
   }
   return kExitOk;
+}
+
+std::string fragility_curve_column_reference() {
+  std::string s =
+      "<!-- begin: written by `flexrock keys --markdown` from the table of fragility curve "
+      "columns (apps/flexrock/study_commands.cpp); edit the table, not these lines -->\n"
+      "| column | unit | meaning |\n"
+      "|---|---|---|\n";
+  for (const CurveColumn& c : kCurveColumns) {
+    s.append("| `").append(c.name).append("` | ").append(c.unit).append(" | ").append(c.doc);
+    s.append(" |\n");
+  }
+  return s + "<!-- end: written by `flexrock keys --markdown` -->\n";
 }
 
 StudyCommands::StudyCommands(CLI::App& app) : impl_(std::make_unique<Impl>()) {

@@ -4,6 +4,7 @@
 
 #include <CLI/CLI.hpp>
 #include <memory>
+#include <string>
 
 namespace flexrock::cli {
 
@@ -22,5 +23,10 @@ class StudyCommands {
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };
+
+/// The column reference of the fragility curve CSV (`flexrock fragility --curve`), as the
+/// Markdown table of docs/studies.md, written from its table of columns with its begin and end
+/// marker lines (`flexrock keys --markdown`).
+std::string fragility_curve_column_reference();
 
 }  // namespace flexrock::cli

@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: BSD-3-Clause
-# the references of docs/case-file.md (synthetic motion types, time-history and event-log columns)
-# and of docs/studies.md (spectrum, boundary, sweep and fragility fit CSV columns) are the ones
-# `flexrock keys --markdown` writes from the library's tables: the docs cannot drift from them
+# the references of docs/case-file.md (body types, synthetic motion types, time-history and
+# event-log columns) and of docs/studies.md (spectrum, boundary, sweep, fragility fit and curve CSV
+# columns) are the ones `flexrock keys --markdown` writes from the library's tables: the docs
+# cannot drift from them
 source "$(dirname "$0")/common.sh"
 
 run "$FLEXROCK" keys --markdown
