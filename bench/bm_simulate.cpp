@@ -53,6 +53,7 @@ void run_case(benchmark::State& state, const Case& c) {
   state.counters["rhs"] = static_cast<double>(r.rhs_evaluations);
   state.counters["events"] = static_cast<double>(r.events.size());
   state.counters["impacts"] = static_cast<double>(r.extremes.impacts);
+  state.counters["slips"] = static_cast<double>(r.extremes.slips);
   state.counters["overturned"] = r.status == Status::kOverturned ? 1.0 : 0.0;
   const double mt = std::max(r.extremes.max_theta_edge1, r.extremes.max_theta_edge2);
   const double mt_ref = std::max(ref.extremes.max_theta_edge1, ref.extremes.max_theta_edge2);
@@ -93,6 +94,23 @@ void BM_D_Cantilever4Kobe_OldOptions(benchmark::State& s) {
   run_case(s, pre_flight_options(case_d_cantilever()));
 }
 
+// the same cases on a floor with Coulomb friction mu = 0.3 (below the records' peaks): the cost of
+// sliding against the default, where the floor holds
+Case with_friction(Case c) {
+  c.opt.friction_coefficient = 0.3;
+  return c;
+}
+void BM_B_RigidPulse2pi_Mu0p3(benchmark::State& s) {
+  run_case(s, with_friction(case_b(2.0 * kPi)));
+}
+void BM_C_RigidKobe_Mu0p3(benchmark::State& s) { run_case(s, with_friction(case_c())); }
+void BM_D_OscillatorKobe_Mu0p3(benchmark::State& s) {
+  run_case(s, with_friction(case_d_oscillator()));
+}
+void BM_D_Cantilever4Kobe_Mu0p3(benchmark::State& s) {
+  run_case(s, with_friction(case_d_cantilever()));
+}
+
 // medians over repetitions: the machine is shared, single runs are noisy
 #define FLEXROCK_WHOLE_RUN(fn)                                      \
   BENCHMARK(fn)                                                     \
@@ -114,5 +132,9 @@ FLEXROCK_WHOLE_RUN(BM_C_RigidKobe_OldOptions);
 FLEXROCK_WHOLE_RUN(BM_B_RigidPulse6pi_OldOptions);
 FLEXROCK_WHOLE_RUN(BM_D_OscillatorKobe_OldOptions);
 FLEXROCK_WHOLE_RUN(BM_D_Cantilever4Kobe_OldOptions);
+FLEXROCK_WHOLE_RUN(BM_B_RigidPulse2pi_Mu0p3);
+FLEXROCK_WHOLE_RUN(BM_C_RigidKobe_Mu0p3);
+FLEXROCK_WHOLE_RUN(BM_D_OscillatorKobe_Mu0p3);
+FLEXROCK_WHOLE_RUN(BM_D_Cantilever4Kobe_Mu0p3);
 
 }  // namespace

@@ -116,22 +116,27 @@ void print_summary(const io::Case& c, const Body& body, const SimulationResult& 
         x.lift_offs, x.flight_time, 1e3 * x.max_flight_height, 1e3 * x.max_offset,
         1e3 * r.final_offset);
   }
-  fmt::print("energy lost: {:.6g} J (impacts {:.6g} J, chatter {:.6g} J, damping {:.6g} J)\n",
-             e.impact_loss + e.chatter_loss + e.damping_loss, e.impact_loss, e.chatter_loss,
-             e.damping_loss);
   if (std::isfinite(c.options.friction_coefficient)) {
-    fmt::print("friction demand: max {:.4g} (coefficient {:.4g})\n", x.max_friction_demand,
-               c.options.friction_coefficient);
+    fmt::print("sliding: {} slip(s), {:.4g} s sliding; offset max {:.4g} mm, final {:.4g} mm\n",
+               x.slips, x.sliding_time, 1e3 * x.max_offset, 1e3 * r.final_offset);
+    fmt::print(
+        "energy lost: {:.6g} J (impacts {:.6g} J, chatter {:.6g} J, damping {:.6g} J, friction "
+        "{:.6g} J)\n",
+        e.impact_loss + e.chatter_loss + e.damping_loss + e.friction_loss, e.impact_loss,
+        e.chatter_loss, e.damping_loss, e.friction_loss);
+    fmt::print(
+        "friction demand: max {:.4g} while sticking (coefficients: static {:.4g}, "
+        "kinetic {:.4g})\n",
+        x.max_friction_demand, c.options.friction_coefficient,
+        std::min(c.options.friction_coefficient, c.options.kinetic_friction_coefficient));
   } else {
+    fmt::print("energy lost: {:.6g} J (impacts {:.6g} J, chatter {:.6g} J, damping {:.6g} J)\n",
+               e.impact_loss + e.chatter_loss + e.damping_loss, e.impact_loss, e.chatter_loss,
+               e.damping_loss);
     fmt::print("friction demand: max {:.4g} (no friction limit given)\n", x.max_friction_demand);
   }
   fmt::print("energy balance residual: {:.3g} J ({:.3g} of {:.4g} J)\n", e.residual,
              e.scale > 0.0 ? std::abs(e.residual) / e.scale : 0.0, e.scale);
-  if (r.friction_exceeded) {
-    fmt::print(
-        "warning: the friction demand exceeded the friction coefficient: the body would "
-        "slide, which this model does not follow\n");
-  }
   if (r.chatter_cut_off) {
     fmt::print("note: the chatter criterion ended rocking {} time(s), removing {:.3g} J\n",
                x.chatter_cutoffs, e.chatter_loss);

@@ -218,6 +218,8 @@ class EnergyBalance:
     @property
     def damping_loss(self) -> float: ...
     @property
+    def friction_loss(self) -> float: ...
+    @property
     def impact_loss(self) -> float: ...
     @property
     def input_work(self) -> float: ...
@@ -271,6 +273,9 @@ class EventKind:
     impact_gained_energy: ClassVar[EventKind]
     stopped: ClassVar[EventKind]
     energy_unbalanced: ClassVar[EventKind]
+    slip_start: ClassVar[EventKind]
+    stick: ClassVar[EventKind]
+    slip_reversal: ClassVar[EventKind]
     __members__: ClassVar[dict[str, EventKind]]
     def __init__(self, value: int) -> None: ...
     def __eq__(self, other: object) -> bool: ...
@@ -331,6 +336,10 @@ class Extremes:
     def overturn_edge(self) -> int: ...
     @property
     def overturn_time(self) -> float: ...
+    @property
+    def sliding_time(self) -> float: ...
+    @property
+    def slips(self) -> int: ...
 
 class FragilityData:
     @property
@@ -570,6 +579,12 @@ class Phase:
     rocking_edge1: ClassVar[Phase]
     rocking_edge2: ClassVar[Phase]
     flight: ClassVar[Phase]
+    sliding_plus: ClassVar[Phase]
+    sliding_minus: ClassVar[Phase]
+    rocking_edge1_sliding_plus: ClassVar[Phase]
+    rocking_edge1_sliding_minus: ClassVar[Phase]
+    rocking_edge2_sliding_plus: ClassVar[Phase]
+    rocking_edge2_sliding_minus: ClassVar[Phase]
     __members__: ClassVar[dict[str, Phase]]
     def __init__(self, value: int) -> None: ...
     def __eq__(self, other: object) -> bool: ...
@@ -718,6 +733,7 @@ class SimulationOptions:
     chatter_ratio: float
     event_samples: int
     friction_coefficient: float
+    kinetic_friction_coefficient: float
     max_impacts: int
     max_step: float
     max_steps: int

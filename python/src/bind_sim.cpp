@@ -39,7 +39,13 @@ void bind_sim(py::module_& m) {
       .value("full_contact", Phase::kFullContact)
       .value("rocking_edge1", Phase::kRockingEdge1)
       .value("rocking_edge2", Phase::kRockingEdge2)
-      .value("flight", Phase::kFlight);
+      .value("flight", Phase::kFlight)
+      .value("sliding_plus", Phase::kSlidingPlus)
+      .value("sliding_minus", Phase::kSlidingMinus)
+      .value("rocking_edge1_sliding_plus", Phase::kRockingEdge1SlidingPlus)
+      .value("rocking_edge1_sliding_minus", Phase::kRockingEdge1SlidingMinus)
+      .value("rocking_edge2_sliding_plus", Phase::kRockingEdge2SlidingPlus)
+      .value("rocking_edge2_sliding_minus", Phase::kRockingEdge2SlidingMinus);
   py::enum_<Status>(m, "Status")
       .value("completed", Status::kCompleted)
       .value("overturned", Status::kOverturned)
@@ -58,7 +64,10 @@ void bind_sim(py::module_& m) {
       .value("friction_exceeded", EventKind::kFrictionExceeded)
       .value("impact_gained_energy", EventKind::kImpactGainedEnergy)
       .value("stopped", EventKind::kStopped)
-      .value("energy_unbalanced", EventKind::kEnergyUnbalanced);
+      .value("energy_unbalanced", EventKind::kEnergyUnbalanced)
+      .value("slip_start", EventKind::kSlipStart)
+      .value("stick", EventKind::kStick)
+      .value("slip_reversal", EventKind::kSlipReversal);
   py::enum_<OverturnCriterion>(m, "OverturnCriterion")
       .value("static_instability", OverturnCriterion::kStaticInstability)
       .value("half_pi", OverturnCriterion::kHalfPi);
@@ -85,7 +94,11 @@ void bind_sim(py::module_& m) {
       .def_readwrite("overturn", &SimulationOptions::overturn)
       .def_readwrite("chatter_ratio", &SimulationOptions::chatter_ratio)
       .def_readwrite("restitution_factor", &SimulationOptions::restitution_factor)
-      .def_readwrite("friction_coefficient", &SimulationOptions::friction_coefficient)
+      .def_readwrite("friction_coefficient", &SimulationOptions::friction_coefficient,
+                     "static Coulomb coefficient mu_s; inf: the floor holds (no sliding)")
+      .def_readwrite("kinetic_friction_coefficient",
+                     &SimulationOptions::kinetic_friction_coefficient,
+                     "kinetic coefficient mu_k <= mu_s while sliding; inf: equal to mu_s")
       .def_readwrite("max_steps", &SimulationOptions::max_steps)
       .def_readwrite("max_impacts", &SimulationOptions::max_impacts);
 
@@ -149,7 +162,9 @@ void bind_sim(py::module_& m) {
       .def_readonly("lift_offs", &Extremes::lift_offs)
       .def_readonly("flight_time", &Extremes::flight_time, "[s]")
       .def_readonly("max_flight_height", &Extremes::max_flight_height, "[m]")
-      .def_readonly("max_offset", &Extremes::max_offset, "[m]");
+      .def_readonly("max_offset", &Extremes::max_offset, "[m]")
+      .def_readonly("sliding_time", &Extremes::sliding_time, "[s] total time sliding")
+      .def_readonly("slips", &Extremes::slips, "times sliding started");
 
   py::class_<EnergyBalance>(m, "EnergyBalance")
       .def_readonly("input_work", &EnergyBalance::input_work)
@@ -158,6 +173,7 @@ void bind_sim(py::module_& m) {
       .def_readonly("damping_loss", &EnergyBalance::damping_loss)
       .def_readonly("impact_loss", &EnergyBalance::impact_loss)
       .def_readonly("chatter_loss", &EnergyBalance::chatter_loss)
+      .def_readonly("friction_loss", &EnergyBalance::friction_loss, "[J] work of friction")
       .def_readonly("residual", &EnergyBalance::residual)
       .def_readonly("scale", &EnergyBalance::scale);
 

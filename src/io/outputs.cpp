@@ -344,7 +344,10 @@ const HistoryColumn kHistoryColumns[] = {
     {"time_s", "s", "time", false,
      [](const SimulationResult& r, const Body&, std::size_t) { return r.history.time; }},
     {"phase", "-",
-     "contact mode: 0 full contact, 1 rocking on edge 1, 2 rocking on edge 2, 3 flight", false,
+     "contact mode: 0 full contact, 1 rocking on edge 1, 2 rocking on edge 2, 3 flight; sliding "
+     "(finite friction): 4 / 5 full contact sliding along +I / -I, 6 / 7 rocking on edge 1 and 8 / "
+     "9 on edge 2 with the pivot sliding along +I / -I",
+     false,
      [](const SimulationResult& r, const Body&, std::size_t) {
        return std::vector<double>(r.history.phase.begin(), r.history.phase.end());
      }},
@@ -393,7 +396,7 @@ const HistoryColumn kHistoryColumns[] = {
      member<&History::impact_loss>},
     {"offset_m", "m",
      "horizontal offset of the base centre (below the undeformed c.g.) from where the body "
-     "stood: changes only in flight",
+     "stood: changes in flight and while the base slides",
      false, member<&History::offset>},
     {"lift_m", "m", "height of the lower tipping point above the floor: > 0 only in flight", false,
      member<&History::lift>},
@@ -631,6 +634,17 @@ std::string summary_json(const Case& c, const Body& body, const SimulationResult
                  {"residual_J", e.residual},
                  {"scale_J", e.scale},
                  {"relative_residual", e.scale > 0.0 ? e.residual / e.scale : 0.0}};
+  if (std::isfinite(c.options.friction_coefficient)) {
+    // only with friction, so that a run without it writes what it always did
+    j["sliding"] = {{"slips", x.slips},
+                    {"sliding_time_s", x.sliding_time},
+                    {"max_offset_m", x.max_offset},
+                    {"final_offset_m", r.final_offset},
+                    {"friction_loss_J", e.friction_loss}};
+    j["energy"]["friction_loss_J"] = e.friction_loss;
+    j["energy"]["energy_lost_J"] =
+        e.damping_loss + e.impact_loss + e.chatter_loss + e.friction_loss;
+  }
   j["warnings"] = {{"friction_exceeded", r.friction_exceeded},
                    {"chatter_cut_off", r.chatter_cut_off},
                    {"impact_gained_energy", r.impact_gained_energy},
@@ -650,6 +664,9 @@ std::string summary_json(const Case& c, const Body& body, const SimulationResult
       {"rejected_steps", r.rejected_steps},
       {"rhs_evaluations", r.rhs_evaluations},
       {"events", r.events.size()}};
+  if (std::isfinite(o.friction_coefficient))
+    j["solver"]["kinetic_friction_coefficient"] =
+        std::min(o.friction_coefficient, o.kinetic_friction_coefficient);
   auto jpath = [](const std::string& s) { return s.empty() ? json() : json(s); };
   j["outputs"] = {{"time_history", jpath(paths.time_history)},
                   {"summary", jpath(paths.summary)},

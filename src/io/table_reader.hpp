@@ -296,6 +296,12 @@ inline void read_solver_keys(TableReader& r, SimulationOptions& o) {
     if (!(*mu > 0.0)) r.expected("friction_coefficient", fw);
     o.friction_coefficient = *mu;
   }
+  const std::string kw = "a number > 0 [-], at most friction_coefficient (or inf: equal to it)";
+  if (const auto mu = r.number_opt("kinetic_friction_coefficient", kw, true)) {
+    if (!(*mu > 0.0) || (std::isfinite(*mu) && !(*mu <= o.friction_coefficient)))
+      r.expected("kinetic_friction_coefficient", kw);
+    o.kinetic_friction_coefficient = *mu;
+  }
   o.max_steps = r.integer_or("max_steps", o.max_steps, 1, "an integer >= 1");
   o.max_impacts = r.integer_or("max_impacts", o.max_impacts, 1, "an integer >= 1");
 }

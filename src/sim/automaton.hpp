@@ -16,12 +16,13 @@ enum class Guard : int {
   kUpliftEdge1,    // U1 = moment the contact must supply about edge 1, over M g h (theory §6)
   kUpliftEdge2,    // U2, the same about edge 2
   kLiftOff,        // F_J / M g: the vertical floor reaction (theory §5, §6)
-  kFrictionLimit,  // (mu F_J - |F_I|) / M g; 1 when no friction coefficient is given
+  kFrictionLimit,  // (mu_s F_J - |F_I|) / M g while sticking; 1 when no coefficient is given
   kImpact,         // s theta, s = +1 on edge 1, -1 on edge 2
   kOverturn,       // theta_c - s theta (rocking); min(theta_c1 - theta, theta_c2 + theta) (flight)
   kPeak,           // s theta_dot: a rocking amplitude
   kLandingEdge1,   // y_1 / h: height of tipping point 1 over h (flight)
   kLandingEdge2,   // y_2 / h
+  kSlipStop,       // s d_dot: the slip velocity in the mode's direction s (sliding, theory §18)
 };
 
 /// What happens when a guard fires.
@@ -32,6 +33,8 @@ enum class Reset : int {
   kImpact,    // the impact law at theta = 0 -> rocking on the other edge, or full contact
   kOverturn,  // the run ends overturned
   kLanding,   // the landing map -> rocking on the guard's edge, or full contact when flat
+  kSlip,      // sticking -> sliding the way the floor cannot hold, no impulse
+  kStick,     // sliding -> sticking when friction holds, else sliding the other way
 };
 
 struct GuardSpec {
@@ -48,40 +51,88 @@ inline constexpr int kMaxGuards = 5;
 struct ModeSpec {
   ContactMode mode;
   const char* name;
-  int count;                             // guards watched in this mode
+  int pivot;  // 0: full contact (both edges down), 1 or 2: rocking on that edge, -1: flight
+  int slip;   // 0: the base sticks (or flies), +1 / -1: it slides along +I / -I
+  int count;  // guards watched in this mode
   std::array<Guard, kMaxGuards> guards;  // in slot order
 };
 
-inline constexpr std::array<GuardSpec, 9> kGuards = {{
+inline constexpr std::array<GuardSpec, 10> kGuards = {{
     {Guard::kUpliftEdge1, "uplift_edge1", Reset::kUplift, 1, false},
     {Guard::kUpliftEdge2, "uplift_edge2", Reset::kUplift, 2, false},
     {Guard::kLiftOff, "lift_off", Reset::kLiftOff, 0, false},
-    {Guard::kFrictionLimit, "friction_limit", Reset::kRecord, 0, false},
+    {Guard::kFrictionLimit, "friction_limit", Reset::kSlip, 0, false},
     {Guard::kImpact, "impact", Reset::kImpact, 0, true},
     {Guard::kOverturn, "overturn", Reset::kOverturn, 0, false},
     {Guard::kPeak, "peak", Reset::kRecord, 0, false},
     {Guard::kLandingEdge1, "landing_edge1", Reset::kLanding, 1, true},
     {Guard::kLandingEdge2, "landing_edge2", Reset::kLanding, 2, true},
+    // a slide that starts and cannot be resolved as growing ends at once (friction holds)
+    {Guard::kSlipStop, "slip_stop", Reset::kStick, 0, true},
 }};
 
-inline constexpr std::array<ModeSpec, 4> kModes = {{
+inline constexpr std::array<ModeSpec, 10> kModes = {{
     {ContactMode::kFullContact,
      "full_contact",
+     0,
+     0,
      4,
      {Guard::kUpliftEdge1, Guard::kUpliftEdge2, Guard::kLiftOff, Guard::kFrictionLimit,
       Guard::kPeak}},
     {ContactMode::kRockingEdge1,
      "rocking_edge1",
+     1,
+     0,
      5,
      {Guard::kImpact, Guard::kOverturn, Guard::kLiftOff, Guard::kFrictionLimit, Guard::kPeak}},
     {ContactMode::kRockingEdge2,
      "rocking_edge2",
+     2,
+     0,
      5,
      {Guard::kImpact, Guard::kOverturn, Guard::kLiftOff, Guard::kFrictionLimit, Guard::kPeak}},
     {ContactMode::kFlight,
      "flight",
+     -1,
+     0,
      3,
      {Guard::kLandingEdge1, Guard::kLandingEdge2, Guard::kOverturn, Guard::kPeak, Guard::kPeak}},
+    {ContactMode::kSlidingPlus,
+     "sliding_plus",
+     0,
+     1,
+     4,
+     {Guard::kUpliftEdge1, Guard::kUpliftEdge2, Guard::kLiftOff, Guard::kSlipStop, Guard::kPeak}},
+    {ContactMode::kSlidingMinus,
+     "sliding_minus",
+     0,
+     -1,
+     4,
+     {Guard::kUpliftEdge1, Guard::kUpliftEdge2, Guard::kLiftOff, Guard::kSlipStop, Guard::kPeak}},
+    {ContactMode::kRockingEdge1SlidingPlus,
+     "rocking_edge1_sliding_plus",
+     1,
+     1,
+     5,
+     {Guard::kImpact, Guard::kOverturn, Guard::kLiftOff, Guard::kSlipStop, Guard::kPeak}},
+    {ContactMode::kRockingEdge1SlidingMinus,
+     "rocking_edge1_sliding_minus",
+     1,
+     -1,
+     5,
+     {Guard::kImpact, Guard::kOverturn, Guard::kLiftOff, Guard::kSlipStop, Guard::kPeak}},
+    {ContactMode::kRockingEdge2SlidingPlus,
+     "rocking_edge2_sliding_plus",
+     2,
+     1,
+     5,
+     {Guard::kImpact, Guard::kOverturn, Guard::kLiftOff, Guard::kSlipStop, Guard::kPeak}},
+    {ContactMode::kRockingEdge2SlidingMinus,
+     "rocking_edge2_sliding_minus",
+     2,
+     -1,
+     5,
+     {Guard::kImpact, Guard::kOverturn, Guard::kLiftOff, Guard::kSlipStop, Guard::kPeak}},
 }};
 
 // the tables are indexed by their enums
@@ -98,6 +149,17 @@ static_assert(tables_in_order());
 constexpr const GuardSpec& guard_spec(Guard g) { return kGuards[static_cast<std::size_t>(g)]; }
 /// The mode table, indexed by ContactMode.
 constexpr const ModeSpec& mode_spec(ContactMode m) { return kModes[static_cast<std::size_t>(m)]; }
+/// The mode with this pivot (0: full contact, 1, 2: rocking on that edge) and slip sign (0, +1,
+/// -1).
+constexpr ContactMode contact_mode(int pivot, int slip) {
+  for (const ModeSpec& m : kModes)
+    if (m.pivot == pivot && m.slip == slip) return m.mode;
+  return ContactMode::kFlight;
+}
+// every contact mode's sliding and sticking variants exist
+static_assert(contact_mode(0, 1) == ContactMode::kSlidingPlus &&
+              contact_mode(2, -1) == ContactMode::kRockingEdge2SlidingMinus &&
+              contact_mode(1, 0) == ContactMode::kRockingEdge1);
 /// Slot of `g` in mode `m`'s list, or -1.
 constexpr int guard_slot(ContactMode m, Guard g) {
   const ModeSpec& s = mode_spec(m);

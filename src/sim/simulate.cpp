@@ -52,6 +52,12 @@ const char* to_string(EventKind k) {
       return "stopped";
     case EventKind::kEnergyUnbalanced:
       return "energy_unbalanced";
+    case EventKind::kSlipStart:
+      return "slip_start";
+    case EventKind::kStick:
+      return "stick";
+    case EventKind::kSlipReversal:
+      return "slip_reversal";
   }
   return "?";
 }
@@ -90,6 +96,17 @@ void check_options(const Body& body, const InitialState& init, const SimulationO
   FLEXROCK_THROW_UNLESS(!(o.friction_coefficient <= 0.0) && !std::isnan(o.friction_coefficient),
                         "options: friction_coefficient must be > 0 (or infinite for none), got " +
                             std::to_string(o.friction_coefficient));
+  FLEXROCK_THROW_UNLESS(
+      !(o.kinetic_friction_coefficient <= 0.0) && !std::isnan(o.kinetic_friction_coefficient),
+      "options: kinetic_friction_coefficient must be > 0 (or infinite: equal to "
+      "the static one), got " +
+          std::to_string(o.kinetic_friction_coefficient));
+  FLEXROCK_THROW_UNLESS(!(o.kinetic_friction_coefficient > o.friction_coefficient) ||
+                            std::isinf(o.kinetic_friction_coefficient),
+                        "options: kinetic_friction_coefficient (" +
+                            std::to_string(o.kinetic_friction_coefficient) +
+                            ") must not exceed the static friction_coefficient (" +
+                            std::to_string(o.friction_coefficient) + ")");
   FLEXROCK_THROW_UNLESS(o.max_steps > 0 && o.max_impacts > 0,
                         "options: max_steps and max_impacts must be positive");
   const int n = body.modes();

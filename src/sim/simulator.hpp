@@ -46,18 +46,24 @@ inline std::string short_number(double v) {
 template <int N, int MaxN>
 class Simulator final : private GuardProbe {
  public:
-  static constexpr int S = N == Eigen::Dynamic ? Eigen::Dynamic : 2 * N + 8;
-  static constexpr int MaxS = MaxN == Eigen::Dynamic ? Eigen::Dynamic : 2 * MaxN + 8;
+  static constexpr int S = N == Eigen::Dynamic ? Eigen::Dynamic : 2 * N + 11;
+  static constexpr int MaxS = MaxN == Eigen::Dynamic ? Eigen::Dynamic : 2 * MaxN + 11;
   static constexpr int SC = N == Eigen::Dynamic ? Eigen::Dynamic : 2 * N + 4;
   static constexpr int MaxSC = MaxN == Eigen::Dynamic ? Eigen::Dynamic : 2 * MaxN + 4;
+  static constexpr int SL = N == Eigen::Dynamic ? Eigen::Dynamic : 2 * N + 7;
+  static constexpr int MaxSL = MaxN == Eigen::Dynamic ? Eigen::Dynamic : 2 * MaxN + 7;
   using Dyn = Dynamics<N, MaxN>;
   using Vec = typename Dyn::Vec;
-  // theta, q[n], theta_dot, q_dot[n], input work, damping loss, then the flight coordinates
-  // x_c, y_c, xc_dot, yc_dot of the c.g. relative to the base (meaningful in flight only)
+  // theta, q[n], theta_dot, q_dot[n], input work, damping loss, then the flight coordinates x_c,
+  // y_c, xc_dot, yc_dot of the c.g. relative to the base (in flight only), then the slip d, d_dot
+  // of the base and the friction work (theory §18; d and d_dot meaningful while sliding)
   using State = Eigen::Matrix<double, S, 1, Eigen::ColMajor, MaxS, 1>;
   // the first 2n + 4 entries of State, which is all the contact modes integrate: a rocking step
   // on it costs markedly less than on the whole State
   using ContactState = Eigen::Matrix<double, SC, 1, Eigen::ColMajor, MaxSC, 1>;
+  // what the sliding modes integrate: the first 2n + 4 entries of State, then d, d_dot and the
+  // friction work
+  using SlideState = Eigen::Matrix<double, SL, 1, Eigen::ColMajor, MaxSL, 1>;
   // slot of guard G in mode M's list (the automaton table), as a compile-time constant
   template <ContactMode M, Guard G>
   static constexpr std::size_t kSlot = [] {
@@ -76,12 +82,19 @@ class Simulator final : private GuardProbe {
   int iqd() const { return n_ + 2; }
   int iw() const { return 2 * n_ + 2; }
   int id() const { return 2 * n_ + 3; }
-  int ixc() const { return 2 * n_ + 4; }  // x_c, y_c, then their rates
-  int edge() const { return mode_ == ContactMode::kRockingEdge2 ? 2 : 1; }
-  bool rocking() const {
-    return mode_ == ContactMode::kRockingEdge1 || mode_ == ContactMode::kRockingEdge2;
-  }
+  int ixc() const { return 2 * n_ + 4; }   // x_c, y_c, then their rates
+  int isd() const { return 2 * n_ + 8; }   // d [m]: the base's slip along I
+  int isv() const { return 2 * n_ + 9; }   // d_dot [m/s]
+  int ifr() const { return 2 * n_ + 10; }  // friction work while sliding [J]
+  // the same three in a SlideState, after its first 2n + 4 entries
+  int jsd() const { return 2 * n_ + 4; }
+  // the current mode's pivot and slip (the automaton table)
+  int edge() const { return mode_spec(mode_).pivot == 2 ? 2 : 1; }
+  bool rocking() const { return mode_spec(mode_).pivot > 0; }
+  bool full_contact() const { return mode_spec(mode_).pivot == 0; }
   bool flying() const { return mode_ == ContactMode::kFlight; }
+  int slip() const { return mode_spec(mode_).slip; }
+  bool sliding() const { return mode_spec(mode_).slip != 0; }
   Eigen::Vector2d cg_velocity(const State& x) const { return {x(ixc() + 2), x(ixc() + 3)}; }
 
   template <class X>
@@ -89,11 +102,20 @@ class Simulator final : private GuardProbe {
     q_ = x.segment(iq(), n_);
     qd_ = x.segment(iqd(), n_);
   }
-  // a stepper's state (contact or flight) into the head of a State
+  // a stepper's state into a State: contact and flight states are its head; a slide state is its
+  // head of 2n + 4 and the slip's three entries
   template <class X>
-  static void put(const X& from, State& to) {
+  void put(const X& from, State& to) const {
     if constexpr (X::RowsAtCompileTime != Eigen::Dynamic) {
-      to.template head<X::RowsAtCompileTime>() = from;
+      if constexpr (X::RowsAtCompileTime == SL) {
+        to.template head<SC>() = from.template head<SC>();
+        to.template segment<3>(isd()) = from.template tail<3>();
+      } else {
+        to.template head<X::RowsAtCompileTime>() = from;
+      }
+    } else if (from.size() == 2 * n_ + 7) {
+      to.head(2 * n_ + 4) = from.head(2 * n_ + 4);
+      to.segment(isd(), 3) = from.tail(3);
     } else {
       to.head(from.size()) = from;
     }
@@ -102,6 +124,11 @@ class Simulator final : private GuardProbe {
   // ---- equations of motion: full contact and rocking, and flight
   void contact_rhs(double t, const ContactState& x, ContactState& dx);
   void flight_rhs(double t, const State& x, State& dx);
+  void slide_rhs(double t, const SlideState& x, SlideState& dx);
+  // d_ddot [m/s^2] of the current sliding mode at (q_, qd_), with theta_ddot, q_ddot (in qdd_) and
+  // the reaction over M g; a' = a + d_ddot I is the sliding frame's acceleration (theory §18)
+  double slide_acceleration(double sn, double cs, double theta_dot, BaseAcceleration a,
+                            double& theta_ddot, Eigen::Vector2d& reaction);
   // ---- guard functions of the current mode, in its slot order, with the floor reaction
   void evaluate(double t, const State& x, GuardSample& s);
   double guard_value(int slot, double t) override;
@@ -124,15 +151,23 @@ class Simulator final : private GuardProbe {
   bool lift_off(double t, State& x);
   bool land(double t, State& x, int e);
   bool overturned(double t, State& x);
+  bool start_slip(double t, State& x);
+  // an uplift onto e from sticking full contact at t (state in q_, qd_) has a continuation: the
+  // pivot's friction holds, or with the pivot sliding the body still turns up (theory §20)
+  bool uplift_holds(double t, int e);
+  bool stick(double t, State& x);
+  // the mode changes to m at t: the slip's bookkeeping (offset, time sliding)
+  void switch_mode(ContactMode m, double t, State& x);
+  // the plastic impact of tipping point e with Coulomb friction (theory §19); false when the run
+  // ends. `from_flight`: a landing (the other tipping point may take over at theta = 0);
+  // `flat`: both edges land whatever the single-point map gives (chatter)
+  bool friction_impact(double t, State& x, int e, const Eigen::Vector2d& v_c, bool from_flight,
+                       bool flat, EventKind kind, bool chatter);
   bool stop(double t, std::string why);
-  void record(int slot, double t);
-  void friction_exceeded(double t, const GuardSample& s);
+  void record(double t);  // a peak
   void count_impact(const Event& ev, double impulse_y, double loss, bool chatter);
-  // after a step with no event: a positive friction margin re-arms the friction report, a
-  // pressing floor ends the pivot-tension hold
+  // after a step with no event: a pressing floor ends the pivot-tension hold
   void release_latches(const GuardSample& s) {
-    const int friction = guard_slot(mode_, Guard::kFrictionLimit);
-    if (friction >= 0 && s.v[static_cast<std::size_t>(friction)] > 0.0) friction_over_ = false;
     const int lift = guard_slot(mode_, Guard::kLiftOff);
     if (lift >= 0 && s.v[static_cast<std::size_t>(lift)] > 0.0) tension_ = false;
   }
@@ -166,6 +201,9 @@ class Simulator final : private GuardProbe {
   int samples_ = 4;
   Dopri5<ContactState> integ_;  // rocking, and full contact when not stepped exactly
   Dopri5<State> flight_integ_;
+  Dopri5<SlideState> slide_integ_;
+  mutable SlideState slide_buf_;
+  Vec qdd1_;  // scratch: q_ddot at a unit slip acceleration
   mutable ContactState dense_buf_;
   mutable State flight_buf_;
   ContactPropagator<N, MaxN, State> prop_;
@@ -186,8 +224,10 @@ class Simulator final : private GuardProbe {
   double still_t1_ = 0.0;                      // [s] end of the span checked last while still
   std::array<bool, kMaxGuards> zero_start_{};  // guards known to turn positive from zero
   std::array<double, 2> overturn_limit_{};     // [rad] on edge 1 (theta > 0) and edge 2
-  double offset_ = 0.0;  // [m] horizontal offset of the base centre while in contact
-  bool friction_over_ = false;
+  double offset_ = 0.0;              // [m] horizontal offset of the base centre while in contact
+  double mu_s_ = 0.0, mu_k_ = 0.0;   // static and kinetic friction coefficients (inf: no limit)
+  double slide_start_ = 0.0;         // [s] when the current slide began
+  bool slide_inconsistent_ = false;  // a sliding mode had no consistent slip acceleration
   bool tension_ = false;  // the floor pulls (pivot_tension): lift-off disarmed until it presses
   bool suppress_uplift_at_start_ = false;
   double chatter_interval_ = 0.0;
@@ -218,6 +258,9 @@ Simulator<N, MaxN>::Simulator(const Body& body, const GroundMotion& motion,
   q_.resize(n_);
   qd_.resize(n_);
   qdd_.resize(n_);
+  qdd1_.resize(n_);
+  mu_s_ = opt.friction_coefficient;
+  mu_k_ = std::min(opt.kinetic_friction_coefficient, opt.friction_coefficient);
   // shortest period among the pinned-base modes and the rigid rocking motion
   double shortest = 2.0 * std::numbers::pi / body.rocking_frequency();
   if (n_ > 0)
@@ -230,15 +273,16 @@ Simulator<N, MaxN>::Simulator(const Body& body, const GroundMotion& motion,
   ctl_.rtol = opt.rtol;
   ctl_.atol = opt.atol;
   ctl_.max_step = opt.max_step;
-  for (State& xk : sample_states_) xk.setZero(2 * n_ + 8);
+  for (State& xk : sample_states_) xk.setZero(2 * n_ + 11);
   dense_buf_.setZero(2 * n_ + 4);
-  xr_.setZero(2 * n_ + 8);  // written through put(): sized once, as on the heap path
-  flight_buf_.setZero(2 * n_ + 8);
+  slide_buf_.setZero(2 * n_ + 7);
+  xr_.setZero(2 * n_ + 11);  // written through put(): sized once, as on the heap path
+  flight_buf_.setZero(2 * n_ + 11);
 }
 
 template <int N, int MaxN>
 SimulationResult Simulator<N, MaxN>::run(const InitialState& init) {
-  State x(2 * n_ + 8);
+  State x(2 * n_ + 11);
   x.setZero();
   x(0) = init.theta;
   x(ithd()) = init.theta_dot;
@@ -273,7 +317,7 @@ void Simulator<N, MaxN>::contact_rhs(double t, const ContactState& x, ContactSta
   unpack(x);
   dx.resize(x.size());
   double thdd = 0.0;
-  if (mode_ == ContactMode::kFullContact) {
+  if (full_contact()) {
     dyn_.full_contact_acceleration(q_, qd_, a, qdd_);
     dx(0) = 0.0;
     dx(iw()) = dyn_.input_power(0.0, 0.0, q_, 0.0, qd_, a);
@@ -303,10 +347,68 @@ void Simulator<N, MaxN>::flight_rhs(double t, const State& x, State& dx) {
   dx.segment(iqd(), n_) = qdd_;
   dx(iw()) = dyn_.flight_input_power(cg_velocity(x), a);
   dx(id()) = dyn_.damping_power(qd_);
+  dx(isd()) = dx(isv()) = dx(ifr()) = 0.0;
   dx(ixc()) = x(ixc() + 2);
   dx(ixc() + 1) = x(ixc() + 3);
   dx(ixc() + 2) = -a.x;
   dx(ixc() + 3) = -dyn_.g() - a.y;
+}
+
+// theory §18: with the base sliding, the body moves as in the mode without slip on a base that
+// accelerates at a + d_ddot I, so the accelerations and the floor reaction are affine in d_ddot,
+// and Coulomb's F_I = -s mu_k F_J is one linear equation for it
+template <int N, int MaxN>
+double Simulator<N, MaxN>::slide_acceleration(double sn, double cs, double theta_dot,
+                                              BaseAcceleration a, double& theta_ddot,
+                                              Eigen::Vector2d& reaction) {
+  const BaseAcceleration a1{a.x + 1.0, a.y};  // a unit slip acceleration [m/s^2]
+  Eigen::Vector2d r0, r1;
+  double thdd0 = 0.0, thdd1 = 0.0;
+  if (rocking()) {
+    const int e = edge();
+    dyn_.rocking_acceleration_sc(e, sn, cs, q_, theta_dot, qd_, a, thdd0, qdd_);
+    r0 = dyn_.rocking_reaction_sc(e, sn, cs, q_, theta_dot, qd_, thdd0, qdd_, a);
+    dyn_.rocking_acceleration_sc(e, sn, cs, q_, theta_dot, qd_, a1, thdd1, qdd1_);
+    r1 = dyn_.rocking_reaction_sc(e, sn, cs, q_, theta_dot, qd_, thdd1, qdd1_, a1);
+  } else {
+    dyn_.full_contact_acceleration(q_, qd_, a, qdd_);
+    r0 = dyn_.full_contact_reaction(qdd_, a);
+    dyn_.full_contact_acceleration(q_, qd_, a1, qdd1_);
+    r1 = dyn_.full_contact_reaction(qdd1_, a1);
+  }
+  const double s = slip();
+  const Eigen::Vector2d dr = r1 - r0;  // the reaction's change per m/s^2 of d_ddot
+  // k > 0: friction opposing the slip decelerates it; k <= 0 has no consistent slide (Painleve)
+  const double k = dr(0) + s * mu_k_ * dr(1);
+  if (!(k > 0.0)) slide_inconsistent_ = true;
+  const double dd = -(r0(0) + s * mu_k_ * r0(1)) / k;
+  theta_ddot = thdd0 + dd * (thdd1 - thdd0);
+  qdd_ += dd * (qdd1_ - qdd_);
+  reaction = r0 + dd * dr;
+  return dd;
+}
+
+// the sliding modes (theory §18): the contact mode's equations in the sliding frame, the slip, and
+// the powers relative to the base: input -M a.(v_cm + d_dot I), friction dissipation -F_I d_dot
+template <int N, int MaxN>
+void Simulator<N, MaxN>::slide_rhs(double t, const SlideState& x, SlideState& dx) {
+  const BaseAcceleration a = motion_.at(t, rhs_cursor_);
+  unpack(x);
+  dx.resize(x.size());
+  const double sn = std::sin(x(0)), cs = std::cos(x(0)), v = x(jsd() + 1);
+  double thdd = 0.0;
+  Eigen::Vector2d r;
+  const double dd = slide_acceleration(sn, cs, x(ithd()), a, thdd, r);
+  const double al = rocking() ? dyn_.alpha(edge()) : 0.0;
+  dx(0) = rocking() ? x(ithd()) : 0.0;
+  dx.segment(iq(), n_) = qd_;
+  dx(ithd()) = thdd;
+  dx.segment(iqd(), n_) = qdd_;
+  dx(iw()) = dyn_.input_power_sc(al, sn, cs, q_, x(ithd()), qd_, a) - dyn_.mass() * a.x * v;
+  dx(id()) = dyn_.damping_power(qd_);
+  dx(jsd()) = v;
+  dx(jsd() + 1) = dd;
+  dx(jsd() + 2) = -dyn_.mass() * dyn_.g() * r(0) * v;
 }
 
 // ---- guard functions
@@ -358,6 +460,50 @@ void Simulator<N, MaxN>::evaluate(double t, const State& x, GuardSample& s) {
       v[kSlot<m, Guard::kPeak>] = sg * x(ithd());
       break;
     }
+    case ContactMode::kSlidingPlus:
+    case ContactMode::kSlidingMinus: {
+      constexpr ContactMode m = ContactMode::kSlidingPlus;  // both directions list the same guards
+      static_assert(mode_spec(ContactMode::kSlidingPlus).guards ==
+                    mode_spec(ContactMode::kSlidingMinus).guards);
+      double thdd = 0.0;
+      Eigen::Vector2d r;
+      const double dd = slide_acceleration(0.0, 1.0, 0.0, a, thdd, r);
+      const BaseAcceleration as{a.x + dd, a.y};  // the sliding base's acceleration
+      const Eigen::Vector2d u = dyn_.uplift_functions(q_, qdd_, as);
+      s.fi = r(0);
+      s.fj = r(1);
+      s.moment = dyn_.contact_moment(0.0, q_, qdd_, as);
+      v[kSlot<m, Guard::kUpliftEdge1>] = u(0);
+      v[kSlot<m, Guard::kUpliftEdge2>] = u(1);
+      v[kSlot<m, Guard::kLiftOff>] = s.fj;
+      v[kSlot<m, Guard::kSlipStop>] = slip() * x(isv());
+      break;
+    }
+    case ContactMode::kRockingEdge1SlidingPlus:
+    case ContactMode::kRockingEdge1SlidingMinus:
+    case ContactMode::kRockingEdge2SlidingPlus:
+    case ContactMode::kRockingEdge2SlidingMinus: {
+      constexpr ContactMode m = ContactMode::kRockingEdge1SlidingPlus;
+      static_assert(
+          mode_spec(m).guards == mode_spec(ContactMode::kRockingEdge2SlidingMinus).guards &&
+          mode_spec(m).guards == mode_spec(ContactMode::kRockingEdge1SlidingMinus).guards &&
+          mode_spec(m).guards == mode_spec(ContactMode::kRockingEdge2SlidingPlus).guards);
+      const int e = edge();
+      const double sg = edge_sign(e);
+      const double sn = std::sin(x(0)), cs = std::cos(x(0));
+      double thdd = 0.0;
+      Eigen::Vector2d r;
+      slide_acceleration(sn, cs, x(ithd()), a, thdd, r);
+      s.fi = r(0);
+      s.fj = r(1);
+      s.moment = dyn_.alpha(e) * (-r(0) * sn + r(1) * cs);
+      v[kSlot<m, Guard::kImpact>] = sg * x(0);
+      v[kSlot<m, Guard::kOverturn>] = overturn_limit_[static_cast<std::size_t>(e - 1)] - sg * x(0);
+      v[kSlot<m, Guard::kLiftOff>] = s.fj;
+      v[kSlot<m, Guard::kSlipStop>] = slip() * x(isv());
+      v[kSlot<m, Guard::kPeak>] = sg * x(ithd());
+      break;
+    }
     case ContactMode::kFlight: {
       constexpr ContactMode m = ContactMode::kFlight;
       const double sn = std::sin(x(0)), cs = std::cos(x(0)), h = dyn_.height();
@@ -386,13 +532,14 @@ double Simulator<N, MaxN>::guard_value(int slot, double t) {
 // zero on entry fires at once (an uplift or lift-off that the entry state already calls for).
 template <int N, int MaxN>
 bool Simulator<N, MaxN>::enter_mode(double t, State& x) {
-  if (mode_ == ContactMode::kFullContact) {
+  if (full_contact()) {
     x(0) = 0.0;
     x(ithd()) = 0.0;
   }
   still_ = n_ == 0 && mode_ == ContactMode::kFullContact;
   exact_ = !still_ && mode_ == ContactMode::kFullContact && prop_.available();
-  ctl_.controlled = flying() ? -1 : 2 * n_ + 2;  // quadratures steer no step outside flight
+  // quadratures steer no step of a sticking contact mode; a slide's d, d_dot come after them
+  ctl_.controlled = flying() ? 2 * n_ + 8 : (sliding() ? -1 : 2 * n_ + 2);
   if (still_) {
     // a rigid body in full contact does not move: no integration until it uplifts
     x_still_ = x;
@@ -403,6 +550,12 @@ bool Simulator<N, MaxN>::enter_mode(double t, State& x) {
   } else if (flying()) {
     flight_integ_.start([this](double tt, const State& xx, State& dd) { flight_rhs(tt, xx, dd); },
                         ctl_, t, x);
+  } else if (sliding()) {
+    slide_buf_.head(2 * n_ + 4) = x.head(2 * n_ + 4);
+    slide_buf_.tail(3) = x.segment(isd(), 3);
+    slide_integ_.start(
+        [this](double tt, const SlideState& xx, SlideState& dd) { slide_rhs(tt, xx, dd); }, ctl_, t,
+        slide_buf_);
   } else {
     dense_buf_ = x.head(2 * n_ + 4);
     integ_.start(
@@ -423,19 +576,24 @@ bool Simulator<N, MaxN>::enter_mode(double t, State& x) {
   };
   const int lift = guard_slot(mode_, Guard::kLiftOff);
   if (lift < 0 || s0_.v[static_cast<std::size_t>(lift)] > 0.0) tension_ = false;
-  const int friction = guard_slot(mode_, Guard::kFrictionLimit);
-  if (friction >= 0) {
-    const double m = s0_.v[static_cast<std::size_t>(friction)];
-    if (m <= 0.0 && !friction_over_) friction_exceeded(t, s0_);
-    if (m > 0.0) friction_over_ = false;
-  }
   if (at_or_below(Guard::kOverturn)) return overturned(t, x);
   if (!tension_ && at_or_below(Guard::kLiftOff)) return lift_off(t, x);
-  if (mode_ == ContactMode::kFullContact && !suppress_uplift_at_start_) {
+  // an uplift is tried before a slip (theory §20): rocking on a sticking pivot if its friction
+  // holds, else rocking with the pivot sliding if that turns the body up, else sliding flat
+  if (full_contact() && !suppress_uplift_at_start_) {
     const bool up1 = at_or_below(Guard::kUpliftEdge1), up2 = at_or_below(Guard::kUpliftEdge2);
-    if (up1 || up2) return uplift(t, x, up1 && (!up2 || s0_.v[0] <= s0_.v[1]) ? 1 : 2);
+    if (up1 || up2) {
+      const int e = up1 && (!up2 || s0_.v[0] <= s0_.v[1]) ? 1 : 2;
+      if (!sliding() && !uplift_holds(t, e)) {
+        suppress_uplift_at_start_ = true;  // the body slides flat instead
+        return start_slip(t, x);
+      }
+      return uplift(t, x, e);
+    }
   }
   suppress_uplift_at_start_ = false;
+  if (at_or_below(Guard::kFrictionLimit)) return start_slip(t, x);
+  if (at_or_below(Guard::kSlipStop)) return stick(t, x);
   if (flying()) {
     for (int e : {1, 2}) {
       if (at_or_below(e == 1 ? Guard::kLandingEdge1 : Guard::kLandingEdge2)) return land(t, x, e);
@@ -456,6 +614,10 @@ bool Simulator<N, MaxN>::advance(double& t, State& x) {
     auto sys = [this](double tt, const State& xx, State& dd) { flight_rhs(tt, xx, dd); };
     return advance_with(flight_integ_, sys, flight_buf_, t, x);
   }
+  if (sliding()) {
+    auto sys = [this](double tt, const SlideState& xx, SlideState& dd) { slide_rhs(tt, xx, dd); };
+    return advance_with(slide_integ_, sys, slide_buf_, t, x);
+  }
   auto sys = [this](double tt, const ContactState& xx, ContactState& dd) {
     contact_rhs(tt, xx, dd);
   };
@@ -475,7 +637,6 @@ bool Simulator<N, MaxN>::step_guards(int samples, double t1, double& t_hit, int&
     const auto k = static_cast<std::size_t>(j);
     const GuardSpec& g = guard_spec(spec.guards[k]);
     if (g.guard == Guard::kPeak && !rocking()) continue;
-    if (g.guard == Guard::kFrictionLimit && friction_over_) continue;
     if (g.guard == Guard::kLiftOff && tension_) continue;
     when[k] = first_crossing(j, samples_buf_.data(), samples, zero_start_[k], g.fires_if_unresolved,
                              *this);
@@ -487,7 +648,7 @@ bool Simulator<N, MaxN>::step_guards(int samples, double t1, double& t_hit, int&
   for (int j = 0; j < spec.count; ++j) {
     const auto k = static_cast<std::size_t>(j);
     if (guard_spec(spec.guards[k]).reset == Reset::kRecord && when[k] <= std::min(t_hit, t1))
-      record(j, when[k]);
+      record(when[k]);
   }
   return slot_hit >= 0;
 }
@@ -514,6 +675,10 @@ bool Simulator<N, MaxN>::advance_with(Stepper& integ, System&& sys, Buffer& buf,
     return stop(t, "integration step collapsed below " + short_number(h_min) + " s near t = " +
                        short_number(t) + " s in " + to_string(mode_) + " (" + cause + ")");
   }
+  if (slide_inconsistent_)
+    return stop(t, "no consistent slide near t = " + short_number(t) + " s in " + to_string(mode_) +
+                       ": Coulomb friction with this coefficient would need the floor to push the "
+                       "slip forward (Painleve's paradox; docs/theory.md, \"Sliding\")");
   const double t0 = integ.t0(), t1 = integ.t1();
   if (opt_.progress) opt_.progress->store(t1, std::memory_order_relaxed);
   // sample the guards across the step, keeping the states for the extremes
@@ -638,14 +803,7 @@ double Simulator<N, MaxN>::scan_record(double t) {
     const double ax = hx[i] / g, ay = 1.0 + (vertical ? vy[i] / g : 0.0);
     const double u1 = a1 * ay - ax, u2 = a2 * ay + ax;
     if (!(u1 > 0.0 && u2 > 0.0 && ay > 0.0)) break;
-    if (friction) {
-      // an exceedance is reported once, and again only after the margin has turned positive
-      if (fc * ay - std::abs(ax) > 0.0) {
-        friction_over_ = false;
-      } else if (!friction_over_) {
-        break;
-      }
-    }
+    if (friction && !(fc * ay - std::abs(ax) > 0.0)) break;  // the base starts to slide
     shear = std::max(shear, std::abs(ax));
     if (ay >= kPressingFraction) demand = std::max(demand, std::abs(ax) / ay);
     scan_from_ = ts[i];
@@ -668,6 +826,9 @@ void Simulator<N, MaxN>::state_at(double t, State& out) const {
     prop_.dense(t, out);
   } else if (flying()) {
     flight_integ_.dense(t, out);
+  } else if (sliding()) {
+    slide_integ_.dense(t, slide_buf_);
+    put(slide_buf_, out);
   } else {
     integ_.dense(t, dense_buf_);
     put(dense_buf_, out);
@@ -690,6 +851,7 @@ bool Simulator<N, MaxN>::fire(int slot, double t, State& x) {
     zeno_time_ = t;
     same_time_events_ = 0;
   }
+  if (sliding()) offset_ = x(isd());  // events name where the base is
   const GuardSpec& g = guard_spec(mode_spec(mode_).guards[static_cast<std::size_t>(slot)]);
   switch (g.reset) {
     case Reset::kUplift: {
@@ -710,6 +872,10 @@ bool Simulator<N, MaxN>::fire(int slot, double t, State& x) {
       return overturned(t, x);
     case Reset::kLanding:
       return land(t, x, g.edge);
+    case Reset::kSlip:
+      return start_slip(t, x);
+    case Reset::kStick:
+      return stick(t, x);
     case Reset::kRecord:
       break;
   }
@@ -724,7 +890,8 @@ bool Simulator<N, MaxN>::uplift(double t, State& x, int e) {
     res_.extremes.first_uplift_time = t;
     res_.extremes.first_uplift_edge = e;
   }
-  mode_ = e == 1 ? ContactMode::kRockingEdge1 : ContactMode::kRockingEdge2;
+  // a sliding base goes on sliding under the new pivot (no impulse: d_dot is continuous)
+  switch_mode(contact_mode(e, slip()), t, x);
   x(0) = 0.0;
   x(ithd()) = 0.0;
   last_contact_change_ = t;
@@ -755,13 +922,6 @@ void Simulator<N, MaxN>::count_impact(const Event& ev, double impulse_y, double 
   // block whatever the speed): it sets no friction demand
   if (!chatter && impulse_y > 0.0)
     ex.max_friction_demand = std::max(ex.max_friction_demand, ev.friction_demand);
-  if (!chatter && std::isfinite(opt_.friction_coefficient) &&
-      ev.friction_demand > opt_.friction_coefficient) {
-    res_.friction_exceeded = true;
-    Event fe = ev;
-    fe.kind = EventKind::kFrictionExceeded;
-    rec_.event(fe);
-  }
   if (loss < -1e-12 * std::max(1.0, rec_.energy_scale())) {
     res_.impact_gained_energy = true;
     Event ge = ev;
@@ -779,6 +939,19 @@ bool Simulator<N, MaxN>::impact(double t, State& x) {
   const bool chatter = t - last_contact_change_ < chatter_interval_;
   const auto out =
       resolve_impact(dyn_, landing, q_, thd_minus, qd_, opt_.restitution_factor, chatter);
+  // with friction: a sliding pivot, or an impulse outside the friction cone, needs the impact law
+  // with Coulomb friction (theory §19); the paper's law is its sticking case. A chatter cut-off of
+  // a sticking pivot is a numerical device on a vanishing impulse whose ratio |I_x|/I_y says
+  // nothing about sliding (§10): it stays the sticking both-edges stop.
+  if (std::isfinite(mu_s_) &&
+      (sliding() || (!chatter && !(out.impulse(1) > 0.0 &&
+                                   std::abs(out.impulse(0)) <= mu_s_ * out.impulse(1))))) {
+    Eigen::Vector2d r, v_c;
+    dyn_.cg_from_pivot(edge(), 0.0, 1.0, q_, thd_minus, qd_, r, v_c);
+    if (sliding()) v_c(0) += x(isv());
+    return friction_impact(t, x, landing, v_c, false, chatter,
+                           chatter ? EventKind::kChatterCutoff : EventKind::kImpact, chatter);
+  }
   Event ev = make_event(t,
                         chatter ? EventKind::kChatterCutoff
                                 : (out.both_edges ? EventKind::kRockingEnded : EventKind::kImpact),
@@ -794,8 +967,10 @@ bool Simulator<N, MaxN>::impact(double t, State& x) {
   x(0) = 0.0;
   x(ithd()) = out.theta_dot;
   x.segment(iqd(), n_) = out.q_dot;
-  mode_ = out.both_edges ? ContactMode::kFullContact
-                         : (landing == 1 ? ContactMode::kRockingEdge1 : ContactMode::kRockingEdge2);
+  switch_mode(out.both_edges
+                  ? ContactMode::kFullContact
+                  : (landing == 1 ? ContactMode::kRockingEdge1 : ContactMode::kRockingEdge2),
+              t, x);
   // a degenerate excursion (no time since uplift) must not uplift again at once
   if (out.both_edges && t == last_contact_change_) suppress_uplift_at_start_ = true;
   last_contact_change_ = t;
@@ -817,10 +992,10 @@ bool Simulator<N, MaxN>::lift_off(double t, State& x) {
   // sideways as its force vanishes and the body could only leave it by sliding, which is not
   // modelled here; the floor is let pull (flagged) until it presses again (theory "Lift-off")
   const BaseAcceleration a = motion_.at(t, event_cursor_);
-  const bool dives = (mode_ != ContactMode::kRockingEdge2 &&
-                      dyn_.free_corner_acceleration(1, sn, cs, q_, x(ithd()), qd_, a) < 0.0) ||
-                     (mode_ != ContactMode::kRockingEdge1 &&
-                      dyn_.free_corner_acceleration(2, sn, cs, q_, x(ithd()), qd_, a) < 0.0);
+  const int pivot = mode_spec(mode_).pivot;
+  const bool dives =
+      (pivot != 2 && dyn_.free_corner_acceleration(1, sn, cs, q_, x(ithd()), qd_, a) < 0.0) ||
+      (pivot != 1 && dyn_.free_corner_acceleration(2, sn, cs, q_, x(ithd()), qd_, a) < 0.0);
   if (dives) {
     tension_ = true;
     res_.pivot_tension = true;
@@ -832,24 +1007,26 @@ bool Simulator<N, MaxN>::lift_off(double t, State& x) {
   }
   Eigen::Vector2d r, v;
   dyn_.cg_from_pivot(e, sn, cs, q_, x(ithd()), qd_, r, v);
-  x(ixc()) = offset_ + dyn_.height() * dyn_.alpha(e) + r(0);
+  const double d = offset_of(x);
+  if (sliding()) v(0) += x(isv());  // the pivot's slip carries the c.g.
+  x(ixc()) = d + dyn_.height() * dyn_.alpha(e) + r(0);
   x(ixc() + 1) = r(1);
   x(ixc() + 2) = v(0);
   x(ixc() + 3) = v(1);
-  Event ev = make_event(t, EventKind::kLiftOff, mode_ == ContactMode::kFullContact ? 0 : e);
+  Event ev = make_event(t, EventKind::kLiftOff, full_contact() ? 0 : e);
   ev.theta = x(0);
   ev.theta_dot_before = ev.theta_dot_after = x(ithd());
   rec_.event(ev);
   ++res_.extremes.lift_offs;
   const ContactMode from = mode_;
-  mode_ = ContactMode::kFlight;
+  switch_mode(ContactMode::kFlight, t, x);
   flight_start_ = t;
   last_contact_change_ = t;
   // the tipping points that touched the floor start at zero height and rise
   zero_start_.fill(false);
-  if (from != ContactMode::kRockingEdge2)
+  if (mode_spec(from).pivot != 2)
     zero_start_[static_cast<std::size_t>(guard_slot(mode_, Guard::kLandingEdge1))] = true;
-  if (from != ContactMode::kRockingEdge1)
+  if (mode_spec(from).pivot != 1)
     zero_start_[static_cast<std::size_t>(guard_slot(mode_, Guard::kLandingEdge2))] = true;
   return enter_mode(t, x);
 }
@@ -862,6 +1039,13 @@ bool Simulator<N, MaxN>::land(double t, State& x, int e) {
   const double th = x(0), thd_minus = x(ithd());
   const double sn = std::sin(th), cs = std::cos(th), h = dyn_.height();
   const Eigen::Vector2d v_c = cg_velocity(x);
+  if (std::isfinite(mu_s_)) {
+    res_.extremes.flight_time += t - flight_start_;
+    const bool chatter = t - last_contact_change_ < chatter_interval_;
+    if (chatter) tension_ = true;  // as below: grazing hops cannot accumulate without end
+    return friction_impact(t, x, e, v_c, true, false,
+                           chatter ? EventKind::kChatterCutoff : EventKind::kLanding, chatter);
+  }
   const Eigen::Vector2d v_corner = dyn_.corner_velocity_body(e, sn, cs, q_, thd_minus, qd_, v_c);
   double thd_plus = 0.0;
   Vec qd_plus(n_);
@@ -896,8 +1080,9 @@ bool Simulator<N, MaxN>::land(double t, State& x, int e) {
   Eigen::Vector2d r, v_after;
   dyn_.cg_from_pivot(e, sn, cs, q_, thd_plus, qd_plus, r, v_after);
   offset_ = x_corner - h * dyn_.alpha(e);
-  mode_ = flat ? ContactMode::kFullContact
-               : (e == 1 ? ContactMode::kRockingEdge1 : ContactMode::kRockingEdge2);
+  switch_mode(flat ? ContactMode::kFullContact
+                   : (e == 1 ? ContactMode::kRockingEdge1 : ContactMode::kRockingEdge2),
+              t, x);
   if (flat)
     v_after = dyn_.height() * Eigen::Vector2d(dyn_.psi_x().dot(qd_plus), dyn_.psi_y().dot(qd_plus));
   const Eigen::Vector2d impulse = dyn_.mass() * (v_after - v_c);
@@ -948,6 +1133,7 @@ bool Simulator<N, MaxN>::overturned(double t, State& x) {
   if (x(0) < 0.0) ex.max_theta_edge2 = std::max(ex.max_theta_edge2, -x(0));
   res_.extremes.overturn_time = t;
   res_.extremes.overturn_edge = side;
+  if (sliding()) res_.extremes.sliding_time += t - slide_start_;
   if (flying()) res_.extremes.flight_time += t - flight_start_;
   Event ev = make_event(t, EventKind::kOverturn, side);
   ev.theta = x(0);
@@ -956,6 +1142,277 @@ bool Simulator<N, MaxN>::overturned(double t, State& x) {
   res_.message = std::string("overturned about edge ") + std::to_string(side) +
                  " at t = " + short_number(t) + " s" + (flying() ? " (in flight)" : "");
   return false;
+}
+
+template <int N, int MaxN>
+void Simulator<N, MaxN>::switch_mode(ContactMode m, double t, State& x) {
+  const bool was = sliding(), flew = flying();
+  mode_ = m;
+  if (was && !sliding()) {
+    res_.extremes.sliding_time += t - slide_start_;
+    offset_ = x(isd());
+    x(isv()) = 0.0;
+  } else if (!was && sliding()) {
+    slide_start_ = t;
+    if (!flew) x(isd()) = offset_;  // a landing sets offset_ first
+  }
+  if (flew && sliding()) x(isd()) = offset_;
+}
+
+// the friction limit of a sticking contact mode is reached: the base slides the way the floor
+// cannot hold it, starting from rest (theory §18)
+template <int N, int MaxN>
+bool Simulator<N, MaxN>::start_slip(double t, State& x) {
+  GuardSample now;
+  evaluate(t, x, now);
+  // the floor cannot push along F_I as hard as sticking needs: the base slips the other way
+  const int s = now.fi > 0.0 ? -1 : 1;
+  Event ev = make_event(t, EventKind::kSlipStart, rocking() ? edge() : 0);
+  ev.theta = x(0);
+  ev.friction_demand =
+      now.fj > 0.0 ? std::abs(now.fi) / now.fj : std::numeric_limits<double>::infinity();
+  rec_.event(ev);
+  res_.friction_exceeded = true;
+  ++res_.extremes.slips;
+  x(isv()) = 0.0;
+  switch_mode(contact_mode(mode_spec(mode_).pivot, s), t, x);
+  last_contact_change_ = t;
+  if (rocking() && x(0) == 0.0 && x(ithd()) == 0.0) {
+    // just uplifted: with its pivot sliding the body must still turn up, else it slides flat
+    unpack(x);
+    double thdd = 0.0;
+    Eigen::Vector2d r;
+    slide_acceleration(0.0, 1.0, 0.0, motion_.at(t, event_cursor_), thdd, r);
+    if (!(edge_sign(edge()) * thdd > 0.0)) {
+      switch_mode(contact_mode(0, s), t, x);
+      suppress_uplift_at_start_ = true;
+    }
+  }
+  // the slip velocity starts at zero and grows; an uplift at this instant leaves theta = 0
+  zero_start_.fill(false);
+  zero_start_[static_cast<std::size_t>(guard_slot(mode_, Guard::kSlipStop))] = true;
+  if (rocking() && x(0) == 0.0) {
+    zero_start_[static_cast<std::size_t>(guard_slot(mode_, Guard::kImpact))] = true;
+    zero_start_[static_cast<std::size_t>(guard_slot(mode_, Guard::kPeak))] = true;
+  }
+  return enter_mode(t, x);
+}
+
+template <int N, int MaxN>
+bool Simulator<N, MaxN>::uplift_holds(double t, int e) {
+  if (!std::isfinite(mu_s_)) return true;
+  const ContactMode was = mode_;
+  const BaseAcceleration a = motion_.at(t, event_cursor_);
+  double thdd = 0.0;
+  dyn_.rocking_acceleration_sc(e, 0.0, 1.0, q_, 0.0, qd_, a, thdd, qdd_);
+  const Eigen::Vector2d r = dyn_.rocking_reaction_sc(e, 0.0, 1.0, q_, 0.0, qd_, thdd, qdd_, a);
+  if (mu_s_ * r(1) - std::abs(r(0)) > 0.0) return true;
+  mode_ = contact_mode(e, r(0) > 0.0 ? -1 : 1);
+  Eigen::Vector2d rs;
+  const bool inconsistent = slide_inconsistent_;
+  slide_acceleration(0.0, 1.0, 0.0, a, thdd, rs);
+  slide_inconsistent_ = inconsistent;  // a probe, not the motion
+  mode_ = was;
+  return edge_sign(e) * thdd > 0.0;
+}
+
+// the slip velocity reached zero: the base sticks if static friction can hold it (a strictly
+// positive margin), else it slides the way the floor cannot hold (theory §18)
+template <int N, int MaxN>
+bool Simulator<N, MaxN>::stick(double t, State& x) {
+  offset_ = x(isd());
+  x(isv()) = 0.0;
+  const int pivot = mode_spec(mode_).pivot, was = slip();
+  const double th = x(0);
+  switch_mode(contact_mode(pivot, 0), t, x);
+  GuardSample now;
+  evaluate(t, x, now);
+  const double margin = now.v[static_cast<std::size_t>(guard_slot(mode_, Guard::kFrictionLimit))];
+  const int s = now.fi > 0.0 ? -1 : 1;
+  Event ev = make_event(t, margin > 0.0 ? EventKind::kStick : EventKind::kSlipReversal,
+                        rocking() ? edge() : 0);
+  ev.theta = th;
+  ev.friction_demand =
+      now.fj > 0.0 ? std::abs(now.fi) / now.fj : std::numeric_limits<double>::infinity();
+  rec_.event(ev);
+  zero_start_.fill(false);
+  if (margin <= 0.0) {
+    if (s != was) ++res_.extremes.slips;
+    switch_mode(contact_mode(pivot, s), t, x);
+    zero_start_[static_cast<std::size_t>(guard_slot(mode_, Guard::kSlipStop))] = true;
+  }
+  if (rocking() && th == 0.0) {
+    zero_start_[static_cast<std::size_t>(guard_slot(mode_, Guard::kImpact))] = true;
+    zero_start_[static_cast<std::size_t>(guard_slot(mode_, Guard::kPeak))] = true;
+  }
+  return enter_mode(t, x);
+}
+
+// Moreau's impact law for one contact, plastic normally, with Coulomb friction on the impulse
+// (theory §19): the moment of momentum about tipping point e and the modal momenta are conserved;
+// after the impact e rests on the floor (stick) or slides along it at d_dot+ (slip), and every
+// post-impact quantity is affine in d_dot+. The sticking impulse is taken if it lies in the
+// friction cone; else the slip direction is the one the cone cannot hold, and d_dot+ puts the
+// impulse on the cone's edge. At theta = 0 a map that turns the body into the floor about e lands
+// both edges (theta_dot+ = 0, the modal momenta conserved), with the same friction rule.
+template <int N, int MaxN>
+bool Simulator<N, MaxN>::friction_impact(double t, State& x, int e, const Eigen::Vector2d& v_c,
+                                         bool from_flight, bool flat, EventKind kind,
+                                         bool chatter) {
+  unpack(x);
+  if (!from_flight) x(0) = 0.0;  // a rocking impact is located at theta = 0 up to rounding
+  const double th = x(0), thd_minus = x(ithd());
+  const double sn = std::sin(th), cs = std::cos(th), h = dyn_.height(), m = dyn_.mass();
+  const double kinetic_before = dyn_.flight_kinetic_energy(q_, thd_minus, qd_, v_c);
+  const Eigen::Vector2d unit_body(cs, -sn);  // I in body components
+  // one candidate: the post-impact rates and c.g. velocity at d_dot+ = 0 and per unit d_dot+
+  struct Candidate {
+    double thd0 = 0.0, thd1 = 0.0;
+    Vec qd0, qd1;
+    Eigen::Vector2d vc0, vc1;
+  };
+  auto single = [&](int c, Candidate& k) {
+    const Eigen::Vector2d v_corner = dyn_.corner_velocity_body(c, sn, cs, q_, thd_minus, qd_, v_c);
+    k.qd0.resize(n_);
+    k.qd1.resize(n_);
+    dyn_.corner_impact(c, q_, thd_minus, qd_, v_corner, k.thd0, k.qd0);
+    dyn_.corner_impact(c, q_, 0.0, Vec::Zero(n_), -unit_body, k.thd1, k.qd1);
+    Eigen::Vector2d r;
+    dyn_.cg_from_pivot(c, sn, cs, q_, k.thd0, k.qd0, r, k.vc0);
+    dyn_.cg_from_pivot(c, sn, cs, q_, k.thd1, k.qd1, r, k.vc1);
+    k.vc1(0) += 1.0;
+  };
+  auto both = [&](Candidate& k) {
+    // theta = 0: the modal momenta p = mu q_dot + psi_x d_dot / h (over M h^2) are conserved
+    const Eigen::Vector2d v_corner = dyn_.corner_velocity_body(e, sn, cs, q_, thd_minus, qd_, v_c);
+    const Vec p = dyn_.flight_modal_momenta(e, q_, thd_minus, qd_, v_corner);
+    k.thd0 = k.thd1 = 0.0;
+    k.qd0 = dyn_.mu_inverse() * p;
+    k.qd1 = -(dyn_.mu_inverse() * dyn_.psi_x()) / h;
+    k.vc0 = h * Eigen::Vector2d(dyn_.psi_x().dot(k.qd0), dyn_.psi_y().dot(k.qd0));
+    k.vc1 = Eigen::Vector2d(1.0 + h * dyn_.psi_x().dot(k.qd1), h * dyn_.psi_y().dot(k.qd1));
+  };
+  // Coulomb on the impulse M (v_c+ - v_c-) = L0 + d_dot+ L1: d_dot+ = 0 inside the cone, else on
+  // its edge; `ok` false when the slide has no consistent solution (k_s <= 0)
+  struct Resolved {
+    double v = 0.0;       // d_dot+
+    double demand = 0.0;  // |L0_I| / L0_J: the friction the sticking impulse needs
+    bool slid = false, ok = true;
+  };
+  auto coulomb = [&](const Candidate& c) {
+    Resolved z;
+    const Eigen::Vector2d l0 = m * (c.vc0 - v_c), l1 = m * c.vc1;
+    z.demand = l0(1) > 0.0 ? std::abs(l0(0)) / l0(1) : std::numeric_limits<double>::infinity();
+    if (l0(1) > 0.0 && std::abs(l0(0)) <= mu_s_ * l0(1)) return z;
+    const double sg = l0(0) > 0.0 ? -1.0 : 1.0;
+    const double k_s = l1(0) + sg * mu_k_ * l1(1);
+    z.v = -(l0(0) + sg * mu_k_ * l0(1)) / k_s;
+    z.slid = true;
+    z.ok = k_s > 0.0;
+    return z;
+  };
+  auto turn = [](const Candidate& c, double v) { return c.thd0 + v * c.thd1; };
+  Candidate k;
+  Resolved z;
+  int lands = e;
+  if (flat) {
+    both(k);
+    z = coulomb(k);
+  } else if (th != 0.0) {
+    single(e, k);
+    z = coulomb(k);
+  } else {
+    // theta = 0 (theory §19): corner 1, corner 2 and flat, each resolved with friction; the one
+    // that is consistent (the body turns away from the other corner; flat: both corners press),
+    // and where two are, the one the sticking rule of §16 names
+    std::array<Candidate, 3> c;  // corner 1, corner 2, flat
+    single(1, c[0]);
+    single(2, c[1]);
+    both(c[2]);
+    std::array<Resolved, 3> r = {coulomb(c[0]), coulomb(c[1]), coulomb(c[2])};
+    std::array<bool, 3> fits = {r[0].ok && turn(c[0], r[0].v) > 0.0,
+                                r[1].ok && -turn(c[1], r[1].v) > 0.0,
+                                r[2].ok && turn(c[0], r[2].v) <= 0.0 && -turn(c[1], r[2].v) <= 0.0};
+    // the sticking rule: the landing corner if it turns the body up about itself, else (landing
+    // from flight) the other one, else flat
+    const int o = e == 1 ? 2 : 1;
+    int pick = 2;
+    if (edge_sign(e) * c[static_cast<std::size_t>(e - 1)].thd0 > 0.0) {
+      pick = e - 1;
+    } else if (from_flight && edge_sign(o) * c[static_cast<std::size_t>(o - 1)].thd0 > 0.0) {
+      pick = o - 1;
+    }
+    if (!fits[static_cast<std::size_t>(pick)]) {
+      for (int j = 0; j < 3; ++j)
+        if (fits[static_cast<std::size_t>(j)]) pick = j;
+    }
+    const auto pk = static_cast<std::size_t>(pick);
+    k = c[pk];
+    z = r[pk];
+    z.ok = z.ok && fits[pk];
+    flat = pick == 2;
+    lands = flat ? e : pick + 1;
+  }
+  const bool ok = z.ok;
+  const double v_plus = z.v;
+  const bool slid = z.slid;
+  const double sticking_demand = z.demand;
+  if (!ok)
+    return stop(t, "no consistent impact with friction at t = " + short_number(t) +
+                       " s (no outcome of the impact law with Coulomb friction fits; "
+                       "docs/theory.md, \"Impacts with friction\")");
+  const double thd_plus = k.thd0 + v_plus * k.thd1;
+  const Vec qd_plus = k.qd0 + v_plus * k.qd1;
+  const Eigen::Vector2d v_after = k.vc0 + v_plus * k.vc1;
+  const Eigen::Vector2d impulse = m * (v_after - v_c);
+  const double loss = kinetic_before - dyn_.flight_kinetic_energy(q_, thd_plus, qd_plus, v_after);
+  // the contact point's place: the landing tipping point, or the base centre when flat
+  const double d_now = offset_of(x);
+  if (from_flight) {
+    const double x_corner = dyn_.corner_x(lands, sn, cs, q_, x(ixc()));
+    offset_ = x_corner - h * dyn_.alpha(lands);
+  } else {
+    offset_ = d_now;
+  }
+  x(ithd()) = flat ? 0.0 : thd_plus;
+  x.segment(iqd(), n_) = qd_plus;
+  const int pivot = flat ? 0 : lands;
+  const int s = !slid || v_plus == 0.0 ? 0 : (v_plus > 0.0 ? 1 : -1);
+  switch_mode(contact_mode(pivot, s), t, x);
+  x(isd()) = offset_;
+  x(isv()) = s != 0 ? v_plus : 0.0;
+  Event ev = make_event(t, flat && kind == EventKind::kImpact ? EventKind::kRockingEnded : kind,
+                        from_flight && flat ? 0 : lands);
+  ev.theta = th;
+  ev.theta_dot_before = thd_minus;
+  ev.theta_dot_after = x(ithd());
+  ev.energy_loss = loss;
+  ev.impulse_x = impulse(0);
+  ev.impulse_y = impulse(1);
+  ev.friction_demand = impulse(1) > 0.0 ? std::abs(impulse(0)) / impulse(1)
+                                        : std::numeric_limits<double>::infinity();
+  count_impact(ev, impulse(1), loss, chatter);
+  if (slid) {
+    // the impulse needed more friction than the floor has: a sliding impact
+    res_.friction_exceeded = true;
+    ++res_.extremes.slips;
+    Event fe = ev;
+    fe.kind = EventKind::kFrictionExceeded;
+    fe.friction_demand = sticking_demand;
+    rec_.event(fe);
+  }
+  if (impulse(1) < 0.0) {
+    Event te = ev;
+    te.kind = EventKind::kTensileLanding;
+    rec_.event(te);
+  }
+  last_contact_change_ = t;
+  zero_start_.fill(false);
+  if (rocking() && th == 0.0)
+    zero_start_[static_cast<std::size_t>(guard_slot(mode_, Guard::kImpact))] = true;
+  if (res_.extremes.impacts > opt_.max_impacts)
+    return stop(t, "impact limit reached (" + std::to_string(opt_.max_impacts) + ")");
+  return enter_mode(t, x);
 }
 
 template <int N, int MaxN>
@@ -971,28 +1428,17 @@ bool Simulator<N, MaxN>::stop(double t, std::string why) {
 
 // a non-resetting guard crossed at t: record it
 template <int N, int MaxN>
-void Simulator<N, MaxN>::record(int slot, double t) {
+void Simulator<N, MaxN>::record(double t) {
   state_at(t, xr_);
   GuardSample s;
   evaluate(t, xr_, s);
-  if (mode_spec(mode_).guards[static_cast<std::size_t>(slot)] == Guard::kPeak) {
-    Event e = make_event(t, EventKind::kPeak, edge());
-    e.theta = xr_(0);
-    rec_.event(e);
-    Observation o = observation(t, xr_, s);
-    rec_.observe(o);
-  } else {
-    friction_exceeded(t, s);
-  }
-}
-
-template <int N, int MaxN>
-void Simulator<N, MaxN>::friction_exceeded(double t, const GuardSample& s) {
-  friction_over_ = true;
-  res_.friction_exceeded = true;
-  Event e = make_event(t, EventKind::kFrictionExceeded, rocking() ? edge() : 0);
-  e.friction_demand = s.fj > 0.0 ? std::abs(s.fi) / s.fj : std::numeric_limits<double>::infinity();
+  // the only recording guard is the peak (the friction limit resets: the base slides)
+  Event e = make_event(t, EventKind::kPeak, edge());
+  e.theta = xr_(0);
+  e.offset = offset_of(xr_);
   rec_.event(e);
+  Observation o = observation(t, xr_, s);
+  rec_.observe(o);
 }
 
 // ---- outputs
@@ -1003,7 +1449,13 @@ double Simulator<N, MaxN>::kinetic_energy(const State& x) {
   unpack(x);
   if (flying()) return dyn_.flight_kinetic_energy(q_, x(ithd()), qd_, cg_velocity(x));
   const double a = rocking() ? dyn_.alpha(edge()) : 0.0;
-  return dyn_.kinetic_energy(a, q_, x(ithd()), qd_);
+  const double t_pivot = dyn_.kinetic_energy(a, q_, x(ithd()), qd_);
+  if (!sliding()) return t_pivot;
+  // theory §18: T = T_pivot + M d_dot v_cm,x + 1/2 M d_dot^2
+  Eigen::Vector2d r, v;
+  dyn_.cg_from_pivot(edge(), std::sin(x(0)), std::cos(x(0)), q_, x(ithd()), qd_, r, v);
+  const double vd = x(isv());
+  return t_pivot + dyn_.mass() * vd * (v(0) + 0.5 * vd);
 }
 
 template <int N, int MaxN>
@@ -1017,6 +1469,7 @@ double Simulator<N, MaxN>::potential_energy(const State& x) {
 // the horizontal offset of the base centre from where the body stood [m]
 template <int N, int MaxN>
 double Simulator<N, MaxN>::offset_of(const State& x) {
+  if (sliding()) return x(isd());
   if (!flying()) return offset_;
   unpack(x);
   // the base centre is the tipping-point line's point at alpha = 0
@@ -1042,7 +1495,7 @@ inline Observation Simulator<N, MaxN>::observation(double t, const State& x, con
     flight_heights(x, o);
   } else {
     o.high = base_width_ * std::sin(std::abs(x(0)));
-    o.offset = offset_;
+    o.offset = sliding() ? x(isd()) : offset_;
   }
   return o;
 }
@@ -1064,10 +1517,11 @@ void Simulator<N, MaxN>::emit_rows_until(double t_cut) {
   for (;;) {
     const double to = static_cast<double>(next_output_) * opt_.output_dt;
     if (to > t_cut || to > t_end_ * (1.0 + 1e-14)) break;
-    const double t1 = still_     ? still_t1_
-                      : exact_   ? prop_.t1()
-                      : flying() ? flight_integ_.t1()
-                                 : integ_.t1();
+    const double t1 = still_      ? still_t1_
+                      : exact_    ? prop_.t1()
+                      : flying()  ? flight_integ_.t1()
+                      : sliding() ? slide_integ_.t1()
+                                  : integ_.t1();
     state_at(std::min(to, t1), xr_);
     emit_row(to, xr_);
     ++next_output_;
@@ -1084,7 +1538,7 @@ void Simulator<N, MaxN>::emit_row(double t, const State& x) {
   double resultant = 0.0;
   if (rocking()) {
     resultant = dyn_.height() * dyn_.alpha(edge());
-  } else if (mode_ == ContactMode::kFullContact) {
+  } else if (full_contact()) {
     resultant = dyn_.height() * s.moment / s.fj;
   }
   rec_.row(o, a, kinetic_energy(x), potential_energy(x), resultant, impact_loss_ + chatter_loss_);
@@ -1099,6 +1553,8 @@ void Simulator<N, MaxN>::finish(double t, const State& x) {
   }
   if (flying() && res_.status != Status::kOverturned)
     res_.extremes.flight_time += t - flight_start_;
+  if (sliding() && res_.status != Status::kOverturned)
+    res_.extremes.sliding_time += t - slide_start_;
   res_.final_phase = mode_;
   res_.final_theta = x(0);
   res_.final_theta_dot = x(ithd());
@@ -1112,14 +1568,17 @@ void Simulator<N, MaxN>::finish(double t, const State& x) {
   e.damping_loss = x(id());
   e.impact_loss = impact_loss_;
   e.chatter_loss = chatter_loss_;
+  e.friction_loss = x(ifr());
   e.kinetic_change = kin - kinetic0_;
   e.potential_change = pot - (energy0_ - kinetic0_);
   e.residual = e.input_work - (e.kinetic_change + e.potential_change + e.damping_loss +
-                               e.impact_loss + e.chatter_loss);
+                               e.impact_loss + e.chatter_loss + e.friction_loss);
   e.scale = std::max({rec_.energy_scale(), std::abs(energy0_ - pot), std::abs(kin), kinetic0_,
-                      impact_loss_ + chatter_loss_});
-  res_.rejected_steps = integ_.rejected_steps() + flight_integ_.rejected_steps();
-  res_.rhs_evaluations = integ_.rhs_evaluations() + flight_integ_.rhs_evaluations();
+                      impact_loss_ + chatter_loss_ + e.friction_loss});
+  res_.rejected_steps =
+      integ_.rejected_steps() + flight_integ_.rejected_steps() + slide_integ_.rejected_steps();
+  res_.rhs_evaluations =
+      integ_.rhs_evaluations() + flight_integ_.rhs_evaluations() + slide_integ_.rhs_evaluations();
   if (res_.status == Status::kCompleted) res_.message = "completed";
 }
 

@@ -33,17 +33,20 @@ bool has_event(const SimulationResult& r, EventKind k) {
   return false;
 }
 
-TEST(Simulate, FrictionDemandAboveCoefficientIsReported) {
+TEST(Simulate, FrictionLimitStartsASlide) {
   const Body body(BodyParameters::rectangular_block(100, 0.3, 1.0));
   SimulationOptions opt;
   opt.friction_coefficient = 0.2;  // below the 0.3 the block needs before it can uplift
   const auto r = simulate(body, one_sine(0.4 * g, 8.0, 3.0), {}, opt);
   EXPECT_TRUE(r.friction_exceeded);
-  EXPECT_TRUE(has_event(r, EventKind::kFrictionExceeded));
-  EXPECT_GT(r.extremes.max_friction_demand, 0.2);
-  // in full contact the demand is |Xdd|/(g + Ydd): the first crossing is where Xdd = 0.2 g
+  EXPECT_TRUE(has_event(r, EventKind::kSlipStart));
+  EXPECT_TRUE(has_event(r, EventKind::kStick));
+  // while the base sticks the demand never exceeds the coefficient
+  EXPECT_LE(r.extremes.max_friction_demand, 0.2 * (1 + 1e-12));
+  EXPECT_GT(r.extremes.sliding_time, 0.0);
+  // in full contact the demand is |Xdd|/(g + Ydd): the slide starts where Xdd = 0.2 g
   for (const auto& e : r.events) {
-    if (e.kind == EventKind::kFrictionExceeded) {
+    if (e.kind == EventKind::kSlipStart) {
       EXPECT_NEAR(e.time, std::asin(0.2 / 0.4) / 8.0, 1e-9);
       break;
     }
@@ -211,22 +214,23 @@ TEST(Simulate, RigidFullContactExtremesAreThoseOfTheSamples) {
   EXPECT_NEAR(r.extremes.max_friction_demand, 2.0 / (g - 0.5), 1e-12);
 }
 
-TEST(Simulate, RigidFullContactFrictionExceedanceIsReportedEachTimeItStarts) {
-  // |Xdd| / g rises above mu = 0.2 at 0.25 g, falls to 0.1 g and rises again: two exceedances,
-  // at the linear crossings, and no uplift (alpha1 = 0.3)
+TEST(Simulate, RigidFullContactSlipStartsAtTheLinearCrossing) {
+  // |Xdd| / g rises above mu = 0.2 at 0.25 g: the slide starts at the linear crossing between the
+  // samples, with no uplift (alpha1 = 0.3), and ends with the record
   const Body body(BodyParameters::rectangular_block(250, 0.3, 1.0));
   const auto motion = GroundMotion::uniform(0.01, {0.0, 0.25 * g, 0.1 * g, 0.25 * g, 0.0});
   SimulationOptions opt;
   opt.friction_coefficient = 0.2;
+  opt.t_end = 0.2;
   const auto r = simulate(body, motion, {}, opt);
   std::vector<double> times;
   for (const auto& e : r.events)
-    if (e.kind == EventKind::kFrictionExceeded) times.push_back(e.time);
-  ASSERT_EQ(times.size(), 2u);
+    if (e.kind == EventKind::kSlipStart) times.push_back(e.time);
+  ASSERT_GE(times.size(), 1u);
   EXPECT_NEAR(times[0], 0.01 * 0.2 / 0.25, 1e-14);
-  EXPECT_NEAR(times[1], 0.02 + 0.01 * 0.1 / 0.15, 1e-14);
+  EXPECT_TRUE(has_event(r, EventKind::kStick));
   EXPECT_EQ(r.extremes.first_uplift_time, -1.0);
-  EXPECT_NEAR(r.extremes.max_friction_demand, 0.25, 1e-12);
+  EXPECT_LE(r.extremes.max_friction_demand, 0.2 * (1 + 1e-12));
   EXPECT_EQ(r.status, Status::kCompleted);
 }
 

@@ -28,6 +28,14 @@ enum class ContactMode : int {
   kRockingEdge1 = 1,  // theta > 0, pivot on the left tipping point
   kRockingEdge2 = 2,  // theta < 0, pivot on the right tipping point
   kFlight = 3,        // no contact: the c.g. is ballistic relative to the base
+  // with a finite friction coefficient the base can slide (docs/theory.md, "Sliding"): the slip
+  // velocity d_dot of the base along I is positive (plus) or negative (minus)
+  kSlidingPlus = 4,               // full contact, the base sliding along +I
+  kSlidingMinus = 5,              // full contact, the base sliding along -I
+  kRockingEdge1SlidingPlus = 6,   // rocking on edge 1, its pivot sliding along +I
+  kRockingEdge1SlidingMinus = 7,  // rocking on edge 1, its pivot sliding along -I
+  kRockingEdge2SlidingPlus = 8,   // rocking on edge 2, its pivot sliding along +I
+  kRockingEdge2SlidingMinus = 9,  // rocking on edge 2, its pivot sliding along -I
 };
 using Phase = ContactMode;
 
@@ -46,13 +54,17 @@ enum class EventKind {
   kOverturn,            // overturning criterion met about `edge`
   kLiftOff,             // the vertical reaction reached zero: the body leaves the floor (flight)
   kLanding,             // a tipping point (`edge`; 0: both, flat) lands after a flight
-  kFrictionExceeded,    // friction demand rose above the given coefficient (not terminal)
+  kFrictionExceeded,    // an impulse needed more friction than the coefficient: the sliding
+                        // impact law applied (docs/theory.md, "Impacts with friction")
   kImpactGainedEnergy,  // an impact (with a restitution factor) added kinetic energy
   kStopped,             // step collapse, step or event limit
   kTensileLanding,      // a plastic landing needed a pulling impulse: the sticking model breaks
   kPivotTension,        // the vertical reaction vanished but the body cannot fly off its sticking
                         // pivot (it would have to slide): the floor is let pull until it presses
   kEnergyUnbalanced,    // at the end: |energy residual| above its bound (`energy_loss`: residual)
+  kSlipStart,           // the friction demand reached the static coefficient: the base slides
+  kStick,               // the slip velocity reached zero and friction holds: sliding ends
+  kSlipReversal,        // the slip velocity reached zero but friction cannot hold: it reverses
 };
 
 /// The bound on the energy balance's residual that runs at the default tolerances meet
@@ -86,7 +98,11 @@ struct SimulationOptions {
   // impacts closer than this times the shortest period end rocking (docs/theory.md, "Chatter")
   double chatter_ratio = 1e-4;
   double restitution_factor = 1.0;  // factor on theta_dot after an impact (1: the paper's law)
-  double friction_coefficient = std::numeric_limits<double>::infinity();  // static friction
+  // Coulomb friction at the base (docs/theory.md, "Sliding"): the static coefficient mu_s; inf: the
+  // floor holds whatever the demand (the paper's assumption; no sliding)
+  double friction_coefficient = std::numeric_limits<double>::infinity();
+  // the kinetic coefficient mu_k while sliding; inf: equal to the static one (mu_k <= mu_s)
+  double kinetic_friction_coefficient = std::numeric_limits<double>::infinity();
   long max_steps = 50'000'000;    // integrator steps before the run stops
   long max_impacts = 10'000'000;  // impacts before the run stops
   // a flexible body in full contact under a sampled record is propagated exactly between the
@@ -151,10 +167,13 @@ struct Extremes {
   double flight_time = 0.0;        // [s] total time in flight
   double max_flight_height = 0.0;  // [m] largest height of the lower tipping point in flight
   double max_offset = 0.0;         // [m] largest |horizontal offset| of the base centre
+  double sliding_time = 0.0;       // [s] total time with the base sliding
+  long slips = 0;                  // times sliding started (from sticking or at an impulse)
 };
 
 /// Energy balance relative to the base [J]: residual = input_work - (kinetic_change +
-/// potential_change + damping_loss + impact_loss + chatter_loss). Zero up to integration error.
+/// potential_change + damping_loss + impact_loss + chatter_loss + friction_loss). Zero up to
+/// integration error.
 struct EnergyBalance {
   double input_work = 0.0;
   double kinetic_change = 0.0;
@@ -162,6 +181,7 @@ struct EnergyBalance {
   double damping_loss = 0.0;
   double impact_loss = 0.0;
   double chatter_loss = 0.0;
+  double friction_loss = 0.0;  // work of friction while sliding (impulses' losses are impact_loss)
   double residual = 0.0;
   double scale = 0.0;  // largest energy magnitude seen, for a relative residual
 };
@@ -174,7 +194,7 @@ struct SimulationResult {
   double final_theta = 0.0, final_theta_dot = 0.0;
   double final_offset = 0.0;  // [m] horizontal offset of the base centre at the end
   VectorX final_q, final_q_dot;
-  bool friction_exceeded = false;     // friction demand rose above the coefficient
+  bool friction_exceeded = false;     // the base slid (the demand reached the coefficient)
   bool chatter_cut_off = false;       // the chatter criterion ended rocking at least once
   bool impact_gained_energy = false;  // some impact added energy (restitution factor)
   bool pivot_tension = false;         // the floor pulled on a sticking pivot (no sliding modelled)
