@@ -512,7 +512,7 @@ int StudyCommands::Impl::run_spectrum(const Processes& procs) {
                                std::strerror(errno));
     }
     io::write_atomically(output, [&](std::ostream& out) {
-      out << join_columns(io::spectrum_columns()) << '\n';
+      out << join_columns(io::spectrum_columns(grid.sliding)) << '\n';
       for (std::size_t i = 0; i < cells; ++i) out << lines.at(i) << '\n';
     });
     if (bisect) {
@@ -612,7 +612,7 @@ int StudyCommands::Impl::run_sweep(const Processes& procs) {
   FLEXROCK_DEMAND(lines.size() == runs.size());
   try {
     io::write_atomically(output, [&](std::ostream& out) {
-      out << join_columns(io::sweep_columns()) << '\n';
+      out << join_columns(io::sweep_columns(study::has_friction(m.spec))) << '\n';
       for (const auto& [i, line] : lines) out << line << '\n';
     });
   } catch (const std::exception& e) {
@@ -694,7 +694,7 @@ int StudyCommands::Impl::run_fragility() {
   q.outcome = outcome;
   q.level = level;
   q.body = body_name;
-  if ((outcome == "theta" || outcome == "energy") && !(level > 0.0)) {
+  if (outcome != "overturned" && !(level > 0.0)) {
     throw InputError("--level: expected a number > 0 with --outcome " + outcome);
   }
   if (!(confidence > 0.0 && confidence < 1.0)) {
@@ -712,7 +712,9 @@ int StudyCommands::Impl::run_fragility() {
   }
   const std::string what = outcome == "overturned" ? "overturning"
                            : outcome == "theta"    ? fmt::format("max theta/alpha > {}", level)
-                                                   : fmt::format("energy lost > {} J", level);
+                           : outcome == "energy"   ? fmt::format("energy lost > {} J", level)
+                           : outcome == "offset" ? fmt::format("peak sliding offset > {} m", level)
+                                                 : fmt::format("residual offset > {} m", level);
   std::string unit = im == "pga" ? "m/s^2" : im == "pga_g" ? "g" : im == "pgv" ? "m/s" : "-";
   if (im == "requested_level" && !table.rows.empty()) {
     const std::size_t c = std::find(table.columns.begin(), table.columns.end(), "requested_units") -
@@ -817,9 +819,11 @@ StudyCommands::StudyCommands(CLI::App& app) : impl_(std::make_unique<Impl>()) {
   s.fragility
       ->add_option("--outcome", s.outcome,
                    "failure: overturned, theta (max theta/alpha > level), energy (energy lost > "
-                   "level J)")
-      ->check(CLI::IsMember({"overturned", "theta", "energy"}));
-  s.fragility->add_option("--level", s.level, "threshold of --outcome theta or energy");
+                   "level J), offset (peak sliding offset > level m), residual_offset (|residual "
+                   "offset| > level m; both need a sweep run with friction)")
+      ->check(CLI::IsMember({"overturned", "theta", "energy", "offset", "residual_offset"}));
+  s.fragility->add_option("--level", s.level,
+                          "threshold of --outcome theta, energy, offset or residual_offset");
   s.fragility->add_option("--body", s.body_name, "fit only this body (default: each body)");
   s.fragility->add_option("--confidence", s.confidence, "level of the bounds (default 0.95)");
   s.fragility->add_option("-o,--output", s.output, "fit CSV (default: none)");

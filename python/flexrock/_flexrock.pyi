@@ -683,10 +683,28 @@ class RecordSpectrumSpec:
     scales: list[float]
     solver: SimulationOptions
 
+class Regime:
+    none: ClassVar[Regime]
+    sliding: ClassVar[Regime]
+    rocking: ClassVar[Regime]
+    sliding_rocking: ClassVar[Regime]
+    __members__: ClassVar[dict[str, Regime]]
+    def __init__(self, value: int) -> None: ...
+    def __eq__(self, other: object) -> bool: ...
+    def __hash__(self) -> int: ...
+    def __index__(self) -> int: ...
+    def __int__(self) -> int: ...
+    @property
+    def name(self) -> str: ...
+    @property
+    def value(self) -> int: ...
+
 class RunSummary:
     """What a study keeps of one simulation."""
     @property
     def energy_lost(self) -> float: ...
+    @property
+    def final_offset(self) -> float: ...
     @property
     def first_uplift_time(self) -> float: ...
     @property
@@ -695,6 +713,8 @@ class RunSummary:
     def max_friction_demand(self) -> float: ...
     @property
     def max_impulse(self) -> float: ...
+    @property
+    def max_offset(self) -> float: ...
     @property
     def max_theta(self) -> float: ...
     @property
@@ -707,6 +727,12 @@ class RunSummary:
     def overturn_edge(self) -> int: ...
     @property
     def overturn_time(self) -> float: ...
+    @property
+    def regime(self) -> Regime: ...
+    @property
+    def sliding_time(self) -> float: ...
+    @property
+    def slips(self) -> int: ...
     @property
     def status(self) -> Status: ...
     @property
@@ -836,6 +862,8 @@ class SpectrumResult:
     @property
     def p(self) -> float: ...
     @property
+    def sliding(self) -> bool: ...
+    @property
     def tan_alpha(self) -> float: ...
 
 class SpectrumSpec:
@@ -868,6 +896,8 @@ class Status:
 class SweepBody:
     def __init__(self, name: str, body: BodyParameters) -> None: ...
     body: BodyParameters
+    friction_coefficient: Optional[float]
+    kinetic_friction_coefficient: Optional[float]
     name: str
 
 class SweepManifest:
@@ -1635,8 +1665,14 @@ def simulate(body: Body, motion: GroundMotion, initial: InitialState = ..., opti
         GIL is released while it runs.
     """
 
-def spectrum_columns() -> list[str]:
+def spectrum_columns(sliding: bool = ...) -> list[str]:
     """Columns of the spectrum CSV (unit-suffixed).
+
+    Parameters
+    ----------
+    sliding : bool
+        With the sliding columns (regime, offsets, time sliding, slips) that a spectrum with a
+        finite friction coefficient adds (``SpectrumResult.sliding``).
 
     Returns
     -------
@@ -1694,13 +1730,32 @@ def summary_json(case: Case, body: Body, result: SimulationResult, paths: Output
     str
     """
 
-def sweep_columns() -> list[str]:
+def sweep_columns(sliding: bool = ...) -> list[str]:
     """Columns of the sweep CSV.
+
+    Parameters
+    ----------
+    sliding : bool
+        With the sliding columns that a sweep with a finite friction coefficient adds
+        (``sweep_has_friction(spec)``).
 
     Returns
     -------
     list of str
         index, body, record, requested_level, requested_units, scale, pga_m_per_s2, pga_g, ...
+    """
+
+def sweep_has_friction(spec: SweepSpec) -> bool:
+    """Whether any run of a sweep has a finite friction coefficient (its rows then end
+    with the sliding columns).
+
+    Parameters
+    ----------
+    spec : SweepSpec
+
+    Returns
+    -------
+    bool
     """
 
 def sweep_row(spec: SweepSpec, row: SweepRow) -> str:

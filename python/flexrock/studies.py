@@ -17,6 +17,7 @@ from ._flexrock import (  # noqa: F401  (re-exported API)
     Outcome,
     OverturnBoundary,
     RecordSpectrumSpec,
+    Regime,
     RunSummary,
     ScaleKind,
     SpectrumCell,
@@ -46,6 +47,7 @@ from ._flexrock import (  # noqa: F401  (re-exported API)
     spectrum_csv,
     summarize,
     sweep_columns,
+    sweep_has_friction,
     sweep_row,
     fragility_columns,
     fragility_row,
@@ -441,7 +443,7 @@ def sweep(
     spec.free_periods = free_periods
     spec.solver = _solver(solver)
     rows = run_sweep(spec, [], threads)
-    text = ",".join(sweep_columns()) + "\n" + "".join(_flexrock.sweep_row(spec, r) + "\n" for r in rows)
+    text = ",".join(sweep_columns(sweep_has_friction(spec))) + "\n" + "".join(_flexrock.sweep_row(spec, r) + "\n" for r in rows)
     return _parse_csv(text)
 
 

@@ -41,6 +41,11 @@ void bind_study(py::module_& m) {
       .value("overturned_after_impacts", Outcome::kOverturnedAfterImpacts)
       .value("overturned_without_impact", Outcome::kOverturnedWithoutImpact)
       .value("stopped", Outcome::kStopped);
+  py::enum_<Regime>(m, "Regime", "What the base did: slid and/or uplifted (finite friction).")
+      .value("none", Regime::kNone)
+      .value("sliding", Regime::kSliding)
+      .value("rocking", Regime::kRocking)
+      .value("sliding_rocking", Regime::kSlidingRocking);
   m.def("overturned", static_cast<bool (*)(Outcome)>(&overturned), py::arg("outcome"),
         R"doc(Whether an outcome is one of the two overturning classes.
 
@@ -65,7 +70,12 @@ bool)doc");
       .def_readonly("energy_lost", &RunSummary::energy_lost)
       .def_readonly("max_friction_demand", &RunSummary::max_friction_demand)
       .def_readonly("max_uplift", &RunSummary::max_uplift)
-      .def_readonly("t_end", &RunSummary::t_end);
+      .def_readonly("t_end", &RunSummary::t_end)
+      .def_readonly("max_offset", &RunSummary::max_offset)
+      .def_readonly("final_offset", &RunSummary::final_offset)
+      .def_readonly("sliding_time", &RunSummary::sliding_time)
+      .def_readonly("slips", &RunSummary::slips)
+      .def_readonly("regime", &RunSummary::regime);
   m.def("summarize", &summarize, py::arg("body"), py::arg("result"),
         R"doc(The study outcome class and peaks of a finished simulation.
 
@@ -127,6 +137,7 @@ RunSummary)doc");
       .def_readonly("p", &SpectrumResult::p)
       .def_readonly("cells", &SpectrumResult::cells)
       .def_readonly("boundary", &SpectrumResult::boundary)
+      .def_readonly("sliding", &SpectrumResult::sliding)
       .def("__repr__", [](const SpectrumResult& r) {
         std::size_t rows = 0, cols = 0, over = 0;
         for (const SpectrumCell& c : r.cells) {
@@ -263,7 +274,12 @@ Intensity
            }),
            py::arg("name"), py::arg("body"))
       .def_readwrite("name", &SweepBody::name)
-      .def_readwrite("body", &SweepBody::body);
+      .def_readwrite("body", &SweepBody::body)
+      .def_readwrite("friction_coefficient", &SweepBody::friction_coefficient,
+                     "this body's static friction coefficient in place of the solver's (None: "
+                     "the solver's)")
+      .def_readwrite("kinetic_friction_coefficient", &SweepBody::kinetic_friction_coefficient,
+                     "its kinetic one (None or inf: equal to the static one)");
   py::class_<SweepRecord>(m, "SweepRecord")
       .def(py::init([](std::string name, GroundMotion motion) {
              return SweepRecord{std::move(name), std::move(motion)};
@@ -456,8 +472,14 @@ Returns
 -------
 SpectrumFile
     Grids converted to SI (m/s^2, rad/s) unless normalised.)doc");
-  m.def("spectrum_columns", &io::spectrum_columns,
+  m.def("spectrum_columns", &io::spectrum_columns, py::arg("sliding") = false,
         R"doc(Columns of the spectrum CSV (unit-suffixed).
+
+Parameters
+----------
+sliding : bool
+    With the sliding columns (regime, offsets, time sliding, slips) that a spectrum with a
+    finite friction coefficient adds (``SpectrumResult.sliding``).
 
 Returns
 -------
@@ -522,12 +544,30 @@ Returns
 -------
 SweepManifest
     Its spec (target PGAs in m/s^2, the levels as written in ``spec.levels``) and hash.)doc");
-  m.def("sweep_columns", &io::sweep_columns, R"doc(Columns of the sweep CSV.
+  m.def("sweep_columns", &io::sweep_columns, py::arg("sliding") = false,
+        R"doc(Columns of the sweep CSV.
+
+Parameters
+----------
+sliding : bool
+    With the sliding columns that a sweep with a finite friction coefficient adds
+    (``sweep_has_friction(spec)``).
 
 Returns
 -------
 list of str
     index, body, record, requested_level, requested_units, scale, pga_m_per_s2, pga_g, ...)doc");
+  m.def("sweep_has_friction", &has_friction, py::arg("spec"),
+        R"doc(Whether any run of a sweep has a finite friction coefficient (its rows then end
+with the sliding columns).
+
+Parameters
+----------
+spec : SweepSpec
+
+Returns
+-------
+bool)doc");
   m.def("sweep_row", &io::sweep_row, py::arg("spec"), py::arg("row"),
         R"doc(One line of the sweep CSV (no line end).
 

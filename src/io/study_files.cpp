@@ -276,6 +276,43 @@ SpectrumFile load_spectrum_file(const std::string& path) {
 
 namespace {
 
+// one column of what a study adds for a run with finite friction: name, unit, meaning and its
+// field of a run. The same table ends the spectrum and the sweep rows (after their last column),
+// only when friction is finite, so that a study without friction writes what it always did
+struct SlidingColumn {
+  const char* name;
+  const char* unit;
+  const char* doc;
+  std::string (*field)(const study::RunSummary& r);
+};
+
+const SlidingColumn kSlidingColumns[] = {
+    {"regime", "-",
+     "what the base did: `none`, `sliding` (slid, never uplifted), `rocking` (uplifted, never "
+     "slid) or `sliding_rocking` (both); an overturned body keeps its outcome",
+     [](const study::RunSummary& r) { return std::string(study::to_string(r.regime)); }},
+    {"max_offset_m", "m", "peak \\|offset\\| of the base from where it stood",
+     [](const study::RunSummary& r) { return num(r.max_offset); }},
+    {"final_offset_m", "m", "residual offset at the end (signed, along +I)",
+     [](const study::RunSummary& r) { return num(r.final_offset); }},
+    {"sliding_time_s", "s", "time spent sliding",
+     [](const study::RunSummary& r) { return num(r.sliding_time); }},
+    {"slips", "-", "times sliding started",
+     [](const study::RunSummary& r) { return std::to_string(r.slips); }},
+};
+
+void add_sliding_columns(std::vector<std::string>& v) {
+  for (const SlidingColumn& c : kSlidingColumns) v.emplace_back(c.name);
+}
+
+void add_sliding_fields(std::string& s, const study::RunSummary& r) {
+  for (const SlidingColumn& c : kSlidingColumns) s.append(",").append(c.field(r));
+}
+
+}  // namespace
+
+namespace {
+
 // one column of the spectrum CSV: name, unit, meaning and its field of a cell. The header, the
 // rows and the column reference of docs/studies.md are written from this table
 struct SpectrumColumn {
@@ -331,9 +368,10 @@ const SpectrumColumn kSpectrumColumns[] = {
 
 }  // namespace
 
-std::vector<std::string> spectrum_columns() {
+std::vector<std::string> spectrum_columns(bool sliding) {
   std::vector<std::string> v;
   for (const SpectrumColumn& c : kSpectrumColumns) v.emplace_back(c.name);
+  if (sliding) add_sliding_columns(v);
   return v;
 }
 
@@ -343,6 +381,7 @@ std::string spectrum_row(const study::SpectrumResult& res, const study::Spectrum
     if (&col != kSpectrumColumns) s += ',';
     s += col.field(res, c, g);
   }
+  if (res.sliding) add_sliding_fields(s, c.run);
   return s;
 }
 
@@ -442,7 +481,7 @@ std::string boundary_row(const study::SpectrumResult& res, const study::Overturn
 }
 
 void write_spectrum_csv(std::ostream& out, const study::SpectrumResult& result, double g) {
-  out << join(spectrum_columns(), ",") << '\n';
+  out << join(spectrum_columns(result.sliding), ",") << '\n';
   for (const study::SpectrumCell& c : result.cells) out << spectrum_row(result, c, g) << '\n';
 }
 
@@ -477,6 +516,24 @@ SweepManifest load_sweep_manifest(const std::string& path) {
     check_name(b, "name", sb.name);
     if (!names.insert("body:" + sb.name).second)
       b.fail("name", "expected a unique body name, got \"" + sb.name + "\" twice");
+    // this body's Coulomb friction, in place of [solver]'s pair
+    const std::string fw = "a number > 0 [-] (or inf: no friction limit)";
+    if (const auto mu = b.number_opt("friction_coefficient", fw, true)) {
+      if (!(*mu > 0.0)) b.expected("friction_coefficient", fw);
+      sb.friction_coefficient = *mu;
+    }
+    const std::string kw =
+        "a number > 0 [-], at most this body's friction_coefficient (or inf: equal to it)";
+    if (const auto mu = b.number_opt("kinetic_friction_coefficient", kw, true)) {
+      if (!sb.friction_coefficient) {
+        b.fail("kinetic_friction_coefficient",
+               "expected friction_coefficient in the same [[body]] (a body's kinetic coefficient "
+               "goes with its static one)");
+      }
+      if (!(*mu > 0.0) || (std::isfinite(*mu) && !(*mu <= *sb.friction_coefficient)))
+        b.expected("kinetic_friction_coefficient", kw);
+      sb.kinetic_friction_coefficient = *mu;
+    }
     b.finish("for a [[body]] (see docs/studies.md)");
     try {
       sb.body = load_body(full, nullptr, &m.input_files);
@@ -630,9 +687,10 @@ const SweepColumn kSweepColumns[] = {
 
 }  // namespace
 
-std::vector<std::string> sweep_columns() {
+std::vector<std::string> sweep_columns(bool sliding) {
   std::vector<std::string> v;
   for (const SweepColumn& c : kSweepColumns) v.emplace_back(c.name);
+  if (sliding) add_sliding_columns(v);
   return v;
 }
 
@@ -642,6 +700,7 @@ std::string sweep_row(const study::SweepSpec& spec, const study::SweepRow& row) 
     if (&col != kSweepColumns) s += ',';
     s += col.field(spec, row);
   }
+  if (study::has_friction(spec)) add_sliding_fields(s, row.run);
   return s;
 }
 
@@ -711,6 +770,21 @@ std::string check_outcome(std::string_view outcome, std::string_view flag) {
   return "";
 }
 
+// the sliding fields from position `first` on: a known regime word, numbers, a count
+std::string check_sliding_fields(const std::vector<std::string_view>& f, std::size_t first) {
+  bool known = false;
+  for (const auto r : {study::Regime::kNone, study::Regime::kSliding, study::Regime::kRocking,
+                       study::Regime::kSlidingRocking}) {
+    known = known || f[first] == study::to_string(r);
+  }
+  if (!known) return "unknown regime \"" + std::string(f[first]) + "\"";
+  for (std::size_t k = first + 1; k + 1 < f.size(); ++k) {
+    if (!is_number(f[k])) return "field " + std::to_string(k + 1) + " is not a number";
+  }
+  if (!is_count(f.back())) return "slips is not a count";
+  return "";
+}
+
 std::string check_fields(const std::vector<std::string_view>& f, std::size_t expected) {
   if (f.size() != expected) {
     return std::to_string(f.size()) + " fields, expected " + std::to_string(expected);
@@ -728,16 +802,18 @@ JournalCheck sweep_journal_check(const study::SweepSpec& spec) {
   for (const study::SweepRecord& r : spec.records) im->push_back(study::intensity(r.motion));
   auto runs = std::make_shared<std::vector<study::SweepRun>>(study::sweep_runs(spec));
   // where the fields are, by column name
-  const std::vector<std::string> names = sweep_columns();
+  const bool sliding = study::has_friction(spec);
+  const std::vector<std::string> names = sweep_columns(sliding);
   auto col = [&names](const char* name) {
     return static_cast<std::size_t>(std::find(names.begin(), names.end(), name) - names.begin());
   };
   const std::size_t columns = names.size();
+  const std::size_t first_sliding = sweep_columns(false).size();
   const std::size_t inputs = col("duration_s") + 1;  // the fields a run's inputs decide
   const std::size_t outcome = col("outcome"), edge = col("overturn_edge");
   const std::size_t impacts = col("impacts"), status = col("status");
-  return [&spec, bodies, im, runs, columns, inputs, outcome, edge, impacts, status](
-             std::size_t index, const std::string& line) -> std::string {
+  return [&spec, bodies, im, runs, columns, inputs, outcome, edge, impacts, status, sliding,
+          first_sliding](std::size_t index, const std::string& line) -> std::string {
     if (index >= runs->size()) return "no such run";
     const study::SweepRun& run = (*runs)[index];
     const std::vector<std::string_view> f = fields_of(line);
@@ -759,6 +835,7 @@ JournalCheck sweep_journal_check(const study::SweepSpec& spec) {
     if (f[edge] != "0" && f[edge] != "1" && f[edge] != "2") return "overturn_edge is not 0, 1 or 2";
     if (!is_count(f[impacts])) return "impacts is not a count";
     if (!is_status(f[status])) return "unknown status \"" + std::string(f[status]) + "\"";
+    if (sliding) return check_sliding_fields(f, first_sliding);
     return "";
   };
 }
@@ -777,7 +854,8 @@ JournalCheck spectrum_journal_check(const study::SpectrumResult& grid, bool norm
     FLEXROCK_DEMAND(it != names.end());
     return static_cast<std::size_t>(it - names.begin());
   };
-  const std::vector<std::string> cn = spectrum_columns(), bn = boundary_columns();
+  const std::vector<std::string> cn = spectrum_columns(grid.sliding), bn = boundary_columns();
+  const std::size_t first_sliding = spectrum_columns(false).size();
   // a cell's inputs: row, column, amplitudes, frequencies, scale: as the spec makes this cell
   const Fields c{cn.size(),
                  at(cn, "scale") + 1,
@@ -798,7 +876,8 @@ JournalCheck spectrum_journal_check(const study::SpectrumResult& grid, bool norm
                           at(bn, "min_overturning_over_g_tan_alpha"),
                           at(bn, "mode"),
                           at(bn, "bisection_runs")};
-  return [res, normalized, g, c, bf](std::size_t index, const std::string& line) -> std::string {
+  return [res, normalized, g, c, bf, first_sliding](std::size_t index,
+                                                    const std::string& line) -> std::string {
     const std::vector<std::string_view> f = fields_of(line);
     const std::size_t cells = res->cells.size();
     if (index < cells) {
@@ -814,6 +893,7 @@ JournalCheck spectrum_journal_check(const study::SpectrumResult& grid, bool norm
       }
       if (!is_count(f[c.impacts])) return "impacts is not a count";
       if (!is_status(f[c.status])) return "unknown status \"" + std::string(f[c.status]) + "\"";
+      if (res->sliding) return check_sliding_fields(f, first_sliding);
       return "";
     }
     const std::size_t j = index - cells;
@@ -917,9 +997,16 @@ std::vector<FragilityData> fragility_data(const CsvTable& t, const FragilityQuer
     out_col = "max_theta_over_alpha";
   } else if (q.outcome == "energy") {
     out_col = "energy_lost_J";
+  } else if (q.outcome == "offset" || q.outcome == "residual_offset") {
+    out_col = q.outcome == "offset" ? "max_offset_m" : "final_offset_m";
+    if (std::find(t.columns.begin(), t.columns.end(), out_col) == t.columns.end()) {
+      throw InputError(t.source + ":1: outcome '" + q.outcome + "' needs the column '" + out_col +
+                       "', which a sweep writes only with a finite friction coefficient "
+                       "(docs/studies.md); this file has none");
+    }
   } else {
     throw InputError("fragility: outcome '" + q.outcome +
-                     "': expected one of: overturned, theta, energy");
+                     "': expected one of: overturned, theta, energy, offset, residual_offset");
   }
   const std::size_t ci = t.column(im_col), co = t.column(out_col), cb = t.column("body"),
                     cs = t.column("outcome"), cv = t.column("overturned");
@@ -955,8 +1042,9 @@ std::vector<FragilityData> fragility_data(const CsvTable& t, const FragilityQuer
     if (q.outcome == "overturned") {
       y = number(r, co) != 0.0 ? 1 : 0;
     } else {
-      // an overturned body exceeds every tilt and energy level
-      y = (number(r, cv) != 0.0 || number(r, co) > q.level) ? 1 : 0;
+      // an overturned body exceeds every tilt, energy and offset level; a residual offset counts
+      // either way
+      y = (number(r, cv) != 0.0 || std::abs(number(r, co)) > q.level) ? 1 : 0;
     }
     it->im.push_back(x);
     it->failed.push_back(y);
@@ -1048,7 +1136,8 @@ std::string fragility_row(const FragilityData& d, const study::FragilityFit& f) 
 
 std::string study_column_reference() {
   return column_block("spectrum", kSpectrumColumns) + column_block("boundary", kBoundaryColumns) +
-         column_block("sweep", kSweepColumns) + column_block("fragility fit", kFragilityColumns);
+         column_block("sweep", kSweepColumns) + column_block("sliding", kSlidingColumns) +
+         column_block("fragility fit", kFragilityColumns);
 }
 
 }  // namespace flexrock::io

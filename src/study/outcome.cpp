@@ -22,6 +22,20 @@ const char* to_string(Outcome o) {
   return "unknown";
 }
 
+const char* to_string(Regime r) {
+  switch (r) {
+    case Regime::kNone:
+      return "none";
+    case Regime::kSliding:
+      return "sliding";
+    case Regime::kRocking:
+      return "rocking";
+    case Regime::kSlidingRocking:
+      return "sliding_rocking";
+  }
+  return "unknown";
+}
+
 RunSummary summarize(const Body& body, const SimulationResult& r) {
   RunSummary s;
   const Extremes& x = r.extremes;
@@ -38,6 +52,10 @@ RunSummary summarize(const Body& body, const SimulationResult& r) {
   s.max_friction_demand = x.max_friction_demand;
   s.max_uplift = x.max_uplift;
   s.t_end = r.t_end;
+  s.max_offset = x.max_offset;
+  s.final_offset = r.final_offset;
+  s.sliding_time = x.sliding_time;
+  s.slips = x.slips;
   if (flexrock::overturned(r)) {
     // the engine's one overturning rule, whether the body was rocking or in flight
     s.outcome =
@@ -50,6 +68,12 @@ RunSummary summarize(const Body& body, const SimulationResult& r) {
     const bool moved = (x.first_uplift_time >= 0.0 && s.max_theta > 0.0) || x.lift_offs > 0;
     s.outcome = moved ? Outcome::kRocking : Outcome::kNoUplift;
   }
+  // the same test of uplift as the outcome's; an overturned or stopped body that tilted did too
+  const bool uplifted =
+      (x.first_uplift_time >= 0.0 && s.max_theta > 0.0) || x.lift_offs > 0 || overturned(s.outcome);
+  const bool slid = x.slips > 0 || x.sliding_time > 0.0;
+  s.regime = slid ? (uplifted ? Regime::kSlidingRocking : Regime::kSliding)
+                  : (uplifted ? Regime::kRocking : Regime::kNone);
   return s;
 }
 

@@ -184,6 +184,7 @@ SpectrumResult spectrum_grid(const Body& body, const SpectrumSpec& spec) {
   res.tan_alpha = body.alpha1();
   res.alpha = body.tipping_angle(1);
   res.p = body.rocking_frequency();
+  res.sliding = std::isfinite(spec.solver.friction_coefficient);
   const double a_unit = spec.normalized ? body.g() * body.alpha1() : 1.0;
   const double w_unit = spec.normalized ? res.p : 1.0;
   const std::size_t rows = spec.amplitudes.size();
@@ -247,6 +248,7 @@ SpectrumResult record_spectrum_grid(const Body& body, const RecordSpectrumSpec& 
   res.tan_alpha = body.alpha1();
   res.alpha = body.tipping_angle(1);
   res.p = body.rocking_frequency();
+  res.sliding = std::isfinite(spec.solver.friction_coefficient);
   const double pga = intensity(spec.motion).pga;  // sampled or analytic
   const std::size_t rows = spec.scales.size();
   res.cells.resize(rows);

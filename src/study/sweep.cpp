@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <mutex>
 #include <numbers>
 
@@ -41,6 +42,13 @@ Intensity intensity(const GroundMotion& motion, double analytic_dt) {
     out.pgv = std::max(out.pgv, std::abs(v));
   }
   return out;
+}
+
+bool has_friction(const SweepSpec& spec) {
+  if (std::isfinite(spec.solver.friction_coefficient)) return true;
+  return std::any_of(spec.bodies.begin(), spec.bodies.end(), [](const SweepBody& b) {
+    return b.friction_coefficient && std::isfinite(*b.friction_coefficient);
+  });
 }
 
 std::vector<SweepRun> sweep_runs(const SweepSpec& spec) {
@@ -141,6 +149,14 @@ SweepRow sweep_inputs(const SweepSpec& spec, const SweepRun& run, const Body& bo
 
 SimulationOptions run_options(const SweepSpec& spec, const SweepRow& row) {
   SimulationOptions o = spec.solver;
+  const SweepBody& b = spec.bodies.at(row.body);
+  if (b.friction_coefficient) {
+    // the body's own coefficients replace the solver's pair: a kinetic one not given is the
+    // static one, not a leftover of the solver's
+    o.friction_coefficient = *b.friction_coefficient;
+    o.kinetic_friction_coefficient =
+        b.kinetic_friction_coefficient.value_or(std::numeric_limits<double>::infinity());
+  }
   o.t_end = row.duration;
   o.output_dt = 0.0;
   o.progress = nullptr;

@@ -48,9 +48,10 @@ struct SpectrumFile {
 /// or the spec has its own [body] table. Throws InputError naming file, line and key.
 SpectrumFile load_spectrum_file(const std::string& path);
 
-/// Columns of the spectrum CSV (one row per grid cell, row-major).
-std::vector<std::string> spectrum_columns();
-/// One CSV line (no line end) of a cell.
+/// Columns of the spectrum CSV (one row per grid cell, row-major); with `sliding` (a spec with a
+/// finite friction coefficient: SpectrumResult::sliding) the sliding columns follow.
+std::vector<std::string> spectrum_columns(bool sliding = false);
+/// One CSV line (no line end) of a cell (with the sliding fields when result.sliding).
 std::string spectrum_row(const study::SpectrumResult& result, const study::SpectrumCell& cell,
                          double g);
 /// Columns of the boundary CSV (one row per frequency column).
@@ -79,14 +80,16 @@ struct SweepManifest {
 /// are relative to the manifest. Throws InputError naming file, line and key.
 SweepManifest load_sweep_manifest(const std::string& path);
 
-/// Columns of the sweep CSV.
-std::vector<std::string> sweep_columns();
+/// Columns of the sweep CSV; with `sliding` (study::has_friction of the spec) the sliding columns
+/// follow.
+std::vector<std::string> sweep_columns(bool sliding = false);
 
-/// The column references of the spectrum, boundary, sweep and fragility fit CSVs, as the Markdown
-/// tables of docs/studies.md, written from the tables of columns with their begin and end marker
-/// lines (`flexrock keys --markdown`).
+/// The column references of the spectrum, boundary, sweep, sliding and fragility fit CSVs, as the
+/// Markdown tables of docs/studies.md, written from the tables of columns with their begin and end
+/// marker lines (`flexrock keys --markdown`).
 std::string study_column_reference();
-/// One CSV line (no line end) of a row; its first field is the run index.
+/// One CSV line (no line end) of a row; its first field is the run index. With friction
+/// (study::has_friction) it ends with the sliding fields.
 std::string sweep_row(const study::SweepSpec& spec, const study::SweepRow& row);
 
 /// What the line of run `index` in a sweep journal (io::Journal) must be: the run's CSV line,
@@ -124,8 +127,11 @@ CsvTable read_csv_table(const std::string& path);
 struct FragilityQuery {
   std::string im = "pga";              // "pga" [m/s^2], "pga_g" [g], "pgv" [m/s] or "scale" [-]
   std::string outcome = "overturned";  // "overturned", "theta" (max theta/alpha > level),
-                                       // "energy" (energy lost > level [J])
-  double level = 0.0;                  // threshold of "theta" and "energy"
+                                       // "energy" (energy lost > level [J]), "offset" (peak
+                                       // sliding offset > level [m]), "residual_offset"
+                                       // (|residual offset| > level [m]); the last two need a
+                                       // sweep CSV with the sliding columns
+  double level = 0.0;                  // threshold of all but "overturned"
   std::string body;                    // only rows of this body (empty: every body)
 };
 

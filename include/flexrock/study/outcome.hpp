@@ -21,6 +21,19 @@ enum class Outcome {
 /// "overturned_without_impact", "stopped".
 const char* to_string(Outcome o);
 
+/// What the base did during a run (finite friction only): whether it slid and whether the body
+/// uplifted (rocked or left the floor). An overturned body keeps its outcome; this says how it got
+/// there.
+enum class Regime {
+  kNone,            // neither slid nor uplifted
+  kSliding,         // slid, never uplifted
+  kRocking,         // uplifted, never slid
+  kSlidingRocking,  // both (in one mode, rocking on a sliding pivot, or in turn)
+};
+
+/// Stable lower-case name: "none", "sliding", "rocking", "sliding_rocking".
+const char* to_string(Regime r);
+
 /// The solver options a study starts from: the engine's, whose overturning rule (|theta| = pi/2)
 /// is that of every entry point. Under a pulse or record that reverses, a body past its static
 /// overturning angle (paper eq. 5) can still be brought back, so that criterion would put the
@@ -49,6 +62,13 @@ struct RunSummary {
   double max_friction_demand = 0.0;  // [-] largest |F_I|/F_J, impulses included
   double max_uplift = 0.0;           // [m] largest height of a lifted tipping point
   double t_end = 0.0;                // [s] time reached
+  // sliding (zero without friction): Extremes::max_offset, SimulationResult::final_offset,
+  // Extremes::sliding_time, Extremes::slips
+  double max_offset = 0.0;        // [m] peak |offset| of the base from where it stood
+  double final_offset = 0.0;      // [m] residual offset at the end (signed)
+  double sliding_time = 0.0;      // [s] time spent sliding
+  long slips = 0;                 // slip starts
+  Regime regime = Regime::kNone;  // slid and/or uplifted
 };
 
 /// Classifies a finished simulation: overturned with zero impacts (Extremes::impacts, which
@@ -56,7 +76,8 @@ struct RunSummary {
 /// is "without impact", with one or more "after impacts"; otherwise rocking if it uplifted with a
 /// tilt > 0, else no uplift (an uplift event without any tilt, where the base acceleration only
 /// touches the static threshold, is no rocking). Tilts are normalised by Body::tipping_angle(edge)
-/// (atan(b/h) for a rigid body).
+/// (atan(b/h) for a rigid body). The regime: slid if the base ever slipped (Extremes::slips or
+/// sliding_time > 0), uplifted by the same test as rocking above (or overturned).
 RunSummary summarize(const Body& body, const SimulationResult& result);
 
 }  // namespace flexrock::study

@@ -88,6 +88,8 @@ struct SpectrumResult {
   double p = 0.0;                   // [rad/s] Body::rocking_frequency()
   std::vector<SpectrumCell> cells;  // row-major: cells[row * columns + column]
   std::vector<OverturnBoundary> boundary;  // one per column (empty without bisection)
+  bool sliding = false;  // the spec's friction coefficient is finite: the cells carry the sliding
+                         // fields (offsets, time sliding, regime)
 };
 
 /// The motion of one cell: a_p [m/s^2], omega_p [rad/s], total duration [s], the pulse type's

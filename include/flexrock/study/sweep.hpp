@@ -5,6 +5,7 @@
 
 #include <cstddef>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -30,6 +31,11 @@ Intensity intensity(const GroundMotion& motion, double analytic_dt = 1e-3);
 struct SweepBody {
   std::string name;     // as the CSV shows it
   BodyParameters body;  // validated by Body when the sweep runs
+  // Coulomb friction at this body's base, in place of the solver's pair (empty:
+  // SweepSpec::solver's): static and kinetic coefficients as SimulationOptions has them (inf: none;
+  // kinetic empty or inf: equal to the static one; the kinetic one is used only with a static one)
+  std::optional<double> friction_coefficient = std::nullopt;
+  std::optional<double> kinetic_friction_coefficient = std::nullopt;
 };
 
 struct SweepRecord {
@@ -63,6 +69,10 @@ struct SweepRun {
   std::size_t index = 0;
   std::size_t body = 0, record = 0, scale_index = 0;
 };
+
+/// True if any run of the spec has a finite friction coefficient (the solver's or a body's): its
+/// rows then carry the sliding fields (peak and residual offset, time sliding, regime).
+bool has_friction(const SweepSpec& spec);
 
 /// The runs of a spec in index order.
 std::vector<SweepRun> sweep_runs(const SweepSpec& spec);
@@ -100,7 +110,8 @@ void validate(const SweepSpec& spec);
 /// writes in those fields); `body` and `im` are the run's body and its record's intensity.
 SweepRow sweep_inputs(const SweepSpec& spec, const SweepRun& run, const Body& body,
                       const Intensity& im);
-/// The simulation options of a run (spec.solver with its duration as t_end, no time history).
+/// The simulation options of a run (spec.solver with the body's friction coefficients if it has
+/// its own, its duration as t_end, no time history).
 SimulationOptions run_options(const SweepSpec& spec, const SweepRow& row);
 
 }  // namespace flexrock::study
