@@ -42,3 +42,19 @@ def test_unclassified_cells():
     out = run("unclassified_cells.py", "--quick", "--no-validation", "--cli", str(CLI))
     assert "flexrock spectrum, one_sine" in out
     assert "(of 120)" in out  # the quick grid: 10 x 12 cells, each counted once
+
+
+def test_regime_map_agrees_with_the_closed_form():
+    # a coarse grid of the regime map of docs/validation.md §8 at two step levels, off the
+    # closed form's ties: every cell as docs/theory.md §20 says, and all four regimes met
+    seen = set()
+    for a in ("0.42", "1.5"):
+        out = run("regime_map.py", "--a", a, "--alphas", "0.1,0.3,0.6,1.0",
+                  "--mus", "0.05,0.15,0.25,0.35,0.5,0.9,1.45")
+        assert "cells: 28; agree: 28; disagree: 0" in out, out
+        counts = out.split("engine regimes: ")[1].splitlines()[0]
+        for part in counts.split(", "):
+            name, n = part.rsplit(" ", 1)
+            if int(n) > 0:
+                seen.add(name)
+    assert seen == {"rest", "slide", "rock", "slide-rock"}, seen
