@@ -46,4 +46,25 @@ expect_in "$WORK/err" "no rows of body 'nobody'"
 run "$FLEXROCK" fragility sweep.csv --outcome theta
 expect_rc 2 "theta without level"
 expect_in "$WORK/err" "--level: expected a number > 0"
+
+# with friction on one body: the sliding columns end every row; fragility of the sliding offset
+# (against the PGV: the PGAs of the two records are the same targets, whose outcomes would tie)
+sed -e "s#\"../cases/#\"$SRC/examples/cases/#" -e "s#\"../../../shared/#\"$SRC/../shared/#" \
+  -e "s#^file = \"slender_block.toml\"#file = \"$SRC/examples/studies/slender_block.toml\"\nfriction_coefficient = 0.15#" \
+  "$SRC/examples/studies/sweep.toml" >friction.toml
+run "$FLEXROCK" sweep friction.toml -o friction.csv -q
+expect_rc 0 "sweep with friction"
+head -1 friction.csv | grep -q ",status,message,regime,max_offset_m,final_offset_m,sliding_time_s,slips$" ||
+  fail "sliding columns: $(head -1 friction.csv)"
+[ "$(awk -F, '{print NF}' friction.csv | sort -u)" = "29" ] || fail "fields per row"
+grep -q "^[0-9]*,block,.*,sliding,[0-9.e-]*,[-0-9.e]*,[0-9.e-]*,[0-9]*$" friction.csv || fail "no sliding row"
+grep -q "^[0-9]*,statue,.*,none,0,0,0,0$" friction.csv || fail "the statue has no friction: none"
+run "$FLEXROCK" fragility friction.csv --im pgv --outcome offset --level 0.12 --body block
+expect_rc 0 "fragility of the sliding offset"
+expect_in "$WORK/out" "block: P(peak sliding offset > 0.12 m | pgv)"
+run "$FLEXROCK" fragility friction.csv --outcome offset
+expect_rc 2 "offset without level"
+run "$FLEXROCK" fragility sweep.csv --outcome residual_offset --level 0.01
+expect_rc 2 "a sweep without friction has no offsets"
+expect_in "$WORK/err" "finite friction coefficient"
 echo "ok"

@@ -242,6 +242,23 @@ TEST_F(StudySlidingFiles, BadFrictionInAManifestNamesFileLineAndKey) {
                            {"m5.toml:3", "friction_coeficient"});
 }
 
+TEST_F(StudySlidingFiles, SpectrumSolverFrictionAddsTheColumns) {
+  const std::string p = write("s.toml", std::string(kBody) +
+                                            "[spectrum]\namplitudes = [1.0]\nfrequencies = [1.0]\n"
+                                            "[solver]\nfriction_coefficient = 0.3\n"
+                                            "kinetic_friction_coefficient = 0.25\n");
+  const io::SpectrumFile f = io::load_spectrum_file(p);
+  EXPECT_EQ(f.pulse.solver.friction_coefficient, 0.3);
+  EXPECT_EQ(f.pulse.solver.kinetic_friction_coefficient, 0.25);
+  EXPECT_TRUE(study::spectrum_grid(Body(f.body), f.pulse).sliding);
+  const std::string bad = write("bad.toml", std::string(kBody) +
+                                                "[spectrum]\namplitudes = [1.0]\nfrequencies = "
+                                                "[1.0]\n[solver]\nfriction_coefficient = 0.3\n"
+                                                "kinetic_friction_coefficient = 0.5\n");
+  test::expect_input_error([&] { io::load_spectrum_file(bad); },
+                           {"bad.toml:11", "kinetic_friction_coefficient", "at most"});
+}
+
 // Fragility of the squat block's slip: two pulse lengths make the failures overlap in PGA, so
 // the fit has a finite estimate; every failure flag is the closed-form slip above the level.
 TEST_F(StudySlidingFiles, FragilityOfTheSlidingOffset) {
