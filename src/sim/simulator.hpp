@@ -845,7 +845,10 @@ bool Simulator<N, MaxN>::fire(int slot, double t, State& x) {
   if (t - zeno_time_ < 1e-9 * std::max(1.0, t)) {
     if (++same_time_events_ > 64) {
       return stop(t, "contact changes accumulate at t = " + short_number(t) +
-                         " s without time advancing (Zeno behaviour) in " + to_string(mode_));
+                         " s without time advancing (Zeno behaviour) in " + to_string(mode_) +
+                         (opt_.chatter_ratio <= 0.0 ? " with the chatter cut-off disabled "
+                                                      "(chatter_ratio = 0); set chatter_ratio > 0"
+                                                    : ""));
     }
   } else {
     zeno_time_ = t;

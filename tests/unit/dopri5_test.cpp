@@ -28,6 +28,25 @@ TEST(Dopri5, HarmonicOscillatorToTolerance) {
   EXPECT_NEAR(rk.x1()(1), -std::sin(10.0), 1e-8);
 }
 
+// x'' = -1 from x = 1e-15, far below atol: Hairer's starting step (0.01 |x| / |x'|) would be
+// ~1e-18, below the collapse limit, and the run stopped before its first try
+struct Falling {
+  void operator()(double, const V2& x, V2& dx) const { dx << x(1), -1.0; }
+};
+
+TEST(Dopri5, ATinyStateNextToItsDerivativeDoesNotCollapse) {
+  Dopri5<V2> rk;
+  StepControl c;
+  c.rtol = 1e-9;
+  c.atol = 1e-11;
+  c.max_step = 0.01;
+  rk.start(Falling{}, c, 0.0, V2(1e-15, 0.0));
+  EXPECT_GE(rk.suggested_step(), c.min_step);
+  while (rk.t1() < 1.0) ASSERT_EQ(rk.step(Falling{}, 1.0), Dopri5<V2>::Status::kAccepted);
+  EXPECT_NEAR(rk.x1()(0), 1e-15 - 0.5, 1e-12);  // x = x0 - t^2/2, exact for the 5th order
+  EXPECT_NEAR(rk.x1()(1), -1.0, 1e-12);
+}
+
 TEST(Dopri5, DenseOutputIsFourthOrder) {
   // the interpolant's error at mid-step falls ~32x when the step halves
   double err[2];

@@ -78,6 +78,45 @@ TEST(HousnerClosedForm, FreeRockingPeriodApproachesLinearizedAtSecondOrder) {
   }
 }
 
+// A release from a tilt far below atol (1e-15 rad against atol = 1e-11) once stopped at t = 0
+// with "integration step collapsed": the integrator's starting step scales with |theta| /
+// |theta''|. At the default tolerances the block must fall back, impact and go on rocking or
+// settle. The small-angle forms hold to O(theta0) relative: the fall lasts t = sqrt(2 theta0 / (p^2
+// sin alpha)) (theta'' = -p^2 sin(alpha - theta)), theta_dot^2 = 2 p^2 (cos(alpha - theta0) - cos
+// alpha) at the impact, and the rectangular block's impact law (r = 1 - 3/2 sin^2 alpha on the
+// angular velocity) gives a peak of r^2 theta0 on edge 2.
+TEST(HousnerClosedForm, ReleaseFromATinyTiltFallsBackAndRocks) {
+  const double alpha = 0.2;
+  const Body body = block(alpha);
+  const double p = body.rocking_frequency();
+  const double r = 1.0 - 1.5 * std::sin(alpha) * std::sin(alpha);
+  for (double theta0 : {1e-15, 1e-12, 1e-9}) {
+    InitialState init;
+    init.theta = theta0;
+    SimulationOptions o;  // the defaults, as a user runs it
+    o.t_end = 2.0;
+    const auto r_run = simulate(body, GroundMotion::none(o.t_end), init, o);
+    ASSERT_EQ(r_run.status, Status::kCompleted) << "theta0 = " << theta0 << ": " << r_run.message;
+    EXPECT_DOUBLE_EQ(r_run.t_end, 2.0);
+    const Event* impact = nullptr;
+    for (const auto& e : r_run.events)
+      if (e.kind == EventKind::kImpact && !impact) impact = &e;
+    ASSERT_NE(impact, nullptr) << "theta0 = " << theta0;
+    const double t_fall = std::sqrt(2.0 * theta0 / (p * p * std::sin(alpha)));
+    // cos(alpha - theta0) - cos(alpha) without cancellation
+    const double w_fall =
+        p * std::sqrt(4.0 * std::sin(alpha - 0.5 * theta0) * std::sin(0.5 * theta0));
+    EXPECT_NEAR(impact->time / t_fall, 1.0, 1e-6) << "theta0 = " << theta0;
+    EXPECT_NEAR(-impact->theta_dot_before / w_fall, 1.0, 1e-6) << "theta0 = " << theta0;
+    EXPECT_NEAR(impact->theta_dot_after / impact->theta_dot_before, r, 1e-9);
+    EXPECT_EQ(impact->edge, 2);
+    EXPECT_NEAR(r_run.extremes.max_theta_edge1, theta0, 1e-9 * theta0);
+    EXPECT_NEAR(r_run.extremes.max_theta_edge2 / (r * r * theta0), 1.0, 1e-6)
+        << "theta0 = " << theta0;
+    EXPECT_FALSE(r_run.energy_unbalanced);
+  }
+}
+
 // the nonlinear single-degree equation of a rigid block rocking on edge 1 (theta > 0),
 // integrated by odeint independently of the engine: theta'' = p^2 (a/g cos(alpha - theta) -
 // sin(alpha - theta)). Returns true if theta reaches alpha before it returns to 0.

@@ -59,9 +59,9 @@ class Dopri5 {
         h = t_stop - t;
         ends = true;
       }
-      if (h < ctl_.min_step * std::max(1.0, std::abs(t))) {
-        if (!ends) return Status::kStepCollapsed;
-        if (h <= 0.0) return Status::kStepCollapsed;
+      // a NaN step (a state that overflowed) counts as collapsed too, never as a step to retry
+      if (!(h >= ctl_.min_step * std::max(1.0, std::abs(t)))) {
+        if (!ends || !(h > 0.0)) return Status::kStepCollapsed;
       }
       stages(sys, t, h);
       const double err = error_norm();
@@ -221,7 +221,13 @@ class Dopri5 {
     d2 = std::sqrt(d2 / n) / h0;
     const double dm = std::max(d1, d2);
     const double h1 = dm <= 1e-15 ? std::max(1e-6, h0 * 1e-3) : std::pow(0.01 / dm, 0.2);
-    return std::min({100.0 * h0, h1, ctl_.max_step});
+    // a state tiny next to its derivative (a block released from 1e-15 rad: theta far below
+    // atol, theta_ddot of order g/R) gives h0 ~ 1e-18 s, below the step that counts as
+    // collapsed: start no lower than ten times that step; the error control shrinks a start
+    // that is too long, and only then is a collapse real
+    const double h_floor =
+        std::min(10.0 * ctl_.min_step * std::max(1.0, std::abs(t)), ctl_.max_step);
+    return std::max(std::min({100.0 * h0, h1, ctl_.max_step}), h_floor);
   }
 
   StepControl ctl_;
