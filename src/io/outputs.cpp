@@ -692,6 +692,10 @@ OutputPaths write_outputs(const Case& c, const Body& body, const SimulationResul
                           const std::string& output_dir) {
   const OutputPaths paths = output_paths(c, output_dir);
   check_output_paths(c, paths);
+  // results that are not finite are no results: no file of them, not even a partial set
+  if (const std::string bad = non_finite_output(r); !bad.empty()) {
+    throw std::runtime_error("the results are not finite (" + bad + "); no output written");
+  }
   for (const std::string* p : {&paths.time_history, &paths.summary, &paths.events}) {
     if (p->empty()) continue;
     const fs::path parent = fs::path(*p).parent_path();

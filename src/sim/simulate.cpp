@@ -1,11 +1,16 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "flexrock/sim/simulate.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <initializer_list>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "automaton.hpp"
 #include "flexrock/core/error.hpp"
+#include "flexrock/core/format.hpp"
 #include "simulator_instances.hpp"
 
 namespace flexrock {
@@ -127,6 +132,38 @@ void check_options(const Body& body, const InitialState& init, const SimulationO
                             " rad");
 }
 
+// the first of `values` (a column of `n` rows, or one value) that is not finite, in words
+template <class Values>
+bool first_bad(const Values& values, const std::string& name, bool inf_ok, std::string& what,
+               const std::vector<double>* times = nullptr) {
+  for (std::size_t i = 0; i < static_cast<std::size_t>(values.size()); ++i) {
+    const double v = values[static_cast<Eigen::Index>(i)];
+    if (std::isfinite(v) || (inf_ok && v > 0.0)) continue;
+    what = name + " = " + format_number(v);
+    if (times) {
+      what += " at t = " + format_number(i < times->size() ? (*times)[i] : -1.0, 6) + " s";
+    } else if (values.size() > 1) {
+      what = name + "[" + std::to_string(i) + "] = " + format_number(v);
+    }
+    return true;
+  }
+  return false;
+}
+
+// a scalar as a one-element view
+struct One {
+  double v;
+  Eigen::Index size() const { return 1; }
+  double operator[](Eigen::Index) const { return v; }
+};
+
+// a std::vector<double> indexed as the Eigen vectors are
+struct Column {
+  const std::vector<double>& v;
+  Eigen::Index size() const { return static_cast<Eigen::Index>(v.size()); }
+  double operator[](Eigen::Index i) const { return v[static_cast<std::size_t>(i)]; }
+};
+
 template <int N, int MaxN>
 SimulationResult run(const Body& body, const GroundMotion& motion, const InitialState& init,
                      const SimulationOptions& opt) {
@@ -139,6 +176,19 @@ SimulationResult run(const Body& body, const GroundMotion& motion, const Initial
     ev.time = r.t_end;
     ev.kind = EventKind::kEnergyUnbalanced;
     ev.energy_loss = r.energy.residual;
+    r.events.push_back(ev);
+  }
+  // no garbage reported as a result: outputs that overflowed (sizes or motions beyond double
+  // precision) end the run as stopped, naming the first of them
+  if (const std::string bad = non_finite_output(r); !bad.empty()) {
+    const std::string why = "the results are not finite (" + bad +
+                            "): the body's sizes or the base motion overflow double precision; "
+                            "give them in physical sizes";
+    r.message = r.status == Status::kStopped ? r.message + "; " + why : why;
+    r.status = Status::kStopped;
+    Event ev;
+    ev.time = std::isfinite(r.t_end) ? r.t_end : 0.0;
+    ev.kind = EventKind::kStopped;
     r.events.push_back(ev);
   }
   return r;
@@ -154,6 +204,90 @@ double energy_residual_bound(const Body& body, double scale) {
 void validate_options(const Body& body, const InitialState& init,
                       const SimulationOptions& options) {
   check_options(body, init, options);
+}
+
+std::string non_finite_output(const SimulationResult& r) {
+  std::string w;
+  const Extremes& x = r.extremes;
+  const EnergyBalance& e = r.energy;
+  auto one = [&](double v, const char* name, bool inf_ok = false) {
+    return first_bad(One{v}, name, inf_ok, w);
+  };
+  // the final state and the time reached
+  if (one(r.t_end, "t_end") || one(r.final_theta, "final theta") ||
+      one(r.final_theta_dot, "final theta_dot") || one(r.final_offset, "final offset") ||
+      first_bad(r.final_q, "final q", false, w) ||
+      first_bad(r.final_q_dot, "final q_dot", false, w))
+    return w;
+  // the extremes
+  if (one(x.max_theta_edge1, "max theta on edge 1") ||
+      one(x.max_theta_edge2, "max theta on edge 2") || one(x.max_uplift, "max uplift") ||
+      one(x.max_impulse, "max impulse") ||
+      one(x.max_impact_energy_loss, "max impact energy loss") ||
+      first_bad(x.max_abs_q, "max |q|", false, w) || one(x.max_base_shear, "max base shear") ||
+      one(x.max_overturning_moment, "max overturning moment") ||
+      one(x.max_friction_demand, "max friction demand", true) ||
+      one(x.first_uplift_time, "first uplift time") || one(x.overturn_time, "overturn time") ||
+      one(x.flight_time, "flight time") || one(x.max_flight_height, "max flight height") ||
+      one(x.max_offset, "max offset"))
+    return w;
+  // the energy balance
+  if (one(e.input_work, "energy.input_work") || one(e.kinetic_change, "energy.kinetic_change") ||
+      one(e.potential_change, "energy.potential_change") ||
+      one(e.damping_loss, "energy.damping_loss") || one(e.impact_loss, "energy.impact_loss") ||
+      one(e.chatter_loss, "energy.chatter_loss") || one(e.residual, "energy.residual") ||
+      one(e.scale, "energy.scale"))
+    return w;
+  // the events
+  for (std::size_t i = 0; i < r.events.size(); ++i) {
+    const Event& ev = r.events[i];
+    const std::string at =
+        std::string("event ") + std::to_string(i + 1) + " (" + to_string(ev.kind) + ") ";
+    if (one(ev.time, (at + "time").c_str()) || one(ev.theta, (at + "theta").c_str()) ||
+        one(ev.theta_dot_before, (at + "theta_dot_before").c_str()) ||
+        one(ev.theta_dot_after, (at + "theta_dot_after").c_str()) ||
+        one(ev.energy_loss, (at + "energy_loss").c_str()) ||
+        one(ev.impulse_x, (at + "impulse_x").c_str()) ||
+        one(ev.impulse_y, (at + "impulse_y").c_str()) ||
+        one(ev.friction_demand, (at + "friction_demand").c_str(), true) ||
+        one(ev.offset, (at + "offset").c_str()))
+      return w;
+  }
+  // the time history, column by column
+  const History& h = r.history;
+  const std::vector<double>* t = &h.time;
+  for (const auto& [col, name] :
+       std::initializer_list<std::pair<const std::vector<double>*, const char*>>{
+           {&h.time, "time"},
+           {&h.theta, "theta"},
+           {&h.theta_dot, "theta_dot"},
+           {&h.base_acc_x, "base_acc_x"},
+           {&h.base_acc_y, "base_acc_y"},
+           {&h.reaction_x, "reaction_x"},
+           {&h.reaction_y, "reaction_y"},
+           {&h.resultant, "resultant"},
+           {&h.kinetic, "kinetic"},
+           {&h.potential, "potential"},
+           {&h.input_work, "input_work"},
+           {&h.damping_loss, "damping_loss"},
+           {&h.impact_loss, "impact_loss"},
+           {&h.offset, "offset"},
+           {&h.lift, "lift"}}) {
+    if (first_bad(Column{*col}, std::string("time history ") + name, false, w, t)) return w;
+  }
+  if (first_bad(Column{h.friction_demand}, "time history friction_demand", true, w, t)) return w;
+  // q and q_dot: `modes` values a row
+  const auto m = static_cast<std::size_t>(std::max(h.modes, 1));
+  for (const auto& [col, name] : {std::pair{&h.q, "q"}, std::pair{&h.q_dot, "q_dot"}}) {
+    for (std::size_t i = 0; i < col->size(); ++i) {
+      if (std::isfinite((*col)[i])) continue;
+      w = std::string("time history ") + name + "_" + std::to_string(i % m + 1) + " = " +
+          format_number((*col)[i]) +
+          " at t = " + format_number(i / m < t->size() ? (*t)[i / m] : -1.0, 6) + " s";
+      return w;
+    }
+  }
+  return w;
 }
 
 SimulationResult simulate(const Body& body, const GroundMotion& motion, const InitialState& init,

@@ -224,4 +224,9 @@ SimulationResult simulate(const Body& body, const GroundMotion& motion,
 void validate_options(const Body& body, const InitialState& initial,
                       const SimulationOptions& options);
 
+/// The first reported output of `r` that is not finite, in words ("energy.input_work = inf");
+/// empty when all are finite. Friction demands may be +inf (no normal force), never NaN.
+/// simulate() ends a run with such an output as stopped, naming it; io writes no file of it.
+std::string non_finite_output(const SimulationResult& r);
+
 }  // namespace flexrock
