@@ -26,6 +26,7 @@
 #include "flexrock/io/outputs.hpp"
 #include "flexrock/io/study_files.hpp"
 #include "flexrock/sim/simulate.hpp"
+#include "flexrock/sim/step_cost.hpp"
 #include "flexrock/version.hpp"
 #include "plot_command.hpp"
 #include "progress.hpp"
@@ -209,6 +210,14 @@ void print_notes(const io::Case& c) {
   for (const std::string& n : c.notes) fmt::print(stderr, "flexrock: note: {}: {}\n", c.source, n);
 }
 
+// before a run: a body whose stiff rocking will take more than max_steps, or very long, on stderr
+void print_step_cost_warning(const io::Case& c, const Body& body) {
+  const double end = c.options.t_end >= 0.0 ? c.options.t_end : c.motion.duration();
+  const std::string w =
+      step_cost_warning(estimate_step_cost(body, c.options), end, c.options.max_steps);
+  if (!w.empty()) fmt::print(stderr, "flexrock: warning: {}: {}\n", c.source, w);
+}
+
 // ---------------------------------------------------------------------------------------------
 // commands
 
@@ -226,6 +235,7 @@ int cmd_run_one(const std::string& file, const std::string& output_dir, bool qui
   }
   print_notes(c);
   const Body body(c.body);
+  print_step_cost_warning(c, body);
   SimulationResult r;
   try {
     r = run_with_progress(body, c, !quiet && !no_progress && ::isatty(STDERR_FILENO));
@@ -235,6 +245,11 @@ int cmd_run_one(const std::string& file, const std::string& output_dir, bool qui
     return error(file + ": out of memory during the run (the time history holds a row every " +
                      "output.dt = " + fmt::format("{:g}", c.options.output_dt) +
                      " s; the events one row each)",
+                 kExitRunFailed);
+  }
+  // results that overflowed are no results: no file and no figures, only the reason
+  if (!non_finite_output(r).empty()) {
+    return error(file + ": the run could not complete: " + r.message + "; no output written",
                  kExitRunFailed);
   }
   io::OutputPaths paths;
@@ -300,6 +315,7 @@ int cmd_check(const std::vector<std::string>& args, bool quiet) {
       const io::Case c = io::load_case(file);
       io::check_output_paths(c, io::output_paths(c, ""));
       const Body body(c.body);
+      print_step_cost_warning(c, body);
       if (!quiet) {
         fmt::print("{}: ok: body {} ({} mode{}), excitation {:.4g} s{}, outputs: {}{}{}\n", file,
                    c.body_type, body.modes(), body.modes() == 1 ? "" : "s", c.motion.duration(),
@@ -386,6 +402,35 @@ int cmd_params(const std::string& file) {
     print_vector("delta", p.delta);
     print_vector("beta", p.beta);
   }
+  // what the explicit integrator will cost (docs/theory.md, "Stiff rocking"), at the default
+  // tolerances for a body file, at the case's for a case
+  SimulationOptions opt;
+  if (io::has_excitation(file)) {
+    try {
+      opt = io::load_case(file).options;
+    } catch (const InputError& e) {
+      return error(e.what(), kExitBadInput);
+    }
+  }
+  const StepCost cost = estimate_step_cost(body, opt);
+  fmt::print("explicit step cost while rocking (Dopri5 at rtol = {:g}):\n", opt.rtol);
+  fmt::print(
+      "  stiffest motion {:.6g} rad/s ({:.6g} Hz), h omega ~ {:.3g}: about {:.4g} steps per "
+      "simulated second, at least {:.4g} for stability ({:.4g} per 1/p = {:.4g} s)\n",
+      cost.rocking_omega, cost.rocking_omega / (2.0 * std::numbers::pi), cost.h_omega,
+      cost.rocking_steps_per_second, cost.rocking_min_steps_per_second,
+      cost.rocking_steps_per_second * cost.rocking_time_scale, cost.rocking_time_scale);
+  if (n > 0) {
+    fmt::print(
+        "  full contact: highest pinned-base mode {:.6g} Hz (exact propagation under a "
+        "record)\n",
+        cost.full_contact_omega / (2.0 * std::numbers::pi));
+  }
+  // a case file: its duration and max_steps too; a body file: the rate alone
+  if (!io::has_excitation(file)) {
+    const std::string w = step_cost_warning(cost, 0.0, 1);
+    if (!w.empty()) fmt::print(stderr, "flexrock: warning: {}: {}\n", file, w);
+  }
   // a case file: its records too
   if (io::has_excitation(file)) {
     try {
@@ -395,6 +440,7 @@ int cmd_params(const std::string& file) {
                  c.motion.duration());
       print_records(c);
       print_notes(c);
+      print_step_cost_warning(c, body);
     } catch (const InputError& e) {
       return error(e.what(), kExitBadInput);
     }

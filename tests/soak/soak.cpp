@@ -70,7 +70,7 @@ struct SoakCase {
 struct RunResult {
   bool ok = true;
   std::string failure;      // why it failed, empty if ok
-  std::string status;       // completed / overturned / contact_lost / stopped
+  std::string status;       // completed / overturned / stopped
   double rel_residual = 0;  // [-] |residual| / scale
   double mgh_residual = 0;  // [-] |residual| / (M g h)
   double bound_use = 0;     // [-] |residual| over its bound (<= 1 passes)
@@ -78,6 +78,7 @@ struct RunResult {
   long steps = 0;
   long impacts = 0;
   bool chatter = false;
+  bool flew = false;      // the body left the floor at least once (flight)
   bool uplifted = false;  // the body left full contact (else the exact path ran alone)
   double seconds = 0;     // [s] wall time (reported only)
 };
@@ -417,6 +418,7 @@ RunResult run_case(const SoakCase& c) {
     out.steps = res.steps;
     out.impacts = res.extremes.impacts;
     out.chatter = res.chatter_cut_off;
+    out.flew = res.extremes.lift_offs > 0;
     out.uplifted = res.extremes.first_uplift_time >= 0.0 || c.initial.theta != 0.0 ||
                    c.initial.theta_dot != 0.0;
     if (res.status == flexrock::Status::kStopped) fail("stopped: " + res.message);
@@ -523,7 +525,7 @@ int main(int argc, char** argv) {
   for (auto& t : pool) t.join();
 
   // figures, gathered in case order (independent of the threads)
-  long failures = 0, completed = 0, overturned = 0, lost = 0, chatter = 0;
+  long failures = 0, completed = 0, overturned = 0, stopped = 0, flew = 0, chatter = 0;
   std::size_t worst_res = 0, worst_use = 0, most_events = 0, slowest = 0, most_steps = 0;
   long full_contact_only = 0;
   std::size_t worst_exact = results.size();  // the worst residual of the runs never uplifted
@@ -540,7 +542,8 @@ int main(int argc, char** argv) {
     }
     completed += r.status == "completed";
     overturned += r.status == "overturned";
-    lost += r.status == "contact_lost";
+    stopped += r.status == "stopped";
+    flew += r.flew;
     chatter += r.chatter;
     if (r.rel_residual > results[worst_res].rel_residual) worst_res = k;
     if (!r.uplifted && !r.status.empty()) {
@@ -564,8 +567,10 @@ int main(int argc, char** argv) {
   std::printf("soak%s: %ld runs (seed %llu, cases %ld..%ld), %ld failures\n",
               coupled ? " (coupled generator)" : "", count, static_cast<unsigned long long>(seed),
               first, first + count - 1, failures);
-  std::printf("status: %ld completed, %ld overturned, %ld contact_lost; %ld with chatter cut-off\n",
-              completed, overturned, lost, chatter);
+  std::printf(
+      "status: %ld completed, %ld overturned, %ld stopped; %ld with flight, %ld with chatter "
+      "cut-off\n",
+      completed, overturned, stopped, flew, chatter);
   std::printf("bounds: |residual| <= %.0e scale + %.0e M g h, steps < %ld, impacts < %ld\n",
               kResidualBound, kResidualFloor, kMaxSteps, kMaxImpacts);
   if (count > 0) {

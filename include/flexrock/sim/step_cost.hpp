@@ -1,0 +1,48 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// What the explicit integrator will cost a body, known before any run: the stiffest motion while
+// rocking against Dopri5's stability bound and its error constant. A slender body with a stiff
+// mode rocks with a coupled frequency far above its pinned-base ones, and an explicit method
+// must resolve it on every step (docs/theory.md, "Stiff rocking").
+#pragma once
+
+#include <string>
+
+#include "flexrock/model/body.hpp"
+#include "flexrock/sim/simulate.hpp"
+
+namespace flexrock {
+
+/// |h omega| up to which Dopri5 is stable on an undamped oscillation (its stability region meets
+/// the imaginary axis at 0.997; on the negative real axis it reaches 3.3).
+inline constexpr double kDopri5ImaginaryStability = 0.997;
+/// Dopri5's error estimate on y' = i omega y is |97/120000 (h omega)^5| |y| to leading order
+/// (the difference of its 5th- and 4th-order stability polynomials): the step control keeps it
+/// near rtol |y|, so h omega ~ (rtol / kDopri5ErrorConstant)^(1/5) (0.066 at rtol = 1e-9).
+inline constexpr double kDopri5ErrorConstant = 97.0 / 120000.0;
+
+/// Estimated step cost of the explicit integrator for a body.
+struct StepCost {
+  double rocking_time_scale = 0.0;  // [s] 1/p, p the rocking frequency
+  // [rad/s] largest |eigenvalue| of the rocking equations linearized at theta = 0 (at rest, the
+  // static deformation), over both edges: the stiffest motion while rocking
+  double rocking_omega = 0.0;
+  double full_contact_omega = 0.0;  // [rad/s] largest pinned-base omega (0: rigid body)
+  double h_omega = 0.0;             // [-] h omega the step control settles at (rtol)
+  // steps per simulated second while rocking: at least (stability), about (accuracy at rtol,
+  // and no fewer than 1/max_step)
+  double rocking_min_steps_per_second = 0.0;
+  double rocking_steps_per_second = 0.0;
+};
+
+/// The step cost of `body` at `options` (rtol, max_step); cheap: one eigenproblem per edge.
+StepCost estimate_step_cost(const Body& body, const SimulationOptions& options = {});
+
+/// Steps per simulated second above which a run is called very slow (seconds of computing per
+/// simulated second at ~1-10 us a step).
+inline constexpr double kSlowStepsPerSecond = 1e6;
+
+/// A warning, in words with figures, when a run of `duration` seconds that rocks throughout is
+/// expected to exceed `max_steps` or to be very slow (kSlowStepsPerSecond); empty otherwise.
+std::string step_cost_warning(const StepCost& cost, double duration, long max_steps);
+
+}  // namespace flexrock

@@ -1,0 +1,95 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "flexrock/sim/step_cost.hpp"
+
+#include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "flexrock/core/format.hpp"
+#include "flexrock/model/dynamics.hpp"
+
+namespace flexrock {
+
+namespace {
+
+// the largest |eigenvalue| of the rocking equations on `edge`, linearized by central
+// differences at theta = 0, the static deformation, no velocity and no base motion: x = (theta,
+// q, theta_dot, q_dot), x' = (theta_dot, q_dot, theta_ddot, q_ddot)
+double rocking_omega(const Body& body, const Dynamics<Eigen::Dynamic, Eigen::Dynamic>& dyn,
+                     int edge) {
+  const int n = body.modes();
+  const int dim = 2 * n + 2;
+  VectorX x0 = VectorX::Zero(dim);
+  if (n > 0) x0.segment(1, n) = body.static_deformation();
+  auto rhs = [&](const VectorX& x) {
+    VectorX f(dim);
+    const VectorX q = x.segment(1, n), qd = x.segment(n + 2, n);
+    double thdd = 0.0;
+    VectorX qdd(n);
+    dyn.rocking_acceleration(edge, x(0), q, x(n + 1), qd, BaseAcceleration{}, thdd, qdd);
+    f.head(n + 1) = x.tail(n + 1);
+    f(n + 1) = thdd;
+    f.tail(n) = qdd;
+    return f;
+  };
+  MatrixX jac(dim, dim);
+  for (int j = 0; j < dim; ++j) {
+    const double eps = 1e-6 * std::max(1.0, std::abs(x0(j)));
+    VectorX xp = x0, xm = x0;
+    xp(j) += eps;
+    xm(j) -= eps;
+    jac.col(j) = (rhs(xp) - rhs(xm)) / (2.0 * eps);
+  }
+  const Eigen::EigenSolver<MatrixX> es(jac, false);
+  return es.eigenvalues().cwiseAbs().maxCoeff();
+}
+
+std::string hz(double omega) {
+  const double f = omega / (2.0 * std::numbers::pi);
+  return f >= 1e3 ? format_number(f / 1e3, 3) + " kHz" : format_number(f, 3) + " Hz";
+}
+
+}  // namespace
+
+StepCost estimate_step_cost(const Body& body, const SimulationOptions& options) {
+  const Dynamics<Eigen::Dynamic, Eigen::Dynamic> dyn(body);
+  StepCost c;
+  c.rocking_time_scale = 1.0 / body.rocking_frequency();
+  c.rocking_omega = std::max(rocking_omega(body, dyn, 1), rocking_omega(body, dyn, 2));
+  c.full_contact_omega = body.modes() > 0 ? body.natural_frequencies().cwiseAbs().maxCoeff() : 0.0;
+  c.h_omega =
+      std::min(std::pow(options.rtol / kDopri5ErrorConstant, 0.2), kDopri5ImaginaryStability);
+  c.rocking_min_steps_per_second = c.rocking_omega / kDopri5ImaginaryStability;
+  c.rocking_steps_per_second = std::max(c.rocking_omega / c.h_omega, 1.0 / options.max_step);
+  return c;
+}
+
+std::string step_cost_warning(const StepCost& c, double duration, long max_steps) {
+  const double rate = c.rocking_steps_per_second;
+  const bool over = duration > 0.0 && rate * duration > static_cast<double>(max_steps);
+  const bool slow = rate > kSlowStepsPerSecond;
+  if (!over && !slow) return "";
+  std::string w = "stiff rocking: while rocking, the stiffest motion (" +
+                  format_number(c.rocking_omega, 3) + " rad/s, " + hz(c.rocking_omega) +
+                  ") sets the explicit integrator's step (Dopri5, h omega ~ " +
+                  format_number(c.h_omega, 2) + "): about " + format_number(rate, 3) +
+                  " steps per simulated second, at least " +
+                  format_number(c.rocking_min_steps_per_second, 3) + " for stability (" +
+                  format_number(rate * c.rocking_time_scale, 3) +
+                  " per rocking time scale 1/p = " + format_number(c.rocking_time_scale, 3) + " s)";
+  if (over) {
+    w += "; rocking through the " + format_number(duration, 4) + " s would take about " +
+         format_number(rate * duration, 3) +
+         " steps, above max_steps = " + std::to_string(max_steps) +
+         " (the run would stop after about " +
+         format_number(static_cast<double>(max_steps) / rate, 3) +
+         " s of rocking): raise [solver] max_steps";
+  } else {
+    w += ": a long run is slow";
+  }
+  w += " (docs/theory.md, \"Stiff rocking\")";
+  return w;
+}
+
+}  // namespace flexrock
