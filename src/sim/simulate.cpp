@@ -229,14 +229,14 @@ std::string non_finite_output(const SimulationResult& r) {
       one(x.max_friction_demand, "max friction demand", true) ||
       one(x.first_uplift_time, "first uplift time") || one(x.overturn_time, "overturn time") ||
       one(x.flight_time, "flight time") || one(x.max_flight_height, "max flight height") ||
-      one(x.max_offset, "max offset"))
+      one(x.max_offset, "max offset") || one(x.sliding_time, "sliding time"))
     return w;
   // the energy balance
   if (one(e.input_work, "energy.input_work") || one(e.kinetic_change, "energy.kinetic_change") ||
       one(e.potential_change, "energy.potential_change") ||
       one(e.damping_loss, "energy.damping_loss") || one(e.impact_loss, "energy.impact_loss") ||
-      one(e.chatter_loss, "energy.chatter_loss") || one(e.residual, "energy.residual") ||
-      one(e.scale, "energy.scale"))
+      one(e.chatter_loss, "energy.chatter_loss") || one(e.friction_loss, "energy.friction_loss") ||
+      one(e.residual, "energy.residual") || one(e.scale, "energy.scale"))
     return w;
   // the events
   for (std::size_t i = 0; i < r.events.size(); ++i) {
