@@ -50,6 +50,8 @@ class Simulator final : private GuardProbe {
   static constexpr int MaxS = MaxN == Eigen::Dynamic ? Eigen::Dynamic : 2 * MaxN + 11;
   static constexpr int SC = N == Eigen::Dynamic ? Eigen::Dynamic : 2 * N + 4;
   static constexpr int MaxSC = MaxN == Eigen::Dynamic ? Eigen::Dynamic : 2 * MaxN + 4;
+  static constexpr int SF = N == Eigen::Dynamic ? Eigen::Dynamic : 2 * N + 8;
+  static constexpr int MaxSF = MaxN == Eigen::Dynamic ? Eigen::Dynamic : 2 * MaxN + 8;
   static constexpr int SL = N == Eigen::Dynamic ? Eigen::Dynamic : 2 * N + 7;
   static constexpr int MaxSL = MaxN == Eigen::Dynamic ? Eigen::Dynamic : 2 * MaxN + 7;
   using Dyn = Dynamics<N, MaxN>;
@@ -61,6 +63,9 @@ class Simulator final : private GuardProbe {
   // the first 2n + 4 entries of State, which is all the contact modes integrate: a rocking step
   // on it costs markedly less than on the whole State
   using ContactState = Eigen::Matrix<double, SC, 1, Eigen::ColMajor, MaxSC, 1>;
+  // the first 2n + 8 entries of State: what flight integrates (the slip's entries mean nothing
+  // there, and a flight step on them alone costs less)
+  using FlightState = Eigen::Matrix<double, SF, 1, Eigen::ColMajor, MaxSF, 1>;
   // what the sliding modes integrate: the first 2n + 4 entries of State, then d, d_dot and the
   // friction work
   using SlideState = Eigen::Matrix<double, SL, 1, Eigen::ColMajor, MaxSL, 1>;
@@ -95,7 +100,10 @@ class Simulator final : private GuardProbe {
   bool flying() const { return mode_ == ContactMode::kFlight; }
   int slip() const { return mode_spec(mode_).slip; }
   bool sliding() const { return mode_spec(mode_).slip != 0; }
-  Eigen::Vector2d cg_velocity(const State& x) const { return {x(ixc() + 2), x(ixc() + 3)}; }
+  template <class X>
+  Eigen::Vector2d cg_velocity(const X& x) const {
+    return {x(ixc() + 2), x(ixc() + 3)};
+  }
 
   template <class X>
   void unpack(const X& x) {
@@ -123,7 +131,7 @@ class Simulator final : private GuardProbe {
 
   // ---- equations of motion: full contact and rocking, and flight
   void contact_rhs(double t, const ContactState& x, ContactState& dx);
-  void flight_rhs(double t, const State& x, State& dx);
+  void flight_rhs(double t, const FlightState& x, FlightState& dx);
   void slide_rhs(double t, const SlideState& x, SlideState& dx);
   // d_ddot [m/s^2] of the current sliding mode at (q_, qd_), with theta_ddot, q_ddot (in qdd_) and
   // the reaction over M g; a' = a + d_ddot I is the sliding frame's acceleration (theory §18)
@@ -168,6 +176,7 @@ class Simulator final : private GuardProbe {
   void count_impact(const Event& ev, double impulse_y, double loss, bool chatter);
   // after a step with no event: a pressing floor ends the pivot-tension hold
   void release_latches(const GuardSample& s) {
+    hold_tension_ = false;
     const int lift = guard_slot(mode_, Guard::kLiftOff);
     if (lift >= 0 && s.v[static_cast<std::size_t>(lift)] > 0.0) tension_ = false;
   }
@@ -200,12 +209,13 @@ class Simulator final : private GuardProbe {
   StepControl ctl_;
   int samples_ = 4;
   Dopri5<ContactState> integ_;  // rocking, and full contact when not stepped exactly
-  Dopri5<State> flight_integ_;
+  Dopri5<FlightState> flight_integ_;
   Dopri5<SlideState> slide_integ_;
   mutable SlideState slide_buf_;
   Vec qdd1_;  // scratch: q_ddot at a unit slip acceleration
   mutable ContactState dense_buf_;
-  mutable State flight_buf_;
+  mutable FlightState flight_buf_;
+  State prop_buf_;  // scratch: the exact propagator's dense output
   ContactPropagator<N, MaxN, State> prop_;
   SimulationResult res_;
   Recorder rec_;
@@ -229,6 +239,10 @@ class Simulator final : private GuardProbe {
   double slide_start_ = 0.0;         // [s] when the current slide began
   bool slide_inconsistent_ = false;  // a sliding mode had no consistent slip acceleration
   bool tension_ = false;  // the floor pulls (pivot_tension): lift-off disarmed until it presses
+  // after a grazing landing with friction the floor is let pull through the modes entered at that
+  // instant (a slip that starts where the pivot force vanishes) until a step ends: else the body
+  // would lift off and land again without end
+  bool hold_tension_ = false;
   bool suppress_uplift_at_start_ = false;
   double chatter_interval_ = 0.0;
   double base_width_ = 0.0;  // [m] b1 + b2
@@ -277,7 +291,8 @@ Simulator<N, MaxN>::Simulator(const Body& body, const GroundMotion& motion,
   dense_buf_.setZero(2 * n_ + 4);
   slide_buf_.setZero(2 * n_ + 7);
   xr_.setZero(2 * n_ + 11);  // written through put(): sized once, as on the heap path
-  flight_buf_.setZero(2 * n_ + 11);
+  flight_buf_.setZero(2 * n_ + 8);
+  prop_buf_.setZero(2 * n_ + 11);
 }
 
 template <int N, int MaxN>
@@ -335,7 +350,7 @@ void Simulator<N, MaxN>::contact_rhs(double t, const ContactState& x, ContactSta
 
 // theory "Flight": the c.g. is ballistic relative to the base, the rest feels no gravity
 template <int N, int MaxN>
-void Simulator<N, MaxN>::flight_rhs(double t, const State& x, State& dx) {
+void Simulator<N, MaxN>::flight_rhs(double t, const FlightState& x, FlightState& dx) {
   const BaseAcceleration a = motion_.at(t, rhs_cursor_);
   unpack(x);
   dx.resize(x.size());
@@ -347,7 +362,6 @@ void Simulator<N, MaxN>::flight_rhs(double t, const State& x, State& dx) {
   dx.segment(iqd(), n_) = qdd_;
   dx(iw()) = dyn_.flight_input_power(cg_velocity(x), a);
   dx(id()) = dyn_.damping_power(qd_);
-  dx(isd()) = dx(isv()) = dx(ifr()) = 0.0;
   dx(ixc()) = x(ixc() + 2);
   dx(ixc() + 1) = x(ixc() + 3);
   dx(ixc() + 2) = -a.x;
@@ -532,6 +546,20 @@ double Simulator<N, MaxN>::guard_value(int slot, double t) {
 // zero on entry fires at once (an uplift or lift-off that the entry state already calls for).
 template <int N, int MaxN>
 bool Simulator<N, MaxN>::enter_mode(double t, State& x) {
+  // every reset ends here, those a mode's entry state calls for at once included: contact
+  // changes piling up at one instant would loop forever, so they stop the run
+  if (t - zeno_time_ < 1e-9 * std::max(1.0, t)) {
+    if (++same_time_events_ > 64) {
+      return stop(t, "contact changes accumulate at t = " + short_number(t) +
+                         " s without time advancing (Zeno behaviour) in " + to_string(mode_) +
+                         (opt_.chatter_ratio <= 0.0 ? " with the chatter cut-off disabled "
+                                                      "(chatter_ratio = 0); set chatter_ratio > 0"
+                                                    : ""));
+    }
+  } else {
+    zeno_time_ = t;
+    same_time_events_ = 0;
+  }
   if (full_contact()) {
     x(0) = 0.0;
     x(ithd()) = 0.0;
@@ -548,8 +576,10 @@ bool Simulator<N, MaxN>::enter_mode(double t, State& x) {
     // a flexible body in full contact under a record: exact steps between its samples
     prop_.start(t, x);
   } else if (flying()) {
-    flight_integ_.start([this](double tt, const State& xx, State& dd) { flight_rhs(tt, xx, dd); },
-                        ctl_, t, x);
+    flight_buf_ = x.head(2 * n_ + 8);
+    flight_integ_.start(
+        [this](double tt, const FlightState& xx, FlightState& dd) { flight_rhs(tt, xx, dd); }, ctl_,
+        t, flight_buf_);
   } else if (sliding()) {
     slide_buf_.head(2 * n_ + 4) = x.head(2 * n_ + 4);
     slide_buf_.tail(3) = x.segment(isd(), 3);
@@ -575,7 +605,8 @@ bool Simulator<N, MaxN>::enter_mode(double t, State& x) {
            s0_.v[static_cast<std::size_t>(j)] <= 0.0;
   };
   const int lift = guard_slot(mode_, Guard::kLiftOff);
-  if (lift < 0 || s0_.v[static_cast<std::size_t>(lift)] > 0.0) tension_ = false;
+  if (lift < 0) hold_tension_ = false;
+  if (lift < 0 || (s0_.v[static_cast<std::size_t>(lift)] > 0.0 && !hold_tension_)) tension_ = false;
   if (at_or_below(Guard::kOverturn)) return overturned(t, x);
   if (!tension_ && at_or_below(Guard::kLiftOff)) return lift_off(t, x);
   // an uplift is tried before a slip (theory §20): rocking on a sticking pivot if its friction
@@ -609,9 +640,11 @@ bool Simulator<N, MaxN>::advance(double& t, State& x) {
   // the exact propagator takes no right-hand side
   if (exact_)
     return advance_with(
-        prop_, [](double, const State&, State&) {}, flight_buf_, t, x);
+        prop_, [](double, const State&, State&) {}, prop_buf_, t, x);
   if (flying()) {
-    auto sys = [this](double tt, const State& xx, State& dd) { flight_rhs(tt, xx, dd); };
+    auto sys = [this](double tt, const FlightState& xx, FlightState& dd) {
+      flight_rhs(tt, xx, dd);
+    };
     return advance_with(flight_integ_, sys, flight_buf_, t, x);
   }
   if (sliding()) {
@@ -825,7 +858,8 @@ void Simulator<N, MaxN>::state_at(double t, State& out) const {
   } else if (exact_) {
     prop_.dense(t, out);
   } else if (flying()) {
-    flight_integ_.dense(t, out);
+    flight_integ_.dense(t, flight_buf_);
+    put(flight_buf_, out);
   } else if (sliding()) {
     slide_integ_.dense(t, slide_buf_);
     put(slide_buf_, out);
@@ -841,19 +875,6 @@ void Simulator<N, MaxN>::state_at(double t, State& out) const {
 // a resetting guard of the current mode fired at (t, x); false when the run ends
 template <int N, int MaxN>
 bool Simulator<N, MaxN>::fire(int slot, double t, State& x) {
-  // resets piling up at one instant would loop forever: stop instead
-  if (t - zeno_time_ < 1e-9 * std::max(1.0, t)) {
-    if (++same_time_events_ > 64) {
-      return stop(t, "contact changes accumulate at t = " + short_number(t) +
-                         " s without time advancing (Zeno behaviour) in " + to_string(mode_) +
-                         (opt_.chatter_ratio <= 0.0 ? " with the chatter cut-off disabled "
-                                                      "(chatter_ratio = 0); set chatter_ratio > 0"
-                                                    : ""));
-    }
-  } else {
-    zeno_time_ = t;
-    same_time_events_ = 0;
-  }
   if (sliding()) offset_ = x(isd());  // events name where the base is
   const GuardSpec& g = guard_spec(mode_spec(mode_).guards[static_cast<std::size_t>(slot)]);
   switch (g.reset) {
@@ -1045,7 +1066,7 @@ bool Simulator<N, MaxN>::land(double t, State& x, int e) {
   if (std::isfinite(mu_s_)) {
     res_.extremes.flight_time += t - flight_start_;
     const bool chatter = t - last_contact_change_ < chatter_interval_;
-    if (chatter) tension_ = true;  // as below: grazing hops cannot accumulate without end
+    if (chatter) tension_ = hold_tension_ = true;  // as below: grazing hops cannot accumulate
     return friction_impact(t, x, e, v_c, true, false,
                            chatter ? EventKind::kChatterCutoff : EventKind::kLanding, chatter);
   }

@@ -783,6 +783,15 @@ def section_contact_modes(md):
             md.append(fh.read())
 
 
+def section_sliding(md):
+    """Section 8, kept verbatim from docs/validation/sliding.md: its record table is regenerated
+    by tools/validation/sliding_records.py and its costs by the benchmark it names."""
+    path = os.path.join(ROOT, "docs", "validation", "sliding.md")
+    if os.path.exists(path):
+        with open(path) as fh:
+            md.append(fh.read())
+
+
 def section_sliding_regimes(md):
     # the regime map at initiation with friction: written by tools/validation/regime_map.py
     # (its command is in the file), kept beside this page like the contact-mode section
@@ -835,6 +844,7 @@ def main():
     section_foundation(j["foundation"], md, stiff)
     section_records(j["records"], md)
     section_contact_modes(md)
+    section_sliding(md)
     section_sliding_regimes(md)
     total = time.time() - t_start
     md.append("## Regeneration\n")
