@@ -159,6 +159,7 @@ class Simulator final : private GuardProbe {
   bool lift_off(double t, State& x);
   bool land(double t, State& x, int e);
   bool overturned(double t, State& x);
+  bool after_impulse(double t, State& x, const Event& ev, double th);
   bool start_slip(double t, State& x);
   // an uplift onto e from sticking full contact at t (state in q_, qd_) has a continuation: the
   // pivot's friction holds, or with the pivot sliding the body still turns up (theory §20)
@@ -1133,19 +1134,7 @@ bool Simulator<N, MaxN>::land(double t, State& x, int e) {
     tension_ = true;
   }
   count_impact(ev, impulse(1), ev.energy_loss, chatter);
-  if (impulse(1) < 0.0) {
-    // the sticking tipping point would need the floor to pull: say so
-    Event te = ev;
-    te.kind = EventKind::kTensileLanding;
-    rec_.event(te);
-  }
-  last_contact_change_ = t;
-  zero_start_.fill(false);
-  if (rocking() && th == 0.0)
-    zero_start_[static_cast<std::size_t>(guard_slot(mode_, Guard::kImpact))] = true;
-  if (res_.extremes.impacts > opt_.max_impacts)
-    return stop(t, "impact limit reached (" + std::to_string(opt_.max_impacts) + ")");
-  return enter_mode(t, x);
+  return after_impulse(t, x, ev, th);
 }
 
 template <int N, int MaxN>
@@ -1377,6 +1366,11 @@ bool Simulator<N, MaxN>::friction_impact(double t, State& x, int e, const Eigen:
     flat = pick == 2;
     lands = flat ? e : pick + 1;
   }
+  if (chatter && z.slid && !((k.vc0 + z.v * k.vc1 - v_c)(1) > 0.0)) {
+    // a grazing landing (below the chatter interval) whose sliding impulse would pull: the
+    // sticking one, as without friction (§16: Carnot's loss, a tensile_landing said)
+    z = Resolved{};
+  }
   const bool ok = z.ok;
   const double v_plus = z.v;
   const bool slid = z.slid;
@@ -1425,7 +1419,15 @@ bool Simulator<N, MaxN>::friction_impact(double t, State& x, int e, const Eigen:
     fe.friction_demand = sticking_demand;
     rec_.event(fe);
   }
-  if (impulse(1) < 0.0) {
+  return after_impulse(t, x, ev, th);
+}
+
+// the end of a landing or an impact with friction, recorded as `ev` at tilt th: a tensile impulse
+// is said, and the new mode starts (theta = 0 and rocking: the impact guard starts at zero)
+template <int N, int MaxN>
+bool Simulator<N, MaxN>::after_impulse(double t, State& x, const Event& ev, double th) {
+  if (ev.impulse_y < 0.0) {
+    // the sticking tipping point would need the floor to pull: say so
     Event te = ev;
     te.kind = EventKind::kTensileLanding;
     rec_.event(te);

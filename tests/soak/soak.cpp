@@ -78,6 +78,7 @@ struct RunResult {
   long steps = 0;
   long impacts = 0;
   bool chatter = false;
+  bool painleve = false;  // stopped where Coulomb friction has no consistent slide (theory §18)
   bool flew = false;      // the body left the floor at least once (flight)
   bool uplifted = false;  // the body left full contact (else the exact path ran alone)
   double seconds = 0;     // [s] wall time (reported only)
@@ -261,6 +262,20 @@ void random_start_and_options(Random& r, SoakCase& c) {
   c.options.output_dt = 0.02;
   c.options.max_steps = kMaxSteps;
   c.options.max_impacts = kMaxImpacts;
+  if (r.chance(0.4)) {
+    // a floor with Coulomb friction: the base may slide, rock on a sliding pivot and land sliding
+    c.options.friction_coefficient = r.log_uniform(0.05, 1.5);
+    c.options.kinetic_friction_coefficient = c.options.friction_coefficient * r.uniform(0.6, 1.0);
+  }
+}
+
+// the options random_start_and_options() drew, for a case's description
+std::string options_text(const flexrock::SimulationOptions& o) {
+  return " e=" + fmt(o.restitution_factor) +
+         (o.overturn == flexrock::OverturnCriterion::kHalfPi ? " half_pi" : "") +
+         (std::isfinite(o.friction_coefficient)
+              ? " mu=" + fmt(o.friction_coefficient) + "/" + fmt(o.kinetic_friction_coefficient)
+              : "");
 }
 
 SoakCase make_case(std::uint64_t seed, std::uint64_t index) {
@@ -304,9 +319,7 @@ SoakCase make_case(std::uint64_t seed, std::uint64_t index) {
   c.description = "case " + std::to_string(index) + ": " + body_what + " M=" + fmt(c.body.mass) +
                   "; " + h_what + " pga=" + fmt(pga / kG) + "g; vertical " + v_what + " " +
                   fmt(vert / kG) + "g; theta0=" + fmt(c.initial.theta) +
-                  " theta_dot0=" + fmt(c.initial.theta_dot) +
-                  " e=" + fmt(c.options.restitution_factor) +
-                  (c.options.overturn == flexrock::OverturnCriterion::kHalfPi ? " half_pi" : "");
+                  " theta_dot0=" + fmt(c.initial.theta_dot) + options_text(c.options);
   return c;
 }
 
@@ -394,8 +407,7 @@ SoakCase make_coupled_case(std::uint64_t seed, std::uint64_t index) {
                   (uneven ? " uneven" : "") + " pga=" + fmt(pga / kG) + "g; vertical " +
                   (vertical ? "-" + fmt(down / kG) + "g..+" + fmt(up / kG) + "g" : "none") +
                   "; theta0=" + fmt(c.initial.theta) + " theta_dot0=" + fmt(c.initial.theta_dot) +
-                  " e=" + fmt(c.options.restitution_factor) +
-                  (c.options.overturn == flexrock::OverturnCriterion::kHalfPi ? " half_pi" : "");
+                  options_text(c.options);
   return c;
 }
 
@@ -421,7 +433,10 @@ RunResult run_case(const SoakCase& c) {
     out.flew = res.extremes.lift_offs > 0;
     out.uplifted = res.extremes.first_uplift_time >= 0.0 || c.initial.theta != 0.0 ||
                    c.initial.theta_dot != 0.0;
-    if (res.status == flexrock::Status::kStopped) fail("stopped: " + res.message);
+    // a stop at Painleve's paradox is the model's stated limit, not a defect: counted apart
+    out.painleve = res.status == flexrock::Status::kStopped &&
+                   res.message.find("Painleve") != std::string::npos;
+    if (res.status == flexrock::Status::kStopped && !out.painleve) fail("stopped: " + res.message);
     if (res.impact_gained_energy) fail("an impact gained energy");
     const auto& e = res.energy;
     for (double v :
@@ -526,6 +541,7 @@ int main(int argc, char** argv) {
 
   // figures, gathered in case order (independent of the threads)
   long failures = 0, completed = 0, overturned = 0, stopped = 0, flew = 0, chatter = 0;
+  long painleve = 0;
   std::size_t worst_res = 0, worst_use = 0, most_events = 0, slowest = 0, most_steps = 0;
   long full_contact_only = 0;
   std::size_t worst_exact = results.size();  // the worst residual of the runs never uplifted
@@ -543,6 +559,7 @@ int main(int argc, char** argv) {
     completed += r.status == "completed";
     overturned += r.status == "overturned";
     stopped += r.status == "stopped";
+    painleve += r.painleve;
     flew += r.flew;
     chatter += r.chatter;
     if (r.rel_residual > results[worst_res].rel_residual) worst_res = k;
@@ -568,9 +585,9 @@ int main(int argc, char** argv) {
               coupled ? " (coupled generator)" : "", count, static_cast<unsigned long long>(seed),
               first, first + count - 1, failures);
   std::printf(
-      "status: %ld completed, %ld overturned, %ld stopped; %ld with flight, %ld with chatter "
-      "cut-off\n",
-      completed, overturned, stopped, flew, chatter);
+      "status: %ld completed, %ld overturned, %ld stopped (%ld of them at Painleve's paradox, "
+      "docs/theory.md 18: not failures); %ld with flight, %ld with chatter cut-off\n",
+      completed, overturned, stopped, painleve, flew, chatter);
   std::printf("bounds: |residual| <= %.0e scale + %.0e M g h, steps < %ld, impacts < %ld\n",
               kResidualBound, kResidualFloor, kMaxSteps, kMaxImpacts);
   if (count > 0) {
