@@ -925,6 +925,9 @@ bool Simulator<N, MaxN>::uplift(double t, State& x, int e) {
   zero_start_.fill(false);
   zero_start_[static_cast<std::size_t>(guard_slot(mode_, Guard::kImpact))] = true;
   zero_start_[static_cast<std::size_t>(guard_slot(mode_, Guard::kPeak))] = true;
+  // a slide that began at this instant has not yet any slip velocity: it too starts at zero
+  if (sliding() && x(isv()) == 0.0)
+    zero_start_[static_cast<std::size_t>(guard_slot(mode_, Guard::kSlipStop))] = true;
   return enter_mode(t, x);
 }
 
