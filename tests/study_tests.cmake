@@ -11,7 +11,8 @@ flexrock_add_test(flexrock_study_tests
 if(TARGET flexrock)
   # the commands: outputs, thread-count independence, errors; resume after SIGINT, SIGTERM and
   # SIGKILL, damaged journals, a second writer
-  foreach(script study_spectrum study_spectrum_resume study_sweep_resume study_fragility)
+  foreach(script study_spectrum study_spectrum_resume study_sweep_resume study_fragility
+                 study_intensity)
     add_test(NAME cli_${script}
              COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/cli/${script}.sh $<TARGET_FILE:flexrock>
                      ${PROJECT_SOURCE_DIR})

@@ -40,8 +40,8 @@ CLI::App* add_plot_command(CLI::App& app, PlotOptions& options) {
       ->check(CLI::IsMember({"auto", "response", "loop", "spectrum", "fragility"}));
   plot->add_option("--im", options.im,
                    "intensity measure of a sweep's fragility: pga (m/s^2), pga_g (default), pgv "
-                   "(m/s), scale, requested_level")
-      ->check(CLI::IsMember({"pga", "pga_g", "pgv", "scale", "requested_level"}));
+                   "(m/s), scale, requested_level, or one the sweep wrote (pgd, arias, cav, "
+                   "d5_95, pgv_over_pga, sa:T[:zeta]), as flexrock fragility --im");
   plot->add_option("--dpi", options.dpi, "PNG resolution")->check(CLI::Range(10, 1200));
   return plot;
 }

@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "flexrock/core/error.hpp"
+#include "flexrock/excitation/intensity.hpp"
 #include "flexrock/io/files.hpp"
 #include "flexrock/io/journal.hpp"
 #include "flexrock/io/outputs.hpp"
@@ -612,7 +613,7 @@ int StudyCommands::Impl::run_sweep(const Processes& procs) {
   FLEXROCK_DEMAND(lines.size() == runs.size());
   try {
     io::write_atomically(output, [&](std::ostream& out) {
-      out << join_columns(io::sweep_columns(study::has_friction(m.spec))) << '\n';
+      out << join_columns(io::sweep_columns(m.spec)) << '\n';
       for (const auto& [i, line] : lines) out << line << '\n';
     });
   } catch (const std::exception& e) {
@@ -716,6 +717,8 @@ int StudyCommands::Impl::run_fragility() {
                            : outcome == "offset" ? fmt::format("peak sliding offset > {} m", level)
                                                  : fmt::format("residual offset > {} m", level);
   std::string unit = im == "pga" ? "m/s^2" : im == "pga_g" ? "g" : im == "pgv" ? "m/s" : "-";
+  if (im.starts_with("sa:")) unit = "m/s^2";
+  if (const IntensityMeasure* m = find_intensity_measure(im)) unit = m->unit;
   if (im == "requested_level" && !table.rows.empty()) {
     const std::size_t c = std::find(table.columns.begin(), table.columns.end(), "requested_units") -
                           table.columns.begin();
@@ -811,11 +814,12 @@ StudyCommands::StudyCommands(CLI::App& app) : impl_(std::make_unique<Impl>()) {
                          "Lognormal fragility fit (maximum likelihood) from a sweep CSV, with "
                          "confidence bounds");
   s.fragility->add_option("SWEEP_CSV", s.input, "CSV written by flexrock sweep")->required();
-  s.fragility
-      ->add_option("--im", s.im,
-                   "intensity measure: pga (m/s^2), pga_g, pgv (m/s), scale, requested_level "
-                   "(the sweep's levels as its manifest wrote them)")
-      ->check(CLI::IsMember({"pga", "pga_g", "pgv", "scale", "requested_level"}));
+  s.fragility->add_option(
+      "--im", s.im,
+      "intensity measure: pga (m/s^2), pga_g, pgv (m/s), scale, requested_level (the sweep's "
+      "levels as its manifest wrote them), or one the sweep's [intensity] table asked for: pgd "
+      "(m), arias (m/s), cav (m/s), d5_95 (s), pgv_over_pga (s), sa:T or sa:T:zeta (m/s^2; Sa at "
+      "period T s, damping ratio zeta, 0.05 by default)");
   s.fragility
       ->add_option("--outcome", s.outcome,
                    "failure: overturned, theta (max theta/alpha > level), energy (energy lost > "

@@ -474,6 +474,8 @@ class InitialState:
 
 class Intensity:
     @property
+    def measures(self) -> list[float]: ...
+    @property
     def pga(self) -> float: ...
     @property
     def pgv(self) -> float: ...
@@ -497,6 +499,12 @@ class LumpedNode:
     rotary_inertia: float
     x: float
     y: float
+
+class MeasureRequest:
+    def __init__(self, name: str, period: float = ..., zeta: float = ...) -> None: ...
+    name: str
+    period: float
+    zeta: float
 
 class Outcome:
     no_uplift: ClassVar[Outcome]
@@ -921,6 +929,8 @@ class SweepRow:
     @property
     def index(self) -> int: ...
     @property
+    def measures(self) -> list[float]: ...
+    @property
     def message(self) -> str: ...
     @property
     def pga(self) -> float: ...
@@ -942,6 +952,7 @@ class SweepSpec:
     free_periods: float
     level_units: str
     levels: list[float]
+    measures: list[MeasureRequest]
     records: list[SweepRecord]
     scale_kind: ScaleKind
     scales: list[float]
@@ -1302,19 +1313,52 @@ def harmonic_cycles(amplitude: float, omega: float, cycles: float, duration: flo
     GroundMotion
     """
 
-def intensity(motion: GroundMotion, analytic_dt: float = ...) -> Intensity:
+def intensity(motion: GroundMotion, measures: list[MeasureRequest] = ..., analytic_dt: float = ...) -> Intensity:
     """Peak ground acceleration and velocity of a motion's horizontal component.
 
     Parameters
     ----------
     motion : GroundMotion
+    measures : list of MeasureRequest
+        Further measures, written to ``Intensity.measures`` in this order.
     analytic_dt : float
         [s] sampling of an analytic motion (plus its breakpoints).
 
     Returns
     -------
     Intensity
-        pga [m/s^2], pgv [m/s] (trapezoidal integral from 0).
+        pga [m/s^2], pgv [m/s] (trapezoidal integral from 0), measures.
+    """
+
+def intensity_measure(name: str, t: list[float], a: list[float], period: float = ..., zeta: float = ...) -> float:
+    """One intensity measure of a record, a piecewise linear between its samples.
+
+    Parameters
+    ----------
+    name : str
+        A name of ``intensity_measures()``.
+    t : array of float
+        [s] increasing sample times.
+    a : array of float
+        [m/s^2] horizontal acceleration at the samples.
+    period, zeta : float
+        [s] and [-]: only for ``sa``.
+
+    Returns
+    -------
+    float
+        In the measure's SI unit.
+    """
+
+def intensity_measures() -> list:
+    """The table of intensity measures (the one the sweep columns, ``flexrock fragility --im``
+    and the docs are written from).
+
+    Returns
+    -------
+    list of dict
+        name, column (empty for sa: ``sa_T<T>_z<zeta>_m_per_s2``), unit, doc, scale_power (the value
+        of the record scaled by s is s**scale_power times the value), needs_period.
     """
 
 def load_body(path: str) -> tuple:
@@ -1769,6 +1813,19 @@ def sweep_row(spec: SweepSpec, row: SweepRow) -> str:
     Returns
     -------
     str
+    """
+
+def sweep_spec_columns(spec: SweepSpec) -> list[str]:
+    """Columns of a spec's sweep CSV: the requested intensity measures after pgv_m_per_s, the
+    sliding columns if it has friction.
+
+    Parameters
+    ----------
+    spec : SweepSpec
+
+    Returns
+    -------
+    list of str
     """
 
 def time_history_arrays(result: SimulationResult, body: Body) -> dict:

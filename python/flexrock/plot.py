@@ -65,9 +65,8 @@ def main(argv=None) -> int:
     )
     parser.add_argument(
         "--im",
-        choices=["pga", "pga_g", "pgv", "scale", "requested_level"],
         default="pga_g",
-        help="intensity measure of a sweep's fragility (default pga_g)",
+        help="intensity measure of a sweep's fragility (default pga_g): as flexrock fragility --im",
     )
     parser.add_argument("--dpi", type=int, default=110, help="PNG resolution (default 110)")
     args = parser.parse_args(argv)

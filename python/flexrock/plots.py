@@ -540,6 +540,22 @@ _IM_LABELS = {
 }
 
 
+def _im_label(im: str) -> str:
+    # the fixed names, then the library's table of intensity measures; sa:T[:zeta] by its period
+    if im in _IM_LABELS:
+        return _IM_LABELS[im]
+    if im.startswith("sa:"):
+        parts = im.split(":")
+        zeta = float(parts[2]) if len(parts) > 2 else 0.05
+        return f"Sa({parts[1]} s, {100 * zeta:g} %) [m/s²]"
+    from . import _flexrock
+
+    for m in _flexrock.intensity_measures():
+        if m["name"] == im:
+            return f"{im} [{m['unit']}]"
+    return im
+
+
 def _observed(im, failed, groups=None):
     # (level, fraction, count): the observed failure fraction at each level; rows of one level
     # share a group key (the sweep's requested level) or, without one, an IM value to 12 digits
@@ -685,7 +701,7 @@ def fragility_curve(
                        zorder=3, gid="observed", label=f"{name}observed fraction")
     ax.set_ylim(-0.02, 1.02)
     ax.set_xlim(left=0.0)
-    ax.set_xlabel(xlabel or _IM_LABELS.get(im, im))
+    ax.set_xlabel(xlabel or _im_label(im))
     ax.set_ylabel("probability of failure [-]")
     ax.legend(loc="lower right", fontsize="small")
     ax.set_title("fragility")

@@ -34,7 +34,10 @@ from ._flexrock import (  # noqa: F401  (re-exported API)
     fit_lognormal,
     fragility_band,
     fragility_probability,
+    MeasureRequest,
     intensity,
+    intensity_measure,
+    intensity_measures,
     lognormal_log_likelihood,
     load_spectrum_file,
     load_sweep_manifest,
@@ -49,6 +52,7 @@ from ._flexrock import (  # noqa: F401  (re-exported API)
     sweep_columns,
     sweep_has_friction,
     sweep_row,
+    sweep_spec_columns,
     fragility_columns,
     fragility_row,
 )
@@ -149,6 +153,13 @@ def spectrum(
         [-] relative.
     threads : int
         0: every core. The GIL is released while it runs.
+    measures : sequence of str
+        Intensity measures every row gets besides PGA and PGV, as a manifest's ``[intensity]
+        measures`` (names of ``intensity_measures()``: "pgd", "arias", ...).
+    sa_periods : sequence of float
+        [s] a pseudo-spectral acceleration column for each period.
+    sa_damping : float
+        [-] damping ratio of the ``sa_periods`` columns.
     **solver
         Solver options (``rtol=...``, see :class:`SimulationOptions`).
 
@@ -369,6 +380,9 @@ def sweep(
     units: Optional[str] = None,
     free_periods: float = 2.0,
     threads: int = 0,
+    measures: Sequence[str] = (),
+    sa_periods: Sequence[float] = (),
+    sa_damping: float = 0.05,
     **solver,
 ) -> dict:
     """Bodies x records x levels: an incremental dynamic analysis, as ``flexrock sweep`` runs it.
@@ -442,8 +456,11 @@ def sweep(
         spec.scales = [v * factor for v in spec.levels]
     spec.free_periods = free_periods
     spec.solver = _solver(solver)
+    spec.measures = [MeasureRequest(str(m)) for m in measures] + [
+        MeasureRequest("sa", float(t), float(sa_damping)) for t in sa_periods
+    ]
     rows = run_sweep(spec, [], threads)
-    text = ",".join(sweep_columns(sweep_has_friction(spec))) + "\n" + "".join(_flexrock.sweep_row(spec, r) + "\n" for r in rows)
+    text = ",".join(_flexrock.sweep_spec_columns(spec)) + "\n" + "".join(_flexrock.sweep_row(spec, r) + "\n" for r in rows)
     return _parse_csv(text)
 
 

@@ -11,6 +11,8 @@
 #include <vector>
 
 #include "bindings.hpp"
+#include "flexrock/core/error.hpp"
+#include "flexrock/excitation/intensity.hpp"
 #include "flexrock/io/study_files.hpp"
 #include "flexrock/study/fragility.hpp"
 #include "flexrock/study/outcome.hpp"
@@ -254,20 +256,85 @@ float
   // sweeps
   py::class_<Intensity>(m, "Intensity")
       .def_readonly("pga", &Intensity::pga, "[m/s^2]")
-      .def_readonly("pgv", &Intensity::pgv, "[m/s]");
-  m.def("intensity", &intensity, py::arg("motion"), py::arg("analytic_dt") = 1e-3,
+      .def_readonly("pgv", &Intensity::pgv, "[m/s]")
+      .def_readonly("measures", &Intensity::measures, "[SI] the requested measures, in order");
+  py::class_<MeasureRequest>(m, "MeasureRequest")
+      .def(py::init([](std::string name, double period, double zeta) {
+             return MeasureRequest{std::move(name), period, zeta};
+           }),
+           py::arg("name"), py::arg("period") = 0.0, py::arg("zeta") = 0.05)
+      .def_readwrite("name", &MeasureRequest::name, "a name of intensity_measures()")
+      .def_readwrite("period", &MeasureRequest::period, "[s] sa only")
+      .def_readwrite("zeta", &MeasureRequest::zeta, "[-] sa only");
+  m.def(
+      "intensity_measures",
+      [] {
+        py::list out;
+        for (const IntensityMeasure& k : intensity_measures()) {
+          py::dict d;
+          d["name"] = k.name;
+          d["column"] = k.column;
+          d["unit"] = k.unit;
+          d["doc"] = k.doc;
+          d["scale_power"] = k.scale_power;
+          d["needs_period"] = k.needs_period;
+          out.append(d);
+        }
+        return out;
+      },
+      R"doc(The table of intensity measures (the one the sweep columns, ``flexrock fragility --im``
+and the docs are written from).
+
+Returns
+-------
+list of dict
+    name, column (empty for sa: ``sa_T<T>_z<zeta>_m_per_s2``), unit, doc, scale_power (the value
+    of the record scaled by s is s**scale_power times the value), needs_period.)doc");
+  m.def(
+      "intensity_measure",
+      [](const std::string& name, const std::vector<double>& t, const std::vector<double>& a,
+         double period, double zeta) {
+        const IntensityMeasure* k = find_intensity_measure(name);
+        if (!k) throw InputError("intensity measure '" + name + "': unknown");
+        return k->compute(t, a, period, zeta);
+      },
+      py::arg("name"), py::arg("t"), py::arg("a"), py::arg("period") = 0.0, py::arg("zeta") = 0.05,
+      R"doc(One intensity measure of a record, a piecewise linear between its samples.
+
+Parameters
+----------
+name : str
+    A name of ``intensity_measures()``.
+t : array of float
+    [s] increasing sample times.
+a : array of float
+    [m/s^2] horizontal acceleration at the samples.
+period, zeta : float
+    [s] and [-]: only for ``sa``.
+
+Returns
+-------
+float
+    In the measure's SI unit.)doc");
+  m.def("intensity",
+        py::overload_cast<const GroundMotion&, const std::vector<MeasureRequest>&, double>(
+            &intensity),
+        py::arg("motion"), py::arg("measures") = std::vector<MeasureRequest>{},
+        py::arg("analytic_dt") = 1e-3,
         R"doc(Peak ground acceleration and velocity of a motion's horizontal component.
 
 Parameters
 ----------
 motion : GroundMotion
+measures : list of MeasureRequest
+    Further measures, written to ``Intensity.measures`` in this order.
 analytic_dt : float
     [s] sampling of an analytic motion (plus its breakpoints).
 
 Returns
 -------
 Intensity
-    pga [m/s^2], pgv [m/s] (trapezoidal integral from 0).)doc");
+    pga [m/s^2], pgv [m/s] (trapezoidal integral from 0), measures.)doc");
   py::class_<SweepBody>(m, "SweepBody")
       .def(py::init([](std::string name, BodyParameters body) {
              return SweepBody{std::move(name), std::move(body)};
@@ -298,6 +365,8 @@ Intensity
       .def_readwrite("scales", &SweepSpec::scales)
       .def_readwrite("free_periods", &SweepSpec::free_periods)
       .def_readwrite("solver", &SweepSpec::solver)
+      .def_readwrite("measures", &SweepSpec::measures,
+                     "intensity measures every row gets besides PGA and PGV (MeasureRequest)")
       .def_readwrite("levels", &SweepSpec::levels,
                      "the levels as requested (CSV column requested_level); empty: scales")
       .def_readwrite("level_units", &SweepSpec::level_units,
@@ -310,6 +379,7 @@ Intensity
       .def_readonly("scale", &SweepRow::scale)
       .def_readonly("pga", &SweepRow::pga)
       .def_readonly("pgv", &SweepRow::pgv)
+      .def_readonly("measures", &SweepRow::measures, "[SI] the requested measures, scaled")
       .def_readonly("duration", &SweepRow::duration)
       .def_readonly("message", &SweepRow::message)
       .def_readonly("run", &SweepRow::run);
@@ -544,7 +614,7 @@ Returns
 -------
 SweepManifest
     Its spec (target PGAs in m/s^2, the levels as written in ``spec.levels``) and hash.)doc");
-  m.def("sweep_columns", &io::sweep_columns, py::arg("sliding") = false,
+  m.def("sweep_columns", py::overload_cast<bool>(&io::sweep_columns), py::arg("sliding") = false,
         R"doc(Columns of the sweep CSV.
 
 Parameters
@@ -568,6 +638,18 @@ spec : SweepSpec
 Returns
 -------
 bool)doc");
+  m.def("sweep_spec_columns", py::overload_cast<const SweepSpec&>(&io::sweep_columns),
+        py::arg("spec"),
+        R"doc(Columns of a spec's sweep CSV: the requested intensity measures after pgv_m_per_s, the
+sliding columns if it has friction.
+
+Parameters
+----------
+spec : SweepSpec
+
+Returns
+-------
+list of str)doc");
   m.def("sweep_row", &io::sweep_row, py::arg("spec"), py::arg("row"),
         R"doc(One line of the sweep CSV (no line end).
 

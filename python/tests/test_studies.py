@@ -132,3 +132,26 @@ def test_sweep_and_fragility_from_python_equal_the_cli(cli, source_dir, tmp_path
     text = ",".join(fr.fragility_columns()) + "\n" + "".join(
         fr.fragility_row(d, f) + "\n" for d, f in fits)
     assert text == fit_csv.read_text()
+
+
+def test_intensity_measures_table_and_a_sweep_with_them():
+    names = [m["name"] for m in fr.intensity_measures()]
+    assert names[:2] == ["pga", "pgv"] and "arias" in names and "sa" in names
+    # Arias intensity and CAV by hand: a = 0, 2, -2, 0 at 1 s steps
+    t, a = [0.0, 1.0, 2.0, 3.0], [0.0, 2.0, -2.0, 0.0]
+    assert fr.intensity_measure("arias", t, a) == pytest.approx(math.pi / (2 * 9.80665) * 4.0, rel=1e-14)
+    assert fr.intensity_measure("cav", t, a) == pytest.approx(3.0, rel=1e-14)
+    with pytest.raises(fr.InputError):
+        fr.intensity_measure("pgx", t, a)
+    # a sweep with measures: the columns after pgv, each scaled with its power
+    body = fr.rigid_block(0.2, 1.0, 600.0)
+    tt = np.arange(0.0, 4.0, 0.01)
+    rec = fr.motion_from_array(3.0 * np.sin(9.0 * tt), dt=0.01)
+    table = fr.sweep({"b": body}, {"r": rec}, factors=[1.0, 2.0], measures=["arias", "d5_95"],
+                     sa_periods=[0.5])
+    cols = list(table)
+    i = cols.index("pgv_m_per_s")
+    assert cols[i + 1:i + 4] == ["arias_m_per_s", "d5_95_s", "sa_T0.5_z0.05_m_per_s2"]
+    assert table["arias_m_per_s"][1] == pytest.approx(4.0 * table["arias_m_per_s"][0], rel=1e-14)
+    assert table["d5_95_s"][1] == table["d5_95_s"][0]
+    assert table["sa_T0.5_z0.05_m_per_s2"][1] == pytest.approx(2.0 * table["sa_T0.5_z0.05_m_per_s2"][0], rel=1e-14)

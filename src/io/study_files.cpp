@@ -19,6 +19,7 @@
 
 #include "flexrock/core/error.hpp"
 #include "flexrock/core/types.hpp"
+#include "flexrock/excitation/intensity.hpp"
 #include "flexrock/excitation/pulses.hpp"
 #include "flexrock/io/case_file.hpp"
 #include "flexrock/io/files.hpp"
@@ -590,6 +591,49 @@ SweepManifest load_sweep_manifest(const std::string& path) {
                  std::to_string(m.spec.scales.size()) + " scales");
   }
   sk->finish("in [scales] (see docs/studies.md)");
+  if (auto ik = top.table_opt("intensity")) {
+    // measures besides PGA and PGV, in the order given; Sa at each of sa_periods
+    std::vector<std::string> im_names;
+    for (const IntensityMeasure& im : intensity_measures()) {
+      if (!im.always_written && !im.needs_period) im_names.emplace_back(im.name);
+    }
+    const std::string what = "an array of im_names, each one of: " + join(im_names);
+    if (const toml::node* n = ik->node("measures")) {
+      const toml::array* a = n->as_array();
+      if (!a) ik->expected("measures", what);
+      for (const toml::node& e : *a) {
+        const auto* name = e.as_string();
+        if (!name || std::find(im_names.begin(), im_names.end(), name->get()) == im_names.end()) {
+          ik->fail_at(line_of(e), "measures",
+                      "expected " + what + ", got " + describe(e) +
+                          (!name || !find_intensity_measure(name->get()) ? ""
+                           : find_intensity_measure(name->get())->needs_period
+                               ? " (Sa: give its periods as sa_periods)"
+                               : " (pga and pgv are always written)"));
+        }
+        for (const study::MeasureRequest& r : m.spec.measures) {
+          if (r.name == name->get())
+            ik->fail_at(line_of(e), "measures", "\"" + r.name + "\" given twice");
+        }
+        m.spec.measures.push_back({name->get(), 0.0, 0.05});
+      }
+    }
+    const double zeta = ik->number_or("sa_damping", 0.05, "a number in [0, 1) [-]");
+    if (!(zeta >= 0.0 && zeta < 1.0)) ik->expected("sa_damping", "a number in [0, 1) [-]");
+    if (const auto periods = ik->vector_opt("sa_periods", "an array of periods > 0 [s]")) {
+      for (std::size_t i = 0; i < periods->size(); ++i) {
+        const double T = (*periods)[i];
+        if (!(T > 0.0)) ik->expected("sa_periods", "an array of periods > 0 [s]");
+        for (std::size_t j = 0; j < i; ++j) {
+          if ((*periods)[j] == T) ik->fail("sa_periods", "period " + num(T) + " s given twice");
+        }
+        m.spec.measures.push_back({"sa", T, zeta});
+      }
+    } else if (ik->has("sa_damping")) {
+      ik->fail("sa_damping", "expected only with sa_periods");
+    }
+    ik->finish("in [intensity] (see docs/studies.md)");
+  }
   if (auto s = top.table_opt("solver")) {
     if (m.spec.bodies.empty()) throw InputError(path + ": expected at least one [[body]]");
     read_solver(*s, m.spec.solver, m.spec.bodies.front().body);
@@ -694,11 +738,29 @@ std::vector<std::string> sweep_columns(bool sliding) {
   return v;
 }
 
+// the requested intensity measures follow this column
+constexpr std::string_view kMeasuresAfter = "pgv_m_per_s";
+
+std::vector<std::string> sweep_columns(const study::SweepSpec& spec) {
+  std::vector<std::string> v;
+  for (const SweepColumn& c : kSweepColumns) {
+    v.emplace_back(c.name);
+    if (c.name == kMeasuresAfter) {
+      for (const study::MeasureRequest& m : spec.measures) v.push_back(study::measure_column(m));
+    }
+  }
+  if (study::has_friction(spec)) add_sliding_columns(v);
+  return v;
+}
+
 std::string sweep_row(const study::SweepSpec& spec, const study::SweepRow& row) {
   std::string s;
   for (const SweepColumn& col : kSweepColumns) {
     if (&col != kSweepColumns) s += ',';
     s += col.field(spec, row);
+    if (col.name == kMeasuresAfter) {
+      for (const double x : row.measures) s += ',' + num(x);
+    }
   }
   if (study::has_friction(spec)) add_sliding_fields(s, row.run);
   return s;
@@ -799,16 +861,19 @@ JournalCheck sweep_journal_check(const study::SweepSpec& spec) {
   auto bodies = std::make_shared<std::vector<Body>>();
   for (const study::SweepBody& b : spec.bodies) bodies->emplace_back(b.body);
   auto im = std::make_shared<std::vector<study::Intensity>>();
-  for (const study::SweepRecord& r : spec.records) im->push_back(study::intensity(r.motion));
+  for (const study::SweepRecord& r : spec.records)
+    im->push_back(study::intensity(r.motion, spec.measures));
   auto runs = std::make_shared<std::vector<study::SweepRun>>(study::sweep_runs(spec));
   // where the fields are, by column name
   const bool sliding = study::has_friction(spec);
-  const std::vector<std::string> names = sweep_columns(sliding);
+  const std::vector<std::string> names = sweep_columns(spec);
   auto col = [&names](const char* name) {
     return static_cast<std::size_t>(std::find(names.begin(), names.end(), name) - names.begin());
   };
   const std::size_t columns = names.size();
-  const std::size_t first_sliding = sweep_columns(false).size();
+  // the sliding columns end the row
+  const std::size_t first_sliding =
+      names.size() - (sliding ? sweep_columns(true).size() - sweep_columns(false).size() : 0);
   const std::size_t inputs = col("duration_s") + 1;  // the fields a run's inputs decide
   const std::size_t outcome = col("outcome"), edge = col("overturn_edge");
   const std::size_t impacts = col("impacts"), status = col("status");
@@ -984,12 +1049,60 @@ CsvTable read_csv_table(const std::string& path) {
   return t;
 }
 
-std::vector<FragilityData> fragility_data(const CsvTable& t, const FragilityQuery& q) {
-  const std::vector<std::string> ims = {"pga", "pga_g", "pgv", "scale", "requested_level"};
-  if (std::find(ims.begin(), ims.end(), q.im) == ims.end()) {
-    throw InputError("fragility: intensity measure '" + q.im + "': expected one of: " + join(ims));
+std::vector<std::string> fragility_measures() {
+  std::vector<std::string> v = {"pga", "pga_g", "pgv", "scale", "requested_level"};
+  for (const IntensityMeasure& m : intensity_measures()) {
+    if (m.always_written) continue;
+    v.push_back(m.needs_period ? std::string(m.name) + ":T[:zeta]" : std::string(m.name));
   }
-  const std::string im_col = q.im == "pga" ? "pga_m_per_s2" : q.im == "pgv" ? "pgv_m_per_s" : q.im;
+  return v;
+}
+
+std::string fragility_im_column(const std::string& im) {
+  static const std::pair<const char*, const char*> kFixed[] = {
+      {"pga", "pga_m_per_s2"},
+      {"pga_g", "pga_g"},
+      {"pgv", "pgv_m_per_s"},
+      {"scale", "scale"},
+      {"requested_level", "requested_level"}};
+  for (const auto& [name, column] : kFixed) {
+    if (im == name) return column;
+  }
+  auto bad = [&](const std::string& why) -> std::string {
+    throw InputError("fragility: intensity measure '" + im + "': " + why +
+                     "expected one of: " + join(fragility_measures()));
+  };
+  // sa:T or sa:T:zeta, T [s], zeta 0.05 by default
+  if (im.starts_with("sa:")) {
+    const std::string rest = im.substr(3);
+    const std::size_t colon = rest.find(':');
+    auto number = [&](const std::string& text) {
+      double v = 0.0;
+      const auto r = std::from_chars(text.data(), text.data() + text.size(), v);
+      if (text.empty() || r.ec != std::errc() || r.ptr != text.data() + text.size()) {
+        bad("\"" + text + "\" is not a number; ");
+      }
+      return v;
+    };
+    const double period = number(rest.substr(0, colon));
+    const double zeta = colon == std::string::npos ? 0.05 : number(rest.substr(colon + 1));
+    if (!(period > 0.0) || !(zeta >= 0.0 && zeta < 1.0)) {
+      bad("expected a period > 0 [s] and a damping ratio in [0, 1); ");
+    }
+    return spectral_column(period, zeta);
+  }
+  const IntensityMeasure* m = find_intensity_measure(im);
+  if (!m || m->needs_period) bad(m ? "give its period: sa:T or sa:T:zeta; " : "");
+  return m->column;
+}
+
+std::vector<FragilityData> fragility_data(const CsvTable& t, const FragilityQuery& q) {
+  const std::string im_col = fragility_im_column(q.im);
+  if (std::find(t.columns.begin(), t.columns.end(), im_col) == t.columns.end()) {
+    throw InputError(t.source + ":1: intensity measure '" + q.im + "' needs the column '" + im_col +
+                     "', which this sweep did not write: name it in the manifest's [intensity] "
+                     "table (docs/studies.md) and run the sweep again");
+  }
   std::string out_col;
   if (q.outcome == "overturned") {
     out_col = "overturned";
@@ -1134,9 +1247,32 @@ std::string fragility_row(const FragilityData& d, const study::FragilityFit& f) 
   return s;
 }
 
+namespace {
+
+// the table of intensity measures as a Markdown table between begin and end markers
+std::string measure_block() {
+  std::string s =
+      "<!-- begin: written by `flexrock keys --markdown` from the table of intensity measures "
+      "(src/excitation/intensity.cpp); edit the table, not these lines -->\n"
+      "| name | column | unit | scales as | meaning |\n"
+      "|---|---|---|---|---|\n";
+  for (const IntensityMeasure& m : intensity_measures()) {
+    const std::string column = m.needs_period ? std::string("sa_T<T>_z<zeta>_m_per_s2") : m.column;
+    const std::string power = m.scale_power == 0   ? "1 (invariant)"
+                              : m.scale_power == 1 ? "s"
+                                                   : "s^" + std::to_string(m.scale_power);
+    s.append("| `").append(m.name).append("` | `").append(column).append("` | ").append(m.unit);
+    s.append(" | ").append(power).append(" | ").append(m.doc).append(" |\n");
+  }
+  return s + "<!-- end: written by `flexrock keys --markdown` -->\n";
+}
+
+}  // namespace
+
 std::string study_column_reference() {
   return column_block("spectrum", kSpectrumColumns) + column_block("boundary", kBoundaryColumns) +
-         column_block("sweep", kSweepColumns) + column_block("sliding", kSlidingColumns) +
+         column_block("sweep", kSweepColumns) + measure_block() +
+         column_block("sliding", kSlidingColumns) +
          column_block("fragility fit", kFragilityColumns);
 }
 

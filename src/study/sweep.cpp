@@ -8,10 +8,46 @@
 #include <numbers>
 
 #include "flexrock/core/error.hpp"
+#include "flexrock/excitation/intensity.hpp"
 
 namespace flexrock::study {
 
+std::string measure_column(const MeasureRequest& m) {
+  const IntensityMeasure* im = find_intensity_measure(m.name);
+  FLEXROCK_THROW_UNLESS(im != nullptr, "intensity measure '" + m.name + "': unknown");
+  return im->needs_period ? spectral_column(m.period, m.zeta) : std::string(im->column);
+}
+
+namespace {
+
+void check_request(const MeasureRequest& m) {
+  const IntensityMeasure* im = find_intensity_measure(m.name);
+  std::string names;
+  for (const IntensityMeasure& k : intensity_measures()) {
+    if (!k.always_written) names += std::string(names.empty() ? "" : ", ") + k.name;
+  }
+  FLEXROCK_THROW_UNLESS(im != nullptr && !im->always_written,
+                        "intensity measure '" + m.name + "': expected one of: " + names +
+                            (im ? " (pga and pgv are always written)" : ""));
+  if (im->needs_period) {
+    FLEXROCK_THROW_UNLESS(
+        std::isfinite(m.period) && m.period > 0.0,
+        "intensity measure sa: expected a period > 0 [s], got " + std::to_string(m.period));
+    FLEXROCK_THROW_UNLESS(
+        m.zeta >= 0.0 && m.zeta < 1.0,
+        "intensity measure sa: expected a damping ratio in [0, 1), got " + std::to_string(m.zeta));
+  }
+}
+
+}  // namespace
+
 Intensity intensity(const GroundMotion& motion, double analytic_dt) {
+  return intensity(motion, {}, analytic_dt);
+}
+
+Intensity intensity(const GroundMotion& motion, const std::vector<MeasureRequest>& measures,
+                    double analytic_dt) {
+  for (const MeasureRequest& m : measures) check_request(m);
   Intensity out;
   std::vector<double> t, a;
   if (motion.is_sampled()) {
@@ -40,6 +76,9 @@ Intensity intensity(const GroundMotion& motion, double analytic_dt) {
     out.pga = std::max(out.pga, std::abs(a[i]));
     if (i > 0) v += 0.5 * (a[i] + a[i - 1]) * (t[i] - t[i - 1]);
     out.pgv = std::max(out.pgv, std::abs(v));
+  }
+  for (const MeasureRequest& m : measures) {
+    out.measures.push_back(find_intensity_measure(m.name)->compute(t, a, m.period, m.zeta));
   }
   return out;
 }
@@ -80,6 +119,14 @@ void validate(const SweepSpec& spec) {
                             std::to_string(spec.levels.size()));
   FLEXROCK_THROW_UNLESS(std::isfinite(spec.free_periods) && spec.free_periods >= 0.0,
                         "sweep: free_periods: expected a number >= 0");
+  std::vector<std::string> columns;
+  for (const MeasureRequest& m : spec.measures) {
+    check_request(m);
+    const std::string c = measure_column(m);
+    FLEXROCK_THROW_UNLESS(std::find(columns.begin(), columns.end(), c) == columns.end(),
+                          "sweep: intensity measure column " + c + " asked for twice");
+    columns.push_back(c);
+  }
   std::vector<Body> bodies;
   for (const SweepBody& b : spec.bodies) {
     try {
@@ -93,7 +140,7 @@ void validate(const SweepSpec& spec) {
   for (const SweepRecord& r : spec.records) {
     FLEXROCK_THROW_UNLESS(r.motion.duration() > 0.0,
                           "sweep: record '" + r.name + "': expected a record lasting > 0 s");
-    im.push_back(intensity(r.motion));
+    im.push_back(intensity(r.motion, spec.measures));
     double p = 0.0;
     for (const double a : r.motion.horizontal()) p = std::max(p, std::abs(a));
     for (const double a : r.motion.vertical()) p = std::max(p, std::abs(a));
@@ -114,7 +161,9 @@ void validate(const SweepSpec& spec) {
     // the scaled record must stay finite: its peak times the factor
     FLEXROCK_THROW_UNLESS(
         std::isfinite(row.scale) && row.scale > 0.0 &&
-            std::isfinite(row.scale * peak[run.record]) && std::isfinite(row.pgv),
+            std::isfinite(row.scale * peak[run.record]) && std::isfinite(row.pgv) &&
+            std::all_of(row.measures.begin(), row.measures.end(),
+                        [](double x) { return std::isfinite(x); }),
         where + ": the scaled record overflows (factor " + std::to_string(row.scale) + ")");
     FLEXROCK_THROW_UNLESS(std::isfinite(row.duration),
                           where + ": free_periods x 2 pi/p gives a run of " +
@@ -141,6 +190,14 @@ SweepRow sweep_inputs(const SweepSpec& spec, const SweepRun& run, const Body& bo
   row.scale = spec.scale_kind == ScaleKind::kTargetPga ? s / im.pga : s;
   row.pga = row.scale * im.pga;
   row.pgv = row.scale * im.pgv;
+  // each measure scales with the factor to its own power (Arias: squared; durations: not at all)
+  FLEXROCK_DEMAND(im.measures.size() == spec.measures.size());
+  for (std::size_t k = 0; k < spec.measures.size(); ++k) {
+    const int power = find_intensity_measure(spec.measures[k].name)->scale_power;
+    row.measures.push_back(power == 0   ? im.measures[k]
+                           : power == 1 ? row.scale * im.measures[k]
+                                        : row.scale * row.scale * im.measures[k]);
+  }
   const GroundMotion& m = spec.records.at(run.record).motion;
   row.duration =
       m.duration() + spec.free_periods * 2.0 * std::numbers::pi / body.rocking_frequency();
@@ -179,7 +236,7 @@ SweepRow run_one(const SweepSpec& spec, const SweepRun& run, const Body& body,
 
 SweepRow run_sweep_one(const SweepSpec& spec, const SweepRun& run) {
   const Body body(spec.bodies.at(run.body).body);
-  return run_one(spec, run, body, intensity(spec.records.at(run.record).motion));
+  return run_one(spec, run, body, intensity(spec.records.at(run.record).motion, spec.measures));
 }
 
 std::vector<SweepRow> run_sweep(const SweepSpec& spec, const std::vector<std::size_t>& indices,
@@ -211,7 +268,7 @@ std::vector<SweepRow> run_sweep(const SweepSpec& spec, const std::vector<std::si
   for (const SweepBody& b : spec.bodies) bodies.emplace_back(b.body);
   std::vector<Intensity> im;
   im.reserve(spec.records.size());
-  for (const SweepRecord& r : spec.records) im.push_back(intensity(r.motion));
+  for (const SweepRecord& r : spec.records) im.push_back(intensity(r.motion, spec.measures));
 
   std::vector<SweepRow> rows(todo.size());
   std::mutex row_mutex;

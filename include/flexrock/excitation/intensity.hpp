@@ -1,10 +1,16 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// Intensity measures of an acceleration record: peak ground acceleration and velocity, and the
+// Intensity measures of an acceleration record: peak ground acceleration, velocity and
+// displacement, Arias intensity, cumulative absolute velocity, significant duration, and the
 // elastic pseudo-spectral acceleration of a damped single-degree-of-freedom oscillator, computed
 // exactly for the record taken as piecewise linear between its samples (Nigam & Jennings 1969,
 // "Calculation of response spectra from strong-motion earthquake records", BSSA 59(2)).
+// kIntensityMeasures lists them once: the sweep columns, the fragility intensity measures, the
+// docs and the Python bindings are written from it.
 #pragma once
 
+#include <span>
+#include <string>
+#include <string_view>
 #include <vector>
 
 namespace flexrock {
@@ -16,6 +22,30 @@ double peak_ground_acceleration(const std::vector<double>& a);
 /// between the samples at times `t` [s]; v is then piecewise quadratic and its extrema inside a
 /// step (where a changes sign) are included. No baseline correction. [units of a times s]
 double peak_ground_velocity(const std::vector<double>& t, const std::vector<double>& a);
+
+/// Largest |v| over the samples, v the trapezoidal integral of a from 0 at the first sample (the
+/// velocity at the samples of a piecewise-linear a; a peak between two samples is not sought):
+/// the PGV a sweep writes. [units of a times s]
+double peak_sampled_velocity(const std::vector<double>& t, const std::vector<double>& a);
+
+/// Largest |d| of d(t), the double integral of a from rest (d = v = 0 at the first sample), a
+/// piecewise linear: d is piecewise cubic and its extrema inside a step (where v changes sign)
+/// are included. No baseline correction. [units of a times s^2]
+double peak_ground_displacement(const std::vector<double>& t, const std::vector<double>& a);
+
+/// Arias intensity pi/(2 g) integral of a^2 dt, exact for a piecewise linear, `a` in m/s^2 and
+/// `g` [m/s^2]. [m/s]
+double arias_intensity(const std::vector<double>& t, const std::vector<double>& a);
+
+/// Cumulative absolute velocity: integral of |a| dt, exact for a piecewise linear (a step where
+/// a changes sign is split at its zero). No threshold. [units of a times s]
+double cumulative_absolute_velocity(const std::vector<double>& t, const std::vector<double>& a);
+
+/// Significant duration: the time between the instants at which the integral of a^2 reaches
+/// `from` and `to` of its total (Trifunac & Brady 1975: 5 % and 95 %), exact for a piecewise
+/// linear (the integral is a cubic in each step). 0 for a record of zeros. [s]
+double significant_duration(const std::vector<double>& t, const std::vector<double>& a,
+                            double from = 0.05, double to = 0.95);
 
 /// Relative displacement u at every sample of the oscillator u'' + 2 zeta omega u' + omega^2 u
 /// = -a(t), at rest at the first sample, a piecewise linear between the samples: each step is
@@ -31,5 +61,33 @@ std::vector<double> sdof_displacement(const std::vector<double>& t, const std::v
 /// [units of a]
 double spectral_acceleration(const std::vector<double>& t, const std::vector<double>& a,
                              double period, double zeta = 0.05);
+
+/// One intensity measure of the table: its name (as `flexrock fragility --im`, a sweep manifest's
+/// [intensity] measures and Python give it), the sweep CSV column it is written to, its unit and
+/// meaning, how it grows with a scale factor s on the record (value(s a) = s^power value(a)), and
+/// the function that computes it in SI units from a record in m/s^2 (`period` [s] and `zeta`
+/// only for the spectral acceleration, whose column is named for them: spectral_column()).
+struct IntensityMeasure {
+  const char* name;
+  const char* column;  // sweep CSV column ("" for sa: spectral_column names it)
+  const char* unit;
+  const char* doc;
+  int scale_power;      // [-] 1, 2 (Arias) or 0 (durations, ratios)
+  bool needs_period;    // sa: a period and a damping ratio
+  bool always_written;  // pga, pgv: every sweep row has them
+  double (*compute)(const std::vector<double>& t, const std::vector<double>& a, double period,
+                    double zeta);
+};
+
+/// Every intensity measure, in the order of the sweep columns and of the docs.
+std::span<const IntensityMeasure> intensity_measures();
+
+/// The measure of that name, or nullptr.
+const IntensityMeasure* find_intensity_measure(std::string_view name);
+
+/// The sweep CSV column of Sa at `period` [s] and damping ratio `zeta`:
+/// "sa_T<period>_z<zeta>_m_per_s2", numbers as their shortest round-trip text (e.g.
+/// sa_T0.5_z0.05_m_per_s2).
+std::string spectral_column(double period, double zeta);
 
 }  // namespace flexrock

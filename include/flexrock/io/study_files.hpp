@@ -83,6 +83,9 @@ SweepManifest load_sweep_manifest(const std::string& path);
 /// Columns of the sweep CSV; with `sliding` (study::has_friction of the spec) the sliding columns
 /// follow.
 std::vector<std::string> sweep_columns(bool sliding = false);
+/// Columns of a spec's sweep CSV: those above with the requested intensity measures
+/// (SweepSpec::measures) after pgv_m_per_s, and the sliding columns if it has friction.
+std::vector<std::string> sweep_columns(const study::SweepSpec& spec);
 
 /// The column references of the spectrum, boundary, sweep, sliding and fragility fit CSVs, as the
 /// Markdown tables of docs/studies.md, written from the tables of columns with their begin and end
@@ -125,7 +128,8 @@ CsvTable read_csv_table(const std::string& path);
 
 /// What a fragility fit of a sweep CSV counts as failure.
 struct FragilityQuery {
-  std::string im = "pga";              // "pga" [m/s^2], "pga_g" [g], "pgv" [m/s] or "scale" [-]
+  std::string im = "pga";              // fragility_measures(): "pga" [m/s^2], "pga_g" [g], "pgv"
+                                       // [m/s], "scale" [-], "pgd" [m], "sa:0.5" [m/s^2], ...
   std::string outcome = "overturned";  // "overturned", "theta" (max theta/alpha > level),
                                        // "energy" (energy lost > level [J]), "offset" (peak
                                        // sliding offset > level [m]), "residual_offset"
@@ -134,6 +138,14 @@ struct FragilityQuery {
   double level = 0.0;                  // threshold of all but "overturned"
   std::string body;                    // only rows of this body (empty: every body)
 };
+
+/// The intensity measures a fit may use (FragilityQuery::im), as help and errors list them:
+/// pga, pga_g, pgv, scale, requested_level, then every measure of
+/// flexrock::intensity_measures() ("sa:T[:zeta]" for Sa at period T [s], damping ratio zeta,
+/// 0.05 by default).
+std::vector<std::string> fragility_measures();
+/// The sweep CSV column of an intensity measure so named; throws InputError listing the names.
+std::string fragility_im_column(const std::string& im);
 
 /// The observations of one body for a fit.
 struct FragilityData {

@@ -17,16 +17,32 @@
 
 namespace flexrock::study {
 
+/// An intensity measure a sweep writes besides PGA and PGV: a name of the table
+/// flexrock::intensity_measures() (excitation/intensity.hpp), with its period and damping ratio
+/// for "sa".
+struct MeasureRequest {
+  std::string name;     // e.g. "pgd", "arias", "sa"
+  double period = 0.0;  // [s] sa only, > 0
+  double zeta = 0.05;   // [-] sa only, in [0, 1)
+};
+
+/// The sweep CSV column of a requested measure (its table column, or spectral_column for sa).
+std::string measure_column(const MeasureRequest& m);
+
 /// Intensity measures of a ground motion's horizontal component.
 struct Intensity {
   double pga = 0.0;  // [m/s^2] peak |Xddot| (over the samples, or a fine sampling of a function)
   double pgv = 0.0;  // [m/s] peak |Xdot|, Xdot the trapezoidal integral of Xddot from 0 (no
                      // baseline correction: a record's own processing is trusted)
+  std::vector<double> measures;  // [SI] the requested measures at scale 1, in request order
 };
 
-/// PGA and PGV of `motion`. Sampled motions: over the samples. Analytic motions: on a uniform
-/// grid of `analytic_dt` [s] plus the breakpoints.
+/// PGA and PGV of `motion`, and the `measures` asked for. Sampled motions: over the samples.
+/// Analytic motions: on a uniform grid of `analytic_dt` [s] plus the breakpoints. Throws
+/// InputError for an unknown measure name or a bad period or damping ratio.
 Intensity intensity(const GroundMotion& motion, double analytic_dt = 1e-3);
+Intensity intensity(const GroundMotion& motion, const std::vector<MeasureRequest>& measures,
+                    double analytic_dt = 1e-3);
 
 struct SweepBody {
   std::string name;     // as the CSV shows it
@@ -61,6 +77,9 @@ struct SweepSpec {
   // is not): factors [-] or target PGAs in level_units; empty: scales, in their own units
   std::vector<double> levels;
   std::string level_units;  // "g", "m/s^2" or "cm/s^2" for target PGAs; empty: m/s^2
+  // intensity measures every row gets besides PGA and PGV, as columns after pgv_m_per_s (empty:
+  // the columns of a sweep before the measures existed, byte for byte)
+  std::vector<MeasureRequest> measures;
 };
 
 /// One run of a sweep. Run indices are body-major: index = (body * records + record) * scales
@@ -80,11 +99,12 @@ std::vector<SweepRun> sweep_runs(const SweepSpec& spec);
 struct SweepRow {
   std::size_t index = 0;  // run index (see SweepRun)
   std::size_t body = 0, record = 0, scale_index = 0;
-  double scale = 0.0;     // [-] factor applied to the record
-  double pga = 0.0;       // [m/s^2] of the scaled record
-  double pgv = 0.0;       // [m/s] of the scaled record
-  double duration = 0.0;  // [s] simulated span (record + free motion)
-  std::string message;    // why a stopped run stopped (else empty)
+  double scale = 0.0;            // [-] factor applied to the record
+  double pga = 0.0;              // [m/s^2] of the scaled record
+  double pgv = 0.0;              // [m/s] of the scaled record
+  std::vector<double> measures;  // [SI] spec.measures of the scaled record
+  double duration = 0.0;         // [s] simulated span (record + free motion)
+  std::string message;           // why a stopped run stopped (else empty)
   RunSummary run;
 };
 
