@@ -26,6 +26,11 @@ if(TARGET flexrock)
              COMMAND /usr/bin/python3 ${CMAKE_CURRENT_SOURCE_DIR}/unit/study_fragility_reference.py
                      $<TARGET_FILE:flexrock>)
     set_tests_properties(cli_study_fragility_scipy PROPERTIES LABELS cli)
+    # several damage states at once against data of known fragilities (numpy)
+    add_test(NAME cli_study_fragility_states
+             COMMAND /usr/bin/python3 ${CMAKE_CURRENT_SOURCE_DIR}/unit/study_fragility_states.py
+                     $<TARGET_FILE:flexrock>)
+    set_tests_properties(cli_study_fragility_states PROPERTIES LABELS cli)
   endif()
   # two MPI processes write the same file as threads do
   if(FLEXROCK_HAVE_MPI AND MPIEXEC_EXECUTABLE)

@@ -376,6 +376,7 @@ struct StudyCommands::Impl {
   int threads = -1;
   bool quiet = false, no_progress = false, no_bisect = false;
   std::string im = "pga", outcome = "overturned", body_name;
+  std::vector<std::string> state_texts;  // --state, in the order given
   double level = 0.0, confidence = 0.95;
   int curve_points = 50;
 
@@ -690,32 +691,64 @@ const CurveColumn kCurveColumns[] = {
 int StudyCommands::Impl::run_fragility() {
   io::check_distinct_files({{"sweep CSV", input}}, {{"output", output}, {"curve", curve_output}});
   const io::CsvTable table = io::read_csv_table(input);
-  io::FragilityQuery q;
-  q.im = im;
-  q.outcome = outcome;
-  q.level = level;
-  q.body = body_name;
-  if (outcome != "overturned" && !(level > 0.0)) {
-    throw InputError("--level: expected a number > 0 with --outcome " + outcome);
+  // the damage states: those of --state, in the order given (least severe first), or the one
+  // of --outcome and --level
+  std::vector<io::DamageState> states;
+  for (const std::string& text : state_texts) states.push_back(io::damage_state(text));
+  const bool several = !states.empty();
+  if (several) {
+    if (fragility->count("--outcome") || fragility->count("--level")) {
+      throw InputError(
+          "--state: give the damage states either with --state or with --outcome "
+          "and --level, not both");
+    }
+    for (std::size_t a = 0; a < states.size(); ++a) {
+      for (std::size_t b = 0; b < a; ++b) {
+        if (states[a].outcome == states[b].outcome && states[a].level == states[b].level)
+          throw InputError("--state '" + states[a].label + "': given twice");
+      }
+    }
+  } else {
+    if (outcome != "overturned" && outcome != "uplift" && !(level > 0.0)) {
+      throw InputError("--level: expected a number > 0 with --outcome " + outcome);
+    }
+    states.push_back({outcome, outcome, level});
   }
   if (!(confidence > 0.0 && confidence < 1.0)) {
     throw InputError("--confidence: expected a number in (0, 1), got " +
                      std::to_string(confidence));
   }
-  const std::vector<io::FragilityData> data = io::fragility_data(table, q);
-  std::vector<study::FragilityFit> fits;
-  for (const io::FragilityData& d : data) {
-    try {
-      fits.push_back(study::fit_lognormal(d.im, d.failed, confidence));
-    } catch (const InputError& e) {
-      throw InputError(input + ": body '" + d.body + "': " + e.what());
+  // per state, per body: the observations and the fit
+  std::vector<std::vector<io::FragilityData>> data;
+  std::vector<std::vector<study::FragilityFit>> fits;
+  for (const io::DamageState& st : states) {
+    io::FragilityQuery q;
+    q.im = im;
+    q.outcome = st.outcome;
+    q.level = st.level;
+    q.body = body_name;
+    data.push_back(io::fragility_data(table, q));
+    fits.emplace_back();
+    for (const io::FragilityData& d : data.back()) {
+      try {
+        fits.back().push_back(study::fit_lognormal(d.im, d.failed, confidence));
+      } catch (const InputError& e) {
+        throw InputError(input + ": body '" + d.body + "'" +
+                         (several ? ", state '" + st.label + "'" : std::string()) + ": " +
+                         e.what());
+      }
     }
   }
-  const std::string what = outcome == "overturned" ? "overturning"
-                           : outcome == "theta"    ? fmt::format("max theta/alpha > {}", level)
-                           : outcome == "energy"   ? fmt::format("energy lost > {} J", level)
-                           : outcome == "offset" ? fmt::format("peak sliding offset > {} m", level)
-                                                 : fmt::format("residual offset > {} m", level);
+  auto what = [](const io::DamageState& st) {
+    const std::string& o = st.outcome;
+    const double x = st.level;
+    return o == "overturned" ? std::string("overturning")
+           : o == "uplift"   ? std::string("uplift")
+           : o == "theta"    ? fmt::format("max theta/alpha > {}", x)
+           : o == "energy"   ? fmt::format("energy lost > {} J", x)
+           : o == "offset"   ? fmt::format("peak sliding offset > {} m", x)
+                             : fmt::format("residual offset > {} m", x);
+  };
   std::string unit = im == "pga" ? "m/s^2" : im == "pga_g" ? "g" : im == "pgv" ? "m/s" : "-";
   if (im.starts_with("sa:")) unit = "m/s^2";
   if (const IntensityMeasure* m = find_intensity_measure(im)) unit = m->unit;
@@ -724,41 +757,82 @@ int StudyCommands::Impl::run_fragility() {
                           table.columns.begin();
     if (c < table.columns.size()) unit = table.rows.front()[c];
   }
-  for (std::size_t k = 0; k < data.size(); ++k) {
-    const study::FragilityFit& f = fits[k];
-    fmt::print("{}: P({} | {}) = Phi(ln(x/theta)/beta), {} runs ({} with the outcome{})\n",
-               data[k].body, what, im, f.samples, f.failures,
-               data[k].excluded
-                   ? fmt::format(", {} runs stopped or lost contact: left out", data[k].excluded)
-                   : "");
-    fmt::print("  theta = {:.5g} {}  [{:.5g}, {:.5g}] ({:.0f}% bounds)\n", f.theta, unit,
-               f.theta_lower, f.theta_upper, 100.0 * confidence);
-    fmt::print("  beta  = {:.5g}  [{:.5g}, {:.5g}]\n", f.beta, f.beta_lower, f.beta_upper);
+  // every state has the same bodies in the same order (the rows' first appearance)
+  const std::size_t bodies = data.front().size();
+  for (std::size_t k = 0; k < bodies; ++k) {
+    for (std::size_t s = 0; s < states.size(); ++s) {
+      const io::FragilityData& d = data[s][k];
+      const study::FragilityFit& f = fits[s][k];
+      fmt::print(
+          "{}: P({} | {}) = Phi(ln(x/theta)/beta), {} runs ({} with the outcome{})\n", d.body,
+          what(states[s]), im, f.samples, f.failures,
+          d.excluded ? fmt::format(", {} runs stopped or lost contact: left out", d.excluded) : "");
+      fmt::print("  theta = {:.5g} {}  [{:.5g}, {:.5g}] ({:.0f}% bounds)\n", f.theta, unit,
+                 f.theta_lower, f.theta_upper, 100.0 * confidence);
+      fmt::print("  beta  = {:.5g}  [{:.5g}, {:.5g}]\n", f.beta, f.beta_lower, f.beta_upper);
+    }
+    // the states are given least severe first: a more severe state's curve must lie below
+    for (std::size_t s = 1; s < states.size(); ++s) {
+      const study::FragilityFit &a = fits[s - 1][k], &b = fits[s][k];
+      const double lo =
+          std::min(*std::min_element(data[s - 1][k].im.begin(), data[s - 1][k].im.end()),
+                   *std::min_element(data[s][k].im.begin(), data[s][k].im.end()));
+      const double hi =
+          std::max(*std::max_element(data[s - 1][k].im.begin(), data[s - 1][k].im.end()),
+                   *std::max_element(data[s][k].im.begin(), data[s][k].im.end()));
+      if (b.theta < a.theta) {
+        fmt::print(
+            "  warning: the fitted medians cross: {} (theta = {:.5g}) is below {} (theta "
+            "= {:.5g}), given before it as the less severe state\n",
+            states[s].label, b.theta, states[s - 1].label, a.theta);
+      }
+      const double x = study::crossing_intensity(a, b);
+      if (std::isfinite(x) && x >= lo && x <= hi) {
+        fmt::print(
+            "  note: the curves of {} and {} cross at {} = {:.5g} {}, inside the data "
+            "range: above it the {} is the likelier\n",
+            states[s - 1].label, states[s].label, im, x, unit,
+            a.beta < b.beta ? "latter" : "former");
+      }
+    }
   }
   try {
     if (!output.empty()) {
       io::write_atomically(output, [&](std::ostream& out) {
-        out << join_columns(io::fragility_columns()) << '\n';
-        for (std::size_t k = 0; k < data.size(); ++k)
-          out << io::fragility_row(data[k], fits[k]) << '\n';
+        out << join_columns(several ? io::fragility_state_columns() : io::fragility_columns())
+            << '\n';
+        for (std::size_t k = 0; k < bodies; ++k) {
+          for (std::size_t s = 0; s < states.size(); ++s) {
+            out << (several ? io::fragility_state_row(data[s][k], fits[s][k], states[s].label)
+                            : io::fragility_row(data[s][k], fits[s][k]))
+                << '\n';
+          }
+        }
       });
       if (!quiet) fmt::print("wrote {}\n", output);
     }
     if (!curve_output.empty()) {
       io::write_atomically(curve_output, [&](std::ostream& out) {
-        for (const CurveColumn& c : kCurveColumns)
+        for (const CurveColumn& c : kCurveColumns) {
           out << (&c == kCurveColumns ? "" : ",") << c.name;
+          if (several && &c == kCurveColumns) out << ",state";
+        }
         out << '\n';
-        for (std::size_t k = 0; k < data.size(); ++k) {
-          const double lo = *std::min_element(data[k].im.begin(), data[k].im.end());
-          const double hi = *std::max_element(data[k].im.begin(), data[k].im.end());
-          for (int i = 0; i < curve_points; ++i) {
-            const double x =
-                curve_points == 1 ? lo : lo + (hi - lo) * i / static_cast<double>(curve_points - 1);
-            for (const CurveColumn& c : kCurveColumns) {
-              out << (&c == kCurveColumns ? "" : ",") << c.field(data[k], fits[k], x);
+        for (std::size_t k = 0; k < bodies; ++k) {
+          for (std::size_t s = 0; s < states.size(); ++s) {
+            const io::FragilityData& d = data[s][k];
+            const double lo = *std::min_element(d.im.begin(), d.im.end());
+            const double hi = *std::max_element(d.im.begin(), d.im.end());
+            for (int i = 0; i < curve_points; ++i) {
+              const double x = curve_points == 1
+                                   ? lo
+                                   : lo + (hi - lo) * i / static_cast<double>(curve_points - 1);
+              for (const CurveColumn& c : kCurveColumns) {
+                out << (&c == kCurveColumns ? "" : ",") << c.field(d, fits[s][k], x);
+                if (several && &c == kCurveColumns) out << ',' << states[s].label;
+              }
+              out << '\n';
             }
-            out << '\n';
           }
         }
       });
@@ -822,10 +896,21 @@ StudyCommands::StudyCommands(CLI::App& app) : impl_(std::make_unique<Impl>()) {
       "period T s, damping ratio zeta, 0.05 by default)");
   s.fragility
       ->add_option("--outcome", s.outcome,
-                   "failure: overturned, theta (max theta/alpha > level), energy (energy lost > "
+                   "failure: overturned, uplift (left full contact), theta (max theta/alpha > "
+                   "level), energy (energy lost > "
                    "level J), offset (peak sliding offset > level m), residual_offset (|residual "
                    "offset| > level m; both need a sweep run with friction)")
-      ->check(CLI::IsMember({"overturned", "theta", "energy", "offset", "residual_offset"}));
+      ->check(
+          CLI::IsMember({"overturned", "uplift", "theta", "energy", "offset", "residual_offset"}));
+  s.fragility
+      ->add_option(
+          "--state", s.state_texts,
+          "a damage state of a family fitted at once (repeat it, least severe first): overturned, "
+          "uplift, theta:X, energy:X, offset:X, residual_offset:X (X the level of --outcome of "
+          "that "
+          "name); one fit per state and body, written with a state column; fitted medians out of "
+          "order are reported. Not with --outcome or --level")
+      ->allow_extra_args(false);
   s.fragility->add_option("--level", s.level,
                           "threshold of --outcome theta, energy, offset or residual_offset");
   s.fragility->add_option("--body", s.body_name, "fit only this body (default: each body)");

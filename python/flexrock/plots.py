@@ -578,18 +578,23 @@ def _fragility_sources(source, im, body):
     if isinstance(source, (str, os.PathLike)):
         path = os.fspath(source)
         cols = _read_columns(path, require_rows=True)
+        # a family of damage states (flexrock fragility --state): one curve per body and state
+        keys = [str(v) for v in cols["body"]] if "body" in cols else []
+        if "state" in cols:
+            keys = [f"{bv}: {sv}" for bv, sv in zip(keys, (str(v) for v in cols["state"]))]
+        bodies = [str(v) for v in cols["body"]] if "body" in cols else []
         if {"probability", "lower", "upper", "im"} <= set(cols):  # flexrock fragility --curve
-            for b in dict.fromkeys(str(v) for v in cols["body"]):
-                if body and b != body:
+            for key in dict.fromkeys(keys):
+                sel = np.array([k == key for k in keys])
+                if body and bodies[int(np.argmax(sel))] != body:
                     continue
-                sel = np.array([str(v) == b for v in cols["body"]])
                 curve = (cols["im"][sel], cols["probability"][sel], cols["lower"][sel], cols["upper"][sel])
-                items.append((b, None, None, None, None, curve, None, None))
+                items.append((key, None, None, None, None, curve, None, None))
             return items
         if {"theta", "beta", "samples"} <= set(cols):  # flexrock fragility -o
-            for k, b in enumerate(str(v) for v in cols["body"]):
-                if not body or b == body:
-                    items.append((b, None, None, None, None, None, float(cols["theta"][k]), float(cols["beta"][k])))
+            for k, key in enumerate(keys):
+                if not body or bodies[k] == body:
+                    items.append((key, None, None, None, None, None, float(cols["theta"][k]), float(cols["beta"][k])))
             return items
         if "overturned" not in cols:
             raise ValueError(

@@ -1106,6 +1106,8 @@ std::vector<FragilityData> fragility_data(const CsvTable& t, const FragilityQuer
   std::string out_col;
   if (q.outcome == "overturned") {
     out_col = "overturned";
+  } else if (q.outcome == "uplift") {
+    out_col = "outcome";
   } else if (q.outcome == "theta") {
     out_col = "max_theta_over_alpha";
   } else if (q.outcome == "energy") {
@@ -1118,8 +1120,9 @@ std::vector<FragilityData> fragility_data(const CsvTable& t, const FragilityQuer
                        "(docs/studies.md); this file has none");
     }
   } else {
-    throw InputError("fragility: outcome '" + q.outcome +
-                     "': expected one of: overturned, theta, energy, offset, residual_offset");
+    throw InputError(
+        "fragility: outcome '" + q.outcome +
+        "': expected one of: overturned, uplift, theta, energy, offset, residual_offset");
   }
   const std::size_t ci = t.column(im_col), co = t.column(out_col), cb = t.column("body"),
                     cs = t.column("outcome"), cv = t.column("overturned");
@@ -1154,6 +1157,9 @@ std::vector<FragilityData> fragility_data(const CsvTable& t, const FragilityQuer
     int y = 0;
     if (q.outcome == "overturned") {
       y = number(r, co) != 0.0 ? 1 : 0;
+    } else if (q.outcome == "uplift") {
+      // every class but no_uplift left full contact (rocked, or overturned)
+      y = outcome != "no_uplift" ? 1 : 0;
     } else {
       // an overturned body exceeds every tilt, energy and offset level; a residual offset counts
       // either way
@@ -1268,6 +1274,50 @@ std::string measure_block() {
 }
 
 }  // namespace
+
+std::vector<std::string> fragility_state_columns() {
+  std::vector<std::string> v = fragility_columns();
+  v.insert(v.begin() + 1, "state");
+  return v;
+}
+
+std::string fragility_state_row(const FragilityData& d, const study::FragilityFit& f,
+                                const std::string& state) {
+  const std::string row = fragility_row(d, f);
+  // after the body field (body names hold no commas)
+  const std::size_t comma = row.find(',');
+  return row.substr(0, comma) + "," + state + row.substr(comma);
+}
+
+DamageState damage_state(const std::string& text) {
+  const std::size_t colon = text.find(':');
+  DamageState s;
+  s.label = text;
+  s.outcome = text.substr(0, colon);
+  const bool levelled = s.outcome == "theta" || s.outcome == "energy" || s.outcome == "offset" ||
+                        s.outcome == "residual_offset";
+  const std::string expected =
+      "expected overturned, uplift, theta:X (max theta/alpha > X), energy:X (energy lost > X J), "
+      "offset:X (peak sliding offset > X m) or residual_offset:X (|residual offset| > X m), X a "
+      "number > 0";
+  if (!levelled && !(s.outcome == "overturned" || s.outcome == "uplift")) {
+    throw InputError("--state '" + text + "': " + expected);
+  }
+  if (levelled != (colon != std::string::npos)) {
+    throw InputError("--state '" + text +
+                     "': " + (levelled ? "a level is missing; " : "takes no level; ") + expected);
+  }
+  if (levelled) {
+    const std::string level = text.substr(colon + 1);
+    const auto r = std::from_chars(level.data(), level.data() + level.size(), s.level);
+    if (level.empty() || r.ec != std::errc() || r.ptr != level.data() + level.size() ||
+        !(s.level > 0.0) || !std::isfinite(s.level)) {
+      throw InputError("--state '" + text + "': \"" + level + "\" is not a number > 0; " +
+                       expected);
+    }
+  }
+  return s;
+}
 
 std::string study_column_reference() {
   return column_block("spectrum", kSpectrumColumns) + column_block("boundary", kBoundaryColumns) +

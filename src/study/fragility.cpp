@@ -203,6 +203,11 @@ double fragility_probability(const FragilityFit& fit, double x) {
   return normal_cdf(std::log(x / fit.theta) / fit.beta);
 }
 
+double crossing_intensity(const FragilityFit& a, const FragilityFit& b) {
+  if (a.beta == b.beta) return std::numeric_limits<double>::quiet_NaN();
+  return std::exp((b.beta * std::log(a.theta) - a.beta * std::log(b.theta)) / (b.beta - a.beta));
+}
+
 void fragility_band(const FragilityFit& fit, double x, double& lower, double& upper) {
   if (!(x > 0.0)) {
     lower = upper = 0.0;

@@ -156,3 +156,24 @@ TEST(StudyFragility, DataWithoutAFiniteEstimateAreClearErrors) {
 
 }  // namespace
 }  // namespace flexrock::study
+
+namespace flexrock::study {
+namespace {
+
+TEST(FragilityFamily, CurvesCrossWhereTheirProbabilitiesAreEqual) {
+  FragilityFit a, b;
+  a.theta = 1.0;
+  a.beta = 0.3;
+  b.theta = 2.0;
+  b.beta = 0.6;
+  // ln x = (0.6 ln 1 - 0.3 ln 2) / (0.6 - 0.3) = -ln 2
+  const double x = crossing_intensity(a, b);
+  EXPECT_NEAR(x, 0.5, 1e-15);
+  EXPECT_NEAR(fragility_probability(a, x), fragility_probability(b, x), 1e-15);
+  EXPECT_NEAR(crossing_intensity(b, a), x, 1e-15);
+  b.beta = 0.3;
+  EXPECT_TRUE(std::isnan(crossing_intensity(a, b)));
+}
+
+}  // namespace
+}  // namespace flexrock::study

@@ -130,7 +130,8 @@ CsvTable read_csv_table(const std::string& path);
 struct FragilityQuery {
   std::string im = "pga";              // fragility_measures(): "pga" [m/s^2], "pga_g" [g], "pgv"
                                        // [m/s], "scale" [-], "pgd" [m], "sa:0.5" [m/s^2], ...
-  std::string outcome = "overturned";  // "overturned", "theta" (max theta/alpha > level),
+  std::string outcome = "overturned";  // "overturned", "uplift" (left full contact: any class
+                                       // but no_uplift), "theta" (max theta/alpha > level),
                                        // "energy" (energy lost > level [J]), "offset" (peak
                                        // sliding offset > level [m]), "residual_offset"
                                        // (|residual offset| > level [m]); the last two need a
@@ -163,6 +164,22 @@ std::vector<FragilityData> fragility_data(const CsvTable& table, const Fragility
 /// Columns of the fragility fit CSV, and one line of it.
 std::vector<std::string> fragility_columns();
 std::string fragility_row(const FragilityData& data, const study::FragilityFit& fit);
+
+/// A damage state of a fit of several at once (`flexrock fragility --state`): "overturned",
+/// "uplift" (any class but no_uplift), or "theta:X", "energy:X", "offset:X",
+/// "residual_offset:X" (the FragilityQuery outcome of that name with level X > 0).
+struct DamageState {
+  std::string label;    // as given, e.g. "theta:0.5": the fit CSV's state column
+  std::string outcome;  // FragilityQuery::outcome
+  double level = 0.0;   // FragilityQuery::level (0 for overturned and uplift)
+};
+/// Parses a damage state; throws InputError saying what is expected.
+DamageState damage_state(const std::string& text);
+/// The fit CSV of several damage states: the columns above with `state` after `body`, and a
+/// line of it.
+std::vector<std::string> fragility_state_columns();
+std::string fragility_state_row(const FragilityData& data, const study::FragilityFit& fit,
+                                const std::string& state);
 
 // ---------------------------------------------------------------------------------------------
 

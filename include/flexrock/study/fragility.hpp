@@ -42,6 +42,11 @@ double fragility_probability(const FragilityFit& fit, double x);
 /// var(eta) from the covariance of (a, b). Writes lower and upper.
 void fragility_band(const FragilityFit& fit, double x, double& lower, double& upper);
 
+/// Where two fitted curves cross: the x > 0 at which ln(x/theta)/beta is the same for both,
+/// ln x = (beta_b ln theta_a - beta_a ln theta_b) / (beta_b - beta_a); NaN for equal betas
+/// (parallel curves: they never cross, whatever their medians).
+double crossing_intensity(const FragilityFit& a, const FragilityFit& b);
+
 /// Log-likelihood of (theta, beta) for the data (for tests and profile checks).
 double lognormal_log_likelihood(const std::vector<double>& im, const std::vector<int>& failed,
                                 double theta, double beta);
