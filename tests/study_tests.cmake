@@ -26,6 +26,11 @@ if(TARGET flexrock)
              COMMAND /usr/bin/python3 ${CMAKE_CURRENT_SOURCE_DIR}/unit/study_fragility_reference.py
                      $<TARGET_FILE:flexrock>)
     set_tests_properties(cli_study_fragility_scipy PROPERTIES LABELS cli)
+    # multiple-stripe and truncated-IDA fits against known parameters and scipy.optimize
+    add_test(NAME cli_study_fragility_msa_scipy
+             COMMAND /usr/bin/python3 ${CMAKE_CURRENT_SOURCE_DIR}/unit/study_fragility_msa_reference.py
+                     $<TARGET_FILE:flexrock>)
+    set_tests_properties(cli_study_fragility_msa_scipy PROPERTIES LABELS cli)
     # several damage states at once against data of known fragilities (numpy)
     add_test(NAME cli_study_fragility_states
              COMMAND /usr/bin/python3 ${CMAKE_CURRENT_SOURCE_DIR}/unit/study_fragility_states.py

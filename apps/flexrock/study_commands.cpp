@@ -377,6 +377,7 @@ struct StudyCommands::Impl {
   bool quiet = false, no_progress = false, no_bisect = false;
   std::string im = "pga", outcome = "overturned", body_name;
   std::vector<std::string> state_texts;  // --state, in the order given
+  std::string analysis = "runs";         // runs, msa or ida
   double level = 0.0, confidence = 0.95;
   int curve_points = 50;
 
@@ -718,6 +719,24 @@ int StudyCommands::Impl::run_fragility() {
     throw InputError("--confidence: expected a number in (0, 1), got " +
                      std::to_string(confidence));
   }
+  // a multiple-stripe analysis: the stripes are the sweep's levels
+  if (analysis == "msa") {
+    if (fragility->count("--im") && im != "requested_level") {
+      throw InputError(
+          "--analysis msa: the stripes are the sweep's requested levels (target "
+          "intensity measures, or factors); --im " +
+          im + " is not one value per stripe: leave --im out");
+    }
+    im = "requested_level";
+  }
+  auto fit_data = [&](const io::FragilityData& d) {
+    if (analysis == "msa") return study::fit_stripes(study::stripes_of(d.im, d.failed), confidence);
+    if (analysis == "ida") {
+      return study::fit_capacity_intervals(study::capacity_intervals(d.im, d.failed, d.record),
+                                           confidence);
+    }
+    return study::fit_lognormal(d.im, d.failed, confidence);
+  };
   // per state, per body: the observations and the fit
   std::vector<std::vector<io::FragilityData>> data;
   std::vector<std::vector<study::FragilityFit>> fits;
@@ -731,7 +750,7 @@ int StudyCommands::Impl::run_fragility() {
     fits.emplace_back();
     for (const io::FragilityData& d : data.back()) {
       try {
-        fits.back().push_back(study::fit_lognormal(d.im, d.failed, confidence));
+        fits.back().push_back(fit_data(d));
       } catch (const InputError& e) {
         throw InputError(input + ": body '" + d.body + "'" +
                          (several ? ", state '" + st.label + "'" : std::string()) + ": " +
@@ -763,10 +782,25 @@ int StudyCommands::Impl::run_fragility() {
     for (std::size_t s = 0; s < states.size(); ++s) {
       const io::FragilityData& d = data[s][k];
       const study::FragilityFit& f = fits[s][k];
-      fmt::print(
-          "{}: P({} | {}) = Phi(ln(x/theta)/beta), {} runs ({} with the outcome{})\n", d.body,
-          what(states[s]), im, f.samples, f.failures,
-          d.excluded ? fmt::format(", {} runs stopped or lost contact: left out", d.excluded) : "");
+      const std::string left_out =
+          d.excluded ? fmt::format(", {} runs stopped or lost contact: left out", d.excluded) : "";
+      if (analysis == "ida") {
+        fmt::print(
+            "{}: P({} | {}) = Phi(ln(x/theta)/beta), capacities of {} records ({} failed "
+            "within the levels, {} truncated at their highest{})\n",
+            d.body, what(states[s]), im, f.samples, f.failures, f.samples - f.failures, left_out);
+      } else {
+        fmt::print("{}: P({} | {}) = Phi(ln(x/theta)/beta), {} runs ({} with the outcome{})\n",
+                   d.body, what(states[s]), im, f.samples, f.failures, left_out);
+      }
+      if (analysis == "msa") {
+        for (const study::Stripe& st : study::stripes_of(d.im, d.failed)) {
+          fmt::print("  stripe {:.6g} {}: {} of {} runs failed ({:.3f}; fit {:.3f})\n", st.im, unit,
+                     st.failures, st.runs,
+                     static_cast<double>(st.failures) / static_cast<double>(st.runs),
+                     study::fragility_probability(f, st.im));
+        }
+      }
       fmt::print("  theta = {:.5g} {}  [{:.5g}, {:.5g}] ({:.0f}% bounds)\n", f.theta, unit,
                  f.theta_lower, f.theta_upper, 100.0 * confidence);
       fmt::print("  beta  = {:.5g}  [{:.5g}, {:.5g}]\n", f.beta, f.beta_lower, f.beta_upper);
@@ -911,6 +945,13 @@ StudyCommands::StudyCommands(CLI::App& app) : impl_(std::make_unique<Impl>()) {
           "name); one fit per state and body, written with a state column; fitted medians out of "
           "order are reported. Not with --outcome or --level")
       ->allow_extra_args(false);
+  s.fragility
+      ->add_option("--analysis", s.analysis,
+                   "runs (default: every run an observation), msa (multiple-stripe analysis: "
+                   "binomial likelihood over the sweep's levels, Baker 2015), ida (each record's "
+                   "capacity from its first failure over increasing --im, records that never "
+                   "fail truncated at their highest level)")
+      ->check(CLI::IsMember({"runs", "msa", "ida"}));
   s.fragility->add_option("--level", s.level,
                           "threshold of --outcome theta, energy, offset or residual_offset");
   s.fragility->add_option("--body", s.body_name, "fit only this body (default: each body)");

@@ -350,6 +350,8 @@ class FragilityData:
     def failed(self) -> list[int]: ...
     @property
     def im(self) -> list[float]: ...
+    @property
+    def record(self) -> list[str]: ...
 
 class FragilityFit:
     """Lognormal fragility P = Phi(ln(x/theta)/beta)."""
@@ -749,6 +751,7 @@ class RunSummary:
 class ScaleKind:
     factor: ClassVar[ScaleKind]
     target_pga: ClassVar[ScaleKind]
+    target_measure: ClassVar[ScaleKind]
     __members__: ClassVar[dict[str, ScaleKind]]
     def __init__(self, value: int) -> None: ...
     def __eq__(self, other: object) -> bool: ...
@@ -957,6 +960,7 @@ class SweepSpec:
     scale_kind: ScaleKind
     scales: list[float]
     solver: SimulationOptions
+    target: MeasureRequest
 
 def body_kinds() -> list[BodyKind]:
     """Every body type, in the order of the docs.

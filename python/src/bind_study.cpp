@@ -356,7 +356,8 @@ Intensity
       .def_readwrite("motion", &SweepRecord::motion);
   py::enum_<ScaleKind>(m, "ScaleKind")
       .value("factor", ScaleKind::kFactor)
-      .value("target_pga", ScaleKind::kTargetPga);
+      .value("target_pga", ScaleKind::kTargetPga)
+      .value("target_measure", ScaleKind::kTargetMeasure);
   py::class_<SweepSpec>(m, "SweepSpec", "Bodies x records x scale factors.")
       .def(py::init<>())
       .def_readwrite("bodies", &SweepSpec::bodies)
@@ -365,6 +366,8 @@ Intensity
       .def_readwrite("scales", &SweepSpec::scales)
       .def_readwrite("free_periods", &SweepSpec::free_periods)
       .def_readwrite("solver", &SweepSpec::solver)
+      .def_readwrite("target", &SweepSpec::target,
+                     "the measure scale_kind target_measure scales to (MeasureRequest)")
       .def_readwrite("measures", &SweepSpec::measures,
                      "intensity measures every row gets besides PGA and PGV (MeasureRequest)")
       .def_readwrite("levels", &SweepSpec::levels,
@@ -686,7 +689,8 @@ CsvTable)doc");
       .def_readonly("body", &io::FragilityData::body)
       .def_readonly("im", &io::FragilityData::im)
       .def_readonly("failed", &io::FragilityData::failed)
-      .def_readonly("excluded", &io::FragilityData::excluded);
+      .def_readonly("excluded", &io::FragilityData::excluded)
+      .def_readonly("record", &io::FragilityData::record);
   m.def("fragility_data", &io::fragility_data, py::arg("table"), py::arg("query"),
         R"doc(The (IM, failed) observations of each body of a sweep CSV.
 

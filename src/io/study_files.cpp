@@ -561,11 +561,63 @@ SweepManifest load_sweep_manifest(const std::string& path) {
                      "'target_pga' (see docs/studies.md)");
   const bool f = sk->has("factors");
   const bool t = sk->has("target_pga");
-  if (f == t) sk->fail("factors", "expected exactly one of 'factors' [-] or 'target_pga'");
+  const bool ti = sk->has("target_im");
+  if (int(f) + int(t) + int(ti) != 1) {
+    sk->fail(t    ? "target_pga"
+             : ti ? "target_im"
+                  : "factors",
+             "expected exactly one of 'factors' [-], 'target_pga' or 'target_im' with 'targets'");
+  }
+  const char* grid_key = f ? "factors" : t ? "target_pga" : "targets";
+  if (!ti && sk->has("targets")) sk->fail("targets", "only with 'target_im'");
   if (f) {
     m.spec.scale_kind = study::ScaleKind::kFactor;
     m.spec.scales = *grid_opt(*sk, "factors", "[-]");
-    if (sk->has("units")) sk->fail("units", "only with 'target_pga'");
+    if (sk->has("units")) sk->fail("units", "only with 'target_pga' or an acceleration target_im");
+  } else if (ti) {
+    // stripes at levels of any measure that grows with the factor: sa:T[:zeta], pgv, pgd, ...
+    const std::string what =
+        "a measure that grows with the scale factor: pgv, pgd, arias, cav, "
+        "sa:T or sa:T:zeta (T [s], zeta 0.05 by default)";
+    const std::string name = *sk->string_opt("target_im", "a string, " + what);
+    study::MeasureRequest r;
+    if (name.starts_with("sa:")) {
+      const std::string rest = name.substr(3);
+      const std::size_t colon = rest.find(':');
+      auto number = [&](const std::string& text) {
+        double v = 0.0;
+        const auto res = std::from_chars(text.data(), text.data() + text.size(), v);
+        if (text.empty() || res.ec != std::errc() || res.ptr != text.data() + text.size())
+          sk->fail("target_im", "expected " + what + ", got \"" + name + "\"");
+        return v;
+      };
+      r = {"sa", number(rest.substr(0, colon)),
+           colon == std::string::npos ? 0.05 : number(rest.substr(colon + 1))};
+      if (!(r.period > 0.0) || !(r.zeta >= 0.0 && r.zeta < 1.0))
+        sk->fail("target_im",
+                 "expected a period > 0 [s] and a damping ratio in [0, 1), got \"" + name + "\"");
+    } else {
+      const IntensityMeasure* im = find_intensity_measure(name);
+      if (!im || im->needs_period || im->scale_power == 0 || name == "pga") {
+        sk->fail("target_im", "expected " + what + ", got \"" + name + "\"" +
+                                  (name == "pga" ? " (use target_pga)" : ""));
+      }
+      r.name = name;
+    }
+    m.spec.scale_kind = study::ScaleKind::kTargetMeasure;
+    m.spec.target = r;
+    m.spec.scales = *grid_opt(*sk, "targets", "(units)");
+    m.spec.levels = m.spec.scales;  // as written, for the CSV's level column
+    if (r.name == "sa") {
+      m.spec.level_units = sk->choice("units", detail::accel_unit_names(), "g");
+      const double u = to_si_factor(detail::accel_unit(m.spec.level_units));
+      for (double& v : m.spec.scales) v *= u;
+    } else {
+      if (sk->has("units"))
+        sk->fail("units", "only for an acceleration target: " + name + " is in " +
+                              find_intensity_measure(name)->unit);
+      m.spec.level_units = find_intensity_measure(name)->unit;
+    }
   } else {
     m.spec.scale_kind = study::ScaleKind::kTargetPga;
     m.spec.level_units = sk->choice("units", detail::accel_unit_names(), "g");
@@ -576,8 +628,8 @@ SweepManifest load_sweep_manifest(const std::string& path) {
   }
   for (std::size_t i = 0; i < m.spec.scales.size(); ++i) {
     if (!(m.spec.scales[i] > 0.0)) {
-      sk->fail(f ? "factors" : "target_pga", "expected values > 0, got " + num(m.spec.scales[i]) +
-                                                 " at position " + std::to_string(i + 1));
+      sk->fail(grid_key, "expected values > 0, got " + num(m.spec.scales[i]) + " at position " +
+                             std::to_string(i + 1));
     }
   }
   const double runs = static_cast<double>(m.spec.bodies.size()) *
@@ -597,7 +649,7 @@ SweepManifest load_sweep_manifest(const std::string& path) {
     for (const IntensityMeasure& im : intensity_measures()) {
       if (!im.always_written && !im.needs_period) im_names.emplace_back(im.name);
     }
-    const std::string what = "an array of im_names, each one of: " + join(im_names);
+    const std::string what = "an array of names, each one of: " + join(im_names);
     if (const toml::node* n = ik->node("measures")) {
       const toml::array* a = n->as_array();
       if (!a) ik->expected("measures", what);
@@ -664,14 +716,17 @@ const SweepColumn kSweepColumns[] = {
     {"record", "-", "name of the record",
      [](const Spec& s, const Row& r) { return s.records.at(r.record).name; }},
     {"requested_level", "`requested_units`",
-     "the level as `[scales]` gives it: the factor, or the target PGA in `[scales] units`; the "
-     "same number for every record at one level (`pga_g` is computed and differs in the last "
-     "digits between records: group or pivot on `requested_level`)",
+     "the level as `[scales]` gives it: the factor, the target PGA in `[scales] units`, or the "
+     "target of `target_im`; the same number for every record at one level (`pga_g` is "
+     "computed and differs in the last digits between records: group or pivot on "
+     "`requested_level`; it is the stripe of `flexrock fragility --analysis msa`)",
      [](const Spec& s, const Row& r) {
        const std::vector<double>& levels = s.levels.empty() ? s.scales : s.levels;
        return num(levels.at(r.scale_index));
      }},
-    {"requested_units", "-", "`-` for factors, else the `[scales] units` (`g`, `m/s^2`, `cm/s^2`)",
+    {"requested_units", "-",
+     "`-` for factors, else the `[scales] units` (`g`, `m/s^2`, `cm/s^2`), or the unit of a "
+     "`target_im` that is no acceleration",
      [](const Spec& s, const Row&) {
        if (s.scale_kind == study::ScaleKind::kFactor) return std::string("-");
        return s.level_units.empty() ? std::string("m/s^2") : s.level_units;
@@ -862,7 +917,7 @@ JournalCheck sweep_journal_check(const study::SweepSpec& spec) {
   for (const study::SweepBody& b : spec.bodies) bodies->emplace_back(b.body);
   auto im = std::make_shared<std::vector<study::Intensity>>();
   for (const study::SweepRecord& r : spec.records)
-    im->push_back(study::intensity(r.motion, spec.measures));
+    im->push_back(study::record_intensity(spec, r.motion));
   auto runs = std::make_shared<std::vector<study::SweepRun>>(study::sweep_runs(spec));
   // where the fields are, by column name
   const bool sliding = study::has_friction(spec);
@@ -1124,6 +1179,8 @@ std::vector<FragilityData> fragility_data(const CsvTable& t, const FragilityQuer
         "fragility: outcome '" + q.outcome +
         "': expected one of: overturned, uplift, theta, energy, offset, residual_offset");
   }
+  const std::size_t cr = static_cast<std::size_t>(
+      std::find(t.columns.begin(), t.columns.end(), "record") - t.columns.begin());
   const std::size_t ci = t.column(im_col), co = t.column(out_col), cb = t.column("body"),
                     cs = t.column("outcome"), cv = t.column("overturned");
   auto number = [&](std::size_t r, std::size_t c) {
@@ -1143,7 +1200,7 @@ std::vector<FragilityData> fragility_data(const CsvTable& t, const FragilityQuer
     auto it = std::find_if(out.begin(), out.end(),
                            [&](const FragilityData& d) { return d.body == body; });
     if (it == out.end()) {
-      out.push_back({body, {}, {}, 0});
+      out.push_back({body, {}, {}, 0, {}});
       it = out.end() - 1;
     }
     // not classified: the run could not go on (`contact_lost`: rows written before the engine
@@ -1167,6 +1224,7 @@ std::vector<FragilityData> fragility_data(const CsvTable& t, const FragilityQuer
     }
     it->im.push_back(x);
     it->failed.push_back(y);
+    it->record.push_back(cr < t.columns.size() ? t.rows[r][cr] : std::string());
   }
   if (out.empty()) {
     throw InputError(

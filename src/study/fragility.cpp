@@ -203,6 +203,244 @@ double fragility_probability(const FragilityFit& fit, double x) {
   return normal_cdf(std::log(x / fit.theta) / fit.beta);
 }
 
+FragilityFit fit_stripes(const std::vector<Stripe>& stripes, double confidence) {
+  std::vector<double> im;
+  std::vector<int> failed;
+  double log_binomial = 0.0;
+  for (std::size_t j = 0; j < stripes.size(); ++j) {
+    const Stripe& s = stripes[j];
+    const std::string where = "multiple-stripe fit: stripe " + std::to_string(j + 1) + " (IM " +
+                              std::to_string(s.im) + "): ";
+    FLEXROCK_THROW_UNLESS(std::isfinite(s.im) && s.im > 0.0,
+                          where + "expected an intensity measure > 0");
+    FLEXROCK_THROW_UNLESS(s.failures <= s.runs, where + "expected at most " +
+                                                    std::to_string(s.runs) + " failures, got " +
+                                                    std::to_string(s.failures));
+    for (std::size_t k = 0; k < j; ++k) {
+      FLEXROCK_THROW_UNLESS(stripes[k].im != s.im, where + "the same IM as stripe " +
+                                                       std::to_string(k + 1) + ": merge them");
+    }
+    // the run-by-run outcomes of the stripe: the same likelihood up to ln C(n, z)
+    for (std::size_t i = 0; i < s.runs; ++i) {
+      im.push_back(s.im);
+      failed.push_back(i < s.failures ? 1 : 0);
+    }
+    const auto n = static_cast<double>(s.runs), z = static_cast<double>(s.failures);
+    log_binomial += std::lgamma(n + 1.0) - std::lgamma(z + 1.0) - std::lgamma(n - z + 1.0);
+  }
+  FragilityFit fit = fit_lognormal(im, failed, confidence);
+  fit.log_likelihood += log_binomial;
+  return fit;
+}
+
+namespace {
+
+// log(Phi(b) - Phi(a)) for a < b, accurate in either tail (by symmetry to the lower one)
+double log_interval(double a, double b) {
+  if (a > 0.0) return log_interval(-b, -a);
+  if (!std::isfinite(a)) return log_cdf(b);
+  const double pb = normal_cdf(b), pa = normal_cdf(a);
+  if (pb - pa > 1e-300) return std::log(pb - pa);
+  // both far in the lower tail
+  return log_cdf(b) + std::log1p(-std::exp(log_cdf(a) - log_cdf(b)));
+}
+
+double phi(double x) { return std::exp(-0.5 * x * x) / std::sqrt(2.0 * std::numbers::pi); }
+
+// log-likelihood and its gradient in (mu, beta), mu = ln theta
+double interval_ll(const std::vector<CapacityInterval>& c, double mu, double beta,
+                   Eigen::Vector2d* grad) {
+  double ll = 0.0;
+  if (grad) grad->setZero();
+  for (const CapacityInterval& x : c) {
+    if (x.lower == x.upper) {
+      // an exact capacity: the lognormal density
+      const double z = (std::log(x.upper) - mu) / beta;
+      ll += -0.5 * z * z - std::log(beta * x.upper) - 0.5 * std::log(2.0 * std::numbers::pi);
+      if (grad) *grad += Eigen::Vector2d(z / beta, (z * z - 1.0) / beta);
+      continue;
+    }
+    const double a =
+        x.lower > 0.0 ? (std::log(x.lower) - mu) / beta : -std::numeric_limits<double>::infinity();
+    const double b = std::isfinite(x.upper) ? (std::log(x.upper) - mu) / beta
+                                            : std::numeric_limits<double>::infinity();
+    const double l = log_interval(a, b);
+    ll += l;
+    if (!grad) continue;
+    // d/dmu (Phi(b) - Phi(a)) = -(phi(b) - phi(a)) / beta, d/dbeta = -(b phi(b) - a phi(a)) / beta
+    const double pb = std::isfinite(b) ? phi(b) : 0.0, pa = std::isfinite(a) ? phi(a) : 0.0;
+    const double bpb = std::isfinite(b) ? b * pb : 0.0, apa = std::isfinite(a) ? a * pa : 0.0;
+    const double p = std::exp(l);
+    *grad += Eigen::Vector2d(-(pb - pa) / (beta * p), -(bpb - apa) / (beta * p));
+  }
+  return ll;
+}
+
+}  // namespace
+
+double capacity_log_likelihood(const std::vector<CapacityInterval>& capacities, double theta,
+                               double beta) {
+  return interval_ll(capacities, std::log(theta), beta, nullptr);
+}
+
+FragilityFit fit_capacity_intervals(const std::vector<CapacityInterval>& c, double confidence) {
+  FLEXROCK_THROW_UNLESS(
+      c.size() >= 2, "capacity fit: expected at least 2 records, got " + std::to_string(c.size()));
+  FLEXROCK_THROW_UNLESS(confidence > 0.0 && confidence < 1.0,
+                        "capacity fit: expected a confidence level in (0, 1)");
+  std::size_t reached = 0;
+  double sum = 0.0;  // of ln of a point in each finite interval, for the start
+  bool spread = false;
+  for (std::size_t i = 0; i < c.size(); ++i) {
+    const CapacityInterval& x = c[i];
+    FLEXROCK_THROW_UNLESS(x.lower >= 0.0 && x.upper >= x.lower && std::isfinite(x.lower) &&
+                              !std::isnan(x.upper) && (x.upper > 0.0),
+                          "capacity fit: record " + std::to_string(i + 1) +
+                              ": expected 0 <= lower <= upper, upper > 0, got (" +
+                              std::to_string(x.lower) + ", " + std::to_string(x.upper) + "]");
+    if (std::isfinite(x.upper)) {
+      ++reached;
+      sum += std::log(x.lower > 0.0 ? std::sqrt(x.lower * x.upper) : x.upper);
+    }
+    spread = spread || x.lower != c[0].lower || x.upper != c[0].upper || x.lower == x.upper;
+  }
+  FLEXROCK_THROW_UNLESS(reached > 0,
+                        "capacity fit: no record failed at any level (every one is truncated): "
+                        "the median lies above the highest level; extend the levels");
+  FLEXROCK_THROW_UNLESS(spread,
+                        "capacity fit: every record's capacity lies in the same interval: "
+                        "the maximum likelihood is at beta = 0; add levels inside it");
+  // Newton on y = (mu, s), s = ln beta (beta stays > 0); the Hessian by central differences of
+  // the analytic gradient
+  auto value = [&](const Eigen::Vector2d& y, Eigen::Vector2d* g) {
+    const double beta = std::exp(y(1));
+    Eigen::Vector2d gb;
+    const double ll = interval_ll(c, y(0), beta, g ? &gb : nullptr);
+    if (g) *g = Eigen::Vector2d(gb(0), gb(1) * beta);  // d/ds = beta d/dbeta
+    return ll;
+  };
+  auto hessian = [&](const Eigen::Vector2d& y) {
+    Eigen::Matrix2d h;
+    for (int k = 0; k < 2; ++k) {
+      const double e = 1e-5 * (1.0 + std::abs(y(k)));
+      Eigen::Vector2d yp = y, ym = y, gp, gm;
+      yp(k) += e;
+      ym(k) -= e;
+      value(yp, &gp);
+      value(ym, &gm);
+      h.col(k) = (gp - gm) / (2.0 * e);
+    }
+    return Eigen::Matrix2d(0.5 * (h + h.transpose()));
+  };
+  Eigen::Vector2d y(sum / static_cast<double>(reached), std::log(0.5)), g;
+  double ll = value(y, &g);
+  int it = 0;
+  for (; it < 200; ++it) {
+    const Eigen::Matrix2d h = hessian(y);
+    Eigen::Vector2d step = h.ldlt().solve(-g);
+    // away from the maximum the Hessian may not be negative definite: then ascend the gradient
+    if (!step.allFinite() || step.dot(g) <= 0.0) step = g / (1.0 + g.norm());
+    double t = 1.0;
+    Eigen::Vector2d yn = y;
+    double lln = ll;
+    for (int k = 0; k < 60; ++k, t *= 0.5) {
+      yn = y + t * step;
+      lln = value(yn, nullptr);
+      if (std::isfinite(lln) && lln >= ll) break;
+    }
+    const bool small = (yn - y).norm() <= 1e-12 * (1.0 + y.norm());
+    y = yn;
+    ll = value(y, &g);
+    FLEXROCK_THROW_UNLESS(y(1) > std::log(1e-8),
+                          "capacity fit: beta goes to 0: the capacities cannot be told apart "
+                          "from one value; add levels between them");
+    if (small || g.norm() <= 1e-10 * static_cast<double>(c.size())) {
+      ++it;
+      break;
+    }
+  }
+  const double mu = y(0), beta = std::exp(y(1));
+  // covariance of (mu, beta) from the observed information in (mu, beta)
+  const Eigen::Matrix2d hs = hessian(y);
+  Eigen::Matrix2d to_beta;  // y = (mu, ln beta): d(mu, beta)/dy
+  to_beta << 1.0, 0.0, 0.0, beta;
+  // at the maximum the gradient is zero, so the information transforms with the Jacobian
+  const Eigen::Matrix2d cov_y = (-hs).inverse();
+  const Eigen::Matrix2d cov_mb = to_beta * cov_y * to_beta.transpose();
+  FragilityFit fit;
+  fit.theta = std::exp(mu);
+  fit.beta = beta;
+  fit.se_ln_theta = std::sqrt(std::max(0.0, cov_mb(0, 0)));
+  fit.se_beta = std::sqrt(std::max(0.0, cov_mb(1, 1)));
+  fit.cov_ln_theta_beta = cov_mb(0, 1);
+  fit.confidence = confidence;
+  const double zq = normal_quantile(0.5 + 0.5 * confidence);
+  fit.theta_lower = fit.theta * std::exp(-zq * fit.se_ln_theta);
+  fit.theta_upper = fit.theta * std::exp(zq * fit.se_ln_theta);
+  fit.beta_lower = std::max(0.0, beta - zq * fit.se_beta);
+  fit.beta_upper = beta + zq * fit.se_beta;
+  // (a, b) = (-mu/beta, 1/beta) for the band
+  Eigen::Matrix2d jac;
+  jac << -1.0 / beta, mu / (beta * beta), 0.0, -1.0 / (beta * beta);
+  const Eigen::Matrix2d cov_ab = jac * cov_mb * jac.transpose();
+  fit.cov_ab[0] = cov_ab(0, 0);
+  fit.cov_ab[1] = cov_ab(0, 1);
+  fit.cov_ab[2] = cov_ab(1, 1);
+  fit.log_likelihood = ll;
+  fit.iterations = it;
+  fit.samples = c.size();
+  fit.failures = reached;
+  return fit;
+}
+
+std::vector<Stripe> stripes_of(const std::vector<double>& im, const std::vector<int>& failed) {
+  FLEXROCK_THROW_UNLESS(im.size() == failed.size(),
+                        "stripes: expected as many outcomes as intensity measures");
+  std::vector<Stripe> out;
+  for (std::size_t i = 0; i < im.size(); ++i) {
+    auto it = std::find_if(out.begin(), out.end(), [&](const Stripe& s) { return s.im == im[i]; });
+    if (it == out.end()) {
+      out.push_back({im[i], 0, 0});
+      it = out.end() - 1;
+    }
+    ++it->runs;
+    if (failed[i]) ++it->failures;
+  }
+  std::sort(out.begin(), out.end(), [](const Stripe& a, const Stripe& b) { return a.im < b.im; });
+  return out;
+}
+
+std::vector<CapacityInterval> capacity_intervals(const std::vector<double>& im,
+                                                 const std::vector<int>& failed,
+                                                 const std::vector<std::string>& record) {
+  FLEXROCK_THROW_UNLESS(im.size() == failed.size() && im.size() == record.size(),
+                        "capacity intervals: expected one IM, outcome and record per run");
+  std::vector<std::string> names;
+  std::vector<std::vector<std::pair<double, int>>> runs;
+  for (std::size_t i = 0; i < im.size(); ++i) {
+    const auto at = std::find(names.begin(), names.end(), record[i]);
+    if (at == names.end()) {
+      names.push_back(record[i]);
+      runs.emplace_back();
+    }
+    runs[static_cast<std::size_t>(std::find(names.begin(), names.end(), record[i]) - names.begin())]
+        .push_back({im[i], failed[i]});
+  }
+  std::vector<CapacityInterval> out;
+  for (auto& r : runs) {
+    std::sort(r.begin(), r.end());
+    CapacityInterval c{r.back().first, std::numeric_limits<double>::infinity()};
+    for (std::size_t k = 0; k < r.size(); ++k) {
+      if (r[k].second) {
+        c = {k == 0 ? 0.0 : r[k - 1].first, r[k].first};
+        break;
+      }
+    }
+    out.push_back(c);
+  }
+  return out;
+}
+
 double crossing_intensity(const FragilityFit& a, const FragilityFit& b) {
   if (a.beta == b.beta) return std::numeric_limits<double>::quiet_NaN();
   return std::exp((b.beta * std::log(a.theta) - a.beta * std::log(b.theta)) / (b.beta - a.beta));

@@ -83,6 +83,21 @@ Intensity intensity(const GroundMotion& motion, const std::vector<MeasureRequest
   return out;
 }
 
+Intensity record_intensity(const SweepSpec& spec, const GroundMotion& motion) {
+  if (spec.scale_kind != ScaleKind::kTargetMeasure) return intensity(motion, spec.measures);
+  check_request(spec.target);
+  const int power = find_intensity_measure(spec.target.name)->scale_power;
+  FLEXROCK_THROW_UNLESS(power == 1 || power == 2,
+                        "sweep: target measure '" + spec.target.name +
+                            "' does not grow with the scale factor: no factor reaches a target");
+  std::vector<MeasureRequest> all = spec.measures;
+  all.push_back(spec.target);
+  Intensity im = intensity(motion, all);
+  im.target = im.measures.back();
+  im.measures.pop_back();
+  return im;
+}
+
 bool has_friction(const SweepSpec& spec) {
   if (std::isfinite(spec.solver.friction_coefficient)) return true;
   return std::any_of(spec.bodies.begin(), spec.bodies.end(), [](const SweepBody& b) {
@@ -140,7 +155,7 @@ void validate(const SweepSpec& spec) {
   for (const SweepRecord& r : spec.records) {
     FLEXROCK_THROW_UNLESS(r.motion.duration() > 0.0,
                           "sweep: record '" + r.name + "': expected a record lasting > 0 s");
-    im.push_back(intensity(r.motion, spec.measures));
+    im.push_back(record_intensity(spec, r.motion));
     double p = 0.0;
     for (const double a : r.motion.horizontal()) p = std::max(p, std::abs(a));
     for (const double a : r.motion.vertical()) p = std::max(p, std::abs(a));
@@ -149,6 +164,11 @@ void validate(const SweepSpec& spec) {
       FLEXROCK_THROW_UNLESS(
           im.back().pga > 0.0,
           "sweep: record '" + r.name + "': PGA is zero, it cannot be scaled to a target PGA");
+    }
+    if (spec.scale_kind == ScaleKind::kTargetMeasure) {
+      FLEXROCK_THROW_UNLESS(im.back().target > 0.0,
+                            "sweep: record '" + r.name + "': its " + measure_column(spec.target) +
+                                " is zero, it cannot be scaled to a target");
     }
   }
   // every run as it will be made, before any is: a bad one found after others ran would leave
@@ -188,6 +208,11 @@ SweepRow sweep_inputs(const SweepSpec& spec, const SweepRun& run, const Body& bo
   row.scale_index = run.scale_index;
   const double s = spec.scales.at(run.scale_index);
   row.scale = spec.scale_kind == ScaleKind::kTargetPga ? s / im.pga : s;
+  if (spec.scale_kind == ScaleKind::kTargetMeasure) {
+    // Arias intensity grows with the square of the factor
+    const int power = find_intensity_measure(spec.target.name)->scale_power;
+    row.scale = power == 2 ? std::sqrt(s / im.target) : s / im.target;
+  }
   row.pga = row.scale * im.pga;
   row.pgv = row.scale * im.pgv;
   // each measure scales with the factor to its own power (Arias: squared; durations: not at all)
@@ -236,7 +261,7 @@ SweepRow run_one(const SweepSpec& spec, const SweepRun& run, const Body& body,
 
 SweepRow run_sweep_one(const SweepSpec& spec, const SweepRun& run) {
   const Body body(spec.bodies.at(run.body).body);
-  return run_one(spec, run, body, intensity(spec.records.at(run.record).motion, spec.measures));
+  return run_one(spec, run, body, record_intensity(spec, spec.records.at(run.record).motion));
 }
 
 std::vector<SweepRow> run_sweep(const SweepSpec& spec, const std::vector<std::size_t>& indices,
@@ -268,7 +293,7 @@ std::vector<SweepRow> run_sweep(const SweepSpec& spec, const std::vector<std::si
   for (const SweepBody& b : spec.bodies) bodies.emplace_back(b.body);
   std::vector<Intensity> im;
   im.reserve(spec.records.size());
-  for (const SweepRecord& r : spec.records) im.push_back(intensity(r.motion, spec.measures));
+  for (const SweepRecord& r : spec.records) im.push_back(record_intensity(spec, r.motion));
 
   std::vector<SweepRow> rows(todo.size());
   std::mutex row_mutex;

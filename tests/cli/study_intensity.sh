@@ -93,6 +93,48 @@ run "$FLEXROCK" fragility ims.csv --im sa:x
 expect_rc 2 "bad Sa period"
 expect_in "$WORK/err" "\"x\" is not a number"
 
+# stripes at levels of Sa(1 s): every record scaled so that its Sa(1 s) is the target, which
+# its own Sa column shows; then the multiple-stripe fit over those stripes
+sed -e 's/^target_pga = .*/target_im = "sa:1"\ntargets = { start = 0.1, stop = 0.8, step = 0.1 }/' plain.toml >stripes.toml
+printf '\n[intensity]\nmeasures = ["arias"]\nsa_periods = [1]\n' >>stripes.toml
+run "$FLEXROCK" sweep stripes.toml -o stripes.csv -q -j 2
+expect_rc 0 "sweep at Sa targets"
+python3 - stripes.csv <<'PY'
+import csv, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+assert len(rows) == 32
+for r in rows:
+    assert r["requested_units"] == "g", r["requested_units"]
+    want = float(r["requested_level"]) * 9.80665
+    got = float(r["sa_T1_z0.05_m_per_s2"])
+    assert abs(got - want) <= 1e-12 * want, (r["index"], got, want)
+print("ok")
+PY
+[ $? -eq 0 ] || fail "Sa of the scaled records differs from the targets"
+run "$FLEXROCK" fragility stripes.csv --analysis msa --body statue --outcome theta --level 0.3
+expect_rc 0 "multiple-stripe fit"
+expect_in "$WORK/out" "stripe 0.1 g: "
+expect_in "$WORK/out" "P(max theta/alpha > 0.3 | requested_level)"
+# Arias targets scale by the square root of the ratio
+sed -e 's/^target_pga = .*/target_im = "arias"\ntargets = [0.5, 1.0]/' -e '${/^units = "g"/d}' plain.toml >arias.toml
+printf '\n[intensity]\nmeasures = ["arias"]\n' >>arias.toml
+run "$FLEXROCK" sweep arias.toml -o arias.csv -q -j 2
+expect_rc 0 "sweep at Arias targets"
+python3 - arias.csv <<'PY'
+import csv, sys
+for r in csv.DictReader(open(sys.argv[1])):
+    assert r["requested_units"] == "m/s", r["requested_units"]
+    want, got = float(r["requested_level"]), float(r["arias_m_per_s"])
+    assert abs(got - want) <= 1e-12 * want, (r["index"], got, want)
+PY
+[ $? -eq 0 ] || fail "Arias of the scaled records differs from the targets"
+for bad in 'target_im = "d5_95"' 'target_im = "pga"' 'target_im = "sa:x"'; do
+  sed -e "s/^target_pga = .*/$bad\ntargets = [1]/" -e '${/^units = "g"/d}' plain.toml >bad.toml
+  run "$FLEXROCK" sweep bad.toml -o bad.csv -q
+  expect_rc 2 "bad target: $bad"
+  expect_in "$WORK/err" "scales.target_im"
+done
+
 # bad [intensity] tables: file, line, key
 for bad in 'measures = ["pga"]' 'measures = ["sa"]' 'measures = ["pgd", "pgd"]' 'sa_periods = [0]' \
   'sa_periods = [1, 1]' 'sa_damping = 0.1' 'measure = ["pgd"]'; do

@@ -6,6 +6,7 @@
 
 #include <Eigen/Dense>
 #include <cmath>
+#include <limits>
 #include <random>
 
 #include "flexrock/study/fragility.hpp"
@@ -173,6 +174,59 @@ TEST(FragilityFamily, CurvesCrossWhereTheirProbabilitiesAreEqual) {
   EXPECT_NEAR(crossing_intensity(b, a), x, 1e-15);
   b.beta = 0.3;
   EXPECT_TRUE(std::isnan(crossing_intensity(a, b)));
+}
+
+}  // namespace
+}  // namespace flexrock::study
+
+namespace flexrock::study {
+namespace {
+
+TEST(CapacityFit, ExactCapacitiesGiveTheSampleMeanAndDeviationOfTheirLogs) {
+  // every capacity known: the lognormal maximum likelihood is in closed form, mu = mean ln c,
+  // beta^2 = mean (ln c - mu)^2
+  std::mt19937_64 rng(7);
+  std::normal_distribution<double> z(0.0, 1.0);
+  std::vector<CapacityInterval> c;
+  double sum = 0.0, sum2 = 0.0;
+  for (int i = 0; i < 300; ++i) {
+    const double x = 0.4 * std::exp(0.5 * z(rng));
+    c.push_back({x, x});
+    sum += std::log(x);
+  }
+  const double mu = sum / 300.0;
+  for (const CapacityInterval& x : c) sum2 += (std::log(x.upper) - mu) * (std::log(x.upper) - mu);
+  const FragilityFit f = fit_capacity_intervals(c);
+  EXPECT_NEAR(std::log(f.theta), mu, 1e-9);
+  EXPECT_NEAR(f.beta, std::sqrt(sum2 / 300.0), 1e-9);
+  // the standard errors of a normal sample: beta / sqrt(n) and beta / sqrt(2 n)
+  EXPECT_NEAR(f.se_ln_theta, f.beta / std::sqrt(300.0), 1e-5 * f.se_ln_theta);
+  EXPECT_NEAR(f.se_beta, f.beta / std::sqrt(600.0), 1e-5 * f.se_beta);
+}
+
+TEST(CapacityFit, IntervalsFromFirstFailuresAndRefusals) {
+  // record a fails first at 0.3 (not at 0.2), survives 0.4 again: (0.2, 0.3]; b never: (0.4,
+  // inf); c at its lowest: (0, 0.1]
+  const std::vector<CapacityInterval> c =
+      capacity_intervals({0.1, 0.2, 0.3, 0.4, 0.4, 0.1, 0.2, 0.3, 0.1}, {0, 0, 1, 0, 0, 0, 0, 0, 1},
+                         {"a", "a", "a", "a", "b", "b", "b", "b", "c"});
+  ASSERT_EQ(c.size(), 3u);
+  EXPECT_EQ(c[0].lower, 0.2);
+  EXPECT_EQ(c[0].upper, 0.3);
+  EXPECT_EQ(c[1].lower, 0.4);
+  EXPECT_TRUE(std::isinf(c[1].upper));
+  EXPECT_EQ(c[2].lower, 0.0);
+  EXPECT_EQ(c[2].upper, 0.1);
+  const double inf = std::numeric_limits<double>::infinity();
+  EXPECT_THROW(fit_capacity_intervals({{0.4, inf}, {0.4, inf}}), InputError);
+  EXPECT_THROW(fit_capacity_intervals({{0.2, 0.3}, {0.2, 0.3}}), InputError);
+  // stripes: equal IMs pooled, in increasing IM
+  const std::vector<Stripe> s = stripes_of({0.3, 0.1, 0.3, 0.1}, {1, 0, 0, 0});
+  ASSERT_EQ(s.size(), 2u);
+  EXPECT_EQ(s[0].im, 0.1);
+  EXPECT_EQ(s[0].runs, 2u);
+  EXPECT_EQ(s[1].failures, 1u);
+  EXPECT_THROW(fit_stripes({{0.1, 2, 3}, {0.2, 2, 1}}), InputError);
 }
 
 }  // namespace

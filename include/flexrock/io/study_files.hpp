@@ -154,6 +154,8 @@ struct FragilityData {
   std::vector<double> im;
   std::vector<int> failed;
   std::size_t excluded = 0;  // rows left out: status stopped or contact_lost
+  // the record of each observation (its `record` column; empty names if the file has none)
+  std::vector<std::string> record;
 };
 
 /// Groups a sweep CSV's rows by body (in first-appearance order) and turns each row into an

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <cstddef>
+#include <string>
 #include <vector>
 
 namespace flexrock::study {
@@ -34,6 +35,60 @@ struct FragilityFit {
 /// message saying so.
 FragilityFit fit_lognormal(const std::vector<double>& im, const std::vector<int>& failed,
                            double confidence = 0.95);
+
+/// One stripe of a multiple-stripe analysis: every run at the same intensity measure.
+struct Stripe {
+  double im = 0.0;           // the stripe's IM (> 0, finite)
+  std::size_t runs = 0;      // runs at the stripe (those classified)
+  std::size_t failures = 0;  // of which failed
+};
+
+/// Multiple-stripe analysis (Baker 2015, eq. 11): maximizes the binomial log-likelihood
+/// sum_j ln C(n_j, z_j) + z_j ln p_j + (n_j - z_j) ln(1 - p_j), p_j = Phi(ln(x_j/theta)/beta),
+/// over the stripes. Its maximum is that of the run-by-run likelihood of fit_lognormal (the
+/// binomial coefficients do not depend on theta, beta), so the same Newton iteration finds it;
+/// log_likelihood includes the coefficients. A stripe may hold fewer runs than another (records
+/// that could not be scaled to it, runs left out). Throws InputError as fit_lognormal does, and
+/// for a stripe with more failures than runs or two stripes at one IM.
+FragilityFit fit_stripes(const std::vector<Stripe>& stripes, double confidence = 0.95);
+
+/// Where a record's capacity (the IM at which it first fails) lies: in (lower, upper]. From an
+/// incremental dynamic analysis at discrete levels: upper the first level at which it failed,
+/// lower the level before (0 if it failed at the first); a record that never failed up to the
+/// highest level x_max has (x_max, inf): it is truncated there (Baker 2015, "truncated IDA").
+/// lower == upper is a capacity known exactly.
+struct CapacityInterval {
+  double lower = 0.0;  // [IM] >= 0
+  double upper = 0.0;  // [IM] >= lower; inf: never failed
+};
+
+/// Fits the lognormal distribution of capacities to intervals (exact capacities contribute the
+/// density phi(ln(c/theta)/beta) / (beta c), intervals Phi(b) - Phi(a), truncated records
+/// 1 - Phi(ln(x_max/theta)/beta): Baker 2015 eq. 8 for truncated IDA, with the interval of
+/// discrete levels in place of an exact capacity) by maximum likelihood: Newton's method on
+/// (ln theta, ln beta) with an analytic gradient and a central-difference Hessian, step halving.
+/// Throws InputError when no finite estimate exists (every record truncated, every capacity in
+/// one and the same interval, fewer than 2 records).
+FragilityFit fit_capacity_intervals(const std::vector<CapacityInterval>& capacities,
+                                    double confidence = 0.95);
+
+/// The stripes of run-by-run observations: runs with equal IMs form one stripe; in increasing
+/// IM.
+std::vector<Stripe> stripes_of(const std::vector<double>& im, const std::vector<int>& failed);
+
+/// The capacity interval of each record of an incremental dynamic analysis, from run-by-run
+/// observations and the record of each (`record[i]` names observation i's): a record's runs in
+/// increasing IM; upper the IM of its first failure, lower that of the run before (0: it failed
+/// at its lowest); never failed: (its highest IM, inf). Later runs of a record that failed are
+/// not used (a rocking body may survive a higher level; its capacity is the first failure). In
+/// the order records first appear.
+std::vector<CapacityInterval> capacity_intervals(const std::vector<double>& im,
+                                                 const std::vector<int>& failed,
+                                                 const std::vector<std::string>& record);
+
+/// Log-likelihood of (theta, beta) for capacity intervals (for tests and profile checks).
+double capacity_log_likelihood(const std::vector<CapacityInterval>& capacities, double theta,
+                               double beta);
 
 /// P(failure | IM = x) = Phi(ln(x / theta) / beta); x <= 0 gives 0.
 double fragility_probability(const FragilityFit& fit, double x);

@@ -35,6 +35,7 @@ struct Intensity {
   double pgv = 0.0;  // [m/s] peak |Xdot|, Xdot the trapezoidal integral of Xddot from 0 (no
                      // baseline correction: a record's own processing is trusted)
   std::vector<double> measures;  // [SI] the requested measures at scale 1, in request order
+  double target = 0.0;  // [SI] the measure scaled to (ScaleKind::kTargetMeasure) at scale 1
 };
 
 /// PGA and PGV of `motion`, and the `measures` asked for. Sampled motions: over the samples.
@@ -63,6 +64,9 @@ struct SweepRecord {
 enum class ScaleKind {
   kFactor,     // `scales` are factors on every record
   kTargetPga,  // `scales` are target PGAs [m/s^2]: the factor is target / the record's PGA
+  // `scales` are targets of SweepSpec::target [SI]: the factor s makes the scaled record's
+  // measure s^power x the record's equal to the target (stripes of a multiple-stripe analysis)
+  kTargetMeasure,
 };
 
 struct SweepSpec {
@@ -80,7 +84,13 @@ struct SweepSpec {
   // intensity measures every row gets besides PGA and PGV, as columns after pgv_m_per_s (empty:
   // the columns of a sweep before the measures existed, byte for byte)
   std::vector<MeasureRequest> measures;
+  // the measure that kTargetMeasure scales to (one with scale power 1 or 2)
+  MeasureRequest target;
 };
+
+/// The intensity of a spec's record: intensity(motion, spec.measures), with the target measure
+/// of a kTargetMeasure spec.
+Intensity record_intensity(const SweepSpec& spec, const GroundMotion& motion);
 
 /// One run of a sweep. Run indices are body-major: index = (body * records + record) * scales
 /// + scale_index.
