@@ -994,6 +994,21 @@ def boundary_csv(result: SpectrumResult, normalized: bool, g: float) -> str:
     str
     """
 
+def capacity_intervals(im: list[float], failed: list[int], record: list[str]) -> tuple:
+    """Each record's capacity interval (lower, upper] from an incremental dynamic analysis.
+
+    Parameters
+    ----------
+    im, failed, record : lists
+        One IM, outcome (0/1) and record name per run.
+
+    Returns
+    -------
+    (list of float, list of float)
+        lower (0: failed at its lowest run) and upper (inf: never failed, truncated at lower), one
+        per record in order of first appearance.
+    """
+
 def combine(horizontal: Record, vertical: Optional[Record] = ..., scale: float = ...) -> GroundMotion:
     """A horizontal record and an optional vertical one as one ground motion.
 
@@ -1040,6 +1055,18 @@ def compute_spectrum(body: Body, spec: SpectrumSpec, threads: int = ...) -> Spec
     Returns
     -------
     SpectrumResult
+    """
+
+def crossing_intensity(a: FragilityFit, b: FragilityFit) -> float:
+    """The IM at which two fitted fragility curves cross (nan for equal betas).
+
+    Parameters
+    ----------
+    a, b : FragilityFit
+
+    Returns
+    -------
+    float
     """
 
 def cycloidal_c_phase(n: int) -> float:
@@ -1154,6 +1181,21 @@ def events_csv(result: SimulationResult) -> str:
     str
     """
 
+def fit_capacity_intervals(lower: list[float], upper: list[float], confidence: float = ...) -> FragilityFit:
+    """Lognormal fit of capacities known to lie in (lower, upper] (upper inf: truncated;
+    lower == upper: exact), by maximum likelihood, as ``flexrock fragility --analysis ida`` fits it.
+
+    Parameters
+    ----------
+    lower, upper : list of float
+    confidence : float
+
+    Returns
+    -------
+    FragilityFit
+        samples: records, failures: records with a finite upper bound.
+    """
+
 def fit_lognormal(im: list[float], failed: list[int], confidence: float = ...) -> FragilityFit:
     """Maximum-likelihood lognormal fragility P(failure | IM = x) = Phi(ln(x/theta)/beta).
 
@@ -1169,6 +1211,25 @@ def fit_lognormal(im: list[float], failed: list[int], confidence: float = ...) -
     Returns
     -------
     FragilityFit
+    """
+
+def fit_stripes(im: list[float], runs: list[int], failures: list[int], confidence: float = ...) -> FragilityFit:
+    """Multiple-stripe analysis: the binomial maximum-likelihood lognormal fragility (Baker
+    2015), as ``flexrock fragility --analysis msa`` fits it.
+
+    Parameters
+    ----------
+    im : list of float
+        The stripes' intensity measures, > 0, distinct.
+    runs, failures : list of int
+        Runs at each stripe, and how many of them failed.
+    confidence : float
+        Level of the bounds, in (0, 1).
+
+    Returns
+    -------
+    FragilityFit
+        log_likelihood includes the binomial coefficients.
     """
 
 def fragility_band(fit: FragilityFit, x: numpy.typing.NDArray[numpy.float64]) -> object:
@@ -1473,6 +1534,19 @@ def make_pulse(type: str, a_p: float, omega_p: float, duration: float, component
     Returns
     -------
     GroundMotion
+    """
+
+def measure_request(text: str) -> MeasureRequest:
+    """A measure as the command line names it: a name of ``intensity_measures()`` or "sa:T",
+    "sa:T:zeta".
+
+    Parameters
+    ----------
+    text : str
+
+    Returns
+    -------
+    MeasureRequest
     """
 
 def one_sine_pulse(a_p: float, omega_p: float, duration: float, component: Component = ...) -> GroundMotion:

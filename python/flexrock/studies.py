@@ -31,13 +31,18 @@ from ._flexrock import (  # noqa: F401  (re-exported API)
     boundary_csv,
     compute_record_spectrum,
     compute_spectrum,
+    capacity_intervals,
+    crossing_intensity,
+    fit_capacity_intervals,
     fit_lognormal,
+    fit_stripes,
     fragility_band,
     fragility_probability,
     MeasureRequest,
     intensity,
     intensity_measure,
     intensity_measures,
+    measure_request,
     lognormal_log_likelihood,
     load_spectrum_file,
     load_sweep_manifest,
@@ -153,6 +158,12 @@ def spectrum(
         [-] relative.
     threads : int
         0: every core. The GIL is released while it runs.
+    target_im : str, optional
+        Stripes: each record scaled so that this measure ("sa:1", "sa:1:0.02", "pgv", "arias",
+        ...) equals each of ``targets`` (in ``units`` for Sa, else the measure's SI unit), as a
+        manifest's ``[scales] target_im``.
+    targets : array_like, optional
+        The levels of ``target_im``.
     measures : sequence of str
         Intensity measures every row gets besides PGA and PGV, as a manifest's ``[intensity]
         measures`` (names of ``intensity_measures()``: "pgd", "arias", ...).
@@ -380,6 +391,8 @@ def sweep(
     units: Optional[str] = None,
     free_periods: float = 2.0,
     threads: int = 0,
+    target_im: Optional[str] = None,
+    targets: Optional[Sequence[float]] = None,
     measures: Sequence[str] = (),
     sa_periods: Sequence[float] = (),
     sa_damping: float = 0.05,
@@ -439,10 +452,27 @@ def sweep(
         if factors is not None or target_pga is not None:
             raise InputError("sweep: give one of factors=[...] or target_pga=[...], not scales as well")
         factors = scales
-    if (factors is None) == (target_pga is None):
-        raise InputError("sweep: expected exactly one of factors=[...] [-] or target_pga=[...] "
-                         "(in units, default \"g\")")
-    if factors is not None:
+    if (target_im is None) != (targets is None):
+        raise InputError("sweep: target_im and targets=[...] go together")
+    if (factors is not None) + (target_pga is not None) + (target_im is not None) != 1:
+        raise InputError("sweep: expected exactly one of factors=[...] [-], target_pga=[...] "
+                         "(in units, default \"g\") or target_im with targets=[...]")
+    if target_im is not None:
+        # stripes at levels of a measure: as a manifest's [scales] target_im
+        spec.target = _flexrock.measure_request(str(target_im))
+        spec.scale_kind = ScaleKind.target_measure
+        spec.levels = [float(s) for s in targets]
+        if spec.target.name == "sa":
+            unit = _choice("units", units or "g", tuple(_ACCEL_UNITS))
+            factor = _ACCEL_UNITS[unit] or 9.80665
+        else:
+            if units is not None:
+                raise InputError(f"sweep: units: only for an acceleration target, not {target_im}")
+            unit = next(m["unit"] for m in intensity_measures() if m["name"] == spec.target.name)
+            factor = 1.0
+        spec.level_units = unit
+        spec.scales = [v * factor for v in spec.levels]
+    elif factors is not None:
         if units is not None:
             raise InputError("sweep: units: only with target_pga=[...] (factors have no unit)")
         spec.scale_kind = ScaleKind.factor

@@ -266,6 +266,17 @@ float
       .def_readwrite("name", &MeasureRequest::name, "a name of intensity_measures()")
       .def_readwrite("period", &MeasureRequest::period, "[s] sa only")
       .def_readwrite("zeta", &MeasureRequest::zeta, "[-] sa only");
+  m.def("measure_request", &measure_request, py::arg("text"),
+        R"doc(A measure as the command line names it: a name of ``intensity_measures()`` or "sa:T",
+"sa:T:zeta".
+
+Parameters
+----------
+text : str
+
+Returns
+-------
+MeasureRequest)doc");
   m.def(
       "intensity_measures",
       [] {
@@ -453,6 +464,89 @@ confidence : float
 Returns
 -------
 FragilityFit)doc");
+  m.def(
+      "fit_stripes",
+      [](const std::vector<double>& im, const std::vector<std::size_t>& runs,
+         const std::vector<std::size_t>& failures, double confidence) {
+        if (im.size() != runs.size() || im.size() != failures.size())
+          throw InputError("fit_stripes: expected as many runs and failures as stripe IMs");
+        std::vector<Stripe> s;
+        for (std::size_t j = 0; j < im.size(); ++j) s.push_back({im[j], runs[j], failures[j]});
+        return fit_stripes(s, confidence);
+      },
+      py::arg("im"), py::arg("runs"), py::arg("failures"), py::arg("confidence") = 0.95,
+      R"doc(Multiple-stripe analysis: the binomial maximum-likelihood lognormal fragility (Baker
+2015), as ``flexrock fragility --analysis msa`` fits it.
+
+Parameters
+----------
+im : list of float
+    The stripes' intensity measures, > 0, distinct.
+runs, failures : list of int
+    Runs at each stripe, and how many of them failed.
+confidence : float
+    Level of the bounds, in (0, 1).
+
+Returns
+-------
+FragilityFit
+    log_likelihood includes the binomial coefficients.)doc");
+  m.def(
+      "capacity_intervals",
+      [](const std::vector<double>& im, const std::vector<int>& failed,
+         const std::vector<std::string>& record) {
+        std::vector<double> lower, upper;
+        for (const CapacityInterval& c : capacity_intervals(im, failed, record)) {
+          lower.push_back(c.lower);
+          upper.push_back(c.upper);
+        }
+        return py::make_tuple(lower, upper);
+      },
+      py::arg("im"), py::arg("failed"), py::arg("record"),
+      R"doc(Each record's capacity interval (lower, upper] from an incremental dynamic analysis.
+
+Parameters
+----------
+im, failed, record : lists
+    One IM, outcome (0/1) and record name per run.
+
+Returns
+-------
+(list of float, list of float)
+    lower (0: failed at its lowest run) and upper (inf: never failed, truncated at lower), one
+    per record in order of first appearance.)doc");
+  m.def(
+      "fit_capacity_intervals",
+      [](const std::vector<double>& lower, const std::vector<double>& upper, double confidence) {
+        if (lower.size() != upper.size())
+          throw InputError("fit_capacity_intervals: expected as many upper as lower bounds");
+        std::vector<CapacityInterval> c;
+        for (std::size_t i = 0; i < lower.size(); ++i) c.push_back({lower[i], upper[i]});
+        return fit_capacity_intervals(c, confidence);
+      },
+      py::arg("lower"), py::arg("upper"), py::arg("confidence") = 0.95,
+      R"doc(Lognormal fit of capacities known to lie in (lower, upper] (upper inf: truncated;
+lower == upper: exact), by maximum likelihood, as ``flexrock fragility --analysis ida`` fits it.
+
+Parameters
+----------
+lower, upper : list of float
+confidence : float
+
+Returns
+-------
+FragilityFit
+    samples: records, failures: records with a finite upper bound.)doc");
+  m.def("crossing_intensity", &crossing_intensity, py::arg("a"), py::arg("b"),
+        R"doc(The IM at which two fitted fragility curves cross (nan for equal betas).
+
+Parameters
+----------
+a, b : FragilityFit
+
+Returns
+-------
+float)doc");
   m.def(
       "fragility_probability",
       [](const FragilityFit& fit,

@@ -155,3 +155,59 @@ def test_intensity_measures_table_and_a_sweep_with_them():
     assert table["arias_m_per_s"][1] == pytest.approx(4.0 * table["arias_m_per_s"][0], rel=1e-14)
     assert table["d5_95_s"][1] == table["d5_95_s"][0]
     assert table["sa_T0.5_z0.05_m_per_s2"][1] == pytest.approx(2.0 * table["sa_T0.5_z0.05_m_per_s2"][0], rel=1e-14)
+
+
+def test_stripe_and_capacity_fits_equal_the_cli(cli, tmp_path):
+    import csv
+    import subprocess
+
+    # a sweep-like CSV of three records at five stripes, written here, fitted both ways
+    rng = np.random.default_rng(5)
+    levels, rows = [0.1, 0.2, 0.3, 0.4, 0.5], []
+    cap = {f"r{k}": 0.28 * math.exp(0.4 * rng.standard_normal()) for k in range(30)}
+    for rec, c in cap.items():
+        for lv in levels:
+            rows.append((rec, lv, int(lv >= c)))
+    cols = fr.sweep_columns()
+    path = tmp_path / "s.csv"
+    with open(path, "w", newline="") as f:
+        w = csv.writer(f, lineterminator="\n")
+        w.writerow(cols)
+        for i, (rec, lv, y) in enumerate(rows):
+            r = dict.fromkeys(cols, "0")
+            r.update(index=i, body="b", record=rec, requested_level=repr(lv), requested_units="g",
+                     pga_g=repr(lv), outcome="overturned_after_impacts" if y else "rocking",
+                     overturned=y, status="overturned" if y else "completed", message="")
+            w.writerow([r[c] for c in cols])
+    for analysis in ("msa", "ida"):
+        out = tmp_path / f"{analysis}.csv"
+        args = [str(cli), "fragility", str(path), "--analysis", analysis, "-o", str(out), "-q"]
+        if analysis == "ida":
+            args += ["--im", "pga_g"]
+        p = subprocess.run(args, capture_output=True, text=True)
+        assert p.returncode == 0, p.stderr
+        got = next(csv.DictReader(open(out)))
+        if analysis == "msa":
+            n = [sum(1 for r in rows if r[1] == lv) for lv in levels]
+            z = [sum(r[2] for r in rows if r[1] == lv) for lv in levels]
+            fit = fr.fit_stripes(levels, n, z)
+        else:
+            lower, upper = fr.capacity_intervals([r[1] for r in rows], [r[2] for r in rows],
+                                                 [r[0] for r in rows])
+            assert len(lower) == 30 and all(u > lo for lo, u in zip(lower, upper))
+            fit = fr.fit_capacity_intervals(lower, upper)
+        assert float(got["theta"]) == pytest.approx(fit.theta, rel=1e-12)
+        assert float(got["beta"]) == pytest.approx(fit.beta, rel=1e-12)
+
+
+def test_sweep_at_sa_stripes_reaches_its_targets():
+    body = fr.rigid_block(0.2, 1.0, 600.0)
+    t = np.arange(0.0, 4.0, 0.01)
+    rec = fr.motion_from_array(3.0 * np.sin(9.0 * t) * np.exp(-0.3 * t), dt=0.01)
+    table = fr.sweep({"b": body}, {"r": rec}, target_im="sa:0.5", targets=[0.1, 0.3],
+                     sa_periods=[0.5])
+    assert list(table["requested_units"]) == ["g", "g"]
+    np.testing.assert_allclose(table["sa_T0.5_z0.05_m_per_s2"], [0.1 * 9.80665, 0.3 * 9.80665],
+                               rtol=1e-12)
+    with pytest.raises(fr.InputError):
+        fr.sweep({"b": body}, {"r": rec}, target_im="d5_95", targets=[1.0])

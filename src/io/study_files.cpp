@@ -581,28 +581,15 @@ SweepManifest load_sweep_manifest(const std::string& path) {
         "sa:T or sa:T:zeta (T [s], zeta 0.05 by default)";
     const std::string name = *sk->string_opt("target_im", "a string, " + what);
     study::MeasureRequest r;
-    if (name.starts_with("sa:")) {
-      const std::string rest = name.substr(3);
-      const std::size_t colon = rest.find(':');
-      auto number = [&](const std::string& text) {
-        double v = 0.0;
-        const auto res = std::from_chars(text.data(), text.data() + text.size(), v);
-        if (text.empty() || res.ec != std::errc() || res.ptr != text.data() + text.size())
-          sk->fail("target_im", "expected " + what + ", got \"" + name + "\"");
-        return v;
-      };
-      r = {"sa", number(rest.substr(0, colon)),
-           colon == std::string::npos ? 0.05 : number(rest.substr(colon + 1))};
-      if (!(r.period > 0.0) || !(r.zeta >= 0.0 && r.zeta < 1.0))
-        sk->fail("target_im",
-                 "expected a period > 0 [s] and a damping ratio in [0, 1), got \"" + name + "\"");
-    } else {
-      const IntensityMeasure* im = find_intensity_measure(name);
-      if (!im || im->needs_period || im->scale_power == 0 || name == "pga") {
-        sk->fail("target_im", "expected " + what + ", got \"" + name + "\"" +
-                                  (name == "pga" ? " (use target_pga)" : ""));
-      }
-      r.name = name;
+    try {
+      r = study::measure_request(name);
+    } catch (const InputError& e) {
+      sk->fail("target_im", "expected " + what + ", got " + e.what());
+    }
+    const IntensityMeasure* im = find_intensity_measure(r.name);
+    if (im->always_written || im->scale_power == 0) {
+      sk->fail("target_im", "expected " + what + ", got \"" + name + "\"" +
+                                (name == "pga" ? " (use target_pga)" : ""));
     }
     m.spec.scale_kind = study::ScaleKind::kTargetMeasure;
     m.spec.target = r;
@@ -1127,28 +1114,15 @@ std::string fragility_im_column(const std::string& im) {
     throw InputError("fragility: intensity measure '" + im + "': " + why +
                      "expected one of: " + join(fragility_measures()));
   };
-  // sa:T or sa:T:zeta, T [s], zeta 0.05 by default
-  if (im.starts_with("sa:")) {
-    const std::string rest = im.substr(3);
-    const std::size_t colon = rest.find(':');
-    auto number = [&](const std::string& text) {
-      double v = 0.0;
-      const auto r = std::from_chars(text.data(), text.data() + text.size(), v);
-      if (text.empty() || r.ec != std::errc() || r.ptr != text.data() + text.size()) {
-        bad("\"" + text + "\" is not a number; ");
-      }
-      return v;
-    };
-    const double period = number(rest.substr(0, colon));
-    const double zeta = colon == std::string::npos ? 0.05 : number(rest.substr(colon + 1));
-    if (!(period > 0.0) || !(zeta >= 0.0 && zeta < 1.0)) {
-      bad("expected a period > 0 [s] and a damping ratio in [0, 1); ");
-    }
-    return spectral_column(period, zeta);
+  study::MeasureRequest m;
+  try {
+    m = study::measure_request(im);
+  } catch (const InputError& e) {
+    bad(std::string(e.what()) + "; ");
   }
-  const IntensityMeasure* m = find_intensity_measure(im);
-  if (!m || m->needs_period) bad(m ? "give its period: sa:T or sa:T:zeta; " : "");
-  return m->column;
+  const IntensityMeasure* k = find_intensity_measure(m.name);
+  if (k->always_written) bad("");
+  return study::measure_column(m);
 }
 
 std::vector<FragilityData> fragility_data(const CsvTable& t, const FragilityQuery& q) {

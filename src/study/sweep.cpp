@@ -2,6 +2,7 @@
 #include "flexrock/study/sweep.hpp"
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <limits>
 #include <mutex>
@@ -16,6 +17,31 @@ std::string measure_column(const MeasureRequest& m) {
   const IntensityMeasure* im = find_intensity_measure(m.name);
   FLEXROCK_THROW_UNLESS(im != nullptr, "intensity measure '" + m.name + "': unknown");
   return im->needs_period ? spectral_column(m.period, m.zeta) : std::string(im->column);
+}
+
+MeasureRequest measure_request(const std::string& text) {
+  if (!text.starts_with("sa:")) {
+    const IntensityMeasure* m = find_intensity_measure(text);
+    FLEXROCK_THROW_UNLESS(m != nullptr, "unknown intensity measure \"" + text + "\"");
+    FLEXROCK_THROW_UNLESS(!m->needs_period, "\"" + text + "\" needs its period: sa:T or sa:T:zeta");
+    return {text, 0.0, 0.05};
+  }
+  const std::string rest = text.substr(3);
+  const std::size_t colon = rest.find(':');
+  auto number = [&](const std::string& part) {
+    double v = 0.0;
+    const auto r = std::from_chars(part.data(), part.data() + part.size(), v);
+    FLEXROCK_THROW_UNLESS(
+        !part.empty() && r.ec == std::errc() && r.ptr == part.data() + part.size(),
+        "\"" + part + "\" is not a number (in \"" + text + "\")");
+    return v;
+  };
+  MeasureRequest m{"sa", number(rest.substr(0, colon)),
+                   colon == std::string::npos ? 0.05 : number(rest.substr(colon + 1))};
+  FLEXROCK_THROW_UNLESS(
+      std::isfinite(m.period) && m.period > 0.0 && m.zeta >= 0.0 && m.zeta < 1.0,
+      "\"" + text + "\": expected a period > 0 [s] and a damping ratio in [0, 1)");
+  return m;
 }
 
 namespace {

@@ -26,6 +26,11 @@ struct MeasureRequest {
   double zeta = 0.05;   // [-] sa only, in [0, 1)
 };
 
+/// A measure as the command line and manifests name it: a name of the table, or "sa:T" /
+/// "sa:T:zeta" (period T [s] > 0, damping ratio zeta in [0, 1), 0.05 by default). Throws
+/// InputError saying what is wrong (the caller adds where).
+MeasureRequest measure_request(const std::string& text);
+
 /// The sweep CSV column of a requested measure (its table column, or spectral_column for sa).
 std::string measure_column(const MeasureRequest& m);
 
