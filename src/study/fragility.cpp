@@ -290,7 +290,7 @@ FragilityFit fit_capacity_intervals(const std::vector<CapacityInterval>& c, doub
                         "capacity fit: expected a confidence level in (0, 1)");
   std::size_t reached = 0;
   double sum = 0.0;  // of ln of a point in each finite interval, for the start
-  bool spread = false;
+  double max_lower = 0.0, min_upper = std::numeric_limits<double>::infinity();
   for (std::size_t i = 0; i < c.size(); ++i) {
     const CapacityInterval& x = c[i];
     FLEXROCK_THROW_UNLESS(x.lower >= 0.0 && x.upper >= x.lower && std::isfinite(x.lower) &&
@@ -302,14 +302,22 @@ FragilityFit fit_capacity_intervals(const std::vector<CapacityInterval>& c, doub
       ++reached;
       sum += std::log(x.lower > 0.0 ? std::sqrt(x.lower * x.upper) : x.upper);
     }
-    spread = spread || x.lower != c[0].lower || x.upper != c[0].upper || x.lower == x.upper;
+    max_lower = std::max(max_lower, x.lower);
+    min_upper = std::min(min_upper, x.upper);
   }
   FLEXROCK_THROW_UNLESS(reached > 0,
                         "capacity fit: no record failed at any level (every one is truncated): "
                         "the median lies above the highest level; extend the levels");
-  FLEXROCK_THROW_UNLESS(spread,
-                        "capacity fit: every record's capacity lies in the same interval: "
-                        "the maximum likelihood is at beta = 0; add levels inside it");
+  // one capacity inside every interval (or one exact capacity for all) fits them all with
+  // beta -> 0, as a threshold that separates the outcomes perfectly does
+  const bool same = std::all_of(c.begin(), c.end(), [&](const CapacityInterval& x) {
+    return x.lower == c[0].lower && x.upper == c[0].upper;
+  });
+  FLEXROCK_THROW_UNLESS(!same && !(max_lower < min_upper),
+                        "capacity fit: every record's capacity lies in (" +
+                            std::to_string(max_lower) + ", " + std::to_string(min_upper) +
+                            "]: the maximum likelihood is at beta = 0, no finite estimate "
+                            "exists; add levels in that range or more records");
   // Newton on y = (mu, s), s = ln beta (beta stays > 0); the Hessian by central differences of
   // the analytic gradient
   auto value = [&](const Eigen::Vector2d& y, Eigen::Vector2d* g) {

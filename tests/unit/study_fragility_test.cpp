@@ -220,6 +220,10 @@ TEST(CapacityFit, IntervalsFromFirstFailuresAndRefusals) {
   const double inf = std::numeric_limits<double>::infinity();
   EXPECT_THROW(fit_capacity_intervals({{0.4, inf}, {0.4, inf}}), InputError);
   EXPECT_THROW(fit_capacity_intervals({{0.2, 0.3}, {0.2, 0.3}}), InputError);
+  // overlapping intervals: a capacity in (0.2, 0.3] fits both with beta -> 0
+  EXPECT_THROW(fit_capacity_intervals({{0.1, 0.3}, {0.2, inf}}), InputError);
+  EXPECT_THROW(fit_capacity_intervals({{0.4, 0.4}, {0.4, 0.4}}), InputError);
+  EXPECT_NO_THROW(fit_capacity_intervals({{0.1, 0.2}, {0.2, 0.3}, {0.0, 0.1}, {0.3, inf}}));
   // stripes: equal IMs pooled, in increasing IM
   const std::vector<Stripe> s = stripes_of({0.3, 0.1, 0.3, 0.1}, {1, 0, 0, 0});
   ASSERT_EQ(s.size(), 2u);

@@ -67,8 +67,9 @@ struct CapacityInterval {
 /// 1 - Phi(ln(x_max/theta)/beta): Baker 2015 eq. 8 for truncated IDA, with the interval of
 /// discrete levels in place of an exact capacity) by maximum likelihood: Newton's method on
 /// (ln theta, ln beta) with an analytic gradient and a central-difference Hessian, step halving.
-/// Throws InputError when no finite estimate exists (every record truncated, every capacity in
-/// one and the same interval, fewer than 2 records).
+/// Throws InputError when no finite estimate exists: fewer than 2 records, every record
+/// truncated, or one IM inside every interval (the capacities cannot be told apart: the maximum
+/// is at beta = 0, as for outcomes a threshold separates perfectly).
 FragilityFit fit_capacity_intervals(const std::vector<CapacityInterval>& capacities,
                                     double confidence = 0.95);
 
