@@ -29,6 +29,7 @@
 
 #include "flexrock/excitation/ground_motion.hpp"
 #include "flexrock/integrate/dopri5.hpp"
+#include "flexrock/model/body.hpp"
 #include "flexrock/model/dynamics.hpp"
 
 namespace flexrock::detail {
@@ -83,7 +84,12 @@ class ContactPropagator {
     // the modal forcing per unit base acceleration, and gravity's static part
     gxm_ = -dyn.g_over_h() * (from_modal_.transpose() * dyn.psi_x()) / dyn.g();
     gym_ = -dyn.g_over_h() * (from_modal_.transpose() * dyn.psi_y());
-    eta_static_ = gym_.cwiseQuotient(omega_.cwiseProduct(omega_));
+    // the static state of these very equations, K q_s = -(g/h) psi_y, solved to a few ulp: the
+    // soft modes' w^2 from the eigensolver are off by ~ulp(w_max^2), and their gym / w^2 would
+    // put the equilibrium of a 0.1 Hz mode beside a 1 kHz one 1e-8 of its sag away, where the
+    // body at rest would start to swing
+    const VectorX q_static = solve_refined(dyn.stiffness(), VectorX(-dyn.g_over_h() * dyn.psi_y()));
+    eta_static_ = to_modal_ * q_static;
     inv_omega_ = omega_.cwiseInverse();
     // the input and damping powers in the modes: -M h a.(psi . q_dot) and M h^2 sum c_i eta_i'^2
     pxm_ = from_modal_.transpose() * dyn.psi_x();
