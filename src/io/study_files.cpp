@@ -40,8 +40,12 @@ std::uint64_t fnv1a(const std::string& bytes, std::uint64_t h) {
 
 namespace {
 
-// shortest text that reads back to the same double
+// shortest text that reads back to the same double (messages: "inf" and "nan" as such)
 std::string num(double v) { return format_number(v); }
+// a number field of a study CSV or journal: the shortest text that reads back to the same
+// double, empty where there is no finite value (a run stopped because its results overflow
+// double precision; a friction demand at a zero normal force), never "inf" or "nan"
+std::string field(double v) { return std::isfinite(v) ? format_number(v) : std::string(); }
 
 std::string join(const std::vector<std::string>& v, const char* sep = ", ") {
   std::string s;
@@ -293,11 +297,11 @@ const SlidingColumn kSlidingColumns[] = {
      "slid) or `sliding_rocking` (both); an overturned body keeps its outcome",
      [](const study::RunSummary& r) { return std::string(study::to_string(r.regime)); }},
     {"max_offset_m", "m", "peak \\|offset\\| of the base from where it stood",
-     [](const study::RunSummary& r) { return num(r.max_offset); }},
+     [](const study::RunSummary& r) { return field(r.max_offset); }},
     {"final_offset_m", "m", "residual offset at the end (signed, along +I)",
-     [](const study::RunSummary& r) { return num(r.final_offset); }},
+     [](const study::RunSummary& r) { return field(r.final_offset); }},
     {"sliding_time_s", "s", "time spent sliding",
-     [](const study::RunSummary& r) { return num(r.sliding_time); }},
+     [](const study::RunSummary& r) { return field(r.sliding_time); }},
     {"slips", "-", "times sliding started",
      [](const study::RunSummary& r) { return std::to_string(r.slips); }},
 };
@@ -332,18 +336,18 @@ const SpectrumColumn kSpectrumColumns[] = {
     {"column", "-", "grid index of the frequency",
      [](const Res&, const Cell& c, double) { return std::to_string(c.column); }},
     {"a_p_m_per_s2", "m/s^2", "pulse amplitude (record: the scaled record's PGA)",
-     [](const Res&, const Cell& c, double) { return num(c.amplitude_si); }},
+     [](const Res&, const Cell& c, double) { return field(c.amplitude_si); }},
     {"a_p_over_g_tan_alpha", "-", "the same over g tan alpha",
      [](const Res& res, const Cell& c, double g) {
-       return num(c.amplitude_si / (g * res.tan_alpha));
+       return field(c.amplitude_si / (g * res.tan_alpha));
      }},
     {"omega_p_rad_per_s", "rad/s", "pulse frequency (record: 0)",
-     [](const Res&, const Cell& c, double) { return num(c.omega_si); }},
+     [](const Res&, const Cell& c, double) { return field(c.omega_si); }},
     {"omega_p_over_p", "-", "the same over p",
-     [](const Res& res, const Cell& c, double) { return num(c.omega_si / res.p); }},
+     [](const Res& res, const Cell& c, double) { return field(c.omega_si / res.p); }},
     {"scale", "-", "record spectra: the factor (pulse spectra: empty)",
      [](const Res&, const Cell& c, double) {
-       return c.omega_si == 0.0 ? num(c.amplitude) : std::string("");
+       return c.omega_si == 0.0 ? field(c.amplitude) : std::string("");
      }},
     {"outcome", "-", "the outcome class above",
      [](const Res&, const Cell& c, double) {
@@ -354,15 +358,15 @@ const SpectrumColumn kSpectrumColumns[] = {
        return std::string(study::overturned(c.run.outcome) ? "1" : "0");
      }},
     {"max_theta_over_alpha", "-", "largest tilt over the overturning angle",
-     [](const Res&, const Cell& c, double) { return num(c.run.max_theta_over_alpha); }},
+     [](const Res&, const Cell& c, double) { return field(c.run.max_theta_over_alpha); }},
     {"impacts", "-", "impacts during the run",
      [](const Res&, const Cell& c, double) { return std::to_string(c.run.impacts); }},
     {"first_uplift_time_s", "s", "-1: never",
-     [](const Res&, const Cell& c, double) { return num(c.run.first_uplift_time); }},
+     [](const Res&, const Cell& c, double) { return field(c.run.first_uplift_time); }},
     {"overturn_time_s", "s", "-1: never",
-     [](const Res&, const Cell& c, double) { return num(c.run.overturn_time); }},
+     [](const Res&, const Cell& c, double) { return field(c.run.overturn_time); }},
     {"energy_lost_J", "J", "impacts + chatter cut-offs + material damping",
-     [](const Res&, const Cell& c, double) { return num(c.run.energy_lost); }},
+     [](const Res&, const Cell& c, double) { return field(c.run.energy_lost); }},
     {"status", "-", "engine status: completed, overturned, stopped",
      [](const Res&, const Cell& c, double) { return std::string(to_string(c.run.status)); }},
 };
@@ -415,11 +419,11 @@ const BoundaryColumn kBoundaryColumns[] = {
     {"frequency", "grid",
      "the column's frequency as the grid holds it: omega_p/p on normalized axes, rad/s on "
      "physical ones",
-     [](const BoundaryContext&, const Boundary& b) { return num(b.frequency); }},
+     [](const BoundaryContext&, const Boundary& b) { return field(b.frequency); }},
     {"omega_p_rad_per_s", "rad/s", "the same in rad/s (record: 0)",
-     [](const BoundaryContext& x, const Boundary&) { return num(x.omega); }},
+     [](const BoundaryContext& x, const Boundary&) { return field(x.omega); }},
     {"omega_p_over_p", "-", "the same over p",
-     [](const BoundaryContext& x, const Boundary&) { return num(x.omega / x.res.p); }},
+     [](const BoundaryContext& x, const Boundary&) { return field(x.omega / x.res.p); }},
     {"kind", "-",
      "`found`; `below_grid`: the smallest grid amplitude already overturns; `none`: no cell of "
      "the column overturns",
@@ -431,19 +435,19 @@ const BoundaryColumn kBoundaryColumns[] = {
      "(a_p/(g tan alpha) on normalized axes, m/s^2 on physical ones, the factor on a record); "
      "empty for `none`",
      [](const BoundaryContext&, const Boundary& b) {
-       return found(b) ? num(b.overturning) : std::string();
+       return found(b) ? field(b.overturning) : std::string();
      }},
     {"safe_below", "grid", "the lower end: shown not to overturn (empty unless `found`)",
      [](const BoundaryContext&, const Boundary& b) {
-       return b.kind == Boundary::Kind::kFound ? num(b.safe) : std::string();
+       return b.kind == Boundary::Kind::kFound ? field(b.safe) : std::string();
      }},
     {"min_overturning_m_per_s2", "m/s^2", "`min_overturning` in m/s^2",
      [](const BoundaryContext& x, const Boundary& b) {
-       return found(b) ? num(b.overturning * x.a_unit) : std::string();
+       return found(b) ? field(b.overturning * x.a_unit) : std::string();
      }},
     {"min_overturning_over_g_tan_alpha", "-", "`min_overturning` over g tan alpha",
      [](const BoundaryContext& x, const Boundary& b) {
-       return found(b) ? num(b.overturning * x.a_unit / (x.g * x.res.tan_alpha)) : std::string();
+       return found(b) ? field(b.overturning * x.a_unit / (x.g * x.res.tan_alpha)) : std::string();
      }},
     {"mode", "-", "the outcome class at `min_overturning` (which overturning mode)",
      [](const BoundaryContext&, const Boundary& b) {
@@ -709,7 +713,7 @@ const SweepColumn kSweepColumns[] = {
      "`requested_level`; it is the stripe of `flexrock fragility --analysis msa`)",
      [](const Spec& s, const Row& r) {
        const std::vector<double>& levels = s.levels.empty() ? s.scales : s.levels;
-       return num(levels.at(r.scale_index));
+       return field(levels.at(r.scale_index));
      }},
     {"requested_units", "-",
      "`-` for factors, else the `[scales] units` (`g`, `m/s^2`, `cm/s^2`), or the unit of a "
@@ -719,19 +723,19 @@ const SweepColumn kSweepColumns[] = {
        return s.level_units.empty() ? std::string("m/s^2") : s.level_units;
      }},
     {"scale", "-", "factor applied to the record",
-     [](const Spec&, const Row& r) { return num(r.scale); }},
+     [](const Spec&, const Row& r) { return field(r.scale); }},
     {"pga_m_per_s2", "m/s^2",
      "scaled record's peak \\|abs\\| horizontal acceleration over its samples",
-     [](const Spec&, const Row& r) { return num(r.pga); }},
+     [](const Spec&, const Row& r) { return field(r.pga); }},
     {"pga_g", "g", "the same in g",
-     [](const Spec&, const Row& r) { return num(r.pga / kStandardGravity); }},
+     [](const Spec&, const Row& r) { return field(r.pga / kStandardGravity); }},
     {"pgv_m_per_s", "m/s",
      "scaled record's peak \\|velocity\\|: the trapezoidal integral of the acceleration from 0 at "
      "the first sample, no baseline correction (the record's own processing is trusted); the "
      "factor times the unscaled record's PGV",
-     [](const Spec&, const Row& r) { return num(r.pgv); }},
+     [](const Spec&, const Row& r) { return field(r.pgv); }},
     {"duration_s", "s", "simulated span: record + free motion",
-     [](const Spec&, const Row& r) { return num(r.duration); }},
+     [](const Spec&, const Row& r) { return field(r.duration); }},
     {"outcome", "-", "outcome class",
      [](const Spec&, const Row& r) { return std::string(study::to_string(r.run.outcome)); }},
     {"overturned", "0/1", "1 for an overturning class",
@@ -741,23 +745,23 @@ const SweepColumn kSweepColumns[] = {
     {"overturn_edge", "-", "1 or 2 (0: none)",
      [](const Spec&, const Row& r) { return std::to_string(r.run.overturn_edge); }},
     {"overturn_time_s", "s", "-1: none",
-     [](const Spec&, const Row& r) { return num(r.run.overturn_time); }},
+     [](const Spec&, const Row& r) { return field(r.run.overturn_time); }},
     {"max_theta_rad", "rad", "largest tilt",
-     [](const Spec&, const Row& r) { return num(r.run.max_theta); }},
+     [](const Spec&, const Row& r) { return field(r.run.max_theta); }},
     {"max_theta_over_alpha", "-", "largest tilt over the overturning angle",
-     [](const Spec&, const Row& r) { return num(r.run.max_theta_over_alpha); }},
+     [](const Spec&, const Row& r) { return field(r.run.max_theta_over_alpha); }},
     {"impacts", "-", "impacts",
      [](const Spec&, const Row& r) { return std::to_string(r.run.impacts); }},
     {"first_uplift_time_s", "s", "-1: never",
-     [](const Spec&, const Row& r) { return num(r.run.first_uplift_time); }},
+     [](const Spec&, const Row& r) { return field(r.run.first_uplift_time); }},
     {"max_uplift_m", "m", "largest height of a lifted tipping point",
-     [](const Spec&, const Row& r) { return num(r.run.max_uplift); }},
+     [](const Spec&, const Row& r) { return field(r.run.max_uplift); }},
     {"max_impulse_N_s", "N s", "largest vertical impact impulse",
-     [](const Spec&, const Row& r) { return num(r.run.max_impulse); }},
+     [](const Spec&, const Row& r) { return field(r.run.max_impulse); }},
     {"energy_lost_J", "J", "impacts + chatter + damping",
-     [](const Spec&, const Row& r) { return num(r.run.energy_lost); }},
+     [](const Spec&, const Row& r) { return field(r.run.energy_lost); }},
     {"max_friction_demand", "-", "largest \\|F_I\\|/F_J, impulses included",
-     [](const Spec&, const Row& r) { return num(r.run.max_friction_demand); }},
+     [](const Spec&, const Row& r) { return field(r.run.max_friction_demand); }},
     {"status", "-", "engine status",
      [](const Spec&, const Row& r) { return std::string(to_string(r.run.status)); }},
     {"message", "-", "why a stopped run stopped (commas replaced by `;`)",
@@ -835,11 +839,15 @@ std::string_view first_fields(std::string_view line, std::size_t n) {
   return line.substr(0, pos == 0 ? 0 : pos - 1);
 }
 
+// a finite number as field() writes it ("inf" and "nan" are never written)
 bool is_number(std::string_view f) {
   double v = 0.0;
   const auto r = std::from_chars(f.data(), f.data() + f.size(), v);
-  return !f.empty() && r.ec == std::errc() && r.ptr == f.data() + f.size();
+  return !f.empty() && r.ec == std::errc() && r.ptr == f.data() + f.size() && std::isfinite(v);
 }
+
+// a run's result figure: a finite number, or empty where the run has none (field())
+bool is_figure(std::string_view f) { return f.empty() || is_number(f); }
 
 bool is_count(std::string_view f) {
   long v = 0;
@@ -883,7 +891,8 @@ std::string check_sliding_fields(const std::vector<std::string_view>& f, std::si
   }
   if (!known) return "unknown regime \"" + std::string(f[first]) + "\"";
   for (std::size_t k = first + 1; k + 1 < f.size(); ++k) {
-    if (!is_number(f[k])) return "field " + std::to_string(k + 1) + " is not a number";
+    if (!is_figure(f[k]))
+      return "field " + std::to_string(k + 1) + " is not a finite number or empty";
   }
   if (!is_count(f.back())) return "slips is not a count";
   return "";
@@ -935,8 +944,8 @@ JournalCheck sweep_journal_check(const study::SweepSpec& spec) {
     }
     if (std::string why = check_outcome(f[outcome], f[outcome + 1]); !why.empty()) return why;
     for (std::size_t k = edge + 1; k < status; ++k) {
-      if (k != impacts && !is_number(f[k])) {
-        return "field " + std::to_string(k + 1) + " is not a number";
+      if (k != impacts && !is_figure(f[k])) {
+        return "field " + std::to_string(k + 1) + " is not a finite number or empty";
       }
     }
     if (f[edge] != "0" && f[edge] != "1" && f[edge] != "2") return "overturn_edge is not 0, 1 or 2";
@@ -996,7 +1005,8 @@ JournalCheck spectrum_journal_check(const study::SpectrumResult& grid, bool norm
       }
       if (std::string why = check_outcome(f[c.outcome], f[c.outcome + 1]); !why.empty()) return why;
       for (const std::size_t k : {c.ratio, c.uplift, c.overturn, c.energy}) {
-        if (!is_number(f[k])) return "field " + std::to_string(k + 1) + " is not a number";
+        if (!is_figure(f[k]))
+          return "field " + std::to_string(k + 1) + " is not a finite number or empty";
       }
       if (!is_count(f[c.impacts])) return "impacts is not a count";
       if (!is_status(f[c.status])) return "unknown status \"" + std::string(f[c.status]) + "\"";
@@ -1161,9 +1171,9 @@ std::vector<FragilityData> fragility_data(const CsvTable& t, const FragilityQuer
     double v = 0.0;
     const std::string& s = t.rows[r][c];
     const auto res = std::from_chars(s.data(), s.data() + s.size(), v);
-    if (res.ec != std::errc() || res.ptr != s.data() + s.size()) {
+    if (res.ec != std::errc() || res.ptr != s.data() + s.size() || !std::isfinite(v)) {
       throw InputError(t.source + ":" + std::to_string(t.lines[r]) + ": column '" + t.columns[c] +
-                       "': expected a number, got \"" + s + "\"");
+                       "': expected a finite number, got \"" + s + "\"");
     }
     return v;
   };
@@ -1230,25 +1240,25 @@ const FragilityColumn kFragilityColumns[] = {
     {"excluded", "-", "rows left out: outcome `stopped` or `contact_lost`",
      [](const FragilityData& d, const Fit&) { return std::to_string(d.excluded); }},
     {"theta", "IM", "median capacity, in the units of the intensity measure",
-     [](const FragilityData&, const Fit& f) { return num(f.theta); }},
+     [](const FragilityData&, const Fit& f) { return field(f.theta); }},
     {"beta", "-", "lognormal standard deviation",
-     [](const FragilityData&, const Fit& f) { return num(f.beta); }},
+     [](const FragilityData&, const Fit& f) { return field(f.beta); }},
     {"se_ln_theta", "-", "standard error of ln(theta)",
-     [](const FragilityData&, const Fit& f) { return num(f.se_ln_theta); }},
+     [](const FragilityData&, const Fit& f) { return field(f.se_ln_theta); }},
     {"se_beta", "-", "standard error of beta",
-     [](const FragilityData&, const Fit& f) { return num(f.se_beta); }},
+     [](const FragilityData&, const Fit& f) { return field(f.se_beta); }},
     {"confidence", "-", "level of the bounds (two-sided)",
-     [](const FragilityData&, const Fit& f) { return num(f.confidence); }},
+     [](const FragilityData&, const Fit& f) { return field(f.confidence); }},
     {"theta_lower", "IM", "lower bound on theta",
-     [](const FragilityData&, const Fit& f) { return num(f.theta_lower); }},
+     [](const FragilityData&, const Fit& f) { return field(f.theta_lower); }},
     {"theta_upper", "IM", "upper bound on theta",
-     [](const FragilityData&, const Fit& f) { return num(f.theta_upper); }},
+     [](const FragilityData&, const Fit& f) { return field(f.theta_upper); }},
     {"beta_lower", "-", "lower bound on beta (>= 0)",
-     [](const FragilityData&, const Fit& f) { return num(f.beta_lower); }},
+     [](const FragilityData&, const Fit& f) { return field(f.beta_lower); }},
     {"beta_upper", "-", "upper bound on beta",
-     [](const FragilityData&, const Fit& f) { return num(f.beta_upper); }},
+     [](const FragilityData&, const Fit& f) { return field(f.beta_upper); }},
     {"log_likelihood", "-", "at the maximum",
-     [](const FragilityData&, const Fit& f) { return num(f.log_likelihood); }},
+     [](const FragilityData&, const Fit& f) { return field(f.log_likelihood); }},
 };
 
 // the column reference of one table, as a Markdown table between begin and end markers

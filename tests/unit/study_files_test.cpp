@@ -157,6 +157,42 @@ TEST_F(StudyFiles, SweepJournalLinesMustBeThoseOfTheirRun) {
   EXPECT_NE(check(5, row0), "");
 }
 
+TEST_F(StudyFiles, ARunWhoseResultsOverflowLeavesNoInfInItsLine) {
+  // M g h = 8.8e307 J is normal, but the record at factor 10 (3 g) gives a base shear of
+  // M a = 3e308 N: the run stops (results not finite). Its line held "inf" in energy_lost_J and
+  // max_impulse_N_s, which the journal's own check then read back as numbers
+  write("heavy.toml", "[body]\ntype = \"rigid_block\"\nwidth = 4.0\nheight = 1.8\nmass = 1e307\n");
+  write("r.dat", kRecord);
+  const std::string m = write("m.toml",
+                              "[[body]]\nfile = \"heavy.toml\"\n"
+                              "[[record]]\nfile = \"r.dat\"\nformat = \"single_column\"\n"
+                              "dt = 0.01\nunits = \"g\"\nname = \"rec\"\n"
+                              "[scales]\nfactors = [0.5, 10.0]\n");
+  const SweepManifest sm = load_sweep_manifest(m);
+  const JournalCheck check = sweep_journal_check(sm.spec);
+  const study::SweepRow over = study::run_sweep_one(sm.spec, {1, 0, 0, 1});
+  ASSERT_EQ(over.run.status, Status::kStopped);
+  EXPECT_NE(over.message.find("not finite"), std::string::npos) << over.message;
+  const std::string row = sweep_row(sm.spec, over);
+  for (const char* bad : {"inf", "nan"}) EXPECT_EQ(row.find(bad), std::string::npos) << row;
+  EXPECT_NE(row.find(",stopped,"), std::string::npos) << row;
+  EXPECT_EQ(check(1, row), "") << row;
+  // the figures it had no finite value for are empty fields, and "inf" is not read back as one
+  const std::vector<std::string> cols = sweep_columns();
+  const auto at =
+      static_cast<std::size_t>(std::find(cols.begin(), cols.end(), "energy_lost_J") - cols.begin());
+  std::size_t start = 0;
+  for (std::size_t i = 0; i < at; ++i) start = row.find(',', start) + 1;
+  EXPECT_EQ(row[start], ',') << row;
+  for (const char* bad : {"inf", "-inf", "nan"}) {
+    EXPECT_NE(check(1, row.substr(0, start) + bad + row.substr(start)), "") << bad;
+  }
+  // the run at factor 0.5 has every figure finite, as before
+  const std::string ok = sweep_row(sm.spec, study::run_sweep_one(sm.spec, {0, 0, 0, 0}));
+  EXPECT_EQ(check(0, ok), "");
+  EXPECT_EQ(ok.find(",,"), std::string::npos) << ok;
+}
+
 TEST_F(StudyFiles, SpectrumJournalLinesMustBeThoseOfTheirCell) {
   const Body body(load_body(write("b.toml", kBody)));
   study::SpectrumSpec spec;
@@ -243,6 +279,15 @@ TEST_F(StudyFiles, FragilityDataFromASweepCsv) {
   EXPECT_EQ(fragility_data(t, q)[0].im, (std::vector<double>{1.0, 2.0}));
   q.im = "sa";
   test::expect_input_error([&] { fragility_data(t, q); }, {"'sa'", "pga, pga_g, pgv, scale"});
+  // a figure that is not finite (written by no flexrock) is refused, naming it
+  std::string inf_csv = csv;
+  inf_csv.replace(inf_csv.find(",2.5,0.1,completed"), 4, ",inf");
+  const CsvTable ti = read_csv_table(write("inf.csv", inf_csv));
+  q.outcome = "energy";
+  q.level = 1.0;
+  q.im = "pga";
+  test::expect_input_error([&] { fragility_data(ti, q); },
+                           {"inf.csv:2", "energy_lost_J", "expected a finite number", "inf"});
   const std::string bad = write("bad.csv", "index,body\n1,a,b\n");
   test::expect_input_error([&] { read_csv_table(bad); }, {"bad.csv:2", "expected 2 fields"});
 }
