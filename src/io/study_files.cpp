@@ -805,7 +805,7 @@ std::string sweep_row(const study::SweepSpec& spec, const study::SweepRow& row) 
     if (&col != kSweepColumns) s += ',';
     s += col.field(spec, row);
     if (col.name == kMeasuresAfter) {
-      for (const double x : row.measures) s += ',' + num(x);
+      for (const double x : row.measures) s += ',' + field(x);
     }
   }
   if (study::has_friction(spec)) add_sliding_fields(s, row.run);
