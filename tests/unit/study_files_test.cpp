@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <sstream>
 
 #include "flexrock/io/case_file.hpp"
@@ -157,10 +158,9 @@ TEST_F(StudyFiles, SweepJournalLinesMustBeThoseOfTheirRun) {
   EXPECT_NE(check(5, row0), "");
 }
 
-TEST_F(StudyFiles, ARunWhoseResultsOverflowLeavesNoInfInItsLine) {
+TEST_F(StudyFiles, FiguresWithNoFiniteValueAreEmptyFieldsNeverInf) {
   // M g h = 8.8e307 J is normal, but the record at factor 10 (3 g) gives a base shear of
-  // M a = 3e308 N: the run stops (results not finite). Its line held "inf" in energy_lost_J and
-  // max_impulse_N_s, which the journal's own check then read back as numbers
+  // M a = 3e308 N: the run stops, its message naming the output that overflowed
   write("heavy.toml", "[body]\ntype = \"rigid_block\"\nwidth = 4.0\nheight = 1.8\nmass = 1e307\n");
   write("r.dat", kRecord);
   const std::string m = write("m.toml",
@@ -170,27 +170,54 @@ TEST_F(StudyFiles, ARunWhoseResultsOverflowLeavesNoInfInItsLine) {
                               "[scales]\nfactors = [0.5, 10.0]\n");
   const SweepManifest sm = load_sweep_manifest(m);
   const JournalCheck check = sweep_journal_check(sm.spec);
-  const study::SweepRow over = study::run_sweep_one(sm.spec, {1, 0, 0, 1});
+  const std::vector<std::string> cols = sweep_columns();
+  auto at = [&cols](const char* name) {
+    return static_cast<std::size_t>(std::find(cols.begin(), cols.end(), name) - cols.begin());
+  };
+  // the line up to its message, and field k of it
+  auto figures = [&](const std::string& line) {
+    std::size_t start = 0;
+    for (std::size_t i = 0; i < at("message"); ++i) start = line.find(',', start) + 1;
+    return line.substr(0, start);
+  };
+  auto field_at = [](const std::string& line, std::size_t k) {
+    std::size_t start = 0;
+    for (std::size_t i = 0; i < k; ++i) start = line.find(',', start) + 1;
+    return line.substr(start, line.find(',', start) - start);
+  };
+  study::SweepRow over = study::run_sweep_one(sm.spec, {1, 0, 0, 1});
   ASSERT_EQ(over.run.status, Status::kStopped);
   EXPECT_NE(over.message.find("not finite"), std::string::npos) << over.message;
-  const std::string row = sweep_row(sm.spec, over);
-  for (const char* bad : {"inf", "nan"}) EXPECT_EQ(row.find(bad), std::string::npos) << row;
-  EXPECT_NE(row.find(",stopped,"), std::string::npos) << row;
+  std::string row = sweep_row(sm.spec, over);
   EXPECT_EQ(check(1, row), "") << row;
-  // the figures it had no finite value for are empty fields, and "inf" is not read back as one
-  const std::vector<std::string> cols = sweep_columns();
-  const auto at =
-      static_cast<std::size_t>(std::find(cols.begin(), cols.end(), "energy_lost_J") - cols.begin());
-  std::size_t start = 0;
-  for (std::size_t i = 0; i < at; ++i) start = row.find(',', start) + 1;
-  EXPECT_EQ(row[start], ',') << row;
+  for (const char* bad : {"inf", "nan"}) EXPECT_EQ(figures(row).find(bad), std::string::npos);
+  // figures of such a run that did overflow (the summary of a run the engine stopped can hold
+  // them: a sum of finite losses, a friction demand at a zero normal force) are empty fields
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  over.run.energy_lost = inf;
+  over.run.max_impulse = -inf;
+  over.run.max_friction_demand = std::numeric_limits<double>::quiet_NaN();
+  row = sweep_row(sm.spec, over);
+  for (const char* bad : {"inf", "nan"})
+    EXPECT_EQ(figures(row).find(bad), std::string::npos) << row;
+  for (const char* name : {"energy_lost_J", "max_impulse_N_s", "max_friction_demand"})
+    EXPECT_EQ(field_at(row, at(name)), "") << name << ": " << row;
+  EXPECT_EQ(check(1, row), "") << row;
+  // and a journal line with "inf" or "nan" where a number belongs is refused, as is a changed
+  // input field; the run at factor 0.5 writes every figure
+  auto with_field = [](const std::string& line, std::size_t k, const std::string& value) {
+    std::size_t start = 0;
+    for (std::size_t i = 0; i < k; ++i) start = line.find(',', start) + 1;
+    const std::size_t end = line.find(',', start);
+    return line.substr(0, start) + value + (end == std::string::npos ? "" : line.substr(end));
+  };
   for (const char* bad : {"inf", "-inf", "nan"}) {
-    EXPECT_NE(check(1, row.substr(0, start) + bad + row.substr(start)), "") << bad;
+    EXPECT_NE(check(1, with_field(row, at("energy_lost_J"), bad)), "") << bad;
+    EXPECT_NE(check(1, with_field(row, at("max_theta_rad"), bad)), "") << bad;
   }
-  // the run at factor 0.5 has every figure finite, as before
   const std::string ok = sweep_row(sm.spec, study::run_sweep_one(sm.spec, {0, 0, 0, 0}));
   EXPECT_EQ(check(0, ok), "");
-  EXPECT_EQ(ok.find(",,"), std::string::npos) << ok;
+  EXPECT_EQ(figures(ok).find(",,"), std::string::npos) << ok;
 }
 
 TEST_F(StudyFiles, SpectrumJournalLinesMustBeThoseOfTheirCell) {
