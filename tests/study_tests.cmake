@@ -18,6 +18,10 @@ if(TARGET flexrock)
                      ${PROJECT_SOURCE_DIR})
     set_tests_properties(cli_${script} PROPERTIES LABELS cli TIMEOUT 300)
   endforeach()
+  # flexrock plot needs the build's Python package: only where it is built
+  if(FLEXROCK_BUILD_PYTHON)
+    set_tests_properties(cli_study_intensity PROPERTIES ENVIRONMENT "FLEXROCK_TEST_PLOT=1")
+  endif()
   # the fit against scipy.optimize (Debian's python3-scipy, only for /usr/bin/python3)
   execute_process(COMMAND /usr/bin/python3 -c "import scipy.optimize, numpy"
                   RESULT_VARIABLE flexrock_no_scipy OUTPUT_QUIET ERROR_QUIET)
@@ -36,6 +40,9 @@ if(TARGET flexrock)
              COMMAND /usr/bin/python3 ${CMAKE_CURRENT_SOURCE_DIR}/unit/study_fragility_states.py
                      $<TARGET_FILE:flexrock>)
     set_tests_properties(cli_study_fragility_states PROPERTIES LABELS cli)
+    if(FLEXROCK_BUILD_PYTHON)
+      set_tests_properties(cli_study_fragility_states PROPERTIES ENVIRONMENT "FLEXROCK_TEST_PLOT=1")
+    endif()
   endif()
   # two MPI processes write the same file as threads do
   if(FLEXROCK_HAVE_MPI AND MPIEXEC_EXECUTABLE)
