@@ -110,6 +110,13 @@ void print_summary(const io::Case& c, const Body& body, const SimulationResult& 
     fmt::print("overturning: none\n");
   }
   fmt::print("impacts: {} (chatter cut-offs {})\n", x.impacts, x.chatter_cutoffs);
+  if (x.impacts > 0) {
+    fmt::print(
+        "impact law: {}; largest vertical impulse {:.4g} N s, largest force estimate {:.4g} N "
+        "(a half-sine contact of an assumed {:.3g} ms: impact_duration)\n",
+        to_string(c.options.impact_law), x.max_impulse, x.max_impact_force,
+        1e3 * c.options.impact_duration);
+  }
   if (x.lift_offs > 0) {
     fmt::print(
         "flight: {} lift-off(s), {:.4g} s in the air, up to {:.4g} mm; offset max {:.4g} mm, "
@@ -148,7 +155,16 @@ void print_summary(const io::Case& c, const Body& body, const SimulationResult& 
         "by sliding; the floor pulled on the pivot (events: pivot_tension)\n");
   }
   if (r.impact_gained_energy) {
-    fmt::print("warning: an impact gained energy (check restitution_factor)\n");
+    fmt::print(
+        "warning: an impact gained energy (check restitution_factor and the restitution "
+        "ratios)\n");
+  }
+  if (x.impact_law_fallbacks > 0) {
+    fmt::print(
+        "warning: the rigid_body impact law would have added energy at {} impact(s) (the modes "
+        "moved fast against the tilt rate); the paper's law took them (events: "
+        "impact_law_fallback)\n",
+        x.impact_law_fallbacks);
   }
   if (r.energy_unbalanced) {
     fmt::print(
@@ -425,6 +441,22 @@ int cmd_params(const std::string& file) {
         "  full contact: highest pinned-base mode {:.6g} Hz (exact propagation under a "
         "record)\n",
         cost.full_contact_omega / (2.0 * std::numbers::pi));
+  }
+  // the impact regime: the contact duration against the modal periods (theory §21)
+  if (n > 0) {
+    const ImpactRegime reg = impact_regime(body.natural_frequencies(), opt.impact_duration);
+    fmt::print(
+        "impact regime (docs/theory.md §21): an assumed contact of {:.3g} ms (impact_duration) "
+        "lasts {:.3g} x the shortest modal period, {:.3g} x the longest\n",
+        1e3 * opt.impact_duration, reg.duration_over_fastest, reg.duration_over_slowest);
+    fmt::print(
+        "  {}; closest impulsive law: {} (this run: {})\n",
+        reg.between ? "some modes are neither much slower nor much faster than the contact: "
+                      "neither impulsive law is exact for them"
+        : reg.closest == ImpactLaw::kPaper
+            ? "every mode is much slower than the contact: the modes cannot respond during it"
+            : "every mode is much faster than the contact: the body is rigid during it",
+        to_string(reg.closest), to_string(opt.impact_law));
   }
   // a case file: its duration and max_steps too; a body file: the rate alone
   if (!io::has_excitation(file)) {

@@ -38,6 +38,7 @@ from ._flexrock import (  # noqa: F401  (re-exported API)
     Extremes,
     GroundMotion,
     History,
+    ImpactLaw,
     InitialState,
     InputError,
     LumpedModel,
@@ -602,6 +603,10 @@ def _options(options: Optional[SimulationOptions], kwargs: dict) -> SimulationOp
             raise InputError(f"simulate: unknown option {key!r}")
         if key == "overturn" and isinstance(value, str):
             value = getattr(OverturnCriterion, value)
+        if key == "impact_law" and isinstance(value, str):
+            if value not in ImpactLaw.__members__:
+                raise InputError(f"simulate: impact_law {value!r} is not one of {', '.join(ImpactLaw.__members__)}")
+            value = ImpactLaw.__members__[value]
         setattr(options, key, value)
     return options
 

@@ -67,7 +67,13 @@ void bind_sim(py::module_& m) {
       .value("energy_unbalanced", EventKind::kEnergyUnbalanced)
       .value("slip_start", EventKind::kSlipStart)
       .value("stick", EventKind::kStick)
-      .value("slip_reversal", EventKind::kSlipReversal);
+      .value("slip_reversal", EventKind::kSlipReversal)
+      .value("impact_law_fallback", EventKind::kImpactLawFallback);
+  {
+    // the impact laws, from the engine's table
+    py::enum_<ImpactLaw> laws(m, "ImpactLaw", "How impacts and landings are resolved.");
+    for (const ImpactLawInfo& l : kImpactLaws) laws.value(l.name, l.law, l.description);
+  }
   py::enum_<OverturnCriterion>(m, "OverturnCriterion")
       .value("static_instability", OverturnCriterion::kStaticInstability)
       .value("half_pi", OverturnCriterion::kHalfPi);
@@ -93,7 +99,15 @@ void bind_sim(py::module_& m) {
       .def_readwrite("output_dt", &SimulationOptions::output_dt, "[s] 0: no time history")
       .def_readwrite("overturn", &SimulationOptions::overturn)
       .def_readwrite("chatter_ratio", &SimulationOptions::chatter_ratio)
-      .def_readwrite("restitution_factor", &SimulationOptions::restitution_factor)
+      .def_readwrite("restitution_factor", &SimulationOptions::restitution_factor,
+                     "factor on theta_dot+ of the paper and rigid_body laws")
+      .def_readwrite("impact_law", &SimulationOptions::impact_law)
+      .def_readwrite("restitution_ratio_edge1", &SimulationOptions::restitution_ratio_edge1,
+                     "restitution law: theta_dot+/theta_dot- landing on edge 1")
+      .def_readwrite("restitution_ratio_edge2", &SimulationOptions::restitution_ratio_edge2,
+                     "restitution law: theta_dot+/theta_dot- landing on edge 2")
+      .def_readwrite("impact_duration", &SimulationOptions::impact_duration,
+                     "[s] contact duration assumed for an impact's force estimate")
       .def_readwrite("friction_coefficient", &SimulationOptions::friction_coefficient,
                      "static Coulomb coefficient mu_s; inf: the floor holds (no sliding)")
       .def_readwrite("kinetic_friction_coefficient",
@@ -114,6 +128,8 @@ void bind_sim(py::module_& m) {
       .def_readonly("impulse_y", &Event::impulse_y)
       .def_readonly("friction_demand", &Event::friction_demand)
       .def_readonly("offset", &Event::offset, "[m] horizontal offset of the base centre")
+      .def_readonly("force_estimate", &Event::force_estimate,
+                    "[N] pi |impulse| / (2 impact_duration)")
       .def("__repr__", [](const Event& e) {
         return "<Event " + std::string(to_string(e.kind)) + " t=" + std::to_string(e.time) + ">";
       });
@@ -164,7 +180,11 @@ void bind_sim(py::module_& m) {
       .def_readonly("max_flight_height", &Extremes::max_flight_height, "[m]")
       .def_readonly("max_offset", &Extremes::max_offset, "[m]")
       .def_readonly("sliding_time", &Extremes::sliding_time, "[s] total time sliding")
-      .def_readonly("slips", &Extremes::slips, "times sliding started");
+      .def_readonly("slips", &Extremes::slips, "times sliding started")
+      .def_readonly("max_impact_force", &Extremes::max_impact_force,
+                    "[N] largest impact force estimate (impact_duration)")
+      .def_readonly("impact_law_fallbacks", &Extremes::impact_law_fallbacks,
+                    "impacts the rigid_body law left to the paper's (it would add energy)");
 
   py::class_<EnergyBalance>(m, "EnergyBalance")
       .def_readonly("input_work", &EnergyBalance::input_work)

@@ -501,6 +501,10 @@ const EventColumn kEventColumns[] = {
      [](const Event& e) { return e.impulse_y; }, nullptr},
     {"friction_demand", "-", "\\|F_I\\|/F_J, or \\|impulse_x\\|/impulse_y at an impact",
      [](const Event& e) { return e.friction_demand; }, nullptr},
+    {"force_estimate_N", "N",
+     "impacts: the peak force of a half-sine contact of the assumed `impact_duration` carrying the "
+     "impulse, pi \\|impulse\\| / (2 impact_duration)",
+     [](const Event& e) { return e.force_estimate; }, nullptr},
 };
 
 }  // namespace
@@ -620,6 +624,7 @@ std::string summary_json(const Case& c, const Body& body, const SimulationResult
                 {"max_friction_demand", x.max_friction_demand},
                 {"impacts", x.impacts},
                 {"max_impulse_N_s", x.max_impulse},
+                {"max_impact_force_estimate_N", x.max_impact_force},
                 {"max_impact_energy_loss_J", x.max_impact_energy_loss},
                 {"max_offset_m", x.max_offset},
                 {"max_flight_height_m", x.max_flight_height},
@@ -648,6 +653,7 @@ std::string summary_json(const Case& c, const Body& body, const SimulationResult
   j["warnings"] = {{"friction_exceeded", r.friction_exceeded},
                    {"chatter_cut_off", r.chatter_cut_off},
                    {"impact_gained_energy", r.impact_gained_energy},
+                   {"impact_law_fallbacks", x.impact_law_fallbacks},
                    {"pivot_tension", r.pivot_tension},
                    {"energy_unbalanced", r.energy_unbalanced}};
   const SimulationOptions& o = c.options;
@@ -659,11 +665,17 @@ std::string summary_json(const Case& c, const Body& body, const SimulationResult
       {"overturn", o.overturn == OverturnCriterion::kHalfPi ? "half_pi" : "static_instability"},
       {"chatter_ratio", o.chatter_ratio},
       {"restitution_factor", o.restitution_factor},
+      {"impact_law", to_string(o.impact_law)},
+      {"impact_duration_s", o.impact_duration},
       {"friction_coefficient", jnum(o.friction_coefficient)},
       {"steps", r.steps},
       {"rejected_steps", r.rejected_steps},
       {"rhs_evaluations", r.rhs_evaluations},
       {"events", r.events.size()}};
+  if (o.impact_law == ImpactLaw::kRestitution) {
+    j["solver"]["restitution_ratio_edge1"] = o.restitution_ratio_edge1;
+    j["solver"]["restitution_ratio_edge2"] = o.restitution_ratio_edge2;
+  }
   if (std::isfinite(o.friction_coefficient))
     j["solver"]["kinetic_friction_coefficient"] =
         std::min(o.friction_coefficient, o.kinetic_friction_coefficient);

@@ -291,6 +291,39 @@ inline void read_solver_keys(TableReader& r, SimulationOptions& o) {
       crit == "half_pi" ? OverturnCriterion::kHalfPi : OverturnCriterion::kStaticInstability;
   o.chatter_ratio = r.nonnegative_or("chatter_ratio", o.chatter_ratio, "[-]");
   o.restitution_factor = r.nonnegative_or("restitution_factor", o.restitution_factor, "[-]");
+  std::vector<std::string> laws;
+  for (const ImpactLawInfo& l : kImpactLaws) laws.emplace_back(l.name);
+  const std::string law = r.choice("impact_law", laws, to_string(o.impact_law));
+  for (const ImpactLawInfo& l : kImpactLaws)
+    if (law == l.name) o.impact_law = l.law;
+  // the measured ratios theta_dot+/theta_dot- of the restitution law: one for both edges, or
+  // one per landing edge
+  const bool restitution = o.impact_law == ImpactLaw::kRestitution;
+  auto ratio = [&](const char* key) {
+    const std::string rw = "a number in [0, 1] (theta_dot+/theta_dot- at an impact)";
+    const std::optional<double> v = r.number_opt(key, rw);
+    if (v && !(*v >= 0.0 && *v <= 1.0)) r.expected(key, rw);
+    if (v && !restitution)
+      r.expected(key, std::string("no ") + key +
+                          ": it applies to impact_law = \"restitution\" "
+                          "(impact_law is \"" +
+                          law + "\")");
+    return v;
+  };
+  const auto both = ratio("restitution_ratio");
+  const auto edge1 = ratio("restitution_ratio_edge1"), edge2 = ratio("restitution_ratio_edge2");
+  if (both) o.restitution_ratio_edge1 = o.restitution_ratio_edge2 = *both;
+  if (edge1) o.restitution_ratio_edge1 = *edge1;
+  if (edge2) o.restitution_ratio_edge2 = *edge2;
+  if (restitution && !both && !(edge1 && edge2))
+    r.expected("restitution_ratio",
+               "the measured theta_dot+/theta_dot- in [0, 1] with impact_law = \"restitution\" "
+               "(restitution_ratio for both edges, or restitution_ratio_edge1 and _edge2)");
+  if (o.impact_law == ImpactLaw::kRestitution && o.restitution_factor != 1.0)
+    r.expected("restitution_factor",
+               "no restitution_factor with impact_law = \"restitution\" (give the measured "
+               "ratio as restitution_ratio)");
+  o.impact_duration = r.positive_or("impact_duration", o.impact_duration, "[s]");
   const std::string fw = "a number > 0 [-] (or inf: no friction limit)";
   if (const auto mu = r.number_opt("friction_coefficient", fw, true)) {
     if (!(*mu > 0.0)) r.expected("friction_coefficient", fw);

@@ -63,6 +63,8 @@ const char* to_string(EventKind k) {
       return "stick";
     case EventKind::kSlipReversal:
       return "slip_reversal";
+    case EventKind::kImpactLawFallback:
+      return "impact_law_fallback";
   }
   return "?";
 }
@@ -96,8 +98,20 @@ void check_options(const Body& body, const InitialState& init, const SimulationO
       "options: chatter_ratio must be >= 0, got " + std::to_string(o.chatter_ratio));
   FLEXROCK_THROW_UNLESS(
       std::isfinite(o.restitution_factor) && o.restitution_factor >= 0.0,
-      "options: restitution_factor must be >= 0 (1: the paper's impact law), got " +
+      "options: restitution_factor must be >= 0 (1: the impact law's own theta_dot), got " +
           std::to_string(o.restitution_factor));
+  for (const double r : {o.restitution_ratio_edge1, o.restitution_ratio_edge2})
+    FLEXROCK_THROW_UNLESS(r >= 0.0 && r <= 1.0,
+                          "options: restitution_ratio_edge1/2 must be in [0, 1] "
+                          "(theta_dot+/theta_dot- at an impact; 0 ends rocking), got " +
+                              std::to_string(r));
+  FLEXROCK_THROW_UNLESS(o.impact_law != ImpactLaw::kRestitution || o.restitution_factor == 1.0,
+                        "options: restitution_factor = " + std::to_string(o.restitution_factor) +
+                            " with impact_law = restitution: give the measured ratio as "
+                            "restitution_ratio instead (the factor applies to paper and "
+                            "rigid_body)");
+  positive(o.impact_duration, "impact_duration",
+           "seconds: the contact duration assumed for an impact's force estimate, e.g. 0.002");
   FLEXROCK_THROW_UNLESS(!(o.friction_coefficient <= 0.0) && !std::isnan(o.friction_coefficient),
                         "options: friction_coefficient must be > 0 (or infinite for none), got " +
                             std::to_string(o.friction_coefficient));

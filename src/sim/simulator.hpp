@@ -157,7 +157,8 @@ class Simulator final : private GuardProbe {
   bool uplift(double t, State& x, int e);
   bool impact(double t, State& x);
   bool lift_off(double t, State& x);
-  bool land(double t, State& x, int e);
+  // `rigid`: the rigid_body law (false: the paper's, also when rigid_body would add energy)
+  bool land(double t, State& x, int e, bool rigid);
   bool overturned(double t, State& x);
   bool after_impulse(double t, State& x, const Event& ev, double th);
   bool start_slip(double t, State& x);
@@ -171,7 +172,9 @@ class Simulator final : private GuardProbe {
   // ends. `from_flight`: a landing (the other tipping point may take over at theta = 0);
   // `flat`: both edges land whatever the single-point map gives (chatter)
   bool friction_impact(double t, State& x, int e, const Eigen::Vector2d& v_c, bool from_flight,
-                       bool flat, EventKind kind, bool chatter);
+                       bool flat, EventKind kind, bool chatter, bool rigid);
+  // rigid_body would have added energy at t: the paper's law takes the impact, said in an event
+  void law_fallback(double t, int e);
   bool stop(double t, std::string why);
   void record(double t);  // a peak
   void count_impact(const Event& ev, double impulse_y, double loss, bool chatter);
@@ -236,6 +239,8 @@ class Simulator final : private GuardProbe {
   std::array<bool, kMaxGuards> zero_start_{};  // guards known to turn positive from zero
   std::array<double, 2> overturn_limit_{};     // [rad] on edge 1 (theta > 0) and edge 2
   double offset_ = 0.0;              // [m] horizontal offset of the base centre while in contact
+  ImpactRule rule_;                  // the impact law and its parameters
+  bool rigid_law_ = false;           // rule_ is rigid_body
   double mu_s_ = 0.0, mu_k_ = 0.0;   // static and kinetic friction coefficients (inf: no limit)
   double slide_start_ = 0.0;         // [s] when the current slide began
   bool slide_inconsistent_ = false;  // a sliding mode had no consistent slip acceleration
@@ -274,6 +279,11 @@ Simulator<N, MaxN>::Simulator(const Body& body, const GroundMotion& motion,
   qd_.resize(n_);
   qdd_.resize(n_);
   qdd1_.resize(n_);
+  rule_.law = opt.impact_law;
+  rule_.restitution_factor = opt.restitution_factor;
+  rule_.ratio_edge1 = opt.restitution_ratio_edge1;
+  rule_.ratio_edge2 = opt.restitution_ratio_edge2;
+  rigid_law_ = opt.impact_law == ImpactLaw::kRigidBody;
   mu_s_ = opt.friction_coefficient;
   mu_k_ = std::min(opt.kinetic_friction_coefficient, opt.friction_coefficient);
   // shortest period among the pinned-base modes and the rigid rocking motion
@@ -628,7 +638,8 @@ bool Simulator<N, MaxN>::enter_mode(double t, State& x) {
   if (at_or_below(Guard::kSlipStop)) return stick(t, x);
   if (flying()) {
     for (int e : {1, 2}) {
-      if (at_or_below(e == 1 ? Guard::kLandingEdge1 : Guard::kLandingEdge2)) return land(t, x, e);
+      if (at_or_below(e == 1 ? Guard::kLandingEdge1 : Guard::kLandingEdge2))
+        return land(t, x, e, rigid_law_);
     }
   }
   return true;
@@ -896,7 +907,7 @@ bool Simulator<N, MaxN>::fire(int slot, double t, State& x) {
     case Reset::kOverturn:
       return overturned(t, x);
     case Reset::kLanding:
-      return land(t, x, g.edge);
+      return land(t, x, g.edge, rigid_law_);
     case Reset::kSlip:
       return start_slip(t, x);
     case Reset::kStick:
@@ -932,10 +943,21 @@ bool Simulator<N, MaxN>::uplift(double t, State& x, int e) {
 }
 
 template <int N, int MaxN>
-void Simulator<N, MaxN>::count_impact(const Event& ev, double impulse_y, double loss,
+void Simulator<N, MaxN>::law_fallback(double t, int e) {
+  ++res_.extremes.impact_law_fallbacks;
+  rec_.event(make_event(t, EventKind::kImpactLawFallback, e));
+}
+
+template <int N, int MaxN>
+void Simulator<N, MaxN>::count_impact(const Event& impact, double impulse_y, double loss,
                                       bool chatter) {
+  // the force a contact of the assumed duration would carry: a half-sine pulse of this impulse
+  Event ev = impact;
+  ev.force_estimate =
+      0.5 * std::numbers::pi * std::hypot(ev.impulse_x, ev.impulse_y) / opt_.impact_duration;
   rec_.event(ev);
   Extremes& ex = res_.extremes;
+  ex.max_impact_force = std::max(ex.max_impact_force, ev.force_estimate);
   ++ex.impacts;
   if (chatter) {
     ++ex.chatter_cutoffs;
@@ -965,8 +987,7 @@ bool Simulator<N, MaxN>::impact(double t, State& x) {
   unpack(x);
   const double thd_minus = x(ithd());
   const bool chatter = t - last_contact_change_ < chatter_interval_;
-  const auto out =
-      resolve_impact(dyn_, landing, q_, thd_minus, qd_, opt_.restitution_factor, chatter);
+  const auto out = resolve_impact(dyn_, landing, q_, thd_minus, qd_, rule_, chatter);
   // with friction: a sliding pivot, or an impulse outside the friction cone, needs the impact law
   // with Coulomb friction (theory §19); the paper's law is its sticking case. A chatter cut-off of
   // a sticking pivot is a numerical device on a vanishing impulse whose ratio |I_x|/I_y says
@@ -978,8 +999,10 @@ bool Simulator<N, MaxN>::impact(double t, State& x) {
     dyn_.cg_from_pivot(edge(), 0.0, 1.0, q_, thd_minus, qd_, r, v_c);
     if (sliding()) v_c(0) += x(isv());
     return friction_impact(t, x, landing, v_c, false, chatter,
-                           chatter ? EventKind::kChatterCutoff : EventKind::kImpact, chatter);
+                           chatter ? EventKind::kChatterCutoff : EventKind::kImpact, chatter,
+                           rigid_law_);
   }
+  if (out.law_fallback) law_fallback(t, landing);
   Event ev = make_event(t,
                         chatter ? EventKind::kChatterCutoff
                                 : (out.both_edges ? EventKind::kRockingEnded : EventKind::kImpact),
@@ -1062,7 +1085,7 @@ bool Simulator<N, MaxN>::lift_off(double t, State& x) {
 // tipping point e lands after a flight: the plastic corner impact (theory "Landing"); at theta = 0
 // with the body turning into the floor about e, both edges land (flat)
 template <int N, int MaxN>
-bool Simulator<N, MaxN>::land(double t, State& x, int e) {
+bool Simulator<N, MaxN>::land(double t, State& x, int e, bool rigid) {
   unpack(x);
   const double th = x(0), thd_minus = x(ithd());
   const double sn = std::sin(th), cs = std::cos(th), h = dyn_.height();
@@ -1072,12 +1095,14 @@ bool Simulator<N, MaxN>::land(double t, State& x, int e) {
     const bool chatter = t - last_contact_change_ < chatter_interval_;
     if (chatter) tension_ = hold_tension_ = true;  // as below: grazing hops cannot accumulate
     return friction_impact(t, x, e, v_c, true, false,
-                           chatter ? EventKind::kChatterCutoff : EventKind::kLanding, chatter);
+                           chatter ? EventKind::kChatterCutoff : EventKind::kLanding, chatter,
+                           rigid);
   }
+  const int e_in = e;
   const Eigen::Vector2d v_corner = dyn_.corner_velocity_body(e, sn, cs, q_, thd_minus, qd_, v_c);
   double thd_plus = 0.0;
   Vec qd_plus(n_);
-  dyn_.corner_impact(e, q_, thd_minus, qd_, v_corner, thd_plus, qd_plus);
+  dyn_.corner_impact(e, q_, thd_minus, qd_, v_corner, thd_plus, qd_plus, rigid);
   bool flat = false;
   if (th == 0.0 && edge_sign(e) * thd_plus <= 0.0) {
     // level: the body rocks on the other tipping point if its map turns it up about that one,
@@ -1086,7 +1111,7 @@ bool Simulator<N, MaxN>::land(double t, State& x, int e) {
     const Eigen::Vector2d v_other = dyn_.corner_velocity_body(o, sn, cs, q_, thd_minus, qd_, v_c);
     double thd_o = 0.0;
     Vec qd_o(n_);
-    dyn_.corner_impact(o, q_, thd_minus, qd_, v_other, thd_o, qd_o);
+    dyn_.corner_impact(o, q_, thd_minus, qd_, v_other, thd_o, qd_o, rigid);
     if (edge_sign(o) * thd_o > 0.0) {
       e = o;
       thd_plus = thd_o;
@@ -1097,27 +1122,42 @@ bool Simulator<N, MaxN>::land(double t, State& x, int e) {
   }
   const double x_corner = dyn_.corner_x(e, sn, cs, q_, x(ixc()));
   if (flat) {
-    // both edges on the floor: theta_dot = 0, the modal momenta are conserved
+    // both edges on the floor: theta_dot = 0, the modal momenta are conserved (rigid_body: the
+    // modal velocities)
     thd_plus = 0.0;
-    const Vec p = dyn_.flight_modal_momenta(e, q_, thd_minus, qd_, v_corner);
-    qd_plus = dyn_.mu_inverse() * p;
+    if (rigid) {
+      qd_plus = qd_;
+    } else {
+      const Vec p = dyn_.flight_modal_momenta(e, q_, thd_minus, qd_, v_corner);
+      qd_plus = dyn_.mu_inverse() * p;
+    }
   }
-  x(ithd()) = thd_plus;
-  x.segment(iqd(), n_) = qd_plus;
   // the c.g. velocity after, for the impulse
   Eigen::Vector2d r, v_after;
   dyn_.cg_from_pivot(e, sn, cs, q_, thd_plus, qd_plus, r, v_after);
-  offset_ = x_corner - h * dyn_.alpha(e);
-  switch_mode(flat ? ContactMode::kFullContact
-                   : (e == 1 ? ContactMode::kRockingEdge1 : ContactMode::kRockingEdge2),
-              t, x);
   if (flat)
     v_after = dyn_.height() * Eigen::Vector2d(dyn_.psi_x().dot(qd_plus), dyn_.psi_y().dot(qd_plus));
   const Eigen::Vector2d impulse = dyn_.mass() * (v_after - v_c);
   // a plastic impact loses the kinetic energy of the velocity jump (Carnot), which is >= 0 by
-  // construction: the jump's c.g. velocity and its motion about the c.g. (theory §16)
+  // construction: the jump's c.g. velocity and its motion about the c.g. (theory §16). The
+  // rigid_body law is no projection: its loss is the difference of the energies, and where that
+  // is a gain the paper's law takes the landing
   const Vec dqd = qd_plus - qd_;
-  const double loss = dyn_.flight_kinetic_energy(q_, thd_plus - thd_minus, dqd, v_after - v_c);
+  double loss = dyn_.flight_kinetic_energy(q_, thd_plus - thd_minus, dqd, v_after - v_c);
+  if (rigid) {
+    const double before = dyn_.flight_kinetic_energy(q_, thd_minus, qd_, v_c);
+    loss = before - dyn_.flight_kinetic_energy(q_, thd_plus, qd_plus, v_after);
+    if (loss < -kImpactEnergyRounding * before) {
+      law_fallback(t, e_in);
+      return land(t, x, e_in, false);
+    }
+  }
+  x(ithd()) = thd_plus;
+  x.segment(iqd(), n_) = qd_plus;
+  offset_ = x_corner - h * dyn_.alpha(e);
+  switch_mode(flat ? ContactMode::kFullContact
+                   : (e == 1 ? ContactMode::kRockingEdge1 : ContactMode::kRockingEdge2),
+              t, x);
   Event ev = make_event(t, EventKind::kLanding, flat ? 0 : e);
   ev.theta = th;
   ev.theta_dot_before = thd_minus;
@@ -1273,8 +1313,8 @@ bool Simulator<N, MaxN>::stick(double t, State& x) {
 // both edges (theta_dot+ = 0, the modal momenta conserved), with the same friction rule.
 template <int N, int MaxN>
 bool Simulator<N, MaxN>::friction_impact(double t, State& x, int e, const Eigen::Vector2d& v_c,
-                                         bool from_flight, bool flat, EventKind kind,
-                                         bool chatter) {
+                                         bool from_flight, bool flat, EventKind kind, bool chatter,
+                                         bool rigid) {
   unpack(x);
   if (!from_flight) x(0) = 0.0;  // a rocking impact is located at theta = 0 up to rounding
   const double th = x(0), thd_minus = x(ithd());
@@ -1291,8 +1331,8 @@ bool Simulator<N, MaxN>::friction_impact(double t, State& x, int e, const Eigen:
     const Eigen::Vector2d v_corner = dyn_.corner_velocity_body(c, sn, cs, q_, thd_minus, qd_, v_c);
     k.qd0.resize(n_);
     k.qd1.resize(n_);
-    dyn_.corner_impact(c, q_, thd_minus, qd_, v_corner, k.thd0, k.qd0);
-    dyn_.corner_impact(c, q_, 0.0, Vec::Zero(n_), -unit_body, k.thd1, k.qd1);
+    dyn_.corner_impact(c, q_, thd_minus, qd_, v_corner, k.thd0, k.qd0, rigid);
+    dyn_.corner_impact(c, q_, 0.0, Vec::Zero(n_), -unit_body, k.thd1, k.qd1, rigid);
     Eigen::Vector2d r;
     dyn_.cg_from_pivot(c, sn, cs, q_, k.thd0, k.qd0, r, k.vc0);
     dyn_.cg_from_pivot(c, sn, cs, q_, k.thd1, k.qd1, r, k.vc1);
@@ -1303,8 +1343,9 @@ bool Simulator<N, MaxN>::friction_impact(double t, State& x, int e, const Eigen:
     const Eigen::Vector2d v_corner = dyn_.corner_velocity_body(e, sn, cs, q_, thd_minus, qd_, v_c);
     const Vec p = dyn_.flight_modal_momenta(e, q_, thd_minus, qd_, v_corner);
     k.thd0 = k.thd1 = 0.0;
-    k.qd0 = dyn_.mu_inverse() * p;
-    k.qd1 = -(dyn_.mu_inverse() * dyn_.psi_x()) / h;
+    k.qd0 = rigid ? qd_ : Vec(dyn_.mu_inverse() * p);
+    // rigid_body: the slip carries the body as a whole, the modes keep their rates
+    k.qd1 = rigid ? Vec(Vec::Zero(n_)) : Vec(-(dyn_.mu_inverse() * dyn_.psi_x()) / h);
     k.vc0 = h * Eigen::Vector2d(dyn_.psi_x().dot(k.qd0), dyn_.psi_y().dot(k.qd0));
     k.vc1 = Eigen::Vector2d(1.0 + h * dyn_.psi_x().dot(k.qd1), h * dyn_.psi_y().dot(k.qd1));
   };
@@ -1387,6 +1428,10 @@ bool Simulator<N, MaxN>::friction_impact(double t, State& x, int e, const Eigen:
   const Eigen::Vector2d v_after = k.vc0 + v_plus * k.vc1;
   const Eigen::Vector2d impulse = m * (v_after - v_c);
   const double loss = kinetic_before - dyn_.flight_kinetic_energy(q_, thd_plus, qd_plus, v_after);
+  if (rigid && loss < -kImpactEnergyRounding * kinetic_before) {
+    law_fallback(t, e);
+    return friction_impact(t, x, e, v_c, from_flight, flat, kind, chatter, false);
+  }
   // the contact point's place: the landing tipping point, or the base centre when flat
   const double d_now = offset_of(x);
   if (from_flight) {

@@ -45,8 +45,8 @@ mass = 1.0
 $PULSE" "case.toml:1:" "key 'body.height': missing"
 # unknown key with a suggestion
 bad "$BODY$PULSE[solver]
-restitution = 0.9
-" "case.toml:13:" "key 'solver.restitution': unknown key" "did you mean 'solver.restitution_factor'"
+restitution_facter = 0.9
+" "case.toml:13:" "key 'solver.restitution_facter': unknown key" "did you mean 'solver.restitution_factor'"
 # negative and zero sizes
 bad "[body]
 type = \"rigid_block\"

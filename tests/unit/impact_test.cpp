@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
+#include <vector>
 
 #include "support/bodies.hpp"
 
@@ -124,14 +126,166 @@ TEST_P(FlexibleImpact, RestitutionFactorKeepsModalMomenta) {
   const Body body(lb.params());
   const DynX dyn(body);
   const VectorX q = 0.01 * VectorX::Ones(n), qd = 0.3 * VectorX::Ones(n);
-  const auto plain = resolve_impact(dyn, 1, q, 0.6, qd, 1.0);
-  const auto scaled = resolve_impact(dyn, 1, q, 0.6, qd, 1.2);
+  const auto plain = resolve_impact(dyn, 1, q, 0.6, qd, {.restitution_factor = 1.0});
+  const auto scaled = resolve_impact(dyn, 1, q, 0.6, qd, {.restitution_factor = 1.2});
   ASSERT_FALSE(plain.both_edges);
   EXPECT_NEAR(scaled.theta_dot, 1.2 * plain.theta_dot, 1e-14);
   // p = mu q_dot + b theta_dot (post pivot) is the same whatever the factor
   const VectorX p1 = dyn.mu() * plain.q_dot + dyn.coupling(dyn.alpha(1), q) * plain.theta_dot;
   const VectorX p2 = dyn.mu() * scaled.q_dot + dyn.coupling(dyn.alpha(1), q) * scaled.theta_dot;
   EXPECT_LT((p1 - p2).norm(), 1e-13);
+}
+
+// the impact laws (docs/theory.md, "Impact laws"), checked mass by mass on random lumped bodies
+TEST_P(FlexibleImpact, RigidBodyLawMassByMass) {
+  const int n = GetParam();
+  int rigid = 0, fallbacks = 0;
+  for (unsigned seed = 1; seed <= 8; ++seed) {
+    const auto lb = test::random_lumped(n, seed);
+    const Body body(lb.params());
+    const DynX dyn(body);
+    for (const double rate : {0.05, 0.5, 5.0, 50.0}) {
+      const VectorX q = 0.02 * VectorX::Random(n);
+      const VectorX qd = rate * VectorX::Random(n);
+      for (int landing : {1, 2}) {
+        const double thd = landing == 1 ? 0.8 : -0.8;
+        const auto out = resolve_impact(dyn, landing, q, thd, qd, {.law = ImpactLaw::kRigidBody});
+        const auto paper = resolve_impact(dyn, landing, q, thd, qd);
+        const auto before = point_velocities(lb, landing == 1 ? 2 : 1, q, thd, qd);
+        const auto after =
+            point_velocities(lb, out.both_edges ? landing : landing, q, out.theta_dot, out.q_dot);
+        const double lx = landing == 1 ? lb.x1 : lb.x2;
+        double h_before = 0, h_after = 0, t_before = 0, t_after = 0;
+        Eigen::Vector2d momentum = Eigen::Vector2d::Zero();
+        for (std::size_t k = 0; k < lb.pts.size(); ++k) {
+          const auto& p = lb.pts[k];
+          double x = p.x, y = p.y;
+          for (int i = 0; i < n; ++i) {
+            x += p.phix[i] * q(i);
+            y += p.phiy[i] * q(i);
+          }
+          h_before += p.m * ((x - lx) * before[k](1) - y * before[k](0));
+          h_after += p.m * ((x - lx) * after[k](1) - y * after[k](0));
+          t_before += 0.5 * p.m * before[k].squaredNorm();
+          t_after += 0.5 * p.m * after[k].squaredNorm();
+          momentum += p.m * (after[k] - before[k]);
+        }
+        // the impulse is the change of the momenta summed mass by mass; the loss is that of the
+        // kinetic energies summed mass by mass, and never a gain
+        EXPECT_LT((out.impulse - momentum).norm(), 1e-10 * (momentum.norm() + 1.0));
+        EXPECT_NEAR(out.energy_loss, t_before - t_after, 1e-9 * (t_before + 1.0));
+        EXPECT_GE(out.energy_loss, -1e-12 * t_before);
+        if (out.law_fallback) {
+          ++fallbacks;
+          EXPECT_EQ(out.theta_dot, paper.theta_dot);
+          EXPECT_EQ(out.q_dot, paper.q_dot);
+          continue;
+        }
+        // the modal velocities are continuous
+        EXPECT_EQ(out.q_dot, qd);
+        if (out.both_edges) continue;
+        ++rigid;
+        // the moment of momentum about the landing point, summed mass by mass, is conserved
+        EXPECT_NEAR(h_after, h_before, 1e-11 * (std::abs(h_before) + 1.0)) << "seed " << seed;
+      }
+    }
+  }
+  EXPECT_GE(rigid, 20);
+  // fast modes against theta_dot make the rigid law add energy: the paper's law takes them
+  if (n > 0) {
+    EXPECT_GE(fallbacks, 1);
+  }
+}
+
+TEST(ImpactLaws, RigidBodyLawConvergesToHousnerLikeOneOverStiffness) {
+  // a body at rest in its static deformation under gravity, landing: the rigid_body ratio differs
+  // from Housner's by O(q_static) = O(1/stiffness), the paper's law by O(1)
+  std::vector<double> err;
+  double paper_err = 0.0;
+  for (const double k : {2e5, 2e6, 2e7, 2e8}) {
+    const Body body(test::random_lumped_body(2, 7, k));
+    const DynX dyn(body);
+    const double z2 = body.params().zeta2, a1 = body.alpha1(), a2 = body.alpha2();
+    const double housner = (1.0 + z2 - a1 * a2) / (1.0 + z2 + a1 * a1);
+    const VectorX& q = body.static_deformation();
+    const VectorX qd = VectorX::Zero(2);
+    const auto rigid = resolve_impact(dyn, 1, q, 0.5, qd, {.law = ImpactLaw::kRigidBody});
+    const auto paper = resolve_impact(dyn, 1, q, 0.5, qd);
+    err.push_back(std::abs(rigid.theta_dot / 0.5 - housner));
+    paper_err = std::abs(paper.theta_dot / 0.5 - housner);
+  }
+  // first order: each tenfold stiffening divides the error by ten
+  for (std::size_t i = 1; i < err.size(); ++i) EXPECT_NEAR(err[i - 1] / err[i], 10.0, 0.5);
+  EXPECT_LT(err.back(), 1e-6);
+  EXPECT_GT(paper_err, 0.05);
+}
+
+TEST(ImpactLaws, RegimeFromTheContactDurationAgainstTheModalPeriods) {
+  const double two_pi = 2.0 * std::numbers::pi;
+  const VectorX omega = two_pi * (VectorX(2) << 1.0, 50.0).finished();  // 1 s and 20 ms periods
+  // 0.1 ms: 0.005 of the shortest period, every mode much slower than the contact
+  const auto short_contact = impact_regime(omega, 1e-4);
+  EXPECT_NEAR(short_contact.duration_over_fastest, 0.005, 1e-15);
+  EXPECT_EQ(short_contact.closest, ImpactLaw::kPaper);
+  EXPECT_FALSE(short_contact.between);
+  // 20 s: 20 x the longest period, every mode much faster
+  const auto long_contact = impact_regime(omega, 20.0);
+  EXPECT_NEAR(long_contact.duration_over_slowest, 20.0, 1e-12);
+  EXPECT_EQ(long_contact.closest, ImpactLaw::kRigidBody);
+  // 0.1 s: 5 x the 20 ms period and 0.1 x the 1 s one: in between; the slowest mode, impulsive,
+  // names the law
+  const auto mixed = impact_regime(omega, 0.1);
+  EXPECT_TRUE(mixed.between);
+  EXPECT_EQ(mixed.closest, ImpactLaw::kPaper);
+  EXPECT_EQ(impact_regime(VectorX(0), 0.002).closest, ImpactLaw::kPaper);
+}
+
+TEST(ImpactLaws, RigidBodyEqualsPaperWhenTheModesCarryNoMomentum) {
+  // psi = beta = gamma = 0: the modes carry no linear momentum and no moment of momentum, so the
+  // paper's law leaves the modal velocities unchanged and both laws coincide
+  BodyParameters p = BodyParameters::rigid(800, 1.2, 0.4, 0.5, 0.35);
+  const int n = 3;
+  MatrixX a = MatrixX::Random(n, n);
+  p.mu = 0.1 * (a * a.transpose() + n * MatrixX::Identity(n, n));
+  p.kappa = 50.0 * MatrixX::Identity(n, n);
+  p.gamma = MatrixX::Zero(n, n);
+  p.psi_x = p.psi_y = p.beta = VectorX::Zero(n);
+  p.delta = 0.05 * VectorX::Random(n);
+  const Body body(p);
+  const DynX dyn(body);
+  const VectorX q = 0.03 * VectorX::Random(n), qd = 2.0 * VectorX::Random(n);
+  for (int landing : {1, 2}) {
+    const double thd = landing == 1 ? 0.6 : -0.6;
+    const auto paper = resolve_impact(dyn, landing, q, thd, qd);
+    const auto rigid = resolve_impact(dyn, landing, q, thd, qd, {.law = ImpactLaw::kRigidBody});
+    EXPECT_FALSE(rigid.law_fallback);
+    EXPECT_NEAR(rigid.theta_dot, paper.theta_dot, 1e-14);
+    EXPECT_LT((rigid.q_dot - paper.q_dot).norm(), 1e-14);
+    EXPECT_NEAR(rigid.energy_loss, paper.energy_loss, 1e-10 * paper.energy_loss);
+  }
+}
+
+TEST(ImpactLaws, AbsoluteRestitutionGivesTheRatioPerEdge) {
+  const auto lb = test::random_lumped(2, 4);
+  const Body body(lb.params());
+  const DynX dyn(body);
+  const VectorX q = 0.01 * VectorX::Ones(2), qd = 0.2 * VectorX::Ones(2);
+  const ImpactRule rule{.law = ImpactLaw::kRestitution, .ratio_edge1 = 0.83, .ratio_edge2 = 0.61};
+  const auto on1 = resolve_impact(dyn, 1, q, 0.7, qd, rule);
+  const auto on2 = resolve_impact(dyn, 2, q, -0.7, qd, rule);
+  EXPECT_EQ(on1.theta_dot, 0.83 * 0.7);
+  EXPECT_EQ(on2.theta_dot, 0.61 * -0.7);
+  // the modal momenta are conserved: mu q_dot+ + b_post theta_dot+ = mu q_dot- + b_pre theta_dot-
+  for (const auto& [out, e] : {std::pair{on1, 1}, std::pair{on2, 2}}) {
+    const VectorX p_after = dyn.mu() * out.q_dot + dyn.coupling(dyn.alpha(e), q) * out.theta_dot;
+    const VectorX p_before =
+        dyn.mu() * qd + dyn.coupling(dyn.alpha(e == 1 ? 2 : 1), q) * (e == 1 ? 0.7 : -0.7);
+    EXPECT_LT((p_after - p_before).norm(), 1e-13);
+  }
+  // a ratio of zero ends rocking
+  const auto stop =
+      resolve_impact(dyn, 1, q, 0.7, qd, {.law = ImpactLaw::kRestitution, .ratio_edge1 = 0.0});
+  EXPECT_TRUE(stop.both_edges);
 }
 
 INSTANTIATE_TEST_SUITE_P(Modes, FlexibleImpact, ::testing::Values(1, 2, 3, 5));

@@ -578,6 +578,30 @@ class General:
             eqs = [sp.expand(pmod(Rp, j) - pmod(Rm, j)).subs(thp, 0) for j in range(n)]
             target = [dot(self.mu[j], qdp) - dot(self.mu[j], qdm) - bpre[j] * thm for j in range(n)]
             res['both_edges_modal'] = all(is_zero(eqs[j] - M * h ** 2 * target[j]) for j in range(n))
+        # impact laws (theory "Impact laws"). rigid_body: qd+ = qd- (the velocity jump is a rigid
+        # field), and the moment of momentum about the landing point alone is conserved:
+        #   m_post thd+ = (m_post - Dalpha w_post,x) thd-
+        Rr = (vb0[0] + self.u_body(aq, thp, qdm)[0], vb0[1] + self.u_body(aq, thp, qdm)[1])
+        sol_r = sp.solve(sp.expand(H(Rr) - H(Rm)), thp)
+        wpx, mpost = conv_w(self.P, aq, self.q)[0], conv_A(self.P, aq, self.q)[0][0]
+        res['rigid_body_map'] = len(sol_r) == 1 and is_zero(sol_r[0] - thm * (1 - (ap - aq) * wpx / mpost))
+        # in the rigid limit (q = 0, any modes) it is Housner's ratio, landing on edge 1
+        a1s, a2s = sp.symbols('alpha1 alpha2', positive=True)
+        lim = (sol_r[0] / thm).subs({q_: 0 for q_ in self.q}).subs({ap: a2s, aq: -a1s})
+        res['rigid_body_housner_limit'] = is_zero(lim - (1 + self.zeta2 - a1s * a2s) / (1 + self.zeta2 + a1s ** 2))
+        # its loss is the difference of T_rel, and the energy identity holds for it as for any jump
+        loss_r = self.Xd * self.integrate(Rr[0] - Rm[0]) + self.Yd * self.integrate(Rr[1] - Rm[1]) - (Tin(Rr) - Tin(Rm))
+        res['rigid_body_energy_identity'] = is_zero(loss_r - (conv_Trel(self.P, ap, self.q, thm, qdm)
+                                                             - conv_Trel(self.P, aq, self.q, thp, qdm)))
+        # restitution: thd+ = r thd-, the modal momenta conserved; loss = M h^2/2 (S_pre - r^2 S_post) thd-^2
+        if n > 0:
+            r_ = sp.Symbol('r')
+            Rs = (vb0[0] + self.u_body(aq, r_ * thm, qdp)[0], vb0[1] + self.u_body(aq, r_ * thm, qdp)[1])
+            eqs_s = [sp.expand(pmod(Rs, j) - pmod(Rm, j)) for j in range(n)]
+            sol_s = sp.solve(eqs_s, qdp, dict=True)[0]
+            bpre, bpost = conv_b(self.P, ap, self.q), conv_b(self.P, aq, self.q)
+            mom = [dot(self.mu[j], qdm) + bpre[j] * thm - bpost[j] * r_ * thm for j in range(n)]
+            res['restitution_modal'] = all(is_zero(dot(self.mu[j], [sol_s[v] for v in qdp]) - mom[j]) for j in range(n))
         if n == 0:
             sol = sp.solve(cons[0], thp)[0]
             a1s, a2s = sp.symbols('alpha1 alpha2', positive=True)
@@ -1173,6 +1197,29 @@ def impact(K, body, landing, q, thdm, qdm, vb, chk, stats):
     # closed forms: I_other_y = -M h S_post thd+ / Dalpha,  I_land_y = M h S_pre thd- / Dalpha
     chk.eq(I_other_y, -M * h * S_post * thdp / Dal, 'both-edges I_other_y')
     chk.eq(I_land_y, M * h * S_pre * thdm / Dal, 'both-edges I_land_y')
+    # impact laws (theory "Impact laws"), mass by mass. rigid_body: every mass keeps its modal
+    # velocity (the jump is a rigid field) and the moment of momentum about the landing point,
+    # summed over the masses, is conserved; the impulse is the change of the summed momenta
+    frozen = conserved(xpost, 0, qdm)
+    thdr = (pre[0] - frozen[0]) / cols[0][0]
+    chk.eq(thdr, thdm * (1 - Dal * conv_w(P, apost, q)[0] / Apost[0][0]), 'rigid_body thd+')
+    Ir, Er = impulse_energy(thdr, qdm)
+    chk.eq(Ir, conv_impulse(P, apre, apost, q, thdm, qdm, thdr, qdm), 'rigid_body impulse')
+    chk.eq(Er, conv_Trel(P, apre, q, thdm, qdm) - conv_Trel(P, apost, q, thdr, qdm), 'rigid_body loss')
+    Irb, Erb = impulse_energy(0, qdm)  # its both-edges stop: thd+ = 0, qd+ = qd-
+    stats['rigid_gain'] = stats.get('rigid_gain', 0) + int((Er if thdr * sign_post > 0 else Erb) < 0)
+    # restitution: thd+ = r thd-, the modal momenta (summed over the masses) conserved
+    ratio = mpf('0.7')
+    if n:
+        rest = conserved(xpost, ratio * thdm, [0] * n)
+        qdr = solve_lin(Am, mp.matrix([pre[i + 1] - rest[i + 1] for i in range(n)]))
+        qdr = [qdr[i] for i in range(n)]
+        p_ = [dot(P['mu'][j], qdm) + bpre[j] * thdm - bpost[j] * ratio * thdm for j in range(n)]
+        chk.eq(qdr, mu_solve(P, p_), 'restitution qd+')
+    else:
+        qdr = []
+    Ie, Ee = impulse_energy(ratio * thdm, qdr)
+    chk.eq(Ee, M * h * h / 2 * (S_pre - ratio ** 2 * S_post) * thdm ** 2, 'restitution loss via Schur')
     applies = thdp * sign_post < 0
     stats['impacts'] += 1
     if applies:
@@ -1182,7 +1229,11 @@ def impact(K, body, landing, q, thdm, qdm, vb, chk, stats):
     stats['min_ratio'] = min(stats['min_ratio'], float(thdp / thdm))
     return dict(landing_edge=landing, q=q, theta_dot_minus=thdm, q_dot_minus=qdm,
                 theta_dot_plus=thdp, q_dot_plus=qdp, impulse=I, energy_loss=E,
-                both_edges=dict(q_dot_plus=qdb, impulse=Ib, energy_loss=Eb))
+                both_edges=dict(q_dot_plus=qdb, impulse=Ib, energy_loss=Eb),
+                rigid_body=dict(theta_dot_plus=thdr, impulse=Ir, energy_loss=Er,
+                                both_edges=dict(impulse=Irb, energy_loss=Erb)),
+                restitution=dict(ratio=ratio, theta_dot_plus=ratio * thdm, q_dot_plus=qdr, impulse=Ie,
+                                 energy_loss=Ee))
 
 
 def mu_solve(P, v):
@@ -2747,8 +2798,10 @@ def main():
           ', '.join('(%.1f, %+.1f, %+.3f)' % x for x in rl), file=sys.stderr)
     print('stress landings: %d, tensile normal impulse with a sticking corner in %d' %
           (fst2['landings'], fst2['tensile_landing']), file=sys.stderr)
-    print('stress impacts: %d, both-edges rule applies in %d, negative edge impulse in: %s' %
-          (st2['impacts'], st2['both_applies'], st2['both_negative'] or 'none'), file=sys.stderr)
+    print('stress impacts: %d, both-edges rule applies in %d, negative edge impulse in: %s; the rigid_body '
+          'law would add energy in %d (the engine then takes the paper\'s law)' %
+          (st2['impacts'], st2['both_applies'], st2['both_negative'] or 'none', st2.get('rigid_gain', 0)),
+          file=sys.stderr)
     sq = cases[3]
     ratio = sq['impacts'][0]['theta_dot_plus'] / sq['impacts'][0]['theta_dot_minus']
     chk.eq(ratio, mp.mpf(1) - mp.mpf(3) / 2 * mp.sin(mp.atan(2)) ** 2, 'Housner ratio')

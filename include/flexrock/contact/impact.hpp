@@ -8,14 +8,60 @@
 
 namespace flexrock {
 
+/// A kinetic-energy difference across an impact below -this * T- is a gain, not rounding.
+inline constexpr double kImpactEnergyRounding = 1e-12;
+
+/// The impact laws a run can choose (docs/theory.md, "Impact laws"): one table drives the case
+/// file, the studies, the Python module and the docs.
+enum class ImpactLaw {
+  kPaper,        // the paper's: modal momenta and the moment of momentum about the landing point
+                 // conserved (exact for a contact much shorter than the highest modal period)
+  kRigidBody,    // the body is rigid during the impact: modal velocities continuous, the moment
+                 // of momentum about the landing point conserved (Housner's law in the rigid limit)
+  kRestitution,  // theta_dot+ = r_e theta_dot- with a measured ratio r_e per landing edge, the
+                 // modal momenta conserved
+};
+
+struct ImpactLawInfo {
+  ImpactLaw law;
+  const char* name;         // as written in case files, studies and Python
+  const char* description;  // one line, for `--help` and the docs
+};
+
+inline constexpr ImpactLawInfo kImpactLaws[] = {
+    {ImpactLaw::kPaper, "paper",
+     "the paper's: an instantaneous impulse at the landing edge; modal momenta conserved"},
+    {ImpactLaw::kRigidBody, "rigid_body",
+     "the body is rigid during the impact: modal velocities continuous; Housner's law for a stiff "
+     "body"},
+    {ImpactLaw::kRestitution, "restitution",
+     "a measured ratio theta_dot+/theta_dot- per landing edge (restitution_ratio); modal momenta "
+     "conserved"},
+};
+
+inline const char* to_string(ImpactLaw law) {
+  for (const auto& i : kImpactLaws)
+    if (i.law == law) return i.name;
+  return "?";
+}
+
+/// How a run resolves impacts: the law and its parameters.
+struct ImpactRule {
+  ImpactLaw law = ImpactLaw::kPaper;
+  double restitution_factor = 1.0;  // paper and rigid_body: factor on theta_dot+
+  // restitution: theta_dot+/theta_dot- when landing on edge 1 and on edge 2
+  double ratio_edge1 = 1.0, ratio_edge2 = 1.0;
+};
+
 /// State just after an impact and what the impact did.
 template <class Vec>
 struct ImpactOutcome {
-  double theta_dot = 0.0;    // post-impact angular velocity [rad/s]
-  Vec q_dot;                 // post-impact modal velocities [1/s]
-  Eigen::Vector2d impulse;   // impulse of the floor on the body, (I, J) components [N s]
-  double energy_loss = 0.0;  // T_rel- - T_rel+ [J] (= work of the impulse on the base - dT)
-  bool both_edges = false;   // true when rocking ended with both edges on the floor
+  double theta_dot = 0.0;     // post-impact angular velocity [rad/s]
+  Vec q_dot;                  // post-impact modal velocities [1/s]
+  Eigen::Vector2d impulse;    // impulse of the floor on the body, (I, J) components [N s]
+  double energy_loss = 0.0;   // T_rel- - T_rel+ [J] (= work of the impulse on the base - dT)
+  bool both_edges = false;    // true when rocking ended with both edges on the floor
+  bool law_fallback = false;  // rigid_body would have added energy: the paper's law was used
 };
 
 /// The single-edge impact map. The body rocks on the other edge before; `landing_edge` hits the
@@ -42,43 +88,108 @@ void single_edge_impact(const Dyn& dyn, int landing_edge, const Vec& q, double t
   q_dot_plus = q_dot_minus - d_alpha * theta_dot_minus * (y - z * x_theta);
 }
 
-/// The impact with the both-edges rule and an optional restitution factor on theta_dot+.
-/// If the single-edge map gives a theta_dot+ that would not turn the body about the landing edge,
-/// both edges stay on the floor: theta_dot+ = 0 and the modal momenta are conserved,
-/// mu q_dot+ = mu q_dot- + b_pre theta_dot- (docs/theory.md, "Impacts that end rocking").
-/// With a restitution factor e != 1, theta_dot+ is scaled by e and q_dot+ follows from the same
-/// conservation: mu q_dot+ = mu q_dot- + b_pre theta_dot- - b_post theta_dot+.
+/// The single-edge impact of a body that is rigid during the impact: q_dot+ = q_dot-, and the
+/// first row of the map above alone, m_post theta_dot+ = (m_post - Dalpha w_x,post) theta_dot-
+/// (the q_dot terms cancel). Rigid limit: Housner's ratio, as the paper's law.
+template <class Dyn, class Vec>
+void rigid_body_impact(const Dyn& dyn, int landing_edge, const Vec& q, double theta_dot_minus,
+                       const Vec& q_dot_minus, double& theta_dot_plus, Vec& q_dot_plus) {
+  const double a_post = dyn.alpha(landing_edge);
+  const double d_alpha = dyn.alpha(landing_edge == 1 ? 2 : 1) - a_post;
+  const double wx = -a_post + dyn.psi_x().dot(q);
+  theta_dot_plus = theta_dot_minus * (1.0 - d_alpha * wx / dyn.inertia(a_post, q));
+  q_dot_plus = q_dot_minus;
+}
+
+/// The impact under `rule`, with the both-edges rule. If the law's theta_dot+ would not turn the
+/// body about the landing edge (or `force_both_edges`, the chatter cut-off), both edges stay on
+/// the floor: theta_dot+ = 0, and the modal momenta are conserved (paper, restitution),
+/// mu q_dot+ = mu q_dot- + b_pre theta_dot-, or the modal velocities (rigid_body). A restitution
+/// factor scales theta_dot+; q_dot+ follows from the law's conservation. rigid_body can add
+/// energy when the modes move fast against theta_dot (its rigidifying impulses work on them;
+/// docs/theory.md, "Impact laws"): such an impact takes the paper's law and says so.
 template <class Dyn, class Vec>
 ImpactOutcome<Vec> resolve_impact(const Dyn& dyn, int landing_edge, const Vec& q,
                                   double theta_dot_minus, const Vec& q_dot_minus,
-                                  double restitution_factor = 1.0, bool force_both_edges = false) {
+                                  const ImpactRule& rule = {}, bool force_both_edges = false) {
   ImpactOutcome<Vec> out;
   const int pre_edge = landing_edge == 1 ? 2 : 1;
   const double a_pre = dyn.alpha(pre_edge), a_post = dyn.alpha(landing_edge);
-  single_edge_impact(dyn, landing_edge, q, theta_dot_minus, q_dot_minus, out.theta_dot, out.q_dot);
-  // modal momenta, conserved in every case: p = mu q_dot- + b_pre theta_dot-
+  const bool rigid = rule.law == ImpactLaw::kRigidBody;
+  double factor = rule.restitution_factor;
+  if (rigid) {
+    rigid_body_impact(dyn, landing_edge, q, theta_dot_minus, q_dot_minus, out.theta_dot, out.q_dot);
+  } else if (rule.law == ImpactLaw::kRestitution) {
+    // the measured ratio replaces the law's theta_dot+; 0 ends rocking
+    out.theta_dot = theta_dot_minus;
+    factor = landing_edge == 1 ? rule.ratio_edge1 : rule.ratio_edge2;
+  } else {
+    single_edge_impact(dyn, landing_edge, q, theta_dot_minus, q_dot_minus, out.theta_dot,
+                       out.q_dot);
+  }
+  // modal momenta, conserved by paper and restitution: p = mu q_dot- + b_pre theta_dot-
   const Vec p = dyn.mu() * q_dot_minus + dyn.coupling(a_pre, q) * theta_dot_minus;
-  if (force_both_edges || edge_sign(landing_edge) * out.theta_dot <= 0.0) {
+  const bool ends = force_both_edges || edge_sign(landing_edge) * out.theta_dot * factor <= 0.0;
+  if (ends) {
     out.both_edges = true;
     out.theta_dot = 0.0;
-    out.q_dot = dyn.mu_inverse() * p;
-  } else if (restitution_factor != 1.0) {
-    out.theta_dot *= restitution_factor;
-    out.q_dot = dyn.mu_inverse() * (p - dyn.coupling(a_post, q) * out.theta_dot);
+    out.q_dot = rigid ? q_dot_minus : Vec(dyn.mu_inverse() * p);
+  } else if (factor != 1.0 || rule.law == ImpactLaw::kRestitution) {
+    out.theta_dot *= factor;
+    if (!rigid) out.q_dot = dyn.mu_inverse() * (p - dyn.coupling(a_post, q) * out.theta_dot);
   }
   const Eigen::Vector2d v_minus = dyn.cg_velocity(a_pre, q, theta_dot_minus, q_dot_minus);
   const Eigen::Vector2d v_plus = dyn.cg_velocity(a_post, q, out.theta_dot, out.q_dot);
   out.impulse = dyn.mass() * (v_plus - v_minus);
-  if (out.both_edges || restitution_factor == 1.0) {
+  if ((!rigid && out.both_edges) || (rule.law == ImpactLaw::kPaper && factor == 1.0)) {
     // a plastic impact loses the kinetic energy of the velocity jump (Carnot): >= 0 by
     // construction, where the difference of the energies can round below zero
     out.energy_loss = dyn.flight_kinetic_energy(q, out.theta_dot - theta_dot_minus,
                                                 out.q_dot - q_dot_minus, v_plus - v_minus);
   } else {
-    out.energy_loss = dyn.kinetic_energy(a_pre, q, theta_dot_minus, q_dot_minus) -
-                      dyn.kinetic_energy(a_post, q, out.theta_dot, out.q_dot);
+    const double before = dyn.kinetic_energy(a_pre, q, theta_dot_minus, q_dot_minus);
+    out.energy_loss = before - dyn.kinetic_energy(a_post, q, out.theta_dot, out.q_dot);
+    if (rigid && out.energy_loss < -kImpactEnergyRounding * before) {
+      ImpactRule paper = rule;
+      paper.law = ImpactLaw::kPaper;
+      out = resolve_impact(dyn, landing_edge, q, theta_dot_minus, q_dot_minus, paper,
+                           force_both_edges);
+      out.law_fallback = true;
+    }
   }
   return out;
+}
+
+/// Which impulsive law a body's impacts are closest to, from the contact duration against its
+/// pinned-base modal periods (docs/theory.md, "Impact laws"): modes much slower than the contact
+/// cannot respond during it (the paper's law treats every mode so), modes much faster follow it
+/// quasi-statically (the rigid_body law treats every mode so).
+struct ImpactRegime {
+  double duration_over_fastest = 0.0;  // tau / the shortest modal period (0: no modes)
+  double duration_over_slowest = 0.0;  // tau / the longest modal period
+  ImpactLaw closest = ImpactLaw::kPaper;
+  bool between = false;  // some modes neither much slower nor much faster than the contact
+};
+
+/// `omega`: the pinned-base modal frequencies [rad/s], ascending; `duration` tau [s]. "Much" is
+/// a factor of 10 on the period.
+template <class Vec>
+ImpactRegime impact_regime(const Vec& omega, double duration) {
+  ImpactRegime r;
+  if (omega.size() == 0) return r;  // a rigid body: every law is Housner's (or the ratio given)
+  const double two_pi = 6.283185307179586;
+  r.duration_over_fastest = duration * omega(omega.size() - 1) / two_pi;
+  r.duration_over_slowest = duration * omega(0) / two_pi;
+  if (r.duration_over_fastest < 0.1) {
+    r.closest = ImpactLaw::kPaper;
+  } else if (r.duration_over_slowest > 10.0) {
+    r.closest = ImpactLaw::kRigidBody;
+  } else {
+    r.between = true;
+    // the law of the slowest mode, which carries most of the body's momentum
+    r.closest = r.duration_over_slowest > 1.0 ? ImpactLaw::kRigidBody : ImpactLaw::kPaper;
+  }
+  return r;
 }
 
 }  // namespace flexrock

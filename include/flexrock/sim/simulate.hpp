@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "flexrock/contact/impact.hpp"
 #include "flexrock/core/types.hpp"
 #include "flexrock/excitation/ground_motion.hpp"
 #include "flexrock/model/body.hpp"
@@ -65,6 +66,9 @@ enum class EventKind {
   kSlipStart,           // the friction demand reached the static coefficient: the base slides
   kStick,               // the slip velocity reached zero and friction holds: sliding ends
   kSlipReversal,        // the slip velocity reached zero but friction cannot hold: it reverses
+  kImpactLawFallback,   // the rigid_body law would have added energy (the modes move fast against
+                        // theta_dot): the paper's law took this impact (docs/theory.md, "Impact
+                        // laws")
 };
 
 /// The bound on the energy balance's residual that runs at the default tolerances meet
@@ -97,7 +101,15 @@ struct SimulationOptions {
   OverturnCriterion overturn = OverturnCriterion::kHalfPi;
   // impacts closer than this times the shortest period end rocking (docs/theory.md, "Chatter")
   double chatter_ratio = 1e-4;
-  double restitution_factor = 1.0;  // factor on theta_dot after an impact (1: the paper's law)
+  double restitution_factor = 1.0;  // factor on theta_dot after an impact (1: the law's own)
+  // how impacts and landings are resolved (docs/theory.md, "Impact laws")
+  ImpactLaw impact_law = ImpactLaw::kPaper;
+  // restitution law: theta_dot+/theta_dot- at an impact landing on edge 1, on edge 2 (0 to 1)
+  double restitution_ratio_edge1 = 1.0;
+  double restitution_ratio_edge2 = 1.0;
+  // [s] the contact duration assumed to turn an impulse I into a force estimate: the peak of a
+  // half-sine pulse, pi |I| / (2 duration)
+  double impact_duration = 0.002;
   // Coulomb friction at the base (docs/theory.md, "Sliding"): the static coefficient mu_s; inf: the
   // floor holds whatever the demand (the paper's assumption; no sliding)
   double friction_coefficient = std::numeric_limits<double>::infinity();
@@ -124,6 +136,7 @@ struct Event {
   double impulse_y = 0.0;         // [N s] vertical impulse of the floor (impacts)
   double friction_demand = 0.0;   // |F_I|/F_J or |impulse_x|/impulse_y
   double offset = 0.0;            // [m] horizontal offset of the base from where it stood
+  double force_estimate = 0.0;    // [N] impacts: pi |impulse| / (2 impact_duration)
 };
 
 /// Time history at the requested output times.
@@ -169,6 +182,8 @@ struct Extremes {
   double max_offset = 0.0;         // [m] largest |horizontal offset| of the base centre
   double sliding_time = 0.0;       // [s] total time with the base sliding
   long slips = 0;                  // times sliding started (from sticking or at an impulse)
+  double max_impact_force = 0.0;   // [N] largest force estimate of an impact (impact_duration)
+  long impact_law_fallbacks = 0;   // impacts the rigid_body law left to the paper's (energy)
 };
 
 /// Energy balance relative to the base [J]: residual = input_work - (kinetic_change +
