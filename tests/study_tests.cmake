@@ -18,6 +18,15 @@ if(TARGET flexrock)
                      ${PROJECT_SOURCE_DIR})
     set_tests_properties(cli_${script} PROPERTIES LABELS cli TIMEOUT 300)
   endforeach()
+  # record suites; with MPI, also 2 processes against threads
+  set(flexrock_suite_mpi "")
+  if(FLEXROCK_HAVE_MPI AND MPIEXEC_EXECUTABLE)
+    set(flexrock_suite_mpi ${MPIEXEC_EXECUTABLE})
+  endif()
+  add_test(NAME cli_study_suite
+           COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/cli/study_suite.sh $<TARGET_FILE:flexrock>
+                   ${PROJECT_SOURCE_DIR} ${flexrock_suite_mpi})
+  set_tests_properties(cli_study_suite PROPERTIES LABELS cli TIMEOUT 300)
   # flexrock plot needs the build's Python package: only where it is built
   if(FLEXROCK_BUILD_PYTHON)
     set_tests_properties(cli_study_intensity PROPERTIES ENVIRONMENT "FLEXROCK_TEST_PLOT=1")
