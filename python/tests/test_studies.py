@@ -134,6 +134,38 @@ def test_sweep_and_fragility_from_python_equal_the_cli(cli, source_dir, tmp_path
     assert text == fit_csv.read_text()
 
 
+def test_suite_manifest_from_python_equals_the_cli(cli, source_dir, tmp_path):
+    import subprocess
+
+    # two PEER-style pairs: a small horizontal sine, a vertical step of 1.5 g down at 0.5 s
+    d = tmp_path / "peer"
+    d.mkdir()
+    n, dt = 200, 0.01
+    for k in (1, 2):
+        for comp, vals in (("H1", [0.05 * k * math.sin(4 * math.pi * i * dt) for i in range(n)]),
+                           ("UP", [-1.5 if 50 <= i < 70 else 0.0 for i in range(n)])):
+            lines = ["PEER", "SYNTHETIC", "ACCELERATION TIME SERIES IN UNITS OF G",
+                     f"NPTS= {n}, DT= {dt:.4f} SEC"] + ["%15.7E" % v for v in vals]
+            (d / f"RSN{k}_{comp}.AT2").write_text("\n".join(lines) + "\n")
+    manifest = tmp_path / "suite.toml"
+    body = source_dir / "examples" / "studies" / "slender_block.toml"
+    manifest.write_text(f'free_periods = 1\n[[body]]\nfile = "{body}"\n[[suite]]\n'
+                        'horizontal = "peer/*_H1.AT2"\nvertical = "peer/*_UP.AT2"\n'
+                        "[scales]\nfactors = [0.5, 1.0]\n")
+    out = tmp_path / "suite.csv"
+    p = subprocess.run([str(cli), "sweep", str(manifest), "-o", str(out), "-q", "-j", "2"],
+                       capture_output=True, text=True)
+    assert p.returncode == 0, p.stderr
+    m = fr.load_sweep_manifest(str(manifest))
+    assert [r.name for r in m.spec.records] == ["RSN1_H1+RSN1_UP", "RSN2_H1+RSN2_UP"]
+    assert all(r.motion.has_vertical for r in m.spec.records)
+    rows = fr.run_sweep(m.spec, [], 1)
+    text = ",".join(fr.sweep_columns()) + "\n" + "".join(fr.sweep_row(m.spec, r) + "\n" for r in rows)
+    assert text == out.read_text()
+    # the vertical, scaled with its horizontal: 0.75 g down keeps the block down, 1.5 g lifts it
+    assert [r.run.first_uplift_time >= 0 for r in rows] == [False, True, False, True]
+
+
 def test_intensity_measures_table_and_a_sweep_with_them():
     names = [m["name"] for m in fr.intensity_measures()]
     assert names[:2] == ["pga", "pgv"] and "arias" in names and "sa" in names
