@@ -33,6 +33,10 @@ struct Scratch {
     put("rec.at2",
         "PEER NGA STRONG MOTION DATABASE RECORD\nEVENT\nACCELERATION TIME HISTORY IN UNITS OF G\n"
         "NPTS=    5, DT=   .0100 SEC\n0.0 0.01 -0.02 0.03 0.0\n");
+    // a vertical on rec.at2's time grid, for record suites
+    put("up.at2",
+        "PEER NGA STRONG MOTION DATABASE RECORD\nEVENT\nACCELERATION TIME HISTORY IN UNITS OF G\n"
+        "NPTS=    5, DT=   .0100 SEC\n0.0 -0.5 -1.5 -0.5 0.0\n");
     put("rec.txt", "0 0.01 -0.02\n0.03 0\n");
     put("rec.csv", "time,acc\n0,0\n0.01,0.1\n0.02,-0.1\n0.03,0\n");
     put("nodes.csv", "x,y,mass\n-0.5,0,10\n0.5,0,10\n0,2,100\n");
