@@ -395,33 +395,42 @@ json flexible() {
     const double p = rigid.rocking_frequency();
     struct Landing {
       double loss = -1.0;                 // [J] energy lost at the first landing
+      double ratio = 0.0;                 // its theta_dot+/theta_dot-
       std::string kind, status, message;  // its event kind, how the run ended and why
     };
-    auto first_loss = [&](const Body& body) {
+    auto first_loss = [&](const Body& body, ImpactLaw law = ImpactLaw::kPaper) {
       InitialState init;
       init.theta = 0.5 * body.tipping_angle(1);
       auto o = tight(p);
+      o.impact_law = law;
       o.t_end = 30.0 / p;
       o.max_impacts = 1;
       const auto r = simulate(body, GroundMotion::none(o.t_end), init, o);
       // a flexible body may land on both edges (the both-edges rule): that is its impact too
       for (const auto& e : r.events)
         if (e.kind == EventKind::kImpact || e.kind == EventKind::kRockingEnded)
-          return Landing{e.energy_loss, to_string(e.kind), to_string(r.status), r.message};
-      return Landing{-1.0, "", to_string(r.status), r.message};
+          return Landing{e.energy_loss, e.theta_dot_after / e.theta_dot_before, to_string(e.kind),
+                         to_string(r.status), r.message};
+      return Landing{-1.0, 0.0, "", to_string(r.status), r.message};
     };
-    const double e_rigid = first_loss(rigid).loss;
+    const Landing l_rigid = first_loss(rigid);
+    const double e_rigid = l_rigid.loss;
     json rows = json::array();
     for (double f : geomspace(0.5, 50.0, quick ? 5 : 11)) {
       Osc os = base;
       os.f = f;
       const Landing l = first_loss(os.body());
+      // the same landing under the law for which the body is rigid during the impact
+      const Landing lr = first_loss(os.body(), ImpactLaw::kRigidBody);
       rows.push_back({{"f", f},
                       {"omega_n_over_p", 2 * M_PI * f / p},
                       {"loss_ratio", l.loss / e_rigid},
                       {"event", l.kind},
                       {"status", l.status},
-                      {"message", l.message}});
+                      {"message", l.message},
+                      {"rigid_body_loss_ratio", lr.loss / e_rigid},
+                      {"rigid_body_event", lr.kind},
+                      {"rigid_body_ratio_over_housner", lr.ratio / l_rigid.ratio}});
     }
     out["impact_energy"] = {{"rigid_loss", e_rigid}, {"rows", rows}};
   }
