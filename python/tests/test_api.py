@@ -189,3 +189,18 @@ def test_load_body_reads_the_body_table(cases):
     q = fr.rigid_block(0.4, 1.8, 800.0)
     assert kind == "rigid_block"
     assert (p.mass, p.height, p.b1, p.b2, p.zeta2) == (q.mass, q.height, q.b1, q.b2, q.zeta2)
+
+
+def test_impact_laws_by_name_and_the_restitution_ratio_exactly():
+    body = fr.Body(fr.BodyParameters.rectangular_block(400.0, 0.2, 1.0))
+    r = fr.simulate(body, fr.GroundMotion.none(5.0), fr.InitialState(theta=0.1), impact_law="restitution",
+                    restitution_ratio_edge1=0.8, restitution_ratio_edge2=0.7)
+    impacts = [e for e in r.raw.events if e.kind == fr.EventKind.impact]
+    assert len(impacts) >= 4
+    for e in impacts:
+        assert e.theta_dot_after / e.theta_dot_before == pytest.approx(0.8 if e.edge == 1 else 0.7, rel=1e-14)
+        # the force estimate: a half-sine pulse of the impulse over the assumed 2 ms
+        assert e.force_estimate == pytest.approx(math.pi * math.hypot(e.impulse_x, e.impulse_y) / (2 * 0.002), rel=1e-12)
+    assert r.raw.extremes.max_impact_force == pytest.approx(max(e.force_estimate for e in r.raw.events))
+    with pytest.raises(fr.InputError, match="impact_law 'elastic'"):
+        fr.simulate(body, fr.GroundMotion.none(1.0), impact_law="elastic")

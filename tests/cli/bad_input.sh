@@ -47,6 +47,21 @@ $PULSE" "case.toml:1:" "key 'body.height': missing"
 bad "$BODY$PULSE[solver]
 restitution_facter = 0.9
 " "case.toml:13:" "key 'solver.restitution_facter': unknown key" "did you mean 'solver.restitution_factor'"
+# impact laws: an unknown law, a ratio without the restitution law, the law without a ratio
+bad "$BODY$PULSE[solver]
+impact_law = \"elastic\"
+" "case.toml:13:" "key 'solver.impact_law'" "one of: paper, rigid_body, restitution"
+bad "$BODY$PULSE[solver]
+restitution_ratio = 0.8
+" "case.toml:13:" "key 'solver.restitution_ratio'" "applies to impact_law = \"restitution\""
+bad "$BODY$PULSE[solver]
+impact_law = \"restitution\"
+restitution_ratio_edge1 = 0.8
+" "key 'solver.restitution_ratio'" "restitution_ratio_edge1 and _edge2"
+bad "$BODY$PULSE[solver]
+impact_law = \"restitution\"
+restitution_ratio = 1.2
+" "case.toml:14:" "key 'solver.restitution_ratio'" "a number in [0, 1]"
 # negative and zero sizes
 bad "[body]
 type = \"rigid_block\"
