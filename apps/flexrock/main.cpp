@@ -161,10 +161,12 @@ void print_summary(const io::Case& c, const Body& body, const SimulationResult& 
   }
   if (x.impact_law_fallbacks > 0) {
     fmt::print(
-        "warning: the rigid_body impact law would have added energy at {} impact(s) (the modes "
-        "moved fast against the tilt rate); the paper's law took them (events: "
-        "impact_law_fallback)\n",
-        x.impact_law_fallbacks);
+        "warning: the {} impact law would have added energy at {} impact(s); {} took them "
+        "(events: impact_law_fallback)\n",
+        to_string(c.options.impact_law), x.impact_law_fallbacks,
+        c.options.impact_law == ImpactLaw::kRestitution
+            ? "the elastic ratio sqrt(S_pre/S_post) of each"
+            : "the paper's law (the modes moved fast against the tilt rate)");
   }
   if (r.energy_unbalanced) {
     fmt::print(

@@ -184,7 +184,7 @@ void bind_sim(py::module_& m) {
       .def_readonly("max_impact_force", &Extremes::max_impact_force,
                     "[N] largest impact force estimate (impact_duration)")
       .def_readonly("impact_law_fallbacks", &Extremes::impact_law_fallbacks,
-                    "impacts the rigid_body law left to the paper's (it would add energy)");
+                    "impacts where the chosen law would have added energy (impact_law_fallback)");
 
   py::class_<EnergyBalance>(m, "EnergyBalance")
       .def_readonly("input_work", &EnergyBalance::input_work)

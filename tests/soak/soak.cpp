@@ -267,11 +267,29 @@ void random_start_and_options(Random& r, SoakCase& c) {
     c.options.friction_coefficient = r.log_uniform(0.05, 1.5);
     c.options.kinetic_friction_coefficient = c.options.friction_coefficient * r.uniform(0.6, 1.0);
   }
+  if (r.chance(0.3)) {
+    // another impact law (drawn last, so the draws above keep their meaning)
+    if (r.chance(0.5)) {
+      c.options.impact_law = flexrock::ImpactLaw::kRigidBody;
+    } else {
+      c.options.impact_law = flexrock::ImpactLaw::kRestitution;
+      c.options.restitution_factor = 1.0;
+      c.options.restitution_ratio_edge1 = r.uniform(0.0, 1.0);
+      c.options.restitution_ratio_edge2 = r.uniform(0.0, 1.0);
+    }
+  }
 }
 
 // the options random_start_and_options() drew, for a case's description
 std::string options_text(const flexrock::SimulationOptions& o) {
+  const bool restitution = o.impact_law == flexrock::ImpactLaw::kRestitution;
   return " e=" + fmt(o.restitution_factor) +
+         (o.impact_law == flexrock::ImpactLaw::kPaper
+              ? ""
+              : std::string(" law=") + to_string(o.impact_law) +
+                    (restitution ? " r=" + fmt(o.restitution_ratio_edge1) + "/" +
+                                       fmt(o.restitution_ratio_edge2)
+                                 : "")) +
          (o.overturn == flexrock::OverturnCriterion::kHalfPi ? " half_pi" : "") +
          (std::isfinite(o.friction_coefficient)
               ? " mu=" + fmt(o.friction_coefficient) + "/" + fmt(o.kinetic_friction_coefficient)

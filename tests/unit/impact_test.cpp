@@ -240,6 +240,25 @@ TEST(ImpactLaws, RegimeFromTheContactDurationAgainstTheModalPeriods) {
   EXPECT_EQ(impact_regime(VectorX(0), 0.002).closest, ImpactLaw::kPaper);
 }
 
+TEST(ImpactLaws, RestitutionThatWouldAddEnergyTakesTheElasticRatio) {
+  // an asymmetric rigid block landing on its wide edge: S_post = 1 + zeta^2 + alpha1^2 is larger
+  // than S_pre = 1 + zeta^2 + alpha2^2, so r = 0.99 would add energy; the elastic ratio
+  // sqrt(S_pre/S_post) is taken and said
+  const Body body(BodyParameters::rigid(300, 1.0, 0.5, 0.2, 0.3));
+  const DynX dyn(body);
+  const VectorX none(0);
+  const ImpactRule rule{.law = ImpactLaw::kRestitution, .ratio_edge1 = 0.99, .ratio_edge2 = 0.99};
+  const auto wide = resolve_impact(dyn, 1, none, 0.7, none, rule);
+  EXPECT_TRUE(wide.law_fallback);
+  EXPECT_NEAR(wide.theta_dot, std::sqrt((1.3 + 0.04) / (1.3 + 0.25)) * 0.7, 1e-15);
+  EXPECT_EQ(wide.energy_loss, 0.0);
+  // the same ratio landing on the narrow edge loses energy: taken as given
+  const auto narrow = resolve_impact(dyn, 2, none, -0.7, none, rule);
+  EXPECT_FALSE(narrow.law_fallback);
+  EXPECT_EQ(narrow.theta_dot, 0.99 * -0.7);
+  EXPECT_GT(narrow.energy_loss, 0.0);
+}
+
 TEST(ImpactLaws, RigidBodyEqualsPaperWhenTheModesCarryNoMomentum) {
   // psi = beta = gamma = 0: the modes carry no linear momentum and no moment of momentum, so the
   // paper's law leaves the modal velocities unchanged and both laws coincide
@@ -270,10 +289,12 @@ TEST(ImpactLaws, AbsoluteRestitutionGivesTheRatioPerEdge) {
   const Body body(lb.params());
   const DynX dyn(body);
   const VectorX q = 0.01 * VectorX::Ones(2), qd = 0.2 * VectorX::Ones(2);
-  const ImpactRule rule{.law = ImpactLaw::kRestitution, .ratio_edge1 = 0.83, .ratio_edge2 = 0.61};
+  // ratios below the elastic one of this asymmetric body (sqrt(S_pre/S_post) = 0.586 on edge 1)
+  const ImpactRule rule{.law = ImpactLaw::kRestitution, .ratio_edge1 = 0.53, .ratio_edge2 = 0.61};
   const auto on1 = resolve_impact(dyn, 1, q, 0.7, qd, rule);
   const auto on2 = resolve_impact(dyn, 2, q, -0.7, qd, rule);
-  EXPECT_EQ(on1.theta_dot, 0.83 * 0.7);
+  EXPECT_EQ(on1.theta_dot, 0.53 * 0.7);
+  EXPECT_FALSE(on1.law_fallback);
   EXPECT_EQ(on2.theta_dot, 0.61 * -0.7);
   // the modal momenta are conserved: mu q_dot+ + b_post theta_dot+ = mu q_dot- + b_pre theta_dot-
   for (const auto& [out, e] : {std::pair{on1, 1}, std::pair{on2, 2}}) {

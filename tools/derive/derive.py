@@ -608,6 +608,11 @@ class General:
             ratio = sp.simplify(sol.subs({ap: a2s, aq: -a1s}) / thm)
             res['rigid_ratio'] = is_zero(ratio - (1 + self.zeta2 - a1s * a2s) / (1 + self.zeta2 + a1s ** 2))
             self.rigid_ratio = ratio
+            # Housner's ratio never adds energy under the restitution law: r^2 S_post <= S_pre,
+            # as (1+z2+a1^2)(1+z2+a2^2) - (1+z2-a1 a2)^2 = (1+z2)(a1+a2)^2 >= 0
+            z = 1 + self.zeta2
+            res['housner_ratio_dissipative'] = is_zero((z + a1s ** 2) * (z + a2s ** 2) - (z - a1s * a2s) ** 2
+                                                       - z * (a1s + a2s) ** 2)
         # static overturning: at rest, ax=0, ay=1, the rocking forces vanish iff the conv. conditions hold
         fst = conv_f(self.P, alpha, self.q, 0, [0] * n, S, C, 0, 1, g)
         w = conv_w(self.P, alpha, self.q)

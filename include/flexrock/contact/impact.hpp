@@ -3,6 +3,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <cmath>
 
 #include "flexrock/model/dynamics.hpp"
 
@@ -56,12 +57,14 @@ struct ImpactRule {
 /// State just after an impact and what the impact did.
 template <class Vec>
 struct ImpactOutcome {
-  double theta_dot = 0.0;     // post-impact angular velocity [rad/s]
-  Vec q_dot;                  // post-impact modal velocities [1/s]
-  Eigen::Vector2d impulse;    // impulse of the floor on the body, (I, J) components [N s]
-  double energy_loss = 0.0;   // T_rel- - T_rel+ [J] (= work of the impulse on the base - dT)
-  bool both_edges = false;    // true when rocking ended with both edges on the floor
-  bool law_fallback = false;  // rigid_body would have added energy: the paper's law was used
+  double theta_dot = 0.0;    // post-impact angular velocity [rad/s]
+  Vec q_dot;                 // post-impact modal velocities [1/s]
+  Eigen::Vector2d impulse;   // impulse of the floor on the body, (I, J) components [N s]
+  double energy_loss = 0.0;  // T_rel- - T_rel+ [J] (= work of the impulse on the base - dT)
+  bool both_edges = false;   // true when rocking ended with both edges on the floor
+  // the law would have added energy: rigid_body took the paper's law, restitution the elastic
+  // ratio sqrt(S_pre/S_post)
+  bool law_fallback = false;
 };
 
 /// The single-edge impact map. The body rocks on the other edge before; `landing_edge` hits the
@@ -107,7 +110,8 @@ void rigid_body_impact(const Dyn& dyn, int landing_edge, const Vec& q, double th
 /// mu q_dot+ = mu q_dot- + b_pre theta_dot-, or the modal velocities (rigid_body). A restitution
 /// factor scales theta_dot+; q_dot+ follows from the law's conservation. rigid_body can add
 /// energy when the modes move fast against theta_dot (its rigidifying impulses work on them;
-/// docs/theory.md, "Impact laws"): such an impact takes the paper's law and says so.
+/// docs/theory.md, "Impact laws"): such an impact takes the paper's law and says so. A restitution
+/// ratio that would add energy takes the elastic ratio sqrt(S_pre/S_post), and says so too.
 template <class Dyn, class Vec>
 ImpactOutcome<Vec> resolve_impact(const Dyn& dyn, int landing_edge, const Vec& q,
                                   double theta_dot_minus, const Vec& q_dot_minus,
@@ -149,7 +153,19 @@ ImpactOutcome<Vec> resolve_impact(const Dyn& dyn, int landing_edge, const Vec& q
   } else {
     const double before = dyn.kinetic_energy(a_pre, q, theta_dot_minus, q_dot_minus);
     out.energy_loss = before - dyn.kinetic_energy(a_post, q, out.theta_dot, out.q_dot);
-    if (rigid && out.energy_loss < -kImpactEnergyRounding * before) {
+    if (rule.law == ImpactLaw::kRestitution && out.energy_loss < -kImpactEnergyRounding * before) {
+      // the measured ratio would add energy at this impact (r^2 S_post > S_pre: an asymmetric
+      // or flexible body): the elastic ratio sqrt(S_pre/S_post) instead, said as a fallback
+      auto schur = [&](double a) {
+        const Vec b = dyn.coupling(a, q);
+        return dyn.inertia(a, q) - b.dot(dyn.mu_inverse() * b);  // S = m - b^T mu^-1 b
+      };
+      out.theta_dot = std::sqrt(schur(a_pre) / schur(a_post)) * theta_dot_minus;
+      out.q_dot = dyn.mu_inverse() * (p - dyn.coupling(a_post, q) * out.theta_dot);
+      out.impulse = dyn.mass() * (dyn.cg_velocity(a_post, q, out.theta_dot, out.q_dot) - v_minus);
+      out.energy_loss = 0.0;  // elastic, by construction
+      out.law_fallback = true;
+    } else if (rigid && out.energy_loss < -kImpactEnergyRounding * before) {
       ImpactRule paper = rule;
       paper.law = ImpactLaw::kPaper;
       out = resolve_impact(dyn, landing_edge, q, theta_dot_minus, q_dot_minus, paper,
