@@ -66,9 +66,9 @@ enum class EventKind {
   kSlipStart,           // the friction demand reached the static coefficient: the base slides
   kStick,               // the slip velocity reached zero and friction holds: sliding ends
   kSlipReversal,        // the slip velocity reached zero but friction cannot hold: it reverses
-  kImpactLawFallback,   // the rigid_body law would have added energy (the modes move fast against
-                        // theta_dot): the paper's law took this impact (docs/theory.md, "Impact
-                        // laws")
+  kImpactLawFallback,   // the chosen impact law would have added energy: rigid_body (the modes
+                        // move fast against theta_dot) took the paper's law, restitution the
+                        // elastic ratio (docs/theory.md, "Impact laws")
 };
 
 /// The bound on the energy balance's residual that runs at the default tolerances meet
@@ -183,7 +183,7 @@ struct Extremes {
   double sliding_time = 0.0;       // [s] total time with the base sliding
   long slips = 0;                  // times sliding started (from sticking or at an impulse)
   double max_impact_force = 0.0;   // [N] largest force estimate of an impact (impact_duration)
-  long impact_law_fallbacks = 0;   // impacts the rigid_body law left to the paper's (energy)
+  long impact_law_fallbacks = 0;   // impacts where the chosen law would have added energy
 };
 
 /// Energy balance relative to the base [J]: residual = input_work - (kinetic_change +
