@@ -40,6 +40,14 @@ void expect_close(double got, double want, double scale, const std::string& what
   EXPECT_NEAR(got, want, 1e-12 * std::max(1.0, std::abs(scale))) << what;
 }
 
+// an impulse against the reference's [I_x, I_y], on the scale |I_x| + |I_y|
+void expect_impulse(const Eigen::Vector2d& got, const json& want, const std::string& what) {
+  const double ix = want[0].get<double>(), iy = want[1].get<double>();
+  const double scale = std::abs(ix) + std::abs(iy);
+  expect_close(got(0), ix, scale, what + " I_x");
+  expect_close(got(1), iy, scale, what + " I_y");
+}
+
 class SympyReference : public ::testing::Test {
  protected:
   static void SetUpTestSuite() { ref_ = new json(load()); }
@@ -179,10 +187,7 @@ TEST_F(SympyReference, ImpactMapImpulseAndEnergyLoss) {
       for (Eigen::Index i = 0; i < q.size(); ++i) expect_close(qdp(i), qref(i), scale, "q_dot+");
       const auto out = resolve_impact(dyn, landing, q, thdm, qdm);
       const json& want = out.both_edges ? s["both_edges"] : s;
-      const double iscale =
-          std::abs(want["impulse"][0].get<double>()) + std::abs(want["impulse"][1].get<double>());
-      expect_close(out.impulse(0), want["impulse"][0].get<double>(), iscale, "I_x");
-      expect_close(out.impulse(1), want["impulse"][1].get<double>(), iscale, "I_y");
+      expect_impulse(out.impulse, want["impulse"], "impact");
       const double loss = want["energy_loss"];
       expect_close(out.energy_loss, loss, loss, "energy loss");
       if (out.both_edges) {
@@ -227,10 +232,7 @@ TEST_F(SympyReference, ImpactLawsAgainstPointMassMechanics) {
         EXPECT_EQ(out.both_edges, !turns);
         expect_close(out.theta_dot, turns ? thr : 0.0, scale, "rigid_body theta_dot+");
         for (Eigen::Index i = 0; i < q.size(); ++i) EXPECT_EQ(out.q_dot(i), qdm(i));
-        const double iscale =
-            std::abs(want["impulse"][0].get<double>()) + std::abs(want["impulse"][1].get<double>());
-        expect_close(out.impulse(0), want["impulse"][0].get<double>(), iscale, "rigid_body I_x");
-        expect_close(out.impulse(1), want["impulse"][1].get<double>(), iscale, "rigid_body I_y");
+        expect_impulse(out.impulse, want["impulse"], "rigid_body");
         expect_close(out.energy_loss, loss, std::abs(loss), "rigid_body loss");
         ++rigid;
       }
@@ -243,10 +245,7 @@ TEST_F(SympyReference, ImpactLawsAgainstPointMassMechanics) {
       const VectorX qr = vec(rs["q_dot_plus"]);
       for (Eigen::Index i = 0; i < q.size(); ++i)
         expect_close(res.q_dot(i), qr(i), scale, "restitution q_dot+");
-      const double iscale =
-          std::abs(rs["impulse"][0].get<double>()) + std::abs(rs["impulse"][1].get<double>());
-      expect_close(res.impulse(0), rs["impulse"][0].get<double>(), iscale, "restitution I_x");
-      expect_close(res.impulse(1), rs["impulse"][1].get<double>(), iscale, "restitution I_y");
+      expect_impulse(res.impulse, rs["impulse"], "restitution");
       const double rl = rs["energy_loss"];
       expect_close(res.energy_loss, rl, std::abs(rl), "restitution loss");
       ++restitution;

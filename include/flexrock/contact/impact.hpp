@@ -4,6 +4,7 @@
 
 #include <Eigen/Core>
 #include <cmath>
+#include <numbers>
 
 #include "flexrock/model/dynamics.hpp"
 
@@ -124,9 +125,20 @@ ImpactOutcome<Vec> resolve_impact(const Dyn& dyn, int landing_edge, const Vec& q
   if (rigid) {
     rigid_body_impact(dyn, landing_edge, q, theta_dot_minus, q_dot_minus, out.theta_dot, out.q_dot);
   } else if (rule.law == ImpactLaw::kRestitution) {
-    // the measured ratio replaces the law's theta_dot+; 0 ends rocking
+    // the measured ratio replaces the law's theta_dot+; 0 ends rocking. Its loss is
+    // 1/2 M h^2 (S_pre - r^2 S_post) theta_dot-^2: above the elastic ratio sqrt(S_pre/S_post) (an
+    // asymmetric or flexible body) it would add energy, so the elastic ratio is taken and said
     out.theta_dot = theta_dot_minus;
     factor = landing_edge == 1 ? rule.ratio_edge1 : rule.ratio_edge2;
+    auto schur = [&](double a) {
+      const Vec b = dyn.coupling(a, q);
+      return dyn.inertia(a, q) - b.dot(dyn.mu_inverse() * b);  // S = m - b^T mu^-1 b
+    };
+    const double elastic = std::sqrt(schur(a_pre) / schur(a_post));
+    if (factor > elastic) {
+      factor = elastic;
+      out.law_fallback = true;
+    }
   } else {
     single_edge_impact(dyn, landing_edge, q, theta_dot_minus, q_dot_minus, out.theta_dot,
                        out.q_dot);
@@ -136,6 +148,7 @@ ImpactOutcome<Vec> resolve_impact(const Dyn& dyn, int landing_edge, const Vec& q
   const bool ends = force_both_edges || edge_sign(landing_edge) * out.theta_dot * factor <= 0.0;
   if (ends) {
     out.both_edges = true;
+    out.law_fallback = false;  // no ratio was applied
     out.theta_dot = 0.0;
     out.q_dot = rigid ? q_dot_minus : Vec(dyn.mu_inverse() * p);
   } else if (factor != 1.0 || rule.law == ImpactLaw::kRestitution) {
@@ -152,20 +165,10 @@ ImpactOutcome<Vec> resolve_impact(const Dyn& dyn, int landing_edge, const Vec& q
                                                 out.q_dot - q_dot_minus, v_plus - v_minus);
   } else {
     const double before = dyn.kinetic_energy(a_pre, q, theta_dot_minus, q_dot_minus);
-    out.energy_loss = before - dyn.kinetic_energy(a_post, q, out.theta_dot, out.q_dot);
-    if (rule.law == ImpactLaw::kRestitution && out.energy_loss < -kImpactEnergyRounding * before) {
-      // the measured ratio would add energy at this impact (r^2 S_post > S_pre: an asymmetric
-      // or flexible body): the elastic ratio sqrt(S_pre/S_post) instead, said as a fallback
-      auto schur = [&](double a) {
-        const Vec b = dyn.coupling(a, q);
-        return dyn.inertia(a, q) - b.dot(dyn.mu_inverse() * b);  // S = m - b^T mu^-1 b
-      };
-      out.theta_dot = std::sqrt(schur(a_pre) / schur(a_post)) * theta_dot_minus;
-      out.q_dot = dyn.mu_inverse() * (p - dyn.coupling(a_post, q) * out.theta_dot);
-      out.impulse = dyn.mass() * (dyn.cg_velocity(a_post, q, out.theta_dot, out.q_dot) - v_minus);
-      out.energy_loss = 0.0;  // elastic, by construction
-      out.law_fallback = true;
-    } else if (rigid && out.energy_loss < -kImpactEnergyRounding * before) {
+    out.energy_loss = out.law_fallback  // the elastic ratio: no loss, by construction
+                          ? 0.0
+                          : before - dyn.kinetic_energy(a_post, q, out.theta_dot, out.q_dot);
+    if (rigid && out.energy_loss < -kImpactEnergyRounding * before) {
       ImpactRule paper = rule;
       paper.law = ImpactLaw::kPaper;
       out = resolve_impact(dyn, landing_edge, q, theta_dot_minus, q_dot_minus, paper,
@@ -193,7 +196,7 @@ template <class Vec>
 ImpactRegime impact_regime(const Vec& omega, double duration) {
   ImpactRegime r;
   if (omega.size() == 0) return r;  // a rigid body: every law is Housner's (or the ratio given)
-  const double two_pi = 6.283185307179586;
+  const double two_pi = 2.0 * std::numbers::pi;
   r.duration_over_fastest = duration * omega(omega.size() - 1) / two_pi;
   r.duration_over_slowest = duration * omega(0) / two_pi;
   if (r.duration_over_fastest < 0.1) {
