@@ -26,6 +26,7 @@
 #include "flexrock/io/files.hpp"
 #include "flexrock/io/records.hpp"
 #include "table_reader.hpp"
+#include "uncertain_tables.hpp"
 
 namespace flexrock::io {
 
@@ -922,6 +923,7 @@ SweepManifest load_sweep_manifest(const std::string& path) {
     if (m.spec.bodies.empty()) throw InputError(path + ": expected at least one [[body]]");
     read_solver(*s, m.spec.solver, m.spec.bodies.front().body);
   }
+  detail::read_uncertainty(top, m.spec);
   top.finish("at the top level of a sweep manifest");
   m.hash = h;
   return m;
@@ -1034,6 +1036,8 @@ std::vector<std::string> sweep_columns(const study::SweepSpec& spec) {
     v.emplace_back(c.name);
     if (c.name == kMeasuresAfter) {
       for (const study::MeasureRequest& m : spec.measures) v.push_back(study::measure_column(m));
+      for (const study::UncertainParameter& p : spec.uncertainty.parameters)
+        v.emplace_back(study::uncertain_kind(p.kind).column);
     }
   }
   if (study::has_friction(spec)) add_sliding_columns(v);
@@ -1047,6 +1051,7 @@ std::string sweep_row(const study::SweepSpec& spec, const study::SweepRow& row) 
     s += col.field(spec, row);
     if (col.name == kMeasuresAfter) {
       for (const double x : row.measures) s += ',' + field(x);
+      for (const double x : row.sampled) s += ',' + field(x);
     }
   }
   if (study::has_friction(spec)) add_sliding_fields(s, row.run);
@@ -1156,6 +1161,7 @@ JournalCheck sweep_journal_check(const study::SweepSpec& spec) {
   for (const study::SweepRecord& r : spec.records)
     im->push_back(study::record_intensity(spec, r.motion));
   auto runs = std::make_shared<std::vector<study::SweepRun>>(study::sweep_runs(spec));
+  auto design = std::make_shared<study::SampleDesign>(study::sample_design(spec));
   // where the fields are, by column name
   const bool sliding = study::has_friction(spec);
   const std::vector<std::string> names = sweep_columns(spec);
@@ -1169,15 +1175,16 @@ JournalCheck sweep_journal_check(const study::SweepSpec& spec) {
   const std::size_t inputs = col("duration_s") + 1;  // the fields a run's inputs decide
   const std::size_t outcome = col("outcome"), edge = col("overturn_edge");
   const std::size_t impacts = col("impacts"), status = col("status");
-  return [&spec, bodies, im, runs, columns, inputs, outcome, edge, impacts, status, sliding,
+  return [&spec, bodies, im, runs, design, columns, inputs, outcome, edge, impacts, status, sliding,
           first_sliding](std::size_t index, const std::string& line) -> std::string {
     if (index >= runs->size()) return "no such run";
     const study::SweepRun& run = (*runs)[index];
     const std::vector<std::string_view> f = fields_of(line);
     if (std::string why = check_fields(f, columns); !why.empty()) return why;
-    // index, body, record, level, scale, PGA, PGV, duration: as the manifest makes this run
+    // index, body, record, level, scale, PGA, PGV, sampled values, duration: as the manifest
+    // makes this run
     const study::SweepRow row =
-        study::sweep_inputs(spec, run, (*bodies)[run.body], (*im)[run.record]);
+        study::sweep_inputs(spec, run, (*bodies)[run.body], (*im)[run.record], *design);
     const std::string expected(first_fields(sweep_row(spec, row), inputs));
     if (first_fields(line, inputs) != expected) {
       return "its first fields are not those of run " + std::to_string(index) + " (" + expected +

@@ -7,6 +7,7 @@
 #include <limits>
 #include <mutex>
 #include <numbers>
+#include <optional>
 
 #include "flexrock/core/error.hpp"
 #include "flexrock/excitation/intensity.hpp"
@@ -126,6 +127,9 @@ Intensity record_intensity(const SweepSpec& spec, const GroundMotion& motion) {
 
 bool has_friction(const SweepSpec& spec) {
   if (std::isfinite(spec.solver.friction_coefficient)) return true;
+  for (const UncertainParameter& p : spec.uncertainty.parameters) {
+    if (p.kind == UncertainKind::kFriction) return true;
+  }
   return std::any_of(spec.bodies.begin(), spec.bodies.end(), [](const SweepBody& b) {
     return b.friction_coefficient && std::isfinite(*b.friction_coefficient);
   });
@@ -143,6 +147,56 @@ std::vector<SweepRun> sweep_runs(const SweepSpec& spec) {
   }
   return runs;
 }
+
+std::size_t sample_index(const SweepSpec& spec, const SweepRun& run) {
+  return spec.uncertainty.sampling.scope == SamplingScope::kRecord
+             ? run.record
+             : run.record * spec.scales.size() + run.scale_index;
+}
+
+SampleDesign sample_design(const SweepSpec& spec) {
+  if (spec.uncertainty.empty()) return {};
+  const std::size_t n = spec.uncertainty.sampling.scope == SamplingScope::kRecord
+                            ? spec.records.size()
+                            : spec.records.size() * spec.scales.size();
+  return SampleDesign(spec.uncertainty, n);
+}
+
+BodyParameters run_body(const SweepSpec& spec, const SweepRun& run,
+                        const std::vector<double>& sample) {
+  const BodyParameters& b = spec.bodies.at(run.body).body;
+  if (sample.empty()) return b;
+  return apply(spec.uncertainty, sample, b);
+}
+
+namespace {
+
+bool changes_any_body(const SweepSpec& spec) {
+  return std::any_of(spec.uncertainty.parameters.begin(), spec.uncertainty.parameters.end(),
+                     [](const UncertainParameter& p) { return changes_body(p.kind); });
+}
+
+// checks the uncertainty against the solver: each restitution parameter goes with its laws
+void check_uncertainty(const SweepSpec& spec) {
+  try {
+    validate(spec.uncertainty);
+  } catch (const InputError& e) {
+    throw InputError(std::string("sweep: ") + e.what());
+  }
+  for (const UncertainParameter& p : spec.uncertainty.parameters) {
+    const bool restitution_law = spec.solver.impact_law == ImpactLaw::kRestitution;
+    FLEXROCK_THROW_UNLESS(p.kind != UncertainKind::kRestitutionRatio || restitution_law,
+                          "sweep: uncertain restitution_ratio: expected [solver] impact_law = "
+                          "\"restitution\" (the ratio is that law's; other laws have "
+                          "restitution_factor)");
+    FLEXROCK_THROW_UNLESS(p.kind != UncertainKind::kRestitutionFactor || !restitution_law,
+                          "sweep: uncertain restitution_factor: impact_law = \"restitution\" "
+                          "takes restitution_ratio instead (the factor is for the paper and "
+                          "rigid_body laws)");
+  }
+}
+
+}  // namespace
 
 void validate(const SweepSpec& spec) {
   FLEXROCK_THROW_UNLESS(!spec.bodies.empty(), "sweep: expected at least one body");
@@ -176,6 +230,9 @@ void validate(const SweepSpec& spec) {
       throw InputError("sweep: body '" + b.name + "': " + e.what());
     }
   }
+  check_uncertainty(spec);
+  const SampleDesign design = sample_design(spec);
+  const bool sampled_body = changes_any_body(spec);
   std::vector<Intensity> im;
   std::vector<double> peak;  // [m/s^2] largest |sample| of either component
   for (const SweepRecord& r : spec.records) {
@@ -201,9 +258,21 @@ void validate(const SweepSpec& spec) {
   // a journal of a study that cannot finish
   for (const SweepRun& run : sweep_runs(spec)) {
     const SweepRecord& rec = spec.records[run.record];
-    const SweepRow row = sweep_inputs(spec, run, bodies[run.body], im[run.record]);
     const std::string where = "sweep: body '" + spec.bodies[run.body].name + "', record '" +
                               rec.name + "', scale " + std::to_string(spec.scales[run.scale_index]);
+    // a sampled body is made and checked for every run, as the run will make it
+    const std::vector<double> sample =
+        design.dimensions() > 0 ? design.values(sample_index(spec, run)) : std::vector<double>{};
+    std::optional<Body> own;
+    if (sampled_body) {
+      try {
+        own.emplace(run_body(spec, run, sample));
+      } catch (const InputError& e) {
+        throw InputError(where + ": the sampled body: " + e.what());
+      }
+    }
+    const Body& body = own ? *own : bodies[run.body];
+    const SweepRow row = sweep_inputs(spec, run, body, im[run.record], sample);
     // the scaled record must stay finite: its peak times the factor
     FLEXROCK_THROW_UNLESS(
         std::isfinite(row.scale) && row.scale > 0.0 &&
@@ -214,10 +283,11 @@ void validate(const SweepSpec& spec) {
     FLEXROCK_THROW_UNLESS(std::isfinite(row.duration),
                           where + ": free_periods x 2 pi/p gives a run of " +
                               std::to_string(row.duration) + " s; expected a finite duration");
-    // the solver options do not depend on the scale: check them once per body and record
-    if (run.scale_index == 0) {
+    // the solver options do not depend on the scale (unless sampled): check them once per body
+    // and record
+    if (run.scale_index == 0 || !sample.empty()) {
       try {
-        validate_options(bodies[run.body], {}, run_options(spec, row));
+        validate_options(body, {}, run_options(spec, row));
       } catch (const InputError& e) {
         throw InputError(where + ": [solver] " + e.what());
       }
@@ -225,9 +295,19 @@ void validate(const SweepSpec& spec) {
   }
 }
 
+SweepRow sweep_inputs(const SweepSpec& spec, const SweepRun& run, const Body& spec_body,
+                      const Intensity& im, const SampleDesign& design) {
+  if (design.dimensions() == 0) return sweep_inputs(spec, run, spec_body, im);
+  const std::vector<double> sample = design.values(sample_index(spec, run));
+  if (!changes_any_body(spec)) return sweep_inputs(spec, run, spec_body, im, sample);
+  return sweep_inputs(spec, run, Body(run_body(spec, run, sample)), im, sample);
+}
+
 SweepRow sweep_inputs(const SweepSpec& spec, const SweepRun& run, const Body& body,
-                      const Intensity& im) {
+                      const Intensity& im, const std::vector<double>& sample) {
+  FLEXROCK_DEMAND(sample.size() == spec.uncertainty.parameters.size());
   SweepRow row;
+  row.sampled = sample;
   row.index = run.index;
   row.body = run.body;
   row.record = run.record;
@@ -265,6 +345,7 @@ SimulationOptions run_options(const SweepSpec& spec, const SweepRow& row) {
     o.kinetic_friction_coefficient =
         b.kinetic_friction_coefficient.value_or(std::numeric_limits<double>::infinity());
   }
+  if (!row.sampled.empty()) apply(spec.uncertainty, row.sampled, o);
   o.t_end = row.duration;
   o.output_dt = 0.0;
   o.progress = nullptr;
@@ -273,9 +354,15 @@ SimulationOptions run_options(const SweepSpec& spec, const SweepRow& row) {
 
 namespace {
 
-SweepRow run_one(const SweepSpec& spec, const SweepRun& run, const Body& body,
-                 const Intensity& im) {
-  SweepRow row = sweep_inputs(spec, run, body, im);
+SweepRow run_one(const SweepSpec& spec, const SweepRun& run, const Body& spec_body,
+                 const Intensity& im, const SampleDesign& design) {
+  std::vector<double> sample;
+  if (design.dimensions() > 0) sample = design.values(sample_index(spec, run));
+  // a run whose sample changes the body has a body of its own
+  std::optional<Body> own;
+  if (changes_any_body(spec)) own.emplace(run_body(spec, run, sample));
+  const Body& body = own ? *own : spec_body;
+  SweepRow row = sweep_inputs(spec, run, body, im, sample);
   const GroundMotion& m = spec.records[run.record].motion;
   const SimulationResult r = simulate(body, m.scaled(row.scale), {}, run_options(spec, row));
   row.run = summarize(body, r);
@@ -287,7 +374,8 @@ SweepRow run_one(const SweepSpec& spec, const SweepRun& run, const Body& body,
 
 SweepRow run_sweep_one(const SweepSpec& spec, const SweepRun& run) {
   const Body body(spec.bodies.at(run.body).body);
-  return run_one(spec, run, body, record_intensity(spec, spec.records.at(run.record).motion));
+  return run_one(spec, run, body, record_intensity(spec, spec.records.at(run.record).motion),
+                 sample_design(spec));
 }
 
 std::vector<SweepRow> run_sweep(const SweepSpec& spec, const std::vector<std::size_t>& indices,
@@ -320,6 +408,7 @@ std::vector<SweepRow> run_sweep(const SweepSpec& spec, const std::vector<std::si
   std::vector<Intensity> im;
   im.reserve(spec.records.size());
   for (const SweepRecord& r : spec.records) im.push_back(record_intensity(spec, r.motion));
+  const SampleDesign design = sample_design(spec);
 
   std::vector<SweepRow> rows(todo.size());
   std::mutex row_mutex;
@@ -327,7 +416,7 @@ std::vector<SweepRow> run_sweep(const SweepSpec& spec, const std::vector<std::si
       todo.size(), options.threads,
       [&](std::size_t k) {
         const SweepRun& run = all[todo[k]];
-        rows[k] = run_one(spec, run, bodies[run.body], im[run.record]);
+        rows[k] = run_one(spec, run, bodies[run.body], im[run.record], design);
         if (on_row) {
           const std::lock_guard lock(row_mutex);
           on_row(rows[k]);

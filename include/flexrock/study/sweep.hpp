@@ -14,6 +14,7 @@
 #include "flexrock/sim/simulate.hpp"
 #include "flexrock/study/outcome.hpp"
 #include "flexrock/study/parallel.hpp"
+#include "flexrock/study/uncertain.hpp"
 
 namespace flexrock::study {
 
@@ -91,6 +92,9 @@ struct SweepSpec {
   std::vector<MeasureRequest> measures;
   // the measure that kTargetMeasure scales to (one with scale power 1 or 2)
   MeasureRequest target;
+  // parameters each run samples (empty: none, the columns of a sweep before them byte for byte);
+  // the sample of a run is sample_index(spec, run): every body sees the same realisations
+  Uncertainty uncertainty;
 };
 
 /// The intensity of a spec's record: intensity(motion, spec.measures), with the target measure
@@ -121,7 +125,17 @@ struct SweepRow {
   double duration = 0.0;         // [s] simulated span (record + free motion)
   std::string message;           // why a stopped run stopped (else empty)
   RunSummary run;
+  std::vector<double> sampled;  // the run's values of spec.uncertainty, in its order
 };
+
+/// The sample a run draws from spec.uncertainty: record * scales + scale_index (SamplingScope
+/// kRun) or record (kRecord); the body does not count, so every body meets the same values.
+std::size_t sample_index(const SweepSpec& spec, const SweepRun& run);
+/// The samples of a spec's uncertainty: one per (record, scale) or per record.
+SampleDesign sample_design(const SweepSpec& spec);
+/// The body of a run: its spec body with `sample` (the run's values) applied.
+BodyParameters run_body(const SweepSpec& spec, const SweepRun& run,
+                        const std::vector<double>& sample);
 
 /// Simulates one run of the sweep (what run_sweep does for that index).
 SweepRow run_sweep_one(const SweepSpec& spec, const SweepRun& run);
@@ -141,12 +155,18 @@ std::vector<SweepRow> run_sweep(const SweepSpec& spec, const std::vector<std::si
 /// record and scale, and the option.
 void validate(const SweepSpec& spec);
 
-/// A run's row before it runs: indices, scale factor, PGA, PGV and duration (what run_sweep
-/// writes in those fields); `body` and `im` are the run's body and its record's intensity.
+/// A run's row before it runs: indices, scale factor, PGA, PGV, sampled values and duration
+/// (what run_sweep writes in those fields); `body` and `im` are the run's body (run_body: with
+/// its sample applied) and its record's intensity, `sample` the run's values.
 SweepRow sweep_inputs(const SweepSpec& spec, const SweepRun& run, const Body& body,
-                      const Intensity& im);
+                      const Intensity& im, const std::vector<double>& sample = {});
+/// The same from the spec's body (`spec_body`, Body of spec.bodies[run.body]) and the spec's
+/// design: the run's sample drawn and, if it changes the body, applied.
+SweepRow sweep_inputs(const SweepSpec& spec, const SweepRun& run, const Body& spec_body,
+                      const Intensity& im, const SampleDesign& design);
 /// The simulation options of a run (spec.solver with the body's friction coefficients if it has
-/// its own, its duration as t_end, no time history).
+/// its own, then the run's sampled friction and restitution, its duration as t_end, no time
+/// history).
 SimulationOptions run_options(const SweepSpec& spec, const SweepRow& row);
 
 }  // namespace flexrock::study
