@@ -28,6 +28,11 @@ if(TARGET flexrock)
            COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/cli/study_suite.sh $<TARGET_FILE:flexrock>
                    ${PROJECT_SOURCE_DIR} ${flexrock_suite_mpi})
   set_tests_properties(cli_study_suite PROPERTIES LABELS cli TIMEOUT 300)
+  # uncertain parameters: the same file for 1 and 2 threads, 2 MPI processes, a kill and a resume
+  add_test(NAME cli_study_uncertain
+           COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/cli/study_uncertain.sh $<TARGET_FILE:flexrock>
+                   ${PROJECT_SOURCE_DIR} ${flexrock_suite_mpi})
+  set_tests_properties(cli_study_uncertain PROPERTIES LABELS cli TIMEOUT 300)
   # flexrock plot needs the build's Python package: only where it is built
   if(FLEXROCK_BUILD_PYTHON)
     set_tests_properties(cli_study_intensity PROPERTIES ENVIRONMENT "FLEXROCK_TEST_PLOT=1")
