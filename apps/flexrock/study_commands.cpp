@@ -353,13 +353,10 @@ class StudyJournal {
   std::map<std::size_t, std::string> added_;  // other ranks: finished here
 };
 
-// the outcome field of every cell line, counted
-std::map<std::string, std::size_t> count_outcomes(const std::map<std::size_t, std::string>& lines,
-                                                  std::size_t cells) {
+// the outcome of every cell, counted
+std::map<std::string, std::size_t> count_outcomes(const std::vector<study::SpectrumCell>& cells) {
   std::map<std::string, std::size_t> counts;
-  for (const auto& [i, line] : lines) {
-    if (i < cells) ++counts[study::to_string(io::spectrum_line_outcome(line))];
-  }
+  for (const study::SpectrumCell& c : cells) ++counts[study::to_string(c.run.outcome)];
   return counts;
 }
 
@@ -443,7 +440,7 @@ int StudyCommands::Impl::run_spectrum(const Processes& procs) {
   study::SpectrumResume resume;
   for (const auto& [i, line] : journal.known()) {
     if (i < cells) {
-      resume.cells[i] = io::spectrum_line_outcome(line);
+      resume.cells[i] = io::read_spectrum_cell(grid, i, line, g).run.outcome;
     } else {
       resume.boundaries.insert(i - cells);
     }
@@ -495,10 +492,14 @@ int StudyCommands::Impl::run_spectrum(const Processes& procs) {
     return kExitOk;
   }
   // a record spectrum spread over processes: the bisection here, from every cell's outcome
+  // every cell as data, read back from its line (the journal's lines were checked as they were
+  // read; gathered ones are checked here)
+  std::vector<study::SpectrumCell> all;
+  all.reserve(cells);
+  for (std::size_t i = 0; i < cells; ++i) {
+    all.push_back(io::read_spectrum_cell(grid, i, lines.at(i), g));
+  }
   if (f.is_record && bisect && !lines.count(cells)) {
-    std::vector<study::SpectrumCell> all = grid.cells;
-    for (std::size_t i = 0; i < cells; ++i)
-      all[i].run.outcome = io::spectrum_line_outcome(lines.at(i));
     const study::OverturnBoundary b = study::record_boundary(body, f.record, all, &g_cancel);
     if (!b.computed) {
       journal.finish(false);
@@ -530,7 +531,7 @@ int StudyCommands::Impl::run_spectrum(const Processes& procs) {
                      journal.path() + "): " + e.what(),
                  kExitRunFailed);
   }
-  const std::map<std::string, std::size_t> counts = count_outcomes(lines, cells);
+  const std::map<std::string, std::size_t> counts = count_outcomes(all);
   journal.finish(true);
 
   // a short account on stdout
@@ -624,22 +625,19 @@ int StudyCommands::Impl::run_sweep(const Processes& procs) {
                      journal.path() + "): " + e.what(),
                  kExitRunFailed);
   }
-  std::size_t over = 0, stopped = 0, lost = 0;
+  // the outcomes counted from the rows as data
+  std::size_t over = 0, stopped = 0;
   for (const auto& [i, line] : lines) {
-    if (line.find(",overturned_") != std::string::npos) ++over;
-    // the outcome column, followed by overturned = 0
-    if (line.find(",stopped,0,") != std::string::npos) ++stopped;
-    // a row resumed from a journal written before the engine followed flight
-    if (line.find(",contact_lost,0,") != std::string::npos) ++lost;
+    const study::SweepRow row = io::read_sweep_row(m.spec, i, line);
+    over += study::overturned(row.run.outcome) ? 1 : 0;
+    stopped += row.run.outcome == study::Outcome::kStopped ? 1 : 0;
   }
   journal.finish(true);
   fmt::print(
       "sweep: {} bodies x {} records x {} scales = {} runs: {} overturned, {} not classified "
-      "(stopped){}\n",
+      "(stopped)\n",
       m.spec.bodies.size(), m.spec.records.size(), m.spec.scales.size(), runs.size(), over,
-      stopped + lost,
-      lost == 0 ? std::string()
-                : fmt::format(", of which {} contact_lost from an older journal", lost));
+      stopped);
   if (!quiet) {
     fmt::print("time: {:.3g} s for {} new runs on {} process{} x {} thread{}\n", seconds,
                remaining.size(), procs.size(), procs.size() == 1 ? "" : "es", options.threads,

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <memory>
 #include <numbers>
@@ -17,6 +18,7 @@
 #include <sstream>
 #include <string_view>
 #include <utility>
+#include <variant>
 
 #include "flexrock/core/error.hpp"
 #include "flexrock/core/types.hpp"
@@ -57,6 +59,48 @@ std::string join(const std::vector<std::string>& v, const char* sep = ", ") {
 
 // a regular file's bytes (read_input_file refuses FIFOs and devices)
 std::string file_bytes(const std::string& path) { return read_input_file(path, "input"); }
+
+// a field's value by its column's type (the variant's alternative), and a value of each type
+using Value = FieldValue;
+long long integer(const Value& v) { return std::get<long long>(v); }
+double real(const Value& v) { return std::get<double>(v); }
+const std::string& text(const Value& v) { return std::get<std::string>(v); }
+
+std::optional<study::Outcome> outcome_named(std::string_view name) {
+  // every value of the enumeration, so that a new outcome needs no change here
+  for (int k = 0; k < 64; ++k) {
+    const auto o = static_cast<study::Outcome>(k);
+    if (name == study::to_string(o)) return o;
+  }
+  return std::nullopt;
+}
+
+std::optional<Status> status_named(std::string_view name) {
+  for (int k = 0; k < 64; ++k) {
+    if (name == to_string(static_cast<Status>(k))) return static_cast<Status>(k);
+  }
+  return std::nullopt;
+}
+
+std::optional<study::Regime> regime_named(std::string_view name) {
+  for (const auto r : {study::Regime::kNone, study::Regime::kSliding, study::Regime::kRocking,
+                       study::Regime::kSlidingRocking}) {
+    if (name == study::to_string(r)) return r;
+  }
+  return std::nullopt;
+}
+
+study::Outcome outcome_value(const Value& v) {
+  const std::optional<study::Outcome> o = outcome_named(text(v));
+  if (!o) throw InputError("unknown outcome \"" + text(v) + "\"");
+  return *o;
+}
+
+Status status_value(const Value& v) {
+  const std::optional<Status> o = status_named(text(v));
+  if (!o) throw InputError("unknown status \"" + text(v) + "\"");
+  return *o;
+}
 
 using detail::describe;
 using detail::line_of;
@@ -512,22 +556,34 @@ struct SlidingColumn {
   const char* name;
   const char* unit;
   const char* doc;
-  std::string (*field)(const study::RunSummary& r);
+  ColumnType type;
+  Value (*get)(const study::RunSummary& r);
+  void (*set)(study::RunSummary& r, const Value& v);
 };
 
 const SlidingColumn kSlidingColumns[] = {
     {"regime", "-",
      "what the base did: `none`, `sliding` (slid, never uplifted), `rocking` (uplifted, never "
      "slid) or `sliding_rocking` (both); an overturned body keeps its outcome",
-     [](const study::RunSummary& r) { return std::string(study::to_string(r.regime)); }},
-    {"max_offset_m", "m", "peak \\|offset\\| of the base from where it stood",
-     [](const study::RunSummary& r) { return field(r.max_offset); }},
-    {"final_offset_m", "m", "residual offset at the end (signed, along +I)",
-     [](const study::RunSummary& r) { return field(r.final_offset); }},
-    {"sliding_time_s", "s", "time spent sliding",
-     [](const study::RunSummary& r) { return field(r.sliding_time); }},
-    {"slips", "-", "times sliding started",
-     [](const study::RunSummary& r) { return std::to_string(r.slips); }},
+     ColumnType::kText,
+     [](const study::RunSummary& r) -> Value { return study::to_string(r.regime); },
+     [](study::RunSummary& r, const Value& v) {
+       const std::optional<study::Regime> g = regime_named(text(v));
+       if (!g) throw InputError("unknown regime \"" + text(v) + "\"");
+       r.regime = *g;
+     }},
+    {"max_offset_m", "m", "peak \\|offset\\| of the base from where it stood", ColumnType::kReal,
+     [](const study::RunSummary& r) -> Value { return r.max_offset; },
+     [](study::RunSummary& r, const Value& v) { r.max_offset = real(v); }},
+    {"final_offset_m", "m", "residual offset at the end (signed, along +I)", ColumnType::kReal,
+     [](const study::RunSummary& r) -> Value { return r.final_offset; },
+     [](study::RunSummary& r, const Value& v) { r.final_offset = real(v); }},
+    {"sliding_time_s", "s", "time spent sliding", ColumnType::kReal,
+     [](const study::RunSummary& r) -> Value { return r.sliding_time; },
+     [](study::RunSummary& r, const Value& v) { r.sliding_time = real(v); }},
+    {"slips", "-", "times sliding started", ColumnType::kInteger,
+     [](const study::RunSummary& r) -> Value { return static_cast<long long>(r.slips); },
+     [](study::RunSummary& r, const Value& v) { r.slips = static_cast<long>(integer(v)); }},
 };
 
 void add_sliding_columns(std::vector<std::string>& v) {
@@ -535,64 +591,81 @@ void add_sliding_columns(std::vector<std::string>& v) {
 }
 
 void add_sliding_fields(std::string& s, const study::RunSummary& r) {
-  for (const SlidingColumn& c : kSlidingColumns) s.append(",").append(c.field(r));
+  for (const SlidingColumn& c : kSlidingColumns) s.append(",").append(format_field(c.get(r)));
 }
 
 }  // namespace
 
 namespace {
 
-// one column of the spectrum CSV: name, unit, meaning and its field of a cell. The header, the
-// rows and the column reference of docs/studies.md are written from this table
+// one column of the spectrum CSV: name, unit, meaning, type, its field of a cell and (for a
+// result of the run) how a field read back sets it; the columns without `set` follow from the
+// grid. The header, the rows, the reader and the column reference of docs/studies.md are
+// written from this table
 struct SpectrumColumn {
   const char* name;
   const char* unit;
   const char* doc;
-  std::string (*field)(const study::SpectrumResult& res, const study::SpectrumCell& c, double g);
+  ColumnType type;
+  Value (*get)(const study::SpectrumResult& res, const study::SpectrumCell& c, double g);
+  void (*set)(study::SpectrumCell& c, const Value& v);
 };
 
 using Res = study::SpectrumResult;
 using Cell = study::SpectrumCell;
 
 const SpectrumColumn kSpectrumColumns[] = {
-    {"row", "-", "grid index of the amplitude",
-     [](const Res&, const Cell& c, double) { return std::to_string(c.row); }},
-    {"column", "-", "grid index of the frequency",
-     [](const Res&, const Cell& c, double) { return std::to_string(c.column); }},
+    {"row", "-", "grid index of the amplitude", ColumnType::kInteger,
+     [](const Res&, const Cell& c, double) -> Value { return static_cast<long long>(c.row); },
+     nullptr},
+    {"column", "-", "grid index of the frequency", ColumnType::kInteger,
+     [](const Res&, const Cell& c, double) -> Value { return static_cast<long long>(c.column); },
+     nullptr},
     {"a_p_m_per_s2", "m/s^2", "pulse amplitude (record: the scaled record's PGA)",
-     [](const Res&, const Cell& c, double) { return field(c.amplitude_si); }},
-    {"a_p_over_g_tan_alpha", "-", "the same over g tan alpha",
-     [](const Res& res, const Cell& c, double g) {
-       return field(c.amplitude_si / (g * res.tan_alpha));
-     }},
-    {"omega_p_rad_per_s", "rad/s", "pulse frequency (record: 0)",
-     [](const Res&, const Cell& c, double) { return field(c.omega_si); }},
-    {"omega_p_over_p", "-", "the same over p",
-     [](const Res& res, const Cell& c, double) { return field(c.omega_si / res.p); }},
-    {"scale", "-", "record spectra: the factor (pulse spectra: empty)",
-     [](const Res&, const Cell& c, double) {
-       return c.omega_si == 0.0 ? field(c.amplitude) : std::string("");
-     }},
-    {"outcome", "-", "the outcome class above",
-     [](const Res&, const Cell& c, double) {
-       return std::string(study::to_string(c.run.outcome));
-     }},
-    {"overturned", "0/1", "1 for an overturning class",
-     [](const Res&, const Cell& c, double) {
-       return std::string(study::overturned(c.run.outcome) ? "1" : "0");
-     }},
-    {"max_theta_over_alpha", "-", "largest tilt over the overturning angle",
-     [](const Res&, const Cell& c, double) { return field(c.run.max_theta_over_alpha); }},
-    {"impacts", "-", "impacts during the run",
-     [](const Res&, const Cell& c, double) { return std::to_string(c.run.impacts); }},
-    {"first_uplift_time_s", "s", "-1: never",
-     [](const Res&, const Cell& c, double) { return field(c.run.first_uplift_time); }},
-    {"overturn_time_s", "s", "-1: never",
-     [](const Res&, const Cell& c, double) { return field(c.run.overturn_time); }},
-    {"energy_lost_J", "J", "impacts + chatter cut-offs + material damping",
-     [](const Res&, const Cell& c, double) { return field(c.run.energy_lost); }},
-    {"status", "-", "engine status: completed, overturned, stopped",
-     [](const Res&, const Cell& c, double) { return std::string(to_string(c.run.status)); }},
+     ColumnType::kReal, [](const Res&, const Cell& c, double) -> Value { return c.amplitude_si; },
+     nullptr},
+    {"a_p_over_g_tan_alpha", "-", "the same over g tan alpha", ColumnType::kReal,
+     [](const Res& res, const Cell& c, double g) -> Value {
+       return c.amplitude_si / (g * res.tan_alpha);
+     },
+     nullptr},
+    {"omega_p_rad_per_s", "rad/s", "pulse frequency (record: 0)", ColumnType::kReal,
+     [](const Res&, const Cell& c, double) -> Value { return c.omega_si; }, nullptr},
+    {"omega_p_over_p", "-", "the same over p", ColumnType::kReal,
+     [](const Res& res, const Cell& c, double) -> Value { return c.omega_si / res.p; }, nullptr},
+    {"scale", "-", "record spectra: the factor (pulse spectra: empty)", ColumnType::kReal,
+     [](const Res&, const Cell& c, double) -> Value {
+       return c.omega_si == 0.0 ? c.amplitude : std::numeric_limits<double>::quiet_NaN();
+     },
+     nullptr},
+    {"outcome", "-", "the outcome class above", ColumnType::kText,
+     [](const Res&, const Cell& c, double) -> Value { return study::to_string(c.run.outcome); },
+     [](Cell& c, const Value& v) { c.run.outcome = outcome_value(v); }},
+    {"overturned", "0/1", "1 for an overturning class", ColumnType::kInteger,
+     [](const Res&, const Cell& c, double) -> Value {
+       return study::overturned(c.run.outcome) ? 1LL : 0LL;
+     },
+     nullptr},
+    {"max_theta_over_alpha", "-", "largest tilt over the overturning angle", ColumnType::kReal,
+     [](const Res&, const Cell& c, double) -> Value { return c.run.max_theta_over_alpha; },
+     [](Cell& c, const Value& v) { c.run.max_theta_over_alpha = real(v); }},
+    {"impacts", "-", "impacts during the run", ColumnType::kInteger,
+     [](const Res&, const Cell& c, double) -> Value {
+       return static_cast<long long>(c.run.impacts);
+     },
+     [](Cell& c, const Value& v) { c.run.impacts = static_cast<long>(integer(v)); }},
+    {"first_uplift_time_s", "s", "-1: never", ColumnType::kReal,
+     [](const Res&, const Cell& c, double) -> Value { return c.run.first_uplift_time; },
+     [](Cell& c, const Value& v) { c.run.first_uplift_time = real(v); }},
+    {"overturn_time_s", "s", "-1: never", ColumnType::kReal,
+     [](const Res&, const Cell& c, double) -> Value { return c.run.overturn_time; },
+     [](Cell& c, const Value& v) { c.run.overturn_time = real(v); }},
+    {"energy_lost_J", "J", "impacts + chatter cut-offs + material damping", ColumnType::kReal,
+     [](const Res&, const Cell& c, double) -> Value { return c.run.energy_lost; },
+     [](Cell& c, const Value& v) { c.run.energy_lost = real(v); }},
+    {"status", "-", "engine status: completed, overturned, stopped", ColumnType::kText,
+     [](const Res&, const Cell& c, double) -> Value { return to_string(c.run.status); },
+     [](Cell& c, const Value& v) { c.run.status = status_value(v); }},
 };
 
 }  // namespace
@@ -608,7 +681,7 @@ std::string spectrum_row(const study::SpectrumResult& res, const study::Spectrum
   std::string s;
   for (const SpectrumColumn& col : kSpectrumColumns) {
     if (&col != kSpectrumColumns) s += ',';
-    s += col.field(res, c, g);
+    s += format_field(col.get(res, c, g));
   }
   if (res.sliding) add_sliding_fields(s, c.run);
   return s;
@@ -931,91 +1004,119 @@ SweepManifest load_sweep_manifest(const std::string& path) {
 
 namespace {
 
-// one column of the sweep CSV: name, unit, meaning and its field of a row. The header, the rows
-// and the column reference of docs/studies.md are written from this table
+// one column of the sweep CSV: name, unit, meaning, type, its field of a row and (for what a run
+// found) how a field read back sets it; the columns without `set` follow from the run index and
+// the spec. The header, the rows, the reader, the Python arrays and the column reference of
+// docs/studies.md are written from this table
 struct SweepColumn {
-  const char* name;
+  std::string_view name;
   const char* unit;
   const char* doc;
-  std::string (*field)(const study::SweepSpec& spec, const study::SweepRow& row);
+  ColumnType type;
+  Value (*get)(const study::SweepSpec& spec, const study::SweepRow& row);
+  void (*set)(study::SweepRow& row, const Value& v);
 };
 
 using Spec = study::SweepSpec;
 using Row = study::SweepRow;
 
 const SweepColumn kSweepColumns[] = {
-    {"index", "-", "run index", [](const Spec&, const Row& r) { return std::to_string(r.index); }},
-    {"body", "-", "name of the body",
-     [](const Spec& s, const Row& r) { return s.bodies.at(r.body).name; }},
+    {"index", "-", "run index", ColumnType::kInteger,
+     [](const Spec&, const Row& r) -> Value { return static_cast<long long>(r.index); }, nullptr},
+    {"body", "-", "name of the body", ColumnType::kText,
+     [](const Spec& s, const Row& r) -> Value { return s.bodies.at(r.body).name; }, nullptr},
     {"record", "-", "name of the record (a `[[suite]]` pair: `<horizontal stem>+<vertical stem>`)",
-     [](const Spec& s, const Row& r) { return s.records.at(r.record).name; }},
+     ColumnType::kText,
+     [](const Spec& s, const Row& r) -> Value { return s.records.at(r.record).name; }, nullptr},
     {"requested_level", "`requested_units`",
      "the level as `[scales]` gives it: the factor, the target PGA in `[scales] units`, or the "
      "target of `target_im`; the same number for every record at one level (`pga_g` is "
      "computed and differs in the last digits between records: group or pivot on "
      "`requested_level`; it is the stripe of `flexrock fragility --analysis msa`)",
-     [](const Spec& s, const Row& r) {
+     ColumnType::kReal,
+     [](const Spec& s, const Row& r) -> Value {
        const std::vector<double>& levels = s.levels.empty() ? s.scales : s.levels;
-       return field(levels.at(r.scale_index));
-     }},
+       return levels.at(r.scale_index);
+     },
+     nullptr},
     {"requested_units", "-",
      "`-` for factors, else the `[scales] units` (`g`, `m/s^2`, `cm/s^2`), or the unit of a "
      "`target_im` that is no acceleration",
-     [](const Spec& s, const Row&) {
+     ColumnType::kText,
+     [](const Spec& s, const Row&) -> Value {
        if (s.scale_kind == study::ScaleKind::kFactor) return std::string("-");
        return s.level_units.empty() ? std::string("m/s^2") : s.level_units;
-     }},
-    {"scale", "-", "factor applied to the record",
-     [](const Spec&, const Row& r) { return field(r.scale); }},
+     },
+     nullptr},
+    {"scale", "-", "factor applied to the record", ColumnType::kReal,
+     [](const Spec&, const Row& r) -> Value { return r.scale; },
+     [](Row& r, const Value& v) { r.scale = real(v); }},
     {"pga_m_per_s2", "m/s^2",
-     "scaled record's peak \\|abs\\| horizontal acceleration over its samples",
-     [](const Spec&, const Row& r) { return field(r.pga); }},
-    {"pga_g", "g", "the same in g",
-     [](const Spec&, const Row& r) { return field(r.pga / kStandardGravity); }},
+     "scaled record's peak \\|abs\\| horizontal acceleration over its samples", ColumnType::kReal,
+     [](const Spec&, const Row& r) -> Value { return r.pga; },
+     [](Row& r, const Value& v) { r.pga = real(v); }},
+    {"pga_g", "g", "the same in g", ColumnType::kReal,
+     [](const Spec&, const Row& r) -> Value { return r.pga / kStandardGravity; }, nullptr},
     {"pgv_m_per_s", "m/s",
      "scaled record's peak \\|velocity\\|: the trapezoidal integral of the acceleration from 0 at "
      "the first sample, no baseline correction (the record's own processing is trusted); the "
      "factor times the unscaled record's PGV",
-     [](const Spec&, const Row& r) { return field(r.pgv); }},
-    {"duration_s", "s", "simulated span: record + free motion",
-     [](const Spec&, const Row& r) { return field(r.duration); }},
-    {"outcome", "-", "outcome class",
-     [](const Spec&, const Row& r) { return std::string(study::to_string(r.run.outcome)); }},
-    {"overturned", "0/1", "1 for an overturning class",
-     [](const Spec&, const Row& r) {
-       return std::string(study::overturned(r.run.outcome) ? "1" : "0");
-     }},
-    {"overturn_edge", "-", "1 or 2 (0: none)",
-     [](const Spec&, const Row& r) { return std::to_string(r.run.overturn_edge); }},
-    {"overturn_time_s", "s", "-1: none",
-     [](const Spec&, const Row& r) { return field(r.run.overturn_time); }},
-    {"max_theta_rad", "rad", "largest tilt",
-     [](const Spec&, const Row& r) { return field(r.run.max_theta); }},
-    {"max_theta_over_alpha", "-", "largest tilt over the overturning angle",
-     [](const Spec&, const Row& r) { return field(r.run.max_theta_over_alpha); }},
-    {"impacts", "-", "impacts",
-     [](const Spec&, const Row& r) { return std::to_string(r.run.impacts); }},
-    {"first_uplift_time_s", "s", "-1: never",
-     [](const Spec&, const Row& r) { return field(r.run.first_uplift_time); }},
-    {"max_uplift_m", "m", "largest height of a lifted tipping point",
-     [](const Spec&, const Row& r) { return field(r.run.max_uplift); }},
-    {"max_impulse_N_s", "N s", "largest vertical impact impulse",
-     [](const Spec&, const Row& r) { return field(r.run.max_impulse); }},
-    {"energy_lost_J", "J", "impacts + chatter + damping",
-     [](const Spec&, const Row& r) { return field(r.run.energy_lost); }},
-    {"max_friction_demand", "-", "largest \\|F_I\\|/F_J, impulses included",
-     [](const Spec&, const Row& r) { return field(r.run.max_friction_demand); }},
-    {"status", "-", "engine status",
-     [](const Spec&, const Row& r) { return std::string(to_string(r.run.status)); }},
-    {"message", "-", "why a stopped run stopped (commas replaced by `;`)",
-     [](const Spec&, const Row& r) {
+     ColumnType::kReal, [](const Spec&, const Row& r) -> Value { return r.pgv; },
+     [](Row& r, const Value& v) { r.pgv = real(v); }},
+    {"duration_s", "s", "simulated span: record + free motion", ColumnType::kReal,
+     [](const Spec&, const Row& r) -> Value { return r.duration; },
+     [](Row& r, const Value& v) { r.duration = real(v); }},
+    {"outcome", "-", "outcome class", ColumnType::kText,
+     [](const Spec&, const Row& r) -> Value { return study::to_string(r.run.outcome); },
+     [](Row& r, const Value& v) { r.run.outcome = outcome_value(v); }},
+    {"overturned", "0/1", "1 for an overturning class", ColumnType::kInteger,
+     [](const Spec&, const Row& r) -> Value {
+       return study::overturned(r.run.outcome) ? 1LL : 0LL;
+     },
+     nullptr},
+    {"overturn_edge", "-", "1 or 2 (0: none)", ColumnType::kInteger,
+     [](const Spec&, const Row& r) -> Value { return static_cast<long long>(r.run.overturn_edge); },
+     [](Row& r, const Value& v) { r.run.overturn_edge = static_cast<int>(integer(v)); }},
+    {"overturn_time_s", "s", "-1: none", ColumnType::kReal,
+     [](const Spec&, const Row& r) -> Value { return r.run.overturn_time; },
+     [](Row& r, const Value& v) { r.run.overturn_time = real(v); }},
+    {"max_theta_rad", "rad", "largest tilt", ColumnType::kReal,
+     [](const Spec&, const Row& r) -> Value { return r.run.max_theta; },
+     [](Row& r, const Value& v) { r.run.max_theta = real(v); }},
+    {"max_theta_over_alpha", "-", "largest tilt over the overturning angle", ColumnType::kReal,
+     [](const Spec&, const Row& r) -> Value { return r.run.max_theta_over_alpha; },
+     [](Row& r, const Value& v) { r.run.max_theta_over_alpha = real(v); }},
+    {"impacts", "-", "impacts", ColumnType::kInteger,
+     [](const Spec&, const Row& r) -> Value { return static_cast<long long>(r.run.impacts); },
+     [](Row& r, const Value& v) { r.run.impacts = static_cast<long>(integer(v)); }},
+    {"first_uplift_time_s", "s", "-1: never", ColumnType::kReal,
+     [](const Spec&, const Row& r) -> Value { return r.run.first_uplift_time; },
+     [](Row& r, const Value& v) { r.run.first_uplift_time = real(v); }},
+    {"max_uplift_m", "m", "largest height of a lifted tipping point", ColumnType::kReal,
+     [](const Spec&, const Row& r) -> Value { return r.run.max_uplift; },
+     [](Row& r, const Value& v) { r.run.max_uplift = real(v); }},
+    {"max_impulse_N_s", "N s", "largest vertical impact impulse", ColumnType::kReal,
+     [](const Spec&, const Row& r) -> Value { return r.run.max_impulse; },
+     [](Row& r, const Value& v) { r.run.max_impulse = real(v); }},
+    {"energy_lost_J", "J", "impacts + chatter + damping", ColumnType::kReal,
+     [](const Spec&, const Row& r) -> Value { return r.run.energy_lost; },
+     [](Row& r, const Value& v) { r.run.energy_lost = real(v); }},
+    {"max_friction_demand", "-", "largest \\|F_I\\|/F_J, impulses included", ColumnType::kReal,
+     [](const Spec&, const Row& r) -> Value { return r.run.max_friction_demand; },
+     [](Row& r, const Value& v) { r.run.max_friction_demand = real(v); }},
+    {"status", "-", "engine status", ColumnType::kText,
+     [](const Spec&, const Row& r) -> Value { return to_string(r.run.status); },
+     [](Row& r, const Value& v) { r.run.status = status_value(v); }},
+    {"message", "-", "why a stopped run stopped (commas replaced by `;`)", ColumnType::kText,
+     [](const Spec&, const Row& r) -> Value {
        std::string msg = r.message;
        for (char& c : msg) {
          if (c == ',' || c == '"') c = ';';
          if (c == '\n' || c == '\r') c = ' ';
        }
        return msg;
-     }},
+     },
+     [](Row& r, const Value& v) { r.message = text(v); }},
 };
 
 }  // namespace
@@ -1032,15 +1133,43 @@ constexpr std::string_view kMeasuresAfter = "pgv_m_per_s";
 
 std::vector<std::string> sweep_columns(const study::SweepSpec& spec) {
   std::vector<std::string> v;
+  for (const ColumnInfo& c : sweep_column_info(spec)) v.push_back(c.name);
+  return v;
+}
+
+std::vector<ColumnInfo> sweep_column_info(const study::SweepSpec& spec) {
+  std::vector<ColumnInfo> v;
   for (const SweepColumn& c : kSweepColumns) {
-    v.emplace_back(c.name);
+    v.push_back({std::string(c.name), c.unit, c.type});
     if (c.name == kMeasuresAfter) {
-      for (const study::MeasureRequest& m : spec.measures) v.push_back(study::measure_column(m));
-      for (const study::UncertainParameter& p : spec.uncertainty.parameters)
-        v.emplace_back(study::uncertain_kind(p.kind).column);
+      for (const study::MeasureRequest& m : spec.measures) {
+        v.push_back(
+            {study::measure_column(m), find_intensity_measure(m.name)->unit, ColumnType::kReal});
+      }
+      for (const study::UncertainParameter& p : spec.uncertainty.parameters) {
+        const study::UncertainKindInfo& k = study::uncertain_kind(p.kind);
+        v.push_back({k.column, k.unit, ColumnType::kReal});
+      }
     }
   }
-  if (study::has_friction(spec)) add_sliding_columns(v);
+  if (study::has_friction(spec)) {
+    for (const SlidingColumn& c : kSlidingColumns) v.push_back({c.name, c.unit, c.type});
+  }
+  return v;
+}
+
+std::vector<FieldValue> sweep_values(const study::SweepSpec& spec, const study::SweepRow& row) {
+  std::vector<FieldValue> v;
+  for (const SweepColumn& col : kSweepColumns) {
+    v.push_back(col.get(spec, row));
+    if (col.name == kMeasuresAfter) {
+      for (const double x : row.measures) v.emplace_back(x);
+      for (const double x : row.sampled) v.emplace_back(x);
+    }
+  }
+  if (study::has_friction(spec)) {
+    for (const SlidingColumn& c : kSlidingColumns) v.push_back(c.get(row.run));
+  }
   return v;
 }
 
@@ -1048,7 +1177,7 @@ std::string sweep_row(const study::SweepSpec& spec, const study::SweepRow& row) 
   std::string s;
   for (const SweepColumn& col : kSweepColumns) {
     if (&col != kSweepColumns) s += ',';
-    s += col.field(spec, row);
+    s += format_field(col.get(spec, row));
     if (col.name == kMeasuresAfter) {
       for (const double x : row.measures) s += ',' + field(x);
       for (const double x : row.sampled) s += ',' + field(x);
@@ -1056,6 +1185,12 @@ std::string sweep_row(const study::SweepSpec& spec, const study::SweepRow& row) 
   }
   if (study::has_friction(spec)) add_sliding_fields(s, row.run);
   return s;
+}
+
+std::string format_field(const FieldValue& v) {
+  if (const auto* i = std::get_if<long long>(&v)) return std::to_string(*i);
+  if (const auto* x = std::get_if<double>(&v)) return field(*x);
+  return std::get<std::string>(v);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -1101,21 +1236,7 @@ bool is_count(std::string_view f) {
   return !f.empty() && r.ec == std::errc() && r.ptr == f.data() + f.size() && v >= 0;
 }
 
-std::optional<study::Outcome> outcome_named(std::string_view name) {
-  // every value of the enumeration, so that a new outcome needs no change here
-  for (int k = 0; k < 64; ++k) {
-    const auto o = static_cast<study::Outcome>(k);
-    if (name == study::to_string(o)) return o;
-  }
-  return std::nullopt;
-}
-
-bool is_status(std::string_view name) {
-  for (int k = 0; k < 64; ++k) {
-    if (name == to_string(static_cast<Status>(k))) return true;
-  }
-  return false;
-}
+bool is_status(std::string_view name) { return status_named(name).has_value(); }
 
 // the fields of a run's outcome: a known name and the overturned flag that goes with it
 std::string check_outcome(std::string_view outcome, std::string_view flag) {
@@ -1130,12 +1251,7 @@ std::string check_outcome(std::string_view outcome, std::string_view flag) {
 
 // the sliding fields from position `first` on: a known regime word, numbers, a count
 std::string check_sliding_fields(const std::vector<std::string_view>& f, std::size_t first) {
-  bool known = false;
-  for (const auto r : {study::Regime::kNone, study::Regime::kSliding, study::Regime::kRocking,
-                       study::Regime::kSlidingRocking}) {
-    known = known || f[first] == study::to_string(r);
-  }
-  if (!known) return "unknown regime \"" + std::string(f[first]) + "\"";
+  if (!regime_named(f[first])) return "unknown regime \"" + std::string(f[first]) + "\"";
   for (std::size_t k = first + 1; k + 1 < f.size(); ++k) {
     if (!is_figure(f[k]))
       return "field " + std::to_string(k + 1) + " is not a finite number or empty";
@@ -1289,15 +1405,134 @@ JournalCheck spectrum_journal_check(const study::SpectrumResult& grid, bool norm
   };
 }
 
-study::Outcome spectrum_line_outcome(const std::string& line) {
+namespace {
+
+// a field's text read back as a value of its column's type: what format_field wrote (a real
+// left empty, a value the run did not have, is NaN)
+Value parse_field(std::string_view f, ColumnType type) {
+  switch (type) {
+    case ColumnType::kInteger: {
+      long long v = 0;
+      const auto r = std::from_chars(f.data(), f.data() + f.size(), v);
+      if (f.empty() || r.ec != std::errc() || r.ptr != f.data() + f.size()) {
+        throw InputError("\"" + std::string(f) + "\" is not an integer");
+      }
+      return v;
+    }
+    case ColumnType::kReal: {
+      if (f.empty()) return std::numeric_limits<double>::quiet_NaN();
+      if (!is_number(f)) throw InputError("\"" + std::string(f) + "\" is not a finite number");
+      double v = 0.0;
+      std::from_chars(f.data(), f.data() + f.size(), v);
+      return v;
+    }
+    case ColumnType::kText:
+      break;
+  }
+  return std::string(f);
+}
+
+// the first field where a line and the line written back from what was read of it differ: what
+// does not follow from the others (an outcome and its overturned flag, a body's name)
+std::string first_difference(const std::vector<std::string>& names, std::string_view line,
+                             std::string_view again) {
+  const std::vector<std::string_view> a = fields_of(line), b = fields_of(again);
+  for (std::size_t k = 0; k < a.size() && k < b.size(); ++k) {
+    if (a[k] != b[k]) {
+      return "field " + std::to_string(k + 1) + " (" + (k < names.size() ? names[k] : "?") +
+             ") is \"" + std::string(a[k]) + "\", expected \"" + std::string(b[k]) + "\"";
+    }
+  }
+  return "its fields do not read back to the same line";
+}
+
+}  // namespace
+
+study::SweepRow read_sweep_row(const study::SweepSpec& spec, std::size_t index,
+                               const std::string& line) {
+  const std::size_t scales = spec.scales.size(), records = spec.records.size();
+  const std::size_t runs = spec.bodies.size() * records * scales;
+  FLEXROCK_THROW_UNLESS(index < runs, "run index " + std::to_string(index) + " out of range (" +
+                                          std::to_string(runs) + " runs)");
+  study::SweepRow row;
+  row.index = index;
+  row.scale_index = index % scales;
+  row.record = (index / scales) % records;
+  row.body = index / (scales * records);
+  const std::vector<ColumnInfo> info = sweep_column_info(spec);
   const std::vector<std::string_view> f = fields_of(line);
-  const std::vector<std::string> names = spectrum_columns();
-  const auto at =
-      static_cast<std::size_t>(std::find(names.begin(), names.end(), "outcome") - names.begin());
-  const std::optional<study::Outcome> o =
-      f.size() > at ? outcome_named(f[at]) : std::optional<study::Outcome>();
-  if (!o) throw InputError("no outcome in the spectrum line \"" + line + "\"");
-  return *o;
+  FLEXROCK_THROW_UNLESS(f.size() == info.size(), std::to_string(f.size()) + " fields, expected " +
+                                                     std::to_string(info.size()));
+  std::size_t k = 0;
+  auto next = [&](ColumnType type) {
+    try {
+      return parse_field(f[k], type);
+    } catch (const InputError& e) {
+      throw InputError("field " + std::to_string(k + 1) + " (" + info[k].name + "): " + e.what());
+    }
+  };
+  for (const SweepColumn& col : kSweepColumns) {
+    const Value v = next(col.type);
+    if (col.set) col.set(row, v);
+    ++k;
+    if (col.name == kMeasuresAfter) {
+      for (std::size_t m = 0; m < spec.measures.size(); ++m, ++k) {
+        row.measures.push_back(real(next(ColumnType::kReal)));
+      }
+      for (std::size_t p = 0; p < spec.uncertainty.parameters.size(); ++p, ++k) {
+        row.sampled.push_back(real(next(ColumnType::kReal)));
+      }
+    }
+  }
+  if (study::has_friction(spec)) {
+    for (const SlidingColumn& col : kSlidingColumns) {
+      col.set(row.run, next(col.type));
+      ++k;
+    }
+  }
+  // what the row writes must be the line: the fields that follow from others agree with them,
+  // and the final file written from the rows is the bytes the runs wrote
+  const std::string again = sweep_row(spec, row);
+  if (again != line) {
+    std::vector<std::string> names;
+    for (const ColumnInfo& c : info) names.push_back(c.name);
+    throw InputError(first_difference(names, line, again));
+  }
+  return row;
+}
+
+study::SpectrumCell read_spectrum_cell(const study::SpectrumResult& grid, std::size_t index,
+                                       const std::string& line, double g) {
+  FLEXROCK_THROW_UNLESS(index < grid.cells.size(),
+                        "cell index " + std::to_string(index) + " out of range (" +
+                            std::to_string(grid.cells.size()) + " cells)");
+  study::SpectrumCell cell = grid.cells[index];
+  const std::vector<std::string> names = spectrum_columns(grid.sliding);
+  const std::vector<std::string_view> f = fields_of(line);
+  FLEXROCK_THROW_UNLESS(f.size() == names.size(), std::to_string(f.size()) + " fields, expected " +
+                                                      std::to_string(names.size()));
+  std::size_t k = 0;
+  auto next = [&](ColumnType type) {
+    try {
+      return parse_field(f[k], type);
+    } catch (const InputError& e) {
+      throw InputError("field " + std::to_string(k + 1) + " (" + names[k] + "): " + e.what());
+    }
+  };
+  for (const SpectrumColumn& col : kSpectrumColumns) {
+    const Value v = next(col.type);
+    if (col.set) col.set(cell, v);
+    ++k;
+  }
+  if (grid.sliding) {
+    for (const SlidingColumn& col : kSlidingColumns) {
+      col.set(cell.run, next(col.type));
+      ++k;
+    }
+  }
+  const std::string again = spectrum_row(grid, cell, g);
+  if (again != line) throw InputError(first_difference(names, line, again));
+  return cell;
 }
 
 // ---------------------------------------------------------------------------------------------

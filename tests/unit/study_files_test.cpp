@@ -158,6 +158,53 @@ TEST_F(StudyFiles, SweepJournalLinesMustBeThoseOfTheirRun) {
   EXPECT_NE(check(5, row0), "");
 }
 
+TEST_F(StudyFiles, SweepRowsReadBackAsTheDataTheyWereWrittenFrom) {
+  write("b.toml", kBody);
+  write("r.dat", kRecord);
+  const std::string m = write("m.toml",
+                              "[[body]]\nfile = \"b.toml\"\n"
+                              "[[record]]\nfile = \"r.dat\"\nformat = \"single_column\"\n"
+                              "dt = 0.01\nunits = \"g\"\nname = \"rec\"\n"
+                              "[scales]\nfactors = [0.5, 40.0]\n[intensity]\nmeasures = "
+                              "[\"arias\"]\n[solver]\nfriction_coefficient = 0.6\n");
+  const SweepManifest sm = load_sweep_manifest(m);
+  const std::vector<ColumnInfo> info = sweep_column_info(sm.spec);
+  ASSERT_EQ(info.size(), sweep_columns(sm.spec).size());
+  for (std::size_t i = 0; i < 2; ++i) {
+    const study::SweepRow row = study::run_sweep_one(sm.spec, study::sweep_runs(sm.spec)[i]);
+    const std::string line = sweep_row(sm.spec, row);
+    const study::SweepRow back = read_sweep_row(sm.spec, i, line);
+    // every field as data, equal to the run's (bit for bit: the text is the shortest that reads
+    // back to the same double)
+    EXPECT_EQ(back.index, i);
+    EXPECT_EQ(back.scale_index, row.scale_index);
+    EXPECT_EQ(back.scale, row.scale);
+    EXPECT_EQ(back.pga, row.pga);
+    EXPECT_EQ(back.measures, row.measures);
+    EXPECT_EQ(back.run.outcome, row.run.outcome);
+    EXPECT_EQ(back.run.status, row.run.status);
+    EXPECT_EQ(back.run.impacts, row.run.impacts);
+    EXPECT_EQ(back.run.max_theta, row.run.max_theta);
+    EXPECT_EQ(back.run.energy_lost, row.run.energy_lost);
+    EXPECT_EQ(back.run.regime, row.run.regime);
+    EXPECT_EQ(back.run.slips, row.run.slips);
+    EXPECT_EQ(sweep_row(sm.spec, back), line);
+    // the values by column, of the column's type
+    const std::vector<FieldValue> v = sweep_values(sm.spec, back);
+    ASSERT_EQ(v.size(), info.size());
+    for (std::size_t k = 0; k < v.size(); ++k) {
+      EXPECT_EQ(v[k].index(), static_cast<std::size_t>(info[k].type)) << info[k].name;
+    }
+  }
+  // a field that does not follow from the others is named
+  const std::string line = sweep_row(sm.spec, study::run_sweep_one(sm.spec, {0, 0, 0, 0}));
+  std::string changed = line;
+  changed.replace(changed.find(",rec,"), 5, ",reb,");
+  test::expect_input_error([&] { read_sweep_row(sm.spec, 0, changed); },
+                           {"field 3 (record)", "expected \"rec\""});
+  test::expect_input_error([&] { read_sweep_row(sm.spec, 2, line); }, {"out of range"});
+}
+
 TEST_F(StudyFiles, FiguresWithNoFiniteValueAreEmptyFieldsNeverInf) {
   // M g h = 8.8e307 J is normal, but the record at factor 10 (3 g) gives a base shear of
   // M a = 3e308 N: the run stops, its message naming the output that overflowed
@@ -233,7 +280,11 @@ TEST_F(StudyFiles, SpectrumJournalLinesMustBeThoseOfTheirCell) {
   for (std::size_t i = 0; i < res.cells.size(); ++i) {
     const std::string line = spectrum_row(res, res.cells[i], g);
     EXPECT_EQ(check(i, line), "") << line;
-    EXPECT_EQ(spectrum_line_outcome(line), res.cells[i].run.outcome);
+    // read back as data: the cell's run, which writes the same line
+    const study::SpectrumCell back = read_spectrum_cell(grid, i, line, g);
+    EXPECT_EQ(back.run.outcome, res.cells[i].run.outcome);
+    EXPECT_EQ(back.run.impacts, res.cells[i].run.impacts);
+    EXPECT_EQ(spectrum_row(res, back, g), line);
     EXPECT_NE(check((i + 1) % res.cells.size(), line), "");  // another cell's line
   }
   for (std::size_t j = 0; j < res.boundary.size(); ++j) {

@@ -11,6 +11,7 @@
 #include <iosfwd>
 #include <map>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include "flexrock/io/journal.hpp"
@@ -106,8 +107,45 @@ JournalCheck sweep_journal_check(const study::SweepSpec& spec);
 /// record_spectrum_grid) of the spec; `normalized` and `g` as for boundary_row.
 JournalCheck spectrum_journal_check(const study::SpectrumResult& grid, bool normalized, double g);
 
-/// The outcome named by a spectrum CSV line (its `outcome` field); throws InputError if none.
-study::Outcome spectrum_line_outcome(const std::string& line);
+// ---------------------------------------------------------------------------------------------
+// rows as data: the tables of columns (name, unit, type) drive the header, the writer, the reader
+// and the Python arrays; text exists only in the files
+
+/// How a study CSV field is written and read back, and the dtype of its Python array.
+enum class ColumnType {
+  kInteger,  // indices, counts, flags: decimal digits
+  kReal,     // [SI] the shortest text that reads back to the same double; empty: no finite value
+  kText,     // names and classes (outcome, status, regime): no comma, quote or line end
+};
+
+/// One field of a row, of its column's type.
+using FieldValue = std::variant<long long, double, std::string>;
+
+/// A column of a study CSV as its table declares it.
+struct ColumnInfo {
+  std::string name;
+  std::string unit;
+  ColumnType type = ColumnType::kReal;
+};
+
+/// The columns of a spec's sweep CSV (the names of sweep_columns(spec)) with units and types.
+std::vector<ColumnInfo> sweep_column_info(const study::SweepSpec& spec);
+/// The fields of a row, one per column of sweep_column_info(spec); a real the run did not have
+/// (not finite) is written empty.
+std::vector<FieldValue> sweep_values(const study::SweepSpec& spec, const study::SweepRow& row);
+/// A field's text in a study CSV or journal.
+std::string format_field(const FieldValue& v);
+
+/// The row of run `index` read back from its CSV line (sweep_row): the run's indices from the
+/// index, what the run found from the fields. The line must be exactly what sweep_row writes for
+/// that row (so a file written from rows read back has the bytes the runs wrote); throws
+/// InputError saying which field is wrong. Reals written empty read back as NaN.
+study::SweepRow read_sweep_row(const study::SweepSpec& spec, std::size_t index,
+                               const std::string& line);
+/// The same for cell `index` of a spectrum (`grid` as for spectrum_journal_check): the grid's
+/// cell with its run read back from the line (spectrum_row).
+study::SpectrumCell read_spectrum_cell(const study::SpectrumResult& grid, std::size_t index,
+                                       const std::string& line, double g);
 
 // ---------------------------------------------------------------------------------------------
 // fragility input
