@@ -28,6 +28,7 @@
 #include "flexrock/io/journal.hpp"
 #include "flexrock/io/outputs.hpp"
 #include "flexrock/io/study_files.hpp"
+#include "flexrock/io/study_session.hpp"
 #include "flexrock/study/fragility.hpp"
 #include "flexrock/study/spectrum.hpp"
 #include "flexrock/study/sweep.hpp"
@@ -82,7 +83,7 @@ bool launched_by_mpirun() {
 }
 #endif
 
-class Processes {
+class Processes final : public io::StudyTransport {
  public:
   Processes() {
 #ifdef FLEXROCK_HAVE_MPI
@@ -103,9 +104,8 @@ class Processes {
   Processes(const Processes&) = delete;
   Processes& operator=(const Processes&) = delete;
 
-  int rank() const { return rank_; }
-  int size() const { return size_; }
-  bool root() const { return rank_ == 0; }
+  int rank() const override { return rank_; }
+  int size() const override { return size_; }
 
   // threads a process uses by default: the cores shared among the processes on this machine
   int default_threads() const {
@@ -117,7 +117,7 @@ class Processes {
   }
 
   // every process's text, concatenated in rank order, on rank 0 (others get "")
-  std::string gather(const std::string& mine) const {
+  std::string gather(const std::string& mine) const override {
 #ifdef FLEXROCK_HAVE_MPI
     if (mpi_ && size_ > 1) {
       const int n = static_cast<int>(mine.size());
@@ -141,7 +141,7 @@ class Processes {
   }
 
   // rank 0's text on every process
-  std::string broadcast(const std::string& text) const {
+  std::string broadcast(const std::string& text) const override {
 #ifdef FLEXROCK_HAVE_MPI
     if (mpi_ && size_ > 1) {
       unsigned long n = text.size();
@@ -155,7 +155,7 @@ class Processes {
   }
 
   // true on every process if it is true on any
-  bool any(bool v) const {
+  bool any(bool v) const override {
 #ifdef FLEXROCK_HAVE_MPI
     if (mpi_ && size_ > 1) {
       int in = v ? 1 : 0, out = 0;
@@ -200,24 +200,6 @@ auto with_progress(bool show, std::size_t total, std::atomic<std::size_t>& compl
   return future.get();
 }
 
-// "key<TAB>line<NEWLINE>" records for gathering lines across processes
-std::string pack(const std::map<std::size_t, std::string>& lines) {
-  std::string s;
-  for (const auto& [k, v] : lines) s += std::to_string(k) + "\t" + v + "\n";
-  return s;
-}
-
-std::map<std::size_t, std::string> unpack(const std::string& s) {
-  std::map<std::size_t, std::string> out;
-  std::istringstream in(s);
-  std::string line;
-  while (std::getline(in, line)) {
-    const std::size_t tab = line.find('\t');
-    out[std::stoul(line.substr(0, tab))] = line.substr(tab + 1);
-  }
-  return out;
-}
-
 std::string default_output(const std::string& input, const std::string& suffix) {
   return fs::path(input).stem().string() + suffix;
 }
@@ -233,125 +215,6 @@ std::string join_columns(const std::vector<std::string>& v) {
   for (std::size_t i = 0; i < v.size(); ++i) s += (i ? "," : "") + v[i];
   return s;
 }
-
-// ---------------------------------------------------------------------------------------------
-// the journal of a study over one or several processes: rank 0 holds OUT.partial and merges
-// into it what other processes left in OUT.partial.rank<r> when an MPI study was interrupted;
-// every process learns the lines finished before this start; the others journal their runs to
-// OUT.partial.rank<r> (created with their first line)
-
-class StudyJournal {
- public:
-  StudyJournal(const Processes& procs, std::string path, std::string kind, std::uint64_t inputs,
-               std::size_t runs, io::JournalCheck check)
-      : procs_(procs),
-        path_(std::move(path)),
-        kind_(std::move(kind)),
-        inputs_(inputs),
-        runs_(runs),
-        check_(std::move(check)) {
-    std::string known, failure;
-    if (procs_.root()) {
-      try {
-        open_root();
-        known = pack(main_->finished());
-      } catch (const InputError& e) {
-        failure = std::string("I") + e.what();
-      } catch (const std::exception& e) {
-        failure = std::string("R") + e.what();
-      }
-    }
-    // every process stops alike when rank 0 cannot use the journal
-    failure = procs_.broadcast(failure);
-    if (!failure.empty()) {
-      if (failure[0] == 'I') throw InputError(failure.substr(1));
-      throw std::runtime_error(failure.substr(1));
-    }
-    known_ = unpack(procs_.broadcast(known));
-  }
-
-  const std::string& path() const { return path_; }
-  /// Lines finished before this start, by run index (on every process).
-  const std::map<std::size_t, std::string>& known() const { return known_; }
-
-  /// A run finished here: into this process's journal. Callers serialize.
-  void append(std::size_t index, const std::string& line) {
-    if (procs_.root()) {
-      main_->append(index, line);
-      return;
-    }
-    if (!own_) {
-      own_ = std::make_unique<io::Journal>(path_ + ".rank" + std::to_string(procs_.rank()), kind_,
-                                           inputs_, runs_, check_);
-    }
-    own_->append(index, line);
-    added_[index] = line;
-  }
-
-  /// After the work (every process calls it): every line of every process, on rank 0; the
-  /// others get an empty map.
-  const std::map<std::size_t, std::string>& gather() {
-    const std::map<std::size_t, std::string> all = unpack(procs_.gather(pack(added_)));
-    if (!procs_.root()) return added_ = {};
-    for (const auto& [i, line] : all) {
-      if (!main_->finished().count(i)) main_->remember(i, line);
-    }
-    return main_->finished();
-  }
-
-  /// A line found on rank 0 after gather() (a bisection done there).
-  void append_on_root(std::size_t index, const std::string& line) { main_->append(index, line); }
-
-  /// Every process calls it last: with rank 0's `outputs_written`, every journal is deleted;
-  /// without, they stay for the next start.
-  void finish(bool outputs_written) {
-    if (!procs_.any(procs_.root() && outputs_written)) return;
-    if (own_) own_->remove();
-    if (main_) main_->remove();
-  }
-
- private:
-  void open_root() {
-    main_ = std::make_unique<io::Journal>(path_, kind_, inputs_, runs_, check_);
-    // journals other processes left: merged, then deleted
-    const fs::path p(path_);
-    const std::string prefix = p.filename().string() + ".rank";
-    std::vector<fs::path> others;
-    std::error_code ec;
-    for (const auto& e :
-         fs::directory_iterator(p.parent_path().empty() ? fs::path(".") : p.parent_path(), ec)) {
-      const std::string name = e.path().filename().string();
-      if (name.size() > prefix.size() && name.starts_with(prefix) &&
-          name.find_first_not_of("0123456789", prefix.size()) == std::string::npos) {
-        others.push_back(e.path());
-      }
-    }
-    for (const fs::path& o : others) {
-      io::Journal other(o.string(), kind_, inputs_, runs_, check_);
-      for (const auto& [i, line] : other.finished()) {
-        const auto it = main_->finished().find(i);
-        if (it == main_->finished().end()) {
-          main_->append(i, line);
-        } else if (it->second != line) {
-          throw InputError(o.string() + ": run " + std::to_string(i) +
-                           " differs from its line in " + path_ +
-                           ": delete one of the two journals");
-        }
-      }
-      other.remove();
-    }
-  }
-
-  const Processes& procs_;
-  std::string path_, kind_;
-  std::uint64_t inputs_;
-  std::size_t runs_;
-  io::JournalCheck check_;
-  std::unique_ptr<io::Journal> main_;         // rank 0
-  std::unique_ptr<io::Journal> own_;          // other ranks
-  std::map<std::size_t, std::string> known_;  // finished before this start
-  std::map<std::size_t, std::string> added_;  // other ranks: finished here
-};
 
 // the outcome of every cell, counted
 std::map<std::string, std::size_t> count_outcomes(const std::vector<study::SpectrumCell>& cells) {
@@ -434,9 +297,9 @@ int StudyCommands::Impl::run_spectrum(const Processes& procs) {
   const std::size_t runs = cells + grid.boundary.size();
   // the journal: cells by index, then one boundary per column; its inputs are the files and
   // whether the boundary is bisected
-  StudyJournal journal(procs, output + ".partial", "spectrum",
-                       io::fnv1a(bisect ? "bisect" : "no-bisect", f.hash), runs,
-                       io::spectrum_journal_check(grid, normalized, g));
+  io::StudyJournal journal(procs, output + ".partial", "spectrum",
+                           io::fnv1a(bisect ? "bisect" : "no-bisect", f.hash), runs,
+                           io::spectrum_journal_check(grid, normalized, g));
   study::SpectrumResume resume;
   for (const auto& [i, line] : journal.known()) {
     if (i < cells) {
@@ -556,91 +419,65 @@ int StudyCommands::Impl::run_spectrum(const Processes& procs) {
 
 int StudyCommands::Impl::run_sweep(const Processes& procs) {
   check_threads();
-  const io::SweepManifest m = io::load_sweep_manifest(input);
-  // every run is checked before the journal exists: a run that could not start must not leave
-  // a journal behind
-  study::validate(m.spec);
-  const std::vector<study::SweepRun> runs = study::sweep_runs(m.spec);
+  // the session checks every run before its journal exists, resumes from the journal, and
+  // writes the CSV from the rows; here: the options, the progress and the account
+  io::SweepManifest m = io::load_sweep_manifest(input);
   if (output.empty()) output = default_output(input, ".sweep.csv");
-  io::check_distinct_files(named_inputs(m.input_files),
-                           {{"output", output}, {"journal", output + ".partial"}});
-  StudyJournal journal(procs, output + ".partial", "sweep", m.hash, runs.size(),
-                       io::sweep_journal_check(m.spec));
-  const std::size_t resumed = journal.known().size();
-  std::vector<std::size_t> remaining;
-  for (const study::SweepRun& r : runs) {
-    if (!journal.known().count(r.index)) remaining.push_back(r.index);
-  }
-  // this process's share: every size-th of the remaining runs
-  std::vector<std::size_t> mine;
-  for (std::size_t k = static_cast<std::size_t>(procs.rank()); k < remaining.size();
-       k += static_cast<std::size_t>(procs.size())) {
-    mine.push_back(remaining[k]);
-  }
+  io::SweepSession session(std::move(m), output, procs);
+  const study::SweepSpec& spec = session.manifest().spec;
+  const std::size_t runs = session.runs();
 
   const SignalGuard signals;
   std::atomic<std::size_t> completed{0};
   study::RunOptions options = run_options(procs);
-  options.rank = 0;
-  options.ranks = 1;  // the share is already this process's
   options.completed = &completed;
-  if (!quiet && procs.root() && resumed > 0) {
-    fmt::print("resuming: {} of {} runs already in {}\n", resumed, runs.size(), journal.path());
+  if (!quiet && procs.root() && session.resumed() > 0) {
+    fmt::print("resuming: {} of {} runs already in {}\n", session.resumed(), runs,
+               session.journal_path());
   }
   const auto start = std::chrono::steady_clock::now();
-  if (!mine.empty()) {
-    with_progress(show_progress(procs), mine.size(), completed,
-                  procs.size() > 1 ? fmt::format("  (rank 0 of {})", procs.size()) : "", [&] {
-                    return study::run_sweep(m.spec, mine, options, [&](const study::SweepRow& r) {
-                      journal.append(r.index, io::sweep_row(m.spec, r));
-                    });
-                  });
+  if (!session.share().empty()) {
+    with_progress(show_progress(procs), session.share().size(), completed,
+                  procs.size() > 1 ? fmt::format("  (rank 0 of {})", procs.size()) : "",
+                  [&] { session.run(options); });
   }
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (procs.any(g_cancel.load())) {
     // every finished run is in a journal; the next identical command goes on from there
     if (procs.root()) {
-      return error(fmt::format("interrupted: finished runs are kept in {}{}; run the same "
-                               "command again to continue",
-                               journal.path(), procs.size() > 1 ? " (and .rank<N> files)" : ""),
-                   kExitRunFailed);
+      return error(
+          fmt::format("interrupted: finished runs are kept in {}{}; run the same "
+                      "command again to continue",
+                      session.journal_path(), procs.size() > 1 ? " (and .rank<N> files)" : ""),
+          kExitRunFailed);
     }
     return kExitRunFailed;
   }
-  const std::map<std::size_t, std::string>& lines = journal.gather();
-  if (!procs.root()) {
-    journal.finish(false);
-    return kExitOk;
-  }
-  FLEXROCK_DEMAND(lines.size() == runs.size());
+  std::vector<study::SweepRow> rows;
   try {
-    io::write_atomically(output, [&](std::ostream& out) {
-      out << join_columns(io::sweep_columns(m.spec)) << '\n';
-      for (const auto& [i, line] : lines) out << line << '\n';
-    });
+    rows = session.finish();
+  } catch (const InputError&) {
+    throw;
   } catch (const std::exception& e) {
-    journal.finish(false);
     return error(std::string("could not write the outputs (the runs are kept in ") +
-                     journal.path() + "): " + e.what(),
+                     session.journal_path() + "): " + e.what(),
                  kExitRunFailed);
   }
+  if (!procs.root()) return kExitOk;
   // the outcomes counted from the rows as data
   std::size_t over = 0, stopped = 0;
-  for (const auto& [i, line] : lines) {
-    const study::SweepRow row = io::read_sweep_row(m.spec, i, line);
-    over += study::overturned(row.run.outcome) ? 1 : 0;
-    stopped += row.run.outcome == study::Outcome::kStopped ? 1 : 0;
+  for (const study::SweepRow& r : rows) {
+    over += study::overturned(r.run.outcome) ? 1 : 0;
+    stopped += r.run.outcome == study::Outcome::kStopped ? 1 : 0;
   }
-  journal.finish(true);
   fmt::print(
       "sweep: {} bodies x {} records x {} scales = {} runs: {} overturned, {} not classified "
       "(stopped)\n",
-      m.spec.bodies.size(), m.spec.records.size(), m.spec.scales.size(), runs.size(), over,
-      stopped);
+      spec.bodies.size(), spec.records.size(), spec.scales.size(), runs, over, stopped);
   if (!quiet) {
     fmt::print("time: {:.3g} s for {} new runs on {} process{} x {} thread{}\n", seconds,
-               remaining.size(), procs.size(), procs.size() == 1 ? "" : "es", options.threads,
+               session.remaining(), procs.size(), procs.size() == 1 ? "" : "es", options.threads,
                options.threads == 1 ? "" : "s");
     fmt::print("wrote {}\n", output);
   }

@@ -1,0 +1,136 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// A study as a session: its plan (the runs left), its journal (io/journal.hpp) over one or several
+// processes, the runs of this process, and the final file. The command line and Python run,
+// resume and finish a sweep through the same code, so that either can finish a sweep the other
+// started, with the same bytes. The processes talk through StudyTransport: one process by
+// default; the command line implements it with MPI.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "flexrock/io/journal.hpp"
+#include "flexrock/io/study_files.hpp"
+#include "flexrock/study/parallel.hpp"
+#include "flexrock/study/sweep.hpp"
+
+namespace flexrock::io {
+
+/// How the processes of a study share it: this process's rank among `size` and three collective
+/// calls (every process makes each, in the same order). The default is one process.
+class StudyTransport {
+ public:
+  virtual ~StudyTransport() = default;
+  virtual int rank() const { return 0; }
+  virtual int size() const { return 1; }
+  /// Every process's bytes, concatenated in rank order, on rank 0 (the others get "").
+  virtual std::string gather(const std::string& mine) const { return mine; }
+  /// Rank 0's bytes on every process.
+  virtual std::string broadcast(const std::string& bytes) const { return bytes; }
+  /// True on every process if it is true on any.
+  virtual bool any(bool v) const { return v; }
+  bool root() const { return rank() == 0; }
+};
+
+/// The journal of a study over one or several processes: rank 0 holds PATH and merges into it
+/// what other processes left in PATH.rank<r> when an interrupted study was run by several;
+/// every process learns the lines finished before this start; the others journal their runs to
+/// PATH.rank<r> (created with their first line). Lines are the rows as the CSV writes them.
+class StudyJournal {
+ public:
+  /// Opens the journal (io::Journal: `kind`, `inputs`, `runs`, `check`) on rank 0 and tells
+  /// every process what it holds; every process throws alike when rank 0 cannot use it.
+  StudyJournal(const StudyTransport& transport, std::string path, std::string kind,
+               std::uint64_t inputs, std::size_t runs, JournalCheck check);
+  ~StudyJournal();
+  StudyJournal(const StudyJournal&) = delete;
+  StudyJournal& operator=(const StudyJournal&) = delete;
+
+  const std::string& path() const { return path_; }
+  /// Lines finished before this start, by run index (on every process).
+  const std::map<std::size_t, std::string>& known() const { return known_; }
+  /// A run finished here: into this process's journal. Callers serialize.
+  void append(std::size_t index, const std::string& line);
+  /// After the work (every process calls it): every line of every process, on rank 0; the
+  /// others get an empty map.
+  const std::map<std::size_t, std::string>& gather();
+  /// A line found on rank 0 after gather() (a bisection done there).
+  void append_on_root(std::size_t index, const std::string& line);
+  /// Every process calls it last: with rank 0's `outputs_written`, every journal is deleted;
+  /// without, they stay for the next start.
+  void finish(bool outputs_written);
+
+ private:
+  void open_root();
+
+  const StudyTransport& transport_;
+  std::string path_, kind_;
+  std::uint64_t inputs_;
+  std::size_t runs_;
+  JournalCheck check_;
+  std::unique_ptr<Journal> main_;             // rank 0
+  std::unique_ptr<Journal> own_;              // other ranks
+  std::map<std::size_t, std::string> known_;  // finished before this start
+  std::map<std::size_t, std::string> added_;  // other ranks: finished here
+};
+
+/// One process's transport of a study alone (the default of a session).
+const StudyTransport& single_process();
+
+/// A sweep from its manifest to its CSV: `output` is written once every run is finished, the
+/// runs finished so far are kept in the journal `output`.partial (and .rank<r>), and a session
+/// opened on the same manifest and output goes on from there. The CSV has the same bytes
+/// whether the sweep ran at once or was interrupted and resumed, by the command line or by
+/// Python, on any number of threads and processes.
+class SweepSession {
+ public:
+  /// Checks every run of the manifest (study::validate) and that no input is the output or its
+  /// journal, then opens the journal: before it exists, a sweep that could not run leaves none
+  /// behind. Throws InputError for bad input or a journal of other inputs or a damaged one. The
+  /// session keeps its own copy of the manifest.
+  SweepSession(SweepManifest manifest, std::string output,
+               const StudyTransport& transport = single_process());
+  ~SweepSession();
+  SweepSession(const SweepSession&) = delete;
+  SweepSession& operator=(const SweepSession&) = delete;
+
+  std::size_t runs() const { return runs_; }
+  /// Runs finished before this start (in the journal).
+  std::size_t resumed() const { return journal_.known().size(); }
+  /// Runs left to every process.
+  std::size_t remaining() const { return runs_ - resumed(); }
+  /// The runs left to this process: every size-th of those left.
+  const std::vector<std::size_t>& share() const { return share_; }
+  const std::string& output() const { return output_; }
+  const std::string& journal_path() const { return journal_.path(); }
+
+  /// Runs this process's share on options.threads workers (options.rank and ranks are the
+  /// transport's), journaling each row as it finishes. A stop request (options.cancel) ends it
+  /// between runs, every finished one journaled.
+  void run(const study::RunOptions& options);
+  /// After run() on every process, when none was stopped: gathers the rows on rank 0, writes
+  /// the CSV there (atomically) and deletes the journals. Returns every row in index order on
+  /// rank 0 (empty on the others). Throws std::runtime_error when the CSV cannot be written
+  /// (the journals are kept).
+  std::vector<study::SweepRow> finish();
+  const SweepManifest& manifest() const { return manifest_; }
+
+ private:
+  SweepManifest manifest_;
+  std::string output_;
+  const StudyTransport& transport_;
+  std::size_t runs_ = 0;
+  StudyJournal journal_;
+  std::vector<std::size_t> share_;
+  std::map<std::size_t, study::SweepRow> rows_;  // computed here
+};
+
+/// A sweep CSV read back as rows through the sweep's columns (read_sweep_row for every line):
+/// every run of the manifest once, in index order. Throws InputError naming the file and line.
+std::vector<study::SweepRow> read_sweep_csv(const study::SweepSpec& spec, const std::string& path);
+
+}  // namespace flexrock::io

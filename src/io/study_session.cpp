@@ -1,0 +1,273 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "flexrock/io/study_session.hpp"
+
+#include <filesystem>
+#include <mutex>
+#include <ostream>
+#include <sstream>
+#include <stdexcept>
+#include <system_error>
+#include <utility>
+
+#include "flexrock/core/error.hpp"
+#include "flexrock/io/files.hpp"
+#include "flexrock/io/outputs.hpp"
+
+namespace flexrock::io {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// "index<TAB>line<NEWLINE>" records: the lines of finished runs between processes
+std::string pack(const std::map<std::size_t, std::string>& lines) {
+  std::string s;
+  for (const auto& [k, v] : lines) s += std::to_string(k) + "\t" + v + "\n";
+  return s;
+}
+
+std::map<std::size_t, std::string> unpack(const std::string& s) {
+  std::map<std::size_t, std::string> out;
+  std::istringstream in(s);
+  std::string line;
+  while (std::getline(in, line)) {
+    const std::size_t tab = line.find('\t');
+    out[std::stoul(line.substr(0, tab))] = line.substr(tab + 1);
+  }
+  return out;
+}
+
+std::string join_columns(const std::vector<std::string>& v) {
+  std::string s;
+  for (std::size_t i = 0; i < v.size(); ++i) s += (i ? "," : "") + v[i];
+  return s;
+}
+
+}  // namespace
+
+const StudyTransport& single_process() {
+  static const StudyTransport one;
+  return one;
+}
+
+// ---------------------------------------------------------------------------------------------
+// the journal over processes
+
+StudyJournal::StudyJournal(const StudyTransport& transport, std::string path, std::string kind,
+                           std::uint64_t inputs, std::size_t runs, JournalCheck check)
+    : transport_(transport),
+      path_(std::move(path)),
+      kind_(std::move(kind)),
+      inputs_(inputs),
+      runs_(runs),
+      check_(std::move(check)) {
+  std::string known, failure;
+  if (transport_.root()) {
+    try {
+      open_root();
+      known = pack(main_->finished());
+    } catch (const InputError& e) {
+      failure = std::string("I") + e.what();
+    } catch (const std::exception& e) {
+      failure = std::string("R") + e.what();
+    }
+  }
+  // every process stops alike when rank 0 cannot use the journal
+  failure = transport_.broadcast(failure);
+  if (!failure.empty()) {
+    if (failure[0] == 'I') throw InputError(failure.substr(1));
+    throw std::runtime_error(failure.substr(1));
+  }
+  known_ = unpack(transport_.broadcast(known));
+}
+
+StudyJournal::~StudyJournal() = default;
+
+void StudyJournal::append(std::size_t index, const std::string& line) {
+  if (transport_.root()) {
+    main_->append(index, line);
+    return;
+  }
+  if (!own_) {
+    own_ = std::make_unique<Journal>(path_ + ".rank" + std::to_string(transport_.rank()), kind_,
+                                     inputs_, runs_, check_);
+  }
+  own_->append(index, line);
+  added_[index] = line;
+}
+
+const std::map<std::size_t, std::string>& StudyJournal::gather() {
+  const std::map<std::size_t, std::string> all = unpack(transport_.gather(pack(added_)));
+  if (!transport_.root()) return added_ = {};
+  for (const auto& [i, line] : all) {
+    if (!main_->finished().count(i)) main_->remember(i, line);
+  }
+  return main_->finished();
+}
+
+void StudyJournal::append_on_root(std::size_t index, const std::string& line) {
+  main_->append(index, line);
+}
+
+void StudyJournal::finish(bool outputs_written) {
+  if (!transport_.any(transport_.root() && outputs_written)) return;
+  if (own_) own_->remove();
+  if (main_) main_->remove();
+}
+
+void StudyJournal::open_root() {
+  main_ = std::make_unique<Journal>(path_, kind_, inputs_, runs_, check_);
+  // journals other processes left: merged, then deleted
+  const fs::path p(path_);
+  const std::string prefix = p.filename().string() + ".rank";
+  std::vector<fs::path> others;
+  std::error_code ec;
+  for (const auto& e :
+       fs::directory_iterator(p.parent_path().empty() ? fs::path(".") : p.parent_path(), ec)) {
+    const std::string name = e.path().filename().string();
+    if (name.size() > prefix.size() && name.starts_with(prefix) &&
+        name.find_first_not_of("0123456789", prefix.size()) == std::string::npos) {
+      others.push_back(e.path());
+    }
+  }
+  for (const fs::path& o : others) {
+    Journal other(o.string(), kind_, inputs_, runs_, check_);
+    for (const auto& [i, line] : other.finished()) {
+      const auto it = main_->finished().find(i);
+      if (it == main_->finished().end()) {
+        main_->append(i, line);
+      } else if (it->second != line) {
+        throw InputError(o.string() + ": run " + std::to_string(i) + " differs from its line in " +
+                         path_ + ": delete one of the two journals");
+      }
+    }
+    other.remove();
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// the sweep
+
+namespace {
+
+// every run checked and the files kept apart before the journal exists: a sweep that could not
+// run must not leave a journal behind
+std::size_t checked_runs(const SweepManifest& m, const std::string& output) {
+  study::validate(m.spec);
+  std::vector<NamedPath> inputs;
+  for (const std::string& f : m.input_files) inputs.push_back({"input", f});
+  check_distinct_files(inputs, {{"output", output}, {"journal", output + ".partial"}});
+  return study::sweep_runs(m.spec).size();
+}
+
+// a journal line must be its run's CSV line (sweep_journal_check, which says what is wrong in
+// the journal's words) and read back as that run's row
+JournalCheck sweep_rows_check(const study::SweepSpec& spec) {
+  JournalCheck lines = sweep_journal_check(spec);
+  return [&spec, lines](std::size_t index, const std::string& line) -> std::string {
+    if (std::string why = lines(index, line); !why.empty()) return why;
+    try {
+      read_sweep_row(spec, index, line);
+    } catch (const InputError& e) {
+      return e.what();
+    }
+    return "";
+  };
+}
+
+}  // namespace
+
+SweepSession::SweepSession(SweepManifest manifest, std::string output,
+                           const StudyTransport& transport)
+    : manifest_(std::move(manifest)),
+      output_(std::move(output)),
+      transport_(transport),
+      runs_(checked_runs(manifest_, output_)),
+      journal_(transport, output_ + ".partial", "sweep", manifest_.hash, runs_,
+               sweep_rows_check(manifest_.spec)) {
+  std::vector<std::size_t> left;
+  for (std::size_t i = 0; i < runs_; ++i) {
+    if (!journal_.known().count(i)) left.push_back(i);
+  }
+  // this process's share: every size-th of the runs left
+  const auto size = static_cast<std::size_t>(transport_.size());
+  for (auto k = static_cast<std::size_t>(transport_.rank()); k < left.size(); k += size) {
+    share_.push_back(left[k]);
+  }
+}
+
+SweepSession::~SweepSession() = default;
+
+void SweepSession::run(const study::RunOptions& options) {
+  if (share_.empty()) return;
+  study::RunOptions o = options;
+  o.rank = 0;
+  o.ranks = 1;  // the share is already this process's
+  study::run_sweep(manifest_.spec, share_, o, [&](const study::SweepRow& r) {
+    journal_.append(r.index, sweep_row(manifest_.spec, r));
+    rows_[r.index] = r;
+  });
+}
+
+std::vector<study::SweepRow> SweepSession::finish() {
+  const std::map<std::size_t, std::string>& lines = journal_.gather();
+  if (!transport_.root()) {
+    journal_.finish(false);
+    return {};
+  }
+  FLEXROCK_DEMAND(lines.size() == runs_);
+  // every row as data: those computed here as they are, the others (resumed, or from other
+  // processes) read back from their lines
+  std::vector<study::SweepRow> rows;
+  rows.reserve(runs_);
+  try {
+    for (const auto& [i, line] : lines) {
+      const auto it = rows_.find(i);
+      rows.push_back(it != rows_.end() ? it->second : read_sweep_row(manifest_.spec, i, line));
+    }
+    write_atomically(output_, [&](std::ostream& out) {
+      out << join_columns(sweep_columns(manifest_.spec)) << '\n';
+      for (const study::SweepRow& r : rows) out << sweep_row(manifest_.spec, r) << '\n';
+    });
+  } catch (...) {
+    journal_.finish(false);
+    throw;
+  }
+  journal_.finish(true);
+  return rows;
+}
+
+std::vector<study::SweepRow> read_sweep_csv(const study::SweepSpec& spec, const std::string& path) {
+  const std::string text = read_input_file(path, "sweep CSV");
+  const std::string header = join_columns(sweep_columns(spec));
+  const std::size_t runs = study::sweep_runs(spec).size();
+  std::vector<study::SweepRow> rows;
+  std::size_t n = 0;
+  for (std::size_t pos = 0; pos < text.size();) {
+    std::size_t end = text.find('\n', pos);
+    if (end == std::string::npos) end = text.size();
+    const std::string line = text.substr(pos, end - pos);
+    pos = end + 1;
+    ++n;
+    if (n == 1) {
+      FLEXROCK_THROW_UNLESS(line == header, path + ":1: not the header of this sweep's CSV (" +
+                                                line.substr(0, 80) + "), expected " +
+                                                header.substr(0, 80) + "...");
+      continue;
+    }
+    FLEXROCK_THROW_UNLESS(rows.size() < runs, path + ":" + std::to_string(n) +
+                                                  ": more rows than the " + std::to_string(runs) +
+                                                  " runs of the sweep");
+    try {
+      rows.push_back(read_sweep_row(spec, rows.size(), line));
+    } catch (const InputError& e) {
+      throw InputError(path + ":" + std::to_string(n) + ": " + e.what());
+    }
+  }
+  FLEXROCK_THROW_UNLESS(rows.size() == runs, path + ": " + std::to_string(rows.size()) +
+                                                 " rows, expected one per run (" +
+                                                 std::to_string(runs) + ")");
+  return rows;
+}
+
+}  // namespace flexrock::io
