@@ -974,6 +974,43 @@ class SweepRow:
     @property
     def scale_index(self) -> int: ...
 
+class SweepSession:
+    """A sweep from its manifest to its CSV.
+
+    Opening it checks every run and opens (or resumes) the journal ``output + ".partial"``, the one
+    ``flexrock sweep`` keeps: a sweep the command line started and that was interrupted goes on here,
+    and the CSV has the same bytes as an uninterrupted run.
+    """
+    def __init__(self, manifest: SweepManifest, output: str) -> None: ...
+    def finish(self) -> list[SweepRow]:
+        """Writes the CSV from every row and deletes the journal.
+
+        Returns
+        -------
+        list of SweepRow
+            Every run's row, in index order.
+        """
+    @property
+    def journal_path(self) -> str: ...
+    @property
+    def manifest(self) -> SweepManifest: ...
+    @property
+    def output(self) -> str: ...
+    @property
+    def remaining(self) -> int: ...
+    @property
+    def resumed(self) -> int: ...
+    def run(self, threads: int = ...) -> None:
+        """Runs the runs left, journaling each as it finishes (the GIL is released).
+
+        Parameters
+        ----------
+        threads : int
+            0: every core.
+        """
+    @property
+    def runs(self) -> int: ...
+
 class SweepSpec:
     """Bodies x records x scale factors."""
     def __init__(self) -> None: ...
@@ -1692,6 +1729,21 @@ def read_single_column(path: str, dt: float, units: AccelUnit) -> Record:
     Record
     """
 
+def read_sweep_csv(spec: SweepSpec, path: str) -> list[SweepRow]:
+    """A sweep CSV read back as the rows it was written from (every line checked against its
+    run: it must be exactly what the row writes).
+
+    Parameters
+    ----------
+    spec : SweepSpec
+    path : str
+
+    Returns
+    -------
+    list of SweepRow
+        In index order.
+    """
+
 def read_time_series(path: str, units: AccelUnit) -> Record:
     """Reads time/acceleration pairs, one a line.
 
@@ -1876,6 +1928,35 @@ def summary_json(case: Case, body: Body, result: SimulationResult, paths: Output
     Returns
     -------
     str
+    """
+
+def sweep_arrays(spec: SweepSpec, rows: list[SweepRow]) -> dict:
+    """Rows of a sweep as numpy arrays, one per column of its CSV, typed by the column table.
+
+    Parameters
+    ----------
+    spec : SweepSpec
+    rows : list of SweepRow
+
+    Returns
+    -------
+    dict of str to numpy.ndarray
+        int64 for indices and counts, float64 for reals (nan where the CSV leaves the field empty),
+        object (str) for names and classes.
+    """
+
+def sweep_column_info(spec: SweepSpec) -> list:
+    """The columns of a spec's sweep CSV as the table declares them.
+
+    Parameters
+    ----------
+    spec : SweepSpec
+
+    Returns
+    -------
+    list of dict
+        ``{"name", "unit", "type"}``, type "integer", "real" or "text" (the dtype of the column's
+        array in :func:`sweep_arrays`: int64, float64, object).
     """
 
 def sweep_columns(sliding: bool = ...) -> list[str]:

@@ -26,6 +26,7 @@ from ._flexrock import (  # noqa: F401  (re-exported API)
     SweepBody,
     SweepRecord,
     SweepRow,
+    SweepSession,
     SweepSpec,
     boundary_columns,
     boundary_csv,
@@ -56,6 +57,9 @@ from ._flexrock import (  # noqa: F401  (re-exported API)
     summarize,
     sweep_columns,
     sweep_has_friction,
+    read_sweep_csv,
+    sweep_arrays,
+    sweep_column_info,
     sweep_row,
     sweep_spec_columns,
     fragility_columns,
@@ -431,7 +435,7 @@ def sweep(
         as given, equal for every record at that level), ``requested_units``, ``scale``,
         ``pga_m_per_s2``, ``pga_g``, ``outcome``, ``overturned``, ...
     """
-    from . import InputError, _parse_csv
+    from . import InputError
 
     spec = SweepSpec()
     items = bodies.items() if isinstance(bodies, Mapping) else bodies
@@ -489,9 +493,58 @@ def sweep(
     spec.measures = [MeasureRequest(str(m)) for m in measures] + [
         MeasureRequest("sa", float(t), float(sa_damping)) for t in sa_periods
     ]
-    rows = run_sweep(spec, [], threads)
-    text = ",".join(_flexrock.sweep_spec_columns(spec)) + "\n" + "".join(_flexrock.sweep_row(spec, r) + "\n" for r in rows)
-    return _parse_csv(text)
+    return sweep_arrays(spec, run_sweep(spec, [], threads))
+
+
+def sweep_manifest(manifest, output=None, *, threads: int = 0) -> dict:
+    """Runs a sweep manifest to its CSV, as ``flexrock sweep MANIFEST -o OUTPUT`` does, through the
+    same session: the runs finished so far are kept in the journal ``OUTPUT.partial``, and an
+    interrupted sweep, whether the command line or Python started it, goes on from there. The
+    CSV has the same bytes as an uninterrupted ``flexrock sweep``.
+
+    Parameters
+    ----------
+    manifest : str or os.PathLike
+        Sweep manifest (TOML, docs/studies.md).
+    output : str or os.PathLike, optional
+        The CSV; default ``<manifest stem>.sweep.csv`` in the working directory, as the command
+        line's.
+    threads : int
+        0: every core. The GIL is released while the runs go.
+
+    Returns
+    -------
+    dict of str to numpy.ndarray
+        Every run's row by column, typed by the sweep's column table (:func:`sweep_column_info`):
+        int64, float64 (nan where the CSV leaves a field empty) or str objects.
+    """
+    manifest = os.fspath(manifest)
+    if output is None:
+        output = os.path.splitext(os.path.basename(manifest))[0] + ".sweep.csv"
+    session = SweepSession(load_sweep_manifest(manifest), os.fspath(output))
+    session.run(threads)
+    return sweep_arrays(session.manifest.spec, session.finish())
+
+
+def read_sweep(manifest, path) -> dict:
+    """A sweep CSV read back through the manifest's column table: the arrays
+    :func:`sweep_manifest` returns. Every line must be the one its run writes (index, body,
+    record, level, a known outcome with its flag, numbers where numbers belong); otherwise an
+    InputError names the file, line and field.
+
+    Parameters
+    ----------
+    manifest : str or os.PathLike
+        The sweep manifest that wrote it.
+    path : str or os.PathLike
+        The sweep CSV.
+
+    Returns
+    -------
+    dict of str to numpy.ndarray
+    """
+    spec = load_sweep_manifest(os.fspath(manifest)).spec
+    return sweep_arrays(spec, read_sweep_csv(spec, os.fspath(path)))
 
 
 def fragility(im: Sequence[float], failed: Sequence[int], confidence: float = 0.95) -> FragilityFit:

@@ -6,6 +6,9 @@
 #include <pybind11/stl.h>
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
+#include <memory>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -14,6 +17,7 @@
 #include "flexrock/core/error.hpp"
 #include "flexrock/excitation/intensity.hpp"
 #include "flexrock/io/study_files.hpp"
+#include "flexrock/io/study_session.hpp"
 #include "flexrock/study/fragility.hpp"
 #include "flexrock/study/outcome.hpp"
 #include "flexrock/study/parallel.hpp"
@@ -30,6 +34,49 @@ study::RunOptions threads_only(int threads) {
   study::RunOptions o;
   o.threads = threads;
   return o;
+}
+
+const char* type_name(io::ColumnType t) {
+  switch (t) {
+    case io::ColumnType::kInteger:
+      return "integer";
+    case io::ColumnType::kReal:
+      return "real";
+    case io::ColumnType::kText:
+      break;
+  }
+  return "text";
+}
+
+// the rows of a sweep as numpy arrays, one per column of the sweep's table, of the column's type:
+// int64, float64 (a value the CSV leaves empty, not finite, is nan) or str objects
+py::dict sweep_arrays(const study::SweepSpec& spec, const std::vector<study::SweepRow>& rows) {
+  const std::vector<io::ColumnInfo> info = io::sweep_column_info(spec);
+  const auto n = static_cast<py::ssize_t>(rows.size());
+  std::vector<py::array> arrays;
+  for (const io::ColumnInfo& c : info) {
+    if (c.type == io::ColumnType::kInteger) arrays.emplace_back(py::array_t<long long>(n));
+    if (c.type == io::ColumnType::kReal) arrays.emplace_back(py::array_t<double>(n));
+    if (c.type == io::ColumnType::kText)
+      arrays.emplace_back(py::array(py::dtype("O"), std::vector<py::ssize_t>{n}));
+  }
+  for (py::ssize_t i = 0; i < n; ++i) {
+    const std::vector<io::FieldValue> v = io::sweep_values(spec, rows[static_cast<std::size_t>(i)]);
+    for (std::size_t k = 0; k < info.size(); ++k) {
+      if (const auto* x = std::get_if<long long>(&v[k])) {
+        arrays[k].mutable_unchecked<long long, 1>()(i) = *x;
+      } else if (const auto* d = std::get_if<double>(&v[k])) {
+        arrays[k].mutable_unchecked<double, 1>()(i) =
+            std::isfinite(*d) ? *d : std::numeric_limits<double>::quiet_NaN();
+      } else {
+        // object arrays hold references: set through the Python protocol
+        arrays[k][py::int_(i)] = py::str(std::get<std::string>(v[k]));
+      }
+    }
+  }
+  py::dict out;
+  for (std::size_t k = 0; k < info.size(); ++k) out[py::str(info[k].name)] = arrays[k];
+  return out;
 }
 
 }  // namespace
@@ -758,6 +805,87 @@ row : SweepRow
 Returns
 -------
 str)doc");
+
+  m.def(
+      "sweep_column_info",
+      [](const SweepSpec& spec) {
+        py::list out;
+        for (const io::ColumnInfo& c : io::sweep_column_info(spec)) {
+          out.append(py::dict(py::arg("name") = c.name, py::arg("unit") = c.unit,
+                              py::arg("type") = type_name(c.type)));
+        }
+        return out;
+      },
+      py::arg("spec"),
+      R"doc(The columns of a spec's sweep CSV as the table declares them.
+
+Parameters
+----------
+spec : SweepSpec
+
+Returns
+-------
+list of dict
+    ``{"name", "unit", "type"}``, type "integer", "real" or "text" (the dtype of the column's
+    array in :func:`sweep_arrays`: int64, float64, object).)doc");
+  m.def("sweep_arrays", &sweep_arrays, py::arg("spec"), py::arg("rows"),
+        R"doc(Rows of a sweep as numpy arrays, one per column of its CSV, typed by the column table.
+
+Parameters
+----------
+spec : SweepSpec
+rows : list of SweepRow
+
+Returns
+-------
+dict of str to numpy.ndarray
+    int64 for indices and counts, float64 for reals (nan where the CSV leaves the field empty),
+    object (str) for names and classes.)doc");
+  m.def("read_sweep_csv", &io::read_sweep_csv, py::arg("spec"), py::arg("path"),
+        R"doc(A sweep CSV read back as the rows it was written from (every line checked against its
+run: it must be exactly what the row writes).
+
+Parameters
+----------
+spec : SweepSpec
+path : str
+
+Returns
+-------
+list of SweepRow
+    In index order.)doc");
+  py::class_<io::SweepSession>(m, "SweepSession", R"doc(A sweep from its manifest to its CSV.
+
+Opening it checks every run and opens (or resumes) the journal ``output + ".partial"``, the one
+``flexrock sweep`` keeps: a sweep the command line started and that was interrupted goes on here,
+and the CSV has the same bytes as an uninterrupted run.)doc")
+      .def(py::init([](io::SweepManifest manifest, std::string output) {
+             return std::make_unique<io::SweepSession>(std::move(manifest), std::move(output));
+           }),
+           py::arg("manifest"), py::arg("output"))
+      .def_property_readonly("runs", &io::SweepSession::runs)
+      .def_property_readonly("resumed", &io::SweepSession::resumed,
+                             "runs finished before this start (in the journal)")
+      .def_property_readonly("remaining", &io::SweepSession::remaining)
+      .def_property_readonly("output", &io::SweepSession::output)
+      .def_property_readonly("journal_path", &io::SweepSession::journal_path)
+      .def_property_readonly("manifest", &io::SweepSession::manifest)
+      .def(
+          "run", [](io::SweepSession& s, int threads) { s.run(threads_only(threads)); },
+          py::arg("threads") = 0, py::call_guard<py::gil_scoped_release>(),
+          R"doc(Runs the runs left, journaling each as it finishes (the GIL is released).
+
+Parameters
+----------
+threads : int
+    0: every core.)doc")
+      .def("finish", &io::SweepSession::finish, py::call_guard<py::gil_scoped_release>(),
+           R"doc(Writes the CSV from every row and deletes the journal.
+
+Returns
+-------
+list of SweepRow
+    Every run's row, in index order.)doc");
 
   py::class_<io::CsvTable>(m, "CsvTable")
       .def_readonly("source", &io::CsvTable::source)
