@@ -9,8 +9,12 @@
 #include <numbers>
 #include <vector>
 
+#include "flexrock/core/format.hpp"
+#include "flexrock/excitation/pulses.hpp"
+#include "flexrock/io/study_files.hpp"
 #include "flexrock/model/builders.hpp"
 #include "flexrock/study/parallel.hpp"
+#include "flexrock/study/sweep.hpp"
 #include "flexrock/study/uncertain.hpp"
 #include "support/expect_error.hpp"
 
@@ -324,6 +328,122 @@ TEST(Uncertain, FrictionKeepsTheKineticRatioAndRestitutionSetsBothEdges) {
   apply(u, {0.3, 0.9}, none);
   EXPECT_EQ(none.friction_coefficient, 0.3);
   EXPECT_TRUE(std::isinf(none.kinetic_friction_coefficient));
+}
+
+// a sweep of two bodies, two records, three levels, with sampled friction, size and damping
+SweepSpec uncertain_sweep(SamplingScope scope) {
+  SweepSpec s;
+  s.bodies.push_back({"tank", oscillator_on_slab(800.0, 2.0, 400.0, 2.0, 1.0, 0.02)});
+  s.bodies.push_back({"tank2", oscillator_on_slab(600.0, 3.0, 300.0, 1.5, 0.8, 0.0)});
+  s.records.push_back({"one_sine", one_sine_pulse(1.0, 5.0, 3.0)});
+  std::vector<double> a;
+  for (int i = 0; i < 300; ++i) a.push_back(std::sin(0.1 * i) * std::exp(-0.005 * i));
+  s.records.push_back({"sampled", GroundMotion::uniform(0.01, a)});
+  s.scales = {1.0, 3.0, 5.0};
+  s.free_periods = 1.0;
+  s.uncertainty.parameters = {
+      {UncertainKind::kFriction, Distribution::kLognormal, 0.5, 0.3},
+      {UncertainKind::kSizeScale, Distribution::kNormal, 1.0, 0.1, 0.7, 1.3},
+      {UncertainKind::kDampingRatio, Distribution::kUniform, 0.0, 0.05}};
+  s.uncertainty.sampling = {3, SamplingMethod::kLatinHypercube, scope};
+  return s;
+}
+
+TEST(UncertainSweep, RowsAreDirectRunsOfTheSampledBodyAndOptions) {
+  const SweepSpec s = uncertain_sweep(SamplingScope::kRun);
+  ASSERT_TRUE(has_friction(s));  // sampled friction: the rows carry the sliding columns
+  const SampleDesign design = sample_design(s);
+  EXPECT_EQ(design.samples(), 6u);
+  const auto rows = run_sweep(s, {}, {.threads = 2});
+  ASSERT_EQ(rows.size(), 12u);
+  for (const SweepRow& row : rows) {
+    const SweepRun run{row.index, row.body, row.record, row.scale_index};
+    // every body meets the realisation of its (record, level)
+    EXPECT_EQ(sample_index(s, run), row.record * 3 + row.scale_index);
+    ASSERT_EQ(row.sampled, design.values(row.record * 3 + row.scale_index));
+    // the same run made by hand: the body scaled and damped, friction in the options
+    BodyParameters p = s.bodies[row.body].body;
+    p.height *= row.sampled[1];
+    p.b1 *= row.sampled[1];
+    p.b2 *= row.sampled[1];
+    p.kappa *= row.sampled[1];
+    p.damping.kind = DampingKind::kModal;
+    p.damping.modal_ratios = VectorX::Constant(1, row.sampled[2]);
+    const Body body(p);
+    SimulationOptions o = s.solver;
+    o.friction_coefficient = row.sampled[0];
+    o.t_end =
+        s.records[row.record].motion.duration() + 2.0 * std::numbers::pi / body.rocking_frequency();
+    EXPECT_DOUBLE_EQ(row.duration, o.t_end);
+    const SimulationResult r =
+        simulate(body, s.records[row.record].motion.scaled(row.scale), {}, o);
+    const RunSummary direct = summarize(body, r);
+    EXPECT_EQ(row.run.outcome, direct.outcome) << row.index;
+    EXPECT_EQ(row.run.max_theta, direct.max_theta) << row.index;
+    EXPECT_EQ(row.run.impacts, direct.impacts) << row.index;
+  }
+  // the rows differ between runs: the fit sees the scatter
+  EXPECT_NE(rows[0].sampled, rows[1].sampled);
+  EXPECT_EQ(rows[0].sampled, rows[6].sampled);  // body 2, the same (record, level)
+}
+
+TEST(UncertainSweep, ThreadsAndRanksChangeNoByte) {
+  const SweepSpec s = uncertain_sweep(SamplingScope::kRun);
+  std::vector<std::string> one;
+  for (const SweepRow& r : run_sweep(s, {}, {.threads = 1})) one.push_back(io::sweep_row(s, r));
+  // three threads; two ranks of two threads each, merged by index
+  std::vector<std::string> three, ranks(one.size());
+  for (const SweepRow& r : run_sweep(s, {}, {.threads = 3})) three.push_back(io::sweep_row(s, r));
+  for (int rank = 0; rank < 2; ++rank) {
+    for (const SweepRow& r : run_sweep(s, {}, {.threads = 2, .rank = rank, .ranks = 2})) {
+      ranks[r.index] = io::sweep_row(s, r);
+    }
+  }
+  EXPECT_EQ(one, three);
+  EXPECT_EQ(one, ranks);
+  // a single run alone gives its row too
+  EXPECT_EQ(io::sweep_row(s, run_sweep_one(s, sweep_runs(s)[7])), one[7]);
+}
+
+TEST(UncertainSweep, RecordScopeSharesARealisationAcrossLevels) {
+  const SweepSpec s = uncertain_sweep(SamplingScope::kRecord);
+  const auto rows = run_sweep(s, {}, {.threads = 2});
+  for (const SweepRow& r : rows) EXPECT_EQ(r.sampled, rows[r.record * 3].sampled);
+  EXPECT_NE(rows[0].sampled, rows[3].sampled);
+}
+
+TEST(UncertainSweep, JournalRefusesAnotherSample) {
+  const SweepSpec s = uncertain_sweep(SamplingScope::kRun);
+  const auto rows = run_sweep(s, {2}, {.threads = 1});
+  ASSERT_EQ(rows.size(), 1u);
+  const std::string line = io::sweep_row(s, rows[0]);
+  const io::JournalCheck check = io::sweep_journal_check(s);
+  EXPECT_EQ(check(2, line), "");
+  // the friction field of another draw: not this run's
+  const std::string friction = format_number(rows[0].sampled[0]);
+  std::string other = line;
+  other.replace(other.find(friction), friction.size(), "0.5");
+  EXPECT_NE(check(2, other).find("first fields are not those of run 2"), std::string::npos);
+  // the columns: the sampled values after the intensity measures, before the duration
+  const std::vector<std::string> cols = io::sweep_columns(s);
+  const auto at = [&](const char* c) {
+    return std::find(cols.begin(), cols.end(), c) - cols.begin();
+  };
+  EXPECT_EQ(at("friction_coefficient"), at("pgv_m_per_s") + 1);
+  EXPECT_EQ(at("size_scale"), at("pgv_m_per_s") + 2);
+  EXPECT_EQ(at("damping_ratio"), at("duration_s") - 1);
+}
+
+TEST(UncertainSweep, ARigidBodyRefusesModalParameters) {
+  SweepSpec s = uncertain_sweep(SamplingScope::kRun);
+  s.bodies.push_back({"block", rigid_block(0.4, 2.0, 1000.0)});
+  test::expect_input_error([&] { validate(s); },
+                           {"body 'block'", "sampled body", "damping_ratio", "rigid"});
+  s.bodies.pop_back();
+  s.uncertainty.parameters.push_back(
+      {UncertainKind::kRestitutionRatio, Distribution::kUniform, 0.5, 0.9});
+  test::expect_input_error([&] { validate(s); },
+                           {"restitution_ratio", "impact_law = \"restitution\""});
 }
 
 }  // namespace
