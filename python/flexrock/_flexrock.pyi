@@ -212,6 +212,21 @@ class DampingKind:
     @property
     def value(self) -> int: ...
 
+class Distribution:
+    uniform: ClassVar[Distribution]
+    normal: ClassVar[Distribution]
+    lognormal: ClassVar[Distribution]
+    __members__: ClassVar[dict[str, Distribution]]
+    def __init__(self, value: int) -> None: ...
+    def __eq__(self, other: object) -> bool: ...
+    def __hash__(self) -> int: ...
+    def __index__(self) -> int: ...
+    def __int__(self) -> int: ...
+    @property
+    def name(self) -> str: ...
+    @property
+    def value(self) -> int: ...
+
 class EnergyBalance:
     @property
     def chatter_loss(self) -> float: ...
@@ -770,6 +785,53 @@ class RunSummary:
     @property
     def t_end(self) -> float: ...
 
+class SampleDesign:
+    """The samples of a study: each a pure function of the seed and its index."""
+    def __init__(self, uncertainty: Uncertainty, samples: int) -> None: ...
+    @property
+    def dimensions(self) -> int: ...
+    @property
+    def samples(self) -> int: ...
+    def uniform(self, sample: int, parameter: int) -> float:
+        """The uniform in (0, 1) of a sample and parameter (Latin hypercube: inside its stratum)."""
+    def values(self, sample: int) -> list[float]:
+        """The values of a sample, one per parameter."""
+
+class Sampling:
+    """How a study samples its uncertain parameters."""
+    def __init__(self, seed: int = ..., method: SamplingMethod = ..., scope: SamplingScope = ...) -> None: ...
+    method: SamplingMethod
+    scope: SamplingScope
+    seed: int
+
+class SamplingMethod:
+    random: ClassVar[SamplingMethod]
+    lhs: ClassVar[SamplingMethod]
+    __members__: ClassVar[dict[str, SamplingMethod]]
+    def __init__(self, value: int) -> None: ...
+    def __eq__(self, other: object) -> bool: ...
+    def __hash__(self) -> int: ...
+    def __index__(self) -> int: ...
+    def __int__(self) -> int: ...
+    @property
+    def name(self) -> str: ...
+    @property
+    def value(self) -> int: ...
+
+class SamplingScope:
+    run: ClassVar[SamplingScope]
+    record: ClassVar[SamplingScope]
+    __members__: ClassVar[dict[str, SamplingScope]]
+    def __init__(self, value: int) -> None: ...
+    def __eq__(self, other: object) -> bool: ...
+    def __hash__(self) -> int: ...
+    def __index__(self) -> int: ...
+    def __int__(self) -> int: ...
+    @property
+    def name(self) -> str: ...
+    @property
+    def value(self) -> int: ...
+
 class ScaleKind:
     factor: ClassVar[ScaleKind]
     target_pga: ClassVar[ScaleKind]
@@ -970,6 +1032,8 @@ class SweepRow:
     @property
     def run(self) -> RunSummary: ...
     @property
+    def sampled(self) -> list[float]: ...
+    @property
     def scale(self) -> float: ...
     @property
     def scale_index(self) -> int: ...
@@ -1024,6 +1088,66 @@ class SweepSpec:
     scales: list[float]
     solver: SimulationOptions
     target: MeasureRequest
+    uncertainty: Uncertainty
+
+class UncertainKind:
+    friction: ClassVar[UncertainKind]
+    restitution_factor: ClassVar[UncertainKind]
+    restitution_ratio: ClassVar[UncertainKind]
+    size_scale: ClassVar[UncertainKind]
+    mass_scale: ClassVar[UncertainKind]
+    frequency_scale: ClassVar[UncertainKind]
+    damping_ratio: ClassVar[UncertainKind]
+    __members__: ClassVar[dict[str, UncertainKind]]
+    def __init__(self, value: int) -> None: ...
+    def __eq__(self, other: object) -> bool: ...
+    def __hash__(self) -> int: ...
+    def __index__(self) -> int: ...
+    def __int__(self) -> int: ...
+    @property
+    def name(self) -> str: ...
+    @property
+    def value(self) -> int: ...
+
+class UncertainParameter:
+    """A distribution of an uncertain parameter, as a manifest's [[uncertain]] table gives it."""
+    def __init__(self, parameter: str, distribution: str, *, minimum: Optional[float] = ..., maximum: Optional[float] = ..., mean: Optional[float] = ..., standard_deviation: Optional[float] = ..., median: Optional[float] = ..., beta: Optional[float] = ..., lower: Optional[float] = ..., upper: Optional[float] = ...) -> None:
+        """A distribution of a parameter, checked as the manifest's are.
+
+        Parameters
+        ----------
+        parameter : str
+            A name of ``uncertain_parameters()``: "friction", "size_scale", ...
+        distribution : str
+            "uniform" (``minimum``, ``maximum``), "normal" (``mean``, ``standard_deviation``) or
+            "lognormal" (``median``, ``beta``: the standard deviation of ln x).
+        lower, upper : float, optional
+            Truncation of a normal or lognormal distribution.
+
+        Raises
+        ------
+        ValueError
+            A bad number, a key the distribution does not take, or values outside the parameter's
+            domain (a normal friction without ``lower`` > 0).
+        """
+    @property
+    def a(self) -> float: ...
+    @property
+    def b(self) -> float: ...
+    @property
+    def distribution(self) -> Distribution: ...
+    @property
+    def kind(self) -> UncertainKind: ...
+    @property
+    def lower(self) -> float: ...
+    @property
+    def upper(self) -> float: ...
+
+class Uncertainty:
+    """The uncertain parameters of a study (SweepSpec.uncertainty)."""
+    def __init__(self, parameters: list[UncertainParameter] = ..., sampling: Sampling = ...) -> None: ...
+    parameters: list[UncertainParameter]
+    sampling: Sampling
 
 def body_kinds() -> list[BodyKind]:
     """Every body type, in the order of the docs.
@@ -2058,6 +2182,19 @@ def time_history_csv(result: SimulationResult, body: Body) -> str:
     -------
     str
     """
+
+def uncertain_parameters() -> list:
+    """The table of uncertain parameters (the one manifests, the sweep columns and the docs
+    are written from).
+
+    Returns
+    -------
+    list of dict
+        name, column, unit, domain, doc.
+    """
+
+def uncertain_quantile(parameter: UncertainParameter, u: float) -> float:
+    """The value of a parameter at probability u in (0, 1) (its truncated inverse CDF)."""
 
 def write_outputs(case: Case, body: Body, result: SimulationResult, output_dir: str = ...) -> OutputPaths:
     """Writes the outputs the case's [output] table asks for, atomically, summary last.

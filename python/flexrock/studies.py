@@ -64,6 +64,16 @@ from ._flexrock import (  # noqa: F401  (re-exported API)
     sweep_spec_columns,
     fragility_columns,
     fragility_row,
+    Distribution,
+    SampleDesign,
+    Sampling,
+    SamplingMethod,
+    SamplingScope,
+    UncertainKind,
+    UncertainParameter,
+    Uncertainty,
+    uncertain_parameters,
+    uncertain_quantile,
 )
 
 
@@ -400,6 +410,7 @@ def sweep(
     measures: Sequence[str] = (),
     sa_periods: Sequence[float] = (),
     sa_damping: float = 0.05,
+    uncertainty: Optional[Uncertainty] = None,
     **solver,
 ) -> dict:
     """Bodies x records x levels: an incremental dynamic analysis, as ``flexrock sweep`` runs it.
@@ -425,6 +436,9 @@ def sweep(
         [-] free motion after each record, in rocking periods 2 pi/p.
     threads : int
         0: every core. The GIL is released while it runs.
+    uncertainty : Uncertainty, optional
+        Parameters each run samples (a manifest's ``[[uncertain]]`` and ``[sampling]``); their
+        values are columns after the intensity measures.
     **solver
         Solver options.
 
@@ -438,6 +452,8 @@ def sweep(
     from . import InputError
 
     spec = SweepSpec()
+    if uncertainty is not None:
+        spec.uncertainty = uncertainty
     items = bodies.items() if isinstance(bodies, Mapping) else bodies
     spec.bodies = [SweepBody(name, getattr(b, "params", b)) for name, b in items]
     items = records.items() if isinstance(records, Mapping) else records

@@ -431,7 +431,9 @@ Intensity
       .def_readwrite("levels", &SweepSpec::levels,
                      "the levels as requested (CSV column requested_level); empty: scales")
       .def_readwrite("level_units", &SweepSpec::level_units,
-                     "units of target-PGA levels: \"g\", \"m/s^2\" or \"cm/s^2\"");
+                     "units of target-PGA levels: \"g\", \"m/s^2\" or \"cm/s^2\"")
+      .def_readwrite("uncertainty", &SweepSpec::uncertainty,
+                     "parameters each run samples (Uncertainty; empty: none)");
   py::class_<SweepRow>(m, "SweepRow")
       .def_readonly("index", &SweepRow::index)
       .def_readonly("body", &SweepRow::body)
@@ -443,7 +445,9 @@ Intensity
       .def_readonly("measures", &SweepRow::measures, "[SI] the requested measures, scaled")
       .def_readonly("duration", &SweepRow::duration)
       .def_readonly("message", &SweepRow::message)
-      .def_readonly("run", &SweepRow::run);
+      .def_readonly("run", &SweepRow::run)
+      .def_readonly("sampled", &SweepRow::sampled,
+                    "the run's values of spec.uncertainty, in its order");
   m.def(
       "run_sweep",
       [](const SweepSpec& spec, const std::vector<std::size_t>& indices, int threads) {

@@ -11,7 +11,8 @@ void bind_excitation(pybind11::module_& m);  // GroundMotion, pulses
 void bind_sim(pybind11::module_& m);         // simulate and its result
 void bind_io(pybind11::module_& m);          // records, case files, outputs
 #ifdef FLEXROCK_PYTHON_STUDY
-void bind_study(pybind11::module_& m);  // spectrum, sweep, fragility
+void bind_study(pybind11::module_& m);      // spectrum, sweep, fragility
+void bind_uncertain(pybind11::module_& m);  // uncertain parameters of studies
 #endif
 
 }  // namespace flexrock::python

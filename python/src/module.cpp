@@ -30,6 +30,7 @@ PYBIND11_MODULE(_flexrock, m) {
   flexrock::python::bind_sim(m);
   flexrock::python::bind_io(m);
 #ifdef FLEXROCK_PYTHON_STUDY
+  flexrock::python::bind_uncertain(m);
   flexrock::python::bind_study(m);
 #endif
 }

@@ -1847,7 +1847,7 @@ DamageState damage_state(const std::string& text) {
 std::string study_column_reference() {
   return column_block("spectrum", kSpectrumColumns) + column_block("boundary", kBoundaryColumns) +
          column_block("sweep", kSweepColumns) + measure_block() +
-         column_block("sliding", kSlidingColumns) +
+         column_block("sliding", kSlidingColumns) + detail::uncertain_reference() +
          column_block("fragility fit", kFragilityColumns);
 }
 

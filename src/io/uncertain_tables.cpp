@@ -123,4 +123,17 @@ void read_uncertainty(TableReader& top, study::SweepSpec& spec) {
   }
 }
 
+std::string uncertain_reference() {
+  std::string s =
+      "<!-- begin: written by `flexrock keys --markdown` from the table of uncertain parameters "
+      "(src/study/uncertain.cpp); edit the table, not these lines -->\n"
+      "| parameter | column | unit | values | what a sampled value changes |\n"
+      "|---|---|---|---|---|\n";
+  for (const study::UncertainKindInfo& k : study::uncertain_kinds()) {
+    s.append("| `").append(k.name).append("` | `").append(k.column).append("` | ").append(k.unit);
+    s.append(" | ").append(k.domain).append(" | ").append(k.doc).append(" |\n");
+  }
+  return s + "<!-- end: written by `flexrock keys --markdown` -->\n";
+}
+
 }  // namespace flexrock::io::detail

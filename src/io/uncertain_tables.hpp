@@ -13,4 +13,8 @@ namespace flexrock::io::detail {
 /// applies to every body and to the solver's impact law. Errors name file, line and key.
 void read_uncertainty(TableReader& top, study::SweepSpec& spec);
 
+/// The reference of the uncertain parameters, as the Markdown table of docs/studies.md, written
+/// from study::uncertain_kinds() with its begin and end marker lines (`flexrock keys --markdown`).
+std::string uncertain_reference();
+
 }  // namespace flexrock::io::detail

@@ -36,12 +36,13 @@ const std::vector<UncertainKindInfo>& uncertain_kinds() {
        "every length of the body times s (c.g. height, base distances, mode shapes): the same "
        "shape, mass and modal frequencies; rocking frequency p / sqrt(s)"},
       {UncertainKind::kMassScale, "mass_scale", "mass_scale", "-", 0.0, true, kInf, true, "> 0",
-       "the mass times s, spread as before, stiffness held: modal frequencies / sqrt(s), "
-       "modal damping ratios held (a rigid body: energies and impulses only)"},
+       "the mass times s, spread as before, stiffness held: modal frequencies / sqrt(s); modal "
+       "damping ratios and Rayleigh coefficients held (a rigid body: energies and impulses "
+       "only)"},
       {UncertainKind::kFrequencyScale, "frequency_scale", "frequency_scale", "-", 0.0, true, kInf,
        true, "> 0",
        "every pinned-base modal frequency times s (stiffness times s^2); modal damping ratios "
-       "held (a body with modes only)"},
+       "and Rayleigh coefficients held (a body with modes only)"},
       {UncertainKind::kDampingRatio, "damping_ratio", "damping_ratio", "-", 0.0, false, 1.0, true,
        "in [0, 1)",
        "the damping ratio of every pinned-base mode (a body with modes and modal or no "
