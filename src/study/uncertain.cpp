@@ -17,6 +17,10 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 
 std::string num(double v) { return format_number(v); }
 
+// the open interval (0, 1) in doubles, as far as the uniforms reach: [2^-53, 1 - 2^-53]
+constexpr double kLowestU = 0x1p-53;
+constexpr double kHighestU = 1.0 - 0x1p-53;
+
 }  // namespace
 
 const std::vector<UncertainKindInfo>& uncertain_kinds() {
@@ -196,14 +200,17 @@ double quantile(const UncertainParameter& p, double u) {
   if (p.distribution == Distribution::kUniform) return p.a + u * (p.b - p.a);
   const normal_distribution<double> n;
   const double zl = standard_z(p, p.lower), zu = standard_z(p, p.upper);
+  // the probability handed to the quantile stays inside (0, 1) after rounding: at 0 or 1 it is
+  // infinite (and Boost throws)
+  auto inside = [](double q) { return std::clamp(q, kLowestU, kHighestU); };
   double z;
   if (zl > 0.0) {
     // the upper tail: through the complement, 1 - F, which keeps its digits there
     const double ql = phi_c(zl), qu = phi_c(zu);
-    z = boost::math::quantile(boost::math::complement(n, ql - u * (ql - qu)));
+    z = boost::math::quantile(boost::math::complement(n, inside(ql - u * (ql - qu))));
   } else {
     const double pl = phi(zl), pu = phi(zu);
-    z = boost::math::quantile(n, pl + u * (pu - pl));
+    z = boost::math::quantile(n, inside(pl + u * (pu - pl)));
   }
   // rounding may step a hair past a bound
   return std::clamp(from_z(p, z), p.lower, p.upper);
@@ -226,7 +233,9 @@ constexpr std::uint64_t kPermutationStream = 0x5a3c0ffee1234567ULL;
 
 double counter_uniform(std::uint64_t seed, std::uint64_t index, std::uint64_t dimension) {
   const std::uint64_t h = mix(mix(mix(seed) ^ index) ^ dimension);
-  return (static_cast<double>(h >> 11) + 0.5) * 0x1p-53;
+  // 52 bits: the centre of the top interval, 1 - 2^-53, is a double below 1 (with 53 it would
+  // round to 1)
+  return (static_cast<double>(h >> 12) + 0.5) * 0x1p-52;
 }
 
 SampleDesign::SampleDesign(const Uncertainty& u, std::size_t samples)
@@ -255,7 +264,7 @@ double SampleDesign::uniform(std::size_t i, std::size_t d) const {
   if (sampling_.method != SamplingMethod::kLatinHypercube) return v;
   // stratum perm_d(i) of n: (k + v) / n stays inside (k/n, (k+1)/n) and so inside (0, 1)
   const double u = (static_cast<double>(strata_[d][i]) + v) / static_cast<double>(samples_);
-  return std::clamp(u, 0x1p-54, 1.0 - 0x1p-54);
+  return std::clamp(u, kLowestU, kHighestU);
 }
 
 std::vector<double> SampleDesign::values(std::size_t i) const {

@@ -123,6 +123,16 @@ TEST(Uncertain, TailTruncationsStayInsideTheirBounds) {
     const double near = std::abs(lo) < std::abs(hi) ? lo : hi;
     EXPECT_LT(std::abs(moments(x).mean - near), 1.0 / std::abs(near)) << lo << " " << hi;
   }
+  // the extreme uniforms: with F(lower) = 1/2, pl + u (pu - pl) rounds to exactly 1 at
+  // u = 1 - 2^-53 (a tie, to even): an infinite quantile unless kept inside (0, 1)
+  const UncertainParameter cut{
+      UncertainKind::kSizeScale, Distribution::kNormal, 0.0, 1.0, 0.0, kInf};
+  for (const double u : {0x1p-53, 1.0 - 0x1p-53}) {
+    const double x = quantile(cut, u);
+    EXPECT_TRUE(std::isfinite(x) && x >= 0.0) << u << " " << x;
+  }
+  // the largest counter_uniform, hash bits all ones, is a double below 1
+  EXPECT_LT((0x1p52 - 1.0 + 0.5) * 0x1p-52, 1.0);
   const UncertainParameter ln{
       UncertainKind::kFriction, Distribution::kLognormal, 0.5, 0.5, 0.4, 0.45};
   for (double v : draws(ln, 10'000, SamplingMethod::kRandom)) {

@@ -107,7 +107,8 @@ void validate(const Uncertainty& u);
 double quantile(const UncertainParameter& p, double u);
 
 /// A uniform number in (0, 1) that is a pure function of (seed, index, dimension): a splitmix64
-/// hash of the three, its 53 high bits centred in their interval (never 0 nor 1).
+/// hash of the three, its 52 high bits centred in their interval, so in [2^-53, 1 - 2^-53]
+/// (never 0 nor 1).
 double counter_uniform(std::uint64_t seed, std::uint64_t index, std::uint64_t dimension);
 
 /// The samples of a study: `samples` realisations of every parameter, each a pure function of
