@@ -89,3 +89,63 @@ def test_bad_parameters_say_what_is_right():
 def test_the_table_lists_every_kind():
     names = [k["name"] for k in fr.uncertain_parameters()]
     assert names == [k.name for k in fr.UncertainKind.__members__.values()]
+
+
+def test_python_finishes_a_killed_uncertain_sweep_with_the_same_bytes(cli, source_dir, tmp_path):
+    import os
+    import signal
+    import time
+
+    data = source_dir.parent / "shared" / "data" / "elcentro_1940_ns.dat"
+    if not data.exists():
+        data = source_dir / "tests" / "data" / "elcentro_1940_ns.dat"
+    block = source_dir / "examples" / "studies" / "slender_block.toml"
+    # 30 slow runs (a small max_step), so that the kill lands mid-way
+    manifest = tmp_path / "m.toml"
+    manifest.write_text(f"""free_periods = 1
+[[body]]
+file = "{block}"
+[[record]]
+file = "{data}"
+format = "single_column"
+dt = 0.02
+units = "g"
+[scales]
+factors = {{ start = 0.5, stop = 3.4, step = 0.1 }}
+[solver]
+max_step = 0.0005
+[[uncertain]]
+parameter = "size_scale"
+distribution = "lognormal"
+median = 1.0
+beta = 0.1
+[[uncertain]]
+parameter = "restitution_factor"
+distribution = "uniform"
+minimum = 0.85
+maximum = 1.0
+[sampling]
+seed = 5
+method = "lhs"
+""")
+    ref = tmp_path / "ref.csv"
+    subprocess.run([str(cli), "sweep", str(manifest), "-o", str(ref), "-q", "-j", "2"], check=True)
+    out = tmp_path / "out.csv"
+    journal = tmp_path / "out.csv.partial"
+    p = subprocess.Popen([str(cli), "sweep", str(manifest), "-o", str(out), "-q", "-j", "1"])
+    for _ in range(600):
+        if journal.exists() and len(journal.read_text().splitlines()) > 4 or p.poll() is not None:
+            break
+        time.sleep(0.05)
+    assert p.poll() is None, "the sweep ended before the kill (too fast to test)"
+    os.kill(p.pid, signal.SIGKILL)
+    p.wait()
+    assert not out.exists() and journal.exists()
+    arrays = fr.sweep_manifest(str(manifest), str(out), threads=2)
+    assert out.read_bytes() == ref.read_bytes()
+    # the sampled columns come back as floats, the design's values
+    spec = fr.load_sweep_manifest(str(manifest)).spec
+    design = fr.SampleDesign(spec.uncertainty, len(spec.scales))
+    assert list(arrays["size_scale"]) == [design.values(i)[0] for i in range(len(spec.scales))]
+    assert list(fr.read_sweep(str(manifest), str(out))["restitution_factor"]) == [
+        design.values(i)[1] for i in range(len(spec.scales))]
