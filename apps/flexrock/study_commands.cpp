@@ -204,12 +204,6 @@ std::string default_output(const std::string& input, const std::string& suffix) 
   return fs::path(input).stem().string() + suffix;
 }
 
-std::vector<io::NamedPath> named_inputs(const std::vector<std::string>& files) {
-  std::vector<io::NamedPath> out;
-  for (const std::string& f : files) out.push_back({"input", f});
-  return out;
-}
-
 std::string join_columns(const std::vector<std::string>& v) {
   std::string s;
   for (std::size_t i = 0; i < v.size(); ++i) s += (i ? "," : "") + v[i];
@@ -272,8 +266,6 @@ int StudyCommands::Impl::run_spectrum(const Processes& procs) {
     f.pulse.bisect = false;
     f.record.bisect = false;
   }
-  const Body body(f.body);
-  const double g = body.g();
   if (output.empty()) output = default_output(input, ".spectrum.csv");
   if (boundary_output.empty()) {
     // next to the cells: "x.spectrum.csv" -> "x.boundary.csv", "x.csv" -> "x.boundary.csv"
@@ -282,130 +274,61 @@ int StudyCommands::Impl::run_spectrum(const Processes& procs) {
     if (stem.ends_with(".spectrum")) stem.resize(stem.size() - 9);
     boundary_output = (p.parent_path() / (stem + ".boundary.csv")).string();
   }
-  const bool bisect = f.is_record ? f.record.bisect : f.pulse.bisect;
-  io::check_distinct_files(
-      named_inputs(f.input_files),
-      {{"output", output}, {"boundary output", bisect ? boundary_output : ""}});
-  const bool normalized = f.pulse.normalized || f.is_record;
-
-  // the grid, with every run it makes checked, before the journal exists: a run that could not
-  // start must not leave a journal behind
-  const study::SpectrumResult grid = f.is_record ? study::record_spectrum_grid(body, f.record)
-                                                 : study::spectrum_grid(body, f.pulse);
-  const std::size_t cells = grid.cells.size();
-  const std::size_t columns = f.is_record ? 1 : f.pulse.frequencies.size();
-  const std::size_t runs = cells + grid.boundary.size();
-  // the journal: cells by index, then one boundary per column; its inputs are the files and
-  // whether the boundary is bisected
-  io::StudyJournal journal(procs, output + ".partial", "spectrum",
-                           io::fnv1a(bisect ? "bisect" : "no-bisect", f.hash), runs,
-                           io::spectrum_journal_check(grid, normalized, g));
-  study::SpectrumResume resume;
-  for (const auto& [i, line] : journal.known()) {
-    if (i < cells) {
-      resume.cells[i] = io::read_spectrum_cell(grid, i, line, g).run.outcome;
-    } else {
-      resume.boundaries.insert(i - cells);
-    }
-  }
-  resume.on_cell = [&](const study::SpectrumCell& c) {
-    journal.append(c.row * columns + c.column, io::spectrum_row(grid, c, g));
-  };
-  resume.on_boundary = [&](const study::OverturnBoundary& b) {
-    journal.append(cells + b.column, io::boundary_row(grid, b, normalized, g));
-  };
+  // the session checks every run before its journal exists, resumes from the journal, and
+  // writes the CSVs from the cells; here: the options, the progress and the account
+  io::SpectrumSession session(std::move(f), output, boundary_output, procs);
+  const io::SpectrumFile& file = session.file();
+  const study::SpectrumResult& grid = session.grid();
+  const double g = session.body().g();
+  const bool bisect = session.bisect();
 
   const SignalGuard signals;
   std::atomic<std::size_t> completed{0};
   study::RunOptions options = run_options(procs);
   options.completed = &completed;
-  // the cells left in rank 0's share, for its progress bar (the bisection's runs come on top)
-  const auto size = static_cast<std::size_t>(procs.size());
-  const auto rank = static_cast<std::size_t>(procs.rank());
-  std::size_t my_runs = 0;
-  for (std::size_t i = 0; i < cells; ++i) {
-    const std::size_t unit = f.is_record ? i : i % columns;
-    if (unit % size == rank && !resume.cells.count(i)) ++my_runs;
-  }
-  if (!quiet && procs.root() && !journal.known().empty()) {
-    fmt::print("resuming: {} of {} cells and boundaries already in {}\n", journal.known().size(),
-               runs, journal.path());
+  if (!quiet && procs.root() && session.resumed() > 0) {
+    fmt::print("resuming: {} of {} cells and boundaries already in {}\n", session.resumed(),
+               session.runs(), session.journal_path());
   }
   const auto start = std::chrono::steady_clock::now();
-  with_progress(show_progress(procs), my_runs, completed,
-                procs.size() > 1 ? fmt::format("  (rank 0 of {})", procs.size()) : "", [&] {
-                  return f.is_record
-                             ? study::compute_record_spectrum(body, f.record, options, &resume)
-                             : study::compute_spectrum(body, f.pulse, options, &resume);
-                });
+  // the cells left in rank 0's share, for its progress bar (the bisection's runs come on top)
+  with_progress(show_progress(procs), session.share_cells(), completed,
+                procs.size() > 1 ? fmt::format("  (rank 0 of {})", procs.size()) : "",
+                [&] { session.run(options); });
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const std::string interrupted = fmt::format(
       "interrupted: finished cells are kept in {}{}; run the same command again to "
       "continue",
-      journal.path(), procs.size() > 1 ? " (and .rank<N> files)" : "");
+      session.journal_path(), procs.size() > 1 ? " (and .rank<N> files)" : "");
   if (procs.any(g_cancel.load())) {
     if (procs.root()) return error(interrupted, kExitRunFailed);
     return kExitRunFailed;
   }
-
-  const std::map<std::size_t, std::string>& lines = journal.gather();
-  if (!procs.root()) {
-    journal.finish(false);
-    return kExitOk;
-  }
-  // a record spectrum spread over processes: the bisection here, from every cell's outcome
-  // every cell as data, read back from its line (the journal's lines were checked as they were
-  // read; gathered ones are checked here)
-  std::vector<study::SpectrumCell> all;
-  all.reserve(cells);
-  for (std::size_t i = 0; i < cells; ++i) {
-    all.push_back(io::read_spectrum_cell(grid, i, lines.at(i), g));
-  }
-  if (f.is_record && bisect && !lines.count(cells)) {
-    const study::OverturnBoundary b = study::record_boundary(body, f.record, all, &g_cancel);
-    if (!b.computed) {
-      journal.finish(false);
-      return error(interrupted, kExitRunFailed);
-    }
-    journal.append_on_root(cells, io::boundary_row(grid, b, true, g));
-  }
-  FLEXROCK_DEMAND(lines.size() == runs);
+  study::SpectrumResult res;
   try {
-    // the boundary is written last and an old one removed first: a boundary file on disk is
-    // from the same run as the cells beside it
-    if (bisect && ::unlink(boundary_output.c_str()) != 0 && errno != ENOENT) {
-      throw std::runtime_error("cannot remove the old " + boundary_output + ": " +
-                               std::strerror(errno));
-    }
-    io::write_atomically(output, [&](std::ostream& out) {
-      out << join_columns(io::spectrum_columns(grid.sliding)) << '\n';
-      for (std::size_t i = 0; i < cells; ++i) out << lines.at(i) << '\n';
-    });
-    if (bisect) {
-      io::write_atomically(boundary_output, [&](std::ostream& out) {
-        out << join_columns(io::boundary_columns()) << '\n';
-        for (std::size_t i = cells; i < runs; ++i) out << lines.at(i) << '\n';
-      });
-    }
+    res = session.finish(&g_cancel);
+  } catch (const InputError&) {
+    throw;
   } catch (const std::exception& e) {
-    journal.finish(false);
     return error(std::string("could not write the outputs (the finished cells are kept in ") +
-                     journal.path() + "): " + e.what(),
+                     session.journal_path() + "): " + e.what(),
                  kExitRunFailed);
   }
-  const std::map<std::string, std::size_t> counts = count_outcomes(all);
-  journal.finish(true);
+  if (!procs.root()) return kExitOk;
+  // a record spectrum's bisection on rank 0 was stopped: the journal stays
+  if (res.cells.empty()) return error(interrupted, kExitRunFailed);
+  const std::map<std::string, std::size_t> counts = count_outcomes(res.cells);
 
   // a short account on stdout
-  fmt::print("spectrum: {} ({}), body from {}\n", f.name,
-             f.is_record ? "record " + f.record_name + " x scales"
-                         : f.pulse.pulse + " pulse, " +
-                               (f.pulse.normalized ? "normalized" : "physical") + " axes",
-             f.body_source);
+  fmt::print("spectrum: {} ({}), body from {}\n", file.name,
+             file.is_record ? "record " + file.record_name + " x scales"
+                            : file.pulse.pulse + " pulse, " +
+                                  (file.pulse.normalized ? "normalized" : "physical") + " axes",
+             file.body_source);
   fmt::print("body: g tan(alpha1) = {:.4g} m/s^2, alpha1 = {:.4g} rad, p = {:.4g} rad/s\n",
              g * grid.tan_alpha, grid.alpha, grid.p);
-  fmt::print("cells: {}", cells);
+  fmt::print("cells: {}", session.cells());
   for (const auto& [k, n] : counts) fmt::print(", {} {}", k, n);
   fmt::print("\n");
   if (!quiet) {

@@ -965,6 +965,44 @@ class SpectrumResult:
     @property
     def tan_alpha(self) -> float: ...
 
+class SpectrumSession:
+    """A spectrum from its spec file to its CSVs.
+
+    Opening it checks every run and opens (or resumes) the journal ``output + ".partial"``, the one
+    ``flexrock spectrum`` keeps: a spectrum the command line started and that was interrupted goes on
+    here, and the CSVs have the same bytes as an uninterrupted run.
+    """
+    def __init__(self, file: SpectrumFile, output: str, boundary_output: str, bisect: bool = ...) -> None: ...
+    @property
+    def bisect(self) -> bool: ...
+    @property
+    def cells(self) -> int: ...
+    def finish(self) -> SpectrumResult:
+        """Writes the CSVs from every cell and boundary and deletes the journal.
+
+        Returns
+        -------
+        SpectrumResult
+            Every cell and boundary, read back as data.
+        """
+    @property
+    def grid(self) -> SpectrumResult: ...
+    @property
+    def journal_path(self) -> str: ...
+    @property
+    def resumed(self) -> int: ...
+    def run(self, threads: int = ...) -> None:
+        """Runs the cells and bisections left, journaling each as it finishes (the GIL is
+        released).
+
+        Parameters
+        ----------
+        threads : int
+            0: every core.
+        """
+    @property
+    def runs(self) -> int: ...
+
 class SpectrumSpec:
     """A pulse spectrum: pulse x amplitude x frequency."""
     def __init__(self) -> None: ...

@@ -22,6 +22,7 @@ from ._flexrock import (  # noqa: F401  (re-exported API)
     ScaleKind,
     SpectrumCell,
     SpectrumResult,
+    SpectrumSession,
     SpectrumSpec,
     SweepBody,
     SweepRecord,
@@ -540,6 +541,47 @@ def sweep_manifest(manifest, output=None, *, threads: int = 0) -> dict:
     session = SweepSession(load_sweep_manifest(manifest), os.fspath(output))
     session.run(threads)
     return sweep_arrays(session.manifest.spec, session.finish())
+
+
+def spectrum_file(spec, output=None, boundary=None, *, threads: int = 0,
+                  bisect: bool = True) -> SpectrumResult:
+    """Runs a spectrum file to its CSVs, as ``flexrock spectrum SPEC -o OUTPUT --boundary
+    BOUNDARY`` does, through the same session: the cells and boundaries finished so far are kept
+    in the journal ``OUTPUT.partial``, and an interrupted spectrum, whether the command line or
+    Python started it, goes on from there with the same bytes.
+
+    Parameters
+    ----------
+    spec : str or os.PathLike
+        Spectrum file (TOML, docs/studies.md).
+    output : str or os.PathLike, optional
+        The cells CSV; default ``<spec stem>.spectrum.csv`` in the working directory.
+    boundary : str or os.PathLike, optional
+        The boundary CSV (with the bisection); default next to ``output``:
+        ``x.spectrum.csv`` -> ``x.boundary.csv``.
+    threads : int
+        0: every core. The GIL is released while the runs go.
+    bisect : bool
+        False: the grid only, as ``--no-bisect``.
+
+    Returns
+    -------
+    SpectrumResult
+        Every cell and boundary, read back from the journal as data.
+    """
+    spec = os.fspath(spec)
+    if output is None:
+        output = os.path.splitext(os.path.basename(spec))[0] + ".spectrum.csv"
+    output = os.fspath(output)
+    if boundary is None:
+        head, name = os.path.split(output)
+        stem = os.path.splitext(name)[0]
+        if stem.endswith(".spectrum"):
+            stem = stem[: -len(".spectrum")]
+        boundary = os.path.join(head, stem + ".boundary.csv")
+    session = SpectrumSession(load_spectrum_file(spec), output, os.fspath(boundary), bisect)
+    session.run(threads)
+    return session.finish()
 
 
 def read_sweep(manifest, path) -> dict:

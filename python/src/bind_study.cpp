@@ -891,6 +891,50 @@ Returns
 list of SweepRow
     Every run's row, in index order.)doc");
 
+  py::class_<io::SpectrumSession>(m, "SpectrumSession",
+                                  R"doc(A spectrum from its spec file to its CSVs.
+
+Opening it checks every run and opens (or resumes) the journal ``output + ".partial"``, the one
+``flexrock spectrum`` keeps: a spectrum the command line started and that was interrupted goes on
+here, and the CSVs have the same bytes as an uninterrupted run.)doc")
+      .def(py::init([](io::SpectrumFile file, std::string output, std::string boundary_output,
+                       bool bisect) {
+             if (!bisect) {
+               // as the command line's --no-bisect
+               file.pulse.bisect = false;
+               file.record.bisect = false;
+             }
+             return std::make_unique<io::SpectrumSession>(std::move(file), std::move(output),
+                                                          std::move(boundary_output));
+           }),
+           py::arg("file"), py::arg("output"), py::arg("boundary_output"), py::arg("bisect") = true)
+      .def_property_readonly("cells", &io::SpectrumSession::cells)
+      .def_property_readonly("runs", &io::SpectrumSession::runs, "cells and boundaries")
+      .def_property_readonly("resumed", &io::SpectrumSession::resumed,
+                             "cells and boundaries finished before this start (in the journal)")
+      .def_property_readonly("bisect", &io::SpectrumSession::bisect)
+      .def_property_readonly("journal_path", &io::SpectrumSession::journal_path)
+      .def_property_readonly("grid", &io::SpectrumSession::grid)
+      .def(
+          "run", [](io::SpectrumSession& s, int threads) { s.run(threads_only(threads)); },
+          py::arg("threads") = 0, py::call_guard<py::gil_scoped_release>(),
+          R"doc(Runs the cells and bisections left, journaling each as it finishes (the GIL is
+released).
+
+Parameters
+----------
+threads : int
+    0: every core.)doc")
+      .def(
+          "finish", [](io::SpectrumSession& s) { return s.finish(); },
+          py::call_guard<py::gil_scoped_release>(),
+          R"doc(Writes the CSVs from every cell and boundary and deletes the journal.
+
+Returns
+-------
+SpectrumResult
+    Every cell and boundary, read back as data.)doc");
+
   py::class_<io::CsvTable>(m, "CsvTable")
       .def_readonly("source", &io::CsvTable::source)
       .def_readonly("columns", &io::CsvTable::columns)

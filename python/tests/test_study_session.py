@@ -136,3 +136,43 @@ def test_a_sweep_csv_that_is_not_its_runs_is_refused_naming_line_and_field(tmp_p
     (tmp_path / "short.csv").write_text("\n".join(lines[:-1]) + "\n")
     with pytest.raises(fr.InputError, match="2 rows, expected one per run"):
         fr.read_sweep(m, tmp_path / "short.csv")
+
+
+def test_python_finishes_a_spectrum_the_cli_left_with_the_same_bytes(cli, source_dir, tmp_path):
+    spec = source_dir / "examples" / "studies" / "one_sine_block.toml"
+    p = subprocess.run([str(cli), "spectrum", str(spec), "-o", str(tmp_path / "ref.csv"), "-q",
+                        "-j", "2"], capture_output=True, text=True)
+    assert p.returncode == 0, p.stderr
+    # a complete journal, kept because the boundary could not be written (its directory does not
+    # exist), cut to its header and half its cells: what a kill leaves
+    out = tmp_path / "out.csv"
+    p = subprocess.run([str(cli), "spectrum", str(spec), "-o", str(out), "--boundary",
+                        str(tmp_path / "no_such_dir" / "b.csv"), "-q", "-j", "2"],
+                       capture_output=True, text=True)
+    assert p.returncode == 1 and "the finished cells are kept in" in p.stderr
+    out.unlink()
+    journal = tmp_path / "out.csv.partial"
+    lines = journal.read_text().splitlines(keepends=True)
+    journal.write_text("".join(lines[: len(lines) // 2]))
+    session = fr.SpectrumSession(fr.load_spectrum_file(str(spec)), str(out),
+                                 str(tmp_path / "out.boundary.csv"))
+    assert session.resumed == len(lines) // 2 - 1 and session.bisect
+    session.run(2)
+    res = session.finish()
+    assert out.read_bytes() == (tmp_path / "ref.csv").read_bytes()
+    assert (tmp_path / "out.boundary.csv").read_bytes() == (tmp_path / "ref.boundary.csv").read_bytes()
+    assert not journal.exists()
+    # the result as data: every cell and boundary, read back through the column tables
+    assert len(res.cells) == session.cells and all(c.computed for c in res.cells)
+    assert len(res.boundary) == session.runs - session.cells
+    rows = (tmp_path / "ref.csv").read_text().splitlines()
+    col = rows[0].split(",").index("outcome")
+    assert [c.run.outcome.name for c in res.cells] == [r.split(",")[col] for r in rows[1:]]
+    # the same file again from the convenience function (no journal: every run afresh)
+    again = fr.spectrum_file(spec, tmp_path / "again.csv", threads=2)
+    assert (tmp_path / "again.csv").read_bytes() == (tmp_path / "ref.csv").read_bytes()
+    assert (tmp_path / "again.boundary.csv").read_bytes() == (tmp_path / "ref.boundary.csv").read_bytes()
+    # (a column with no overturning has no value: nan)
+    np.testing.assert_array_equal([b.overturning for b in again.boundary],
+                                  [b.overturning for b in res.boundary])
+    assert [b.kind for b in again.boundary] == [b.kind for b in res.boundary]

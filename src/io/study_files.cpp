@@ -701,58 +701,106 @@ using Boundary = study::OverturnBoundary;
 
 bool found(const Boundary& b) { return b.kind != Boundary::Kind::kNone; }
 
-// one column of the boundary CSV: name, unit, meaning and its field of a row. The header, the
-// rows and the column reference of docs/studies.md are written from this table
+// one column of the boundary CSV: name, unit, meaning, type, its field of a row and (for what the
+// bisection found) how a field read back sets it; the columns without `set` follow from the grid
+// and the others. The header, the rows, the reader and the column reference of docs/studies.md
+// are written from this table
 struct BoundaryColumn {
   const char* name;
   const char* unit;
   const char* doc;
-  std::string (*field)(const BoundaryContext& x, const Boundary& b);
+  ColumnType type;
+  Value (*get)(const BoundaryContext& x, const Boundary& b);
+  void (*set)(Boundary& b, const Value& v);
 };
 
+constexpr double kNoValue = std::numeric_limits<double>::quiet_NaN();
+
 const BoundaryColumn kBoundaryColumns[] = {
-    {"column", "-", "grid index of the frequency",
-     [](const BoundaryContext&, const Boundary& b) { return std::to_string(b.column); }},
+    {"column", "-", "grid index of the frequency", ColumnType::kInteger,
+     [](const BoundaryContext&, const Boundary& b) -> Value {
+       return static_cast<long long>(b.column);
+     },
+     nullptr},
     {"frequency", "grid",
      "the column's frequency as the grid holds it: omega_p/p on normalized axes, rad/s on "
      "physical ones",
-     [](const BoundaryContext&, const Boundary& b) { return field(b.frequency); }},
-    {"omega_p_rad_per_s", "rad/s", "the same in rad/s (record: 0)",
-     [](const BoundaryContext& x, const Boundary&) { return field(x.omega); }},
-    {"omega_p_over_p", "-", "the same over p",
-     [](const BoundaryContext& x, const Boundary&) { return field(x.omega / x.res.p); }},
+     ColumnType::kReal,
+     [](const BoundaryContext&, const Boundary& b) -> Value { return b.frequency; }, nullptr},
+    {"omega_p_rad_per_s", "rad/s", "the same in rad/s (record: 0)", ColumnType::kReal,
+     [](const BoundaryContext& x, const Boundary&) -> Value { return x.omega; }, nullptr},
+    {"omega_p_over_p", "-", "the same over p", ColumnType::kReal,
+     [](const BoundaryContext& x, const Boundary&) -> Value { return x.omega / x.res.p; }, nullptr},
     {"kind", "-",
      "`found`; `below_grid`: the smallest grid amplitude already overturns; `none`: no cell of "
      "the column overturns",
-     [](const BoundaryContext&, const Boundary& b) {
-       return std::string(study::to_string(b.kind));
+     ColumnType::kText,
+     [](const BoundaryContext&, const Boundary& b) -> Value { return study::to_string(b.kind); },
+     [](Boundary& b, const Value& v) {
+       for (const auto k :
+            {Boundary::Kind::kFound, Boundary::Kind::kBelowGrid, Boundary::Kind::kNone}) {
+         if (text(v) == study::to_string(k)) {
+           b.kind = k;
+           return;
+         }
+       }
+       throw InputError("unknown kind \"" + text(v) + "\"");
      }},
     {"min_overturning", "grid",
      "the upper end of the bracket: an amplitude shown to overturn, as the grid holds it "
      "(a_p/(g tan alpha) on normalized axes, m/s^2 on physical ones, the factor on a record); "
      "empty for `none`",
-     [](const BoundaryContext&, const Boundary& b) {
-       return found(b) ? field(b.overturning) : std::string();
-     }},
+     ColumnType::kReal,
+     [](const BoundaryContext&, const Boundary& b) -> Value {
+       return found(b) ? b.overturning : kNoValue;
+     },
+     [](Boundary& b, const Value& v) { b.overturning = real(v); }},
     {"safe_below", "grid", "the lower end: shown not to overturn (empty unless `found`)",
-     [](const BoundaryContext&, const Boundary& b) {
-       return b.kind == Boundary::Kind::kFound ? field(b.safe) : std::string();
-     }},
-    {"min_overturning_m_per_s2", "m/s^2", "`min_overturning` in m/s^2",
-     [](const BoundaryContext& x, const Boundary& b) {
-       return found(b) ? field(b.overturning * x.a_unit) : std::string();
-     }},
+     ColumnType::kReal,
+     [](const BoundaryContext&, const Boundary& b) -> Value {
+       return b.kind == Boundary::Kind::kFound ? b.safe : kNoValue;
+     },
+     [](Boundary& b, const Value& v) { b.safe = real(v); }},
+    {"min_overturning_m_per_s2", "m/s^2", "`min_overturning` in m/s^2", ColumnType::kReal,
+     [](const BoundaryContext& x, const Boundary& b) -> Value {
+       return found(b) ? b.overturning * x.a_unit : kNoValue;
+     },
+     nullptr},
     {"min_overturning_over_g_tan_alpha", "-", "`min_overturning` over g tan alpha",
-     [](const BoundaryContext& x, const Boundary& b) {
-       return found(b) ? field(b.overturning * x.a_unit / (x.g * x.res.tan_alpha)) : std::string();
-     }},
+     ColumnType::kReal,
+     [](const BoundaryContext& x, const Boundary& b) -> Value {
+       return found(b) ? b.overturning * x.a_unit / (x.g * x.res.tan_alpha) : kNoValue;
+     },
+     nullptr},
     {"mode", "-", "the outcome class at `min_overturning` (which overturning mode)",
-     [](const BoundaryContext&, const Boundary& b) {
+     ColumnType::kText,
+     [](const BoundaryContext&, const Boundary& b) -> Value {
        return std::string(found(b) ? study::to_string(b.mode) : "");
+     },
+     [](Boundary& b, const Value& v) {
+       if (!text(v).empty()) b.mode = outcome_value(v);
      }},
-    {"bisection_runs", "-", "simulations the bisection took",
-     [](const BoundaryContext&, const Boundary& b) { return std::to_string(b.bisection_runs); }},
+    {"bisection_runs", "-", "simulations the bisection took", ColumnType::kInteger,
+     [](const BoundaryContext&, const Boundary& b) -> Value {
+       return static_cast<long long>(b.bisection_runs);
+     },
+     [](Boundary& b, const Value& v) { b.bisection_runs = static_cast<int>(integer(v)); }},
 };
+
+// the context of a boundary row: the spec's units in SI
+BoundaryContext boundary_context(const study::SpectrumResult& res, const study::OverturnBoundary& b,
+                                 bool normalized, double g) {
+  const bool record = res.cells.size() == 1 || (!res.cells.empty() && res.cells[0].omega_si == 0.0);
+  // the spec's units to m/s^2 and rad/s
+  double a_unit = normalized ? g * res.tan_alpha : 1.0;
+  double omega = normalized ? b.frequency * res.p : b.frequency;
+  if (record) {
+    const study::SpectrumCell& c0 = res.cells.front();
+    a_unit = c0.amplitude > 0.0 ? c0.amplitude_si / c0.amplitude : 0.0;  // the record's PGA
+    omega = 0.0;
+  }
+  return {res, g, a_unit, omega};
+}
 
 }  // namespace
 
@@ -764,20 +812,11 @@ std::vector<std::string> boundary_columns() {
 
 std::string boundary_row(const study::SpectrumResult& res, const study::OverturnBoundary& b,
                          bool normalized, double g) {
-  const bool record = res.cells.size() == 1 || (!res.cells.empty() && res.cells[0].omega_si == 0.0);
-  // the spec's units to m/s^2 and rad/s
-  double a_unit = normalized ? g * res.tan_alpha : 1.0;
-  double omega = normalized ? b.frequency * res.p : b.frequency;
-  if (record) {
-    const study::SpectrumCell& c0 = res.cells.front();
-    a_unit = c0.amplitude > 0.0 ? c0.amplitude_si / c0.amplitude : 0.0;  // the record's PGA
-    omega = 0.0;
-  }
-  const BoundaryContext x{res, g, a_unit, omega};
+  const BoundaryContext x = boundary_context(res, b, normalized, g);
   std::string s;
   for (const BoundaryColumn& col : kBoundaryColumns) {
     if (&col != kBoundaryColumns) s += ',';
-    s += col.field(x, b);
+    s += format_field(col.get(x, b));
   }
   return s;
 }
@@ -1533,6 +1572,32 @@ study::SpectrumCell read_spectrum_cell(const study::SpectrumResult& grid, std::s
   const std::string again = spectrum_row(grid, cell, g);
   if (again != line) throw InputError(first_difference(names, line, again));
   return cell;
+}
+
+study::OverturnBoundary read_boundary(const study::SpectrumResult& grid, std::size_t column,
+                                      const std::string& line, bool normalized, double g) {
+  FLEXROCK_THROW_UNLESS(column < grid.boundary.size(),
+                        "boundary " + std::to_string(column) + " out of range (" +
+                            std::to_string(grid.boundary.size()) + " columns)");
+  study::OverturnBoundary b = grid.boundary[column];
+  b.column = column;
+  b.computed = true;
+  const std::vector<std::string> names = boundary_columns();
+  const std::vector<std::string_view> f = fields_of(line);
+  FLEXROCK_THROW_UNLESS(f.size() == names.size(), std::to_string(f.size()) + " fields, expected " +
+                                                      std::to_string(names.size()));
+  for (std::size_t k = 0; k < names.size(); ++k) {
+    const BoundaryColumn& col = kBoundaryColumns[k];
+    try {
+      const Value v = parse_field(f[k], col.type);
+      if (col.set) col.set(b, v);
+    } catch (const InputError& e) {
+      throw InputError("field " + std::to_string(k + 1) + " (" + names[k] + "): " + e.what());
+    }
+  }
+  const std::string again = boundary_row(grid, b, normalized, g);
+  if (again != line) throw InputError(first_difference(names, line, again));
+  return b;
 }
 
 // ---------------------------------------------------------------------------------------------

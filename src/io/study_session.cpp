@@ -1,6 +1,10 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "flexrock/io/study_session.hpp"
 
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
 #include <filesystem>
 #include <mutex>
 #include <ostream>
@@ -235,6 +239,154 @@ std::vector<study::SweepRow> SweepSession::finish() {
   }
   journal_.finish(true);
   return rows;
+}
+
+// ---------------------------------------------------------------------------------------------
+// the spectrum
+
+namespace {
+
+bool bisects(const SpectrumFile& f) { return f.is_record ? f.record.bisect : f.pulse.bisect; }
+
+// the grid, with every run it makes checked, and the files kept apart, before the journal
+// exists: a run that could not start must not leave a journal behind
+study::SpectrumResult checked_grid(const SpectrumFile& f, const Body& body,
+                                   const std::string& output, const std::string& boundary) {
+  std::vector<NamedPath> inputs;
+  for (const std::string& i : f.input_files) inputs.push_back({"input", i});
+  check_distinct_files(inputs,
+                       {{"output", output}, {"boundary output", bisects(f) ? boundary : ""}});
+  return f.is_record ? study::record_spectrum_grid(body, f.record)
+                     : study::spectrum_grid(body, f.pulse);
+}
+
+// a journal line must be its cell's or boundary's line (spectrum_journal_check) and read back
+// as that cell or boundary
+JournalCheck spectrum_rows_check(const study::SpectrumResult& grid, bool normalized, double g) {
+  JournalCheck lines = spectrum_journal_check(grid, normalized, g);
+  return [&grid, lines, normalized, g](std::size_t index, const std::string& line) -> std::string {
+    if (std::string why = lines(index, line); !why.empty()) return why;
+    try {
+      if (index < grid.cells.size()) {
+        read_spectrum_cell(grid, index, line, g);
+      } else {
+        read_boundary(grid, index - grid.cells.size(), line, normalized, g);
+      }
+    } catch (const InputError& e) {
+      return e.what();
+    }
+    return "";
+  };
+}
+
+}  // namespace
+
+SpectrumSession::SpectrumSession(SpectrumFile file, std::string output, std::string boundary_output,
+                                 const StudyTransport& transport)
+    : file_(std::move(file)),
+      body_(file_.body),
+      output_(std::move(output)),
+      boundary_output_(std::move(boundary_output)),
+      transport_(transport),
+      bisect_(bisects(file_)),
+      grid_(checked_grid(file_, body_, output_, boundary_output_)),
+      // its inputs are the files and whether the boundary is bisected
+      journal_(transport, output_ + ".partial", "spectrum",
+               fnv1a(bisect_ ? "bisect" : "no-bisect", file_.hash), runs(),
+               spectrum_rows_check(grid_, file_.pulse.normalized || file_.is_record, body_.g())) {
+  const std::size_t n = cells();
+  for (const auto& [i, line] : journal_.known()) {
+    if (i < n) {
+      resume_.cells[i] = read_spectrum_cell(grid_, i, line, body_.g()).run.outcome;
+    } else {
+      resume_.boundaries.insert(i - n);
+    }
+  }
+  resume_.on_cell = [this](const study::SpectrumCell& c) {
+    const std::size_t columns = file_.is_record ? 1 : file_.pulse.frequencies.size();
+    journal_.append(c.row * columns + c.column, spectrum_row(grid_, c, body_.g()));
+  };
+  const bool normalized = file_.pulse.normalized || file_.is_record;
+  resume_.on_boundary = [this, normalized](const study::OverturnBoundary& b) {
+    journal_.append(cells() + b.column, boundary_row(grid_, b, normalized, body_.g()));
+  };
+  // the cells left in this process's share (the bisection's runs come on top)
+  const std::size_t columns = file_.is_record ? 1 : file_.pulse.frequencies.size();
+  const auto size = static_cast<std::size_t>(transport_.size());
+  const auto rank = static_cast<std::size_t>(transport_.rank());
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::size_t unit = file_.is_record ? i : i % columns;
+    if (unit % size == rank && !resume_.cells.count(i)) ++share_cells_;
+  }
+}
+
+SpectrumSession::~SpectrumSession() = default;
+
+void SpectrumSession::run(const study::RunOptions& options) {
+  study::RunOptions o = options;
+  o.rank = transport_.rank();
+  o.ranks = transport_.size();
+  if (file_.is_record) {
+    study::compute_record_spectrum(body_, file_.record, o, &resume_);
+  } else {
+    study::compute_spectrum(body_, file_.pulse, o, &resume_);
+  }
+}
+
+study::SpectrumResult SpectrumSession::finish(const std::atomic<bool>* cancel) {
+  const std::map<std::size_t, std::string>& lines = journal_.gather();
+  if (!transport_.root()) {
+    journal_.finish(false);
+    return {};
+  }
+  const double g = body_.g();
+  const bool normalized = file_.pulse.normalized || file_.is_record;
+  const std::size_t n = cells();
+  // every cell as data, read back from its line
+  study::SpectrumResult res = grid_;
+  for (std::size_t i = 0; i < n; ++i) {
+    res.cells[i] = read_spectrum_cell(grid_, i, lines.at(i), g);
+    res.cells[i].computed = true;
+  }
+  // a record spectrum spread over processes: the bisection here, from every cell's outcome
+  if (file_.is_record && bisect_ && !lines.count(n)) {
+    const study::OverturnBoundary b =
+        study::record_boundary(body_, file_.record, res.cells, cancel);
+    if (!b.computed) {
+      journal_.finish(false);
+      return {};
+    }
+    journal_.append_on_root(n, boundary_row(grid_, b, true, g));
+  }
+  FLEXROCK_DEMAND(lines.size() == runs());
+  for (std::size_t j = 0; j < res.boundary.size(); ++j) {
+    res.boundary[j] = read_boundary(grid_, j, lines.at(n + j), normalized, g);
+  }
+  try {
+    // the boundary is written last and an old one removed first: a boundary file on disk is
+    // from the same run as the cells beside it
+    if (bisect_ && ::unlink(boundary_output_.c_str()) != 0 && errno != ENOENT) {
+      throw std::runtime_error("cannot remove the old " + boundary_output_ + ": " +
+                               std::strerror(errno));
+    }
+    write_atomically(output_, [&](std::ostream& out) {
+      out << join_columns(spectrum_columns(res.sliding)) << '\n';
+      for (const study::SpectrumCell& c : res.cells) out << spectrum_row(res, c, g) << '\n';
+    });
+    if (bisect_) {
+      write_atomically(boundary_output_, [&](std::ostream& out) {
+        out << join_columns(boundary_columns()) << '\n';
+        for (const study::OverturnBoundary& b : res.boundary) {
+          out << boundary_row(res, b, normalized, g) << '\n';
+        }
+      });
+    }
+  } catch (...) {
+    journal_.finish(false);
+    throw;
+  }
+  journal_.finish(true);
+  return res;
 }
 
 std::vector<study::SweepRow> read_sweep_csv(const study::SweepSpec& spec, const std::string& path) {

@@ -292,7 +292,19 @@ TEST_F(StudyFiles, SpectrumJournalLinesMustBeThoseOfTheirCell) {
     EXPECT_EQ(check(res.cells.size() + j, line), "") << line;
     EXPECT_NE(check(res.cells.size() + 1 - j, line), "");  // the other column's
     EXPECT_NE(check(j, line), "");                         // not a cell
+    // read back as data: what the bisection found, which writes the same line
+    const study::OverturnBoundary back = read_boundary(grid, j, line, true, g);
+    EXPECT_EQ(back.kind, res.boundary[j].kind);
+    EXPECT_EQ(back.bisection_runs, res.boundary[j].bisection_runs);
+    if (back.kind != study::OverturnBoundary::Kind::kNone) {
+      EXPECT_EQ(back.overturning, res.boundary[j].overturning);
+      EXPECT_EQ(back.mode, res.boundary[j].mode);
+    }
+    EXPECT_EQ(boundary_row(res, back, true, g), line);
   }
+  test::expect_input_error(
+      [&] { read_boundary(grid, 0, boundary_row(res, res.boundary[1], true, g), true, g); },
+      {"field"});
   std::string cell = spectrum_row(res, res.cells[0], g);
   cell.replace(cell.find(",no_uplift,0,"), 13, ",no_uplift,1,");
   EXPECT_NE(check(0, cell), "");

@@ -146,6 +146,10 @@ study::SweepRow read_sweep_row(const study::SweepSpec& spec, std::size_t index,
 /// cell with its run read back from the line (spectrum_row).
 study::SpectrumCell read_spectrum_cell(const study::SpectrumResult& grid, std::size_t index,
                                        const std::string& line, double g);
+/// The boundary of a column read back from its line (boundary_row; `normalized` and `g` as
+/// there): what the bisection found, with computed = true. Reals written empty read back as NaN.
+study::OverturnBoundary read_boundary(const study::SpectrumResult& grid, std::size_t column,
+                                      const std::string& line, bool normalized, double g);
 
 // ---------------------------------------------------------------------------------------------
 // fragility input

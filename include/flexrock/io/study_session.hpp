@@ -6,6 +6,7 @@
 // default; the command line implements it with MPI.
 #pragma once
 
+#include <atomic>
 #include <cstddef>
 #include <cstdint>
 #include <map>
@@ -15,7 +16,9 @@
 
 #include "flexrock/io/journal.hpp"
 #include "flexrock/io/study_files.hpp"
+#include "flexrock/model/body.hpp"
 #include "flexrock/study/parallel.hpp"
+#include "flexrock/study/spectrum.hpp"
 #include "flexrock/study/sweep.hpp"
 
 namespace flexrock::io {
@@ -127,6 +130,59 @@ class SweepSession {
   StudyJournal journal_;
   std::vector<std::size_t> share_;
   std::map<std::size_t, study::SweepRow> rows_;  // computed here
+};
+
+/// A spectrum from its spec file to its CSVs: the cells CSV `output` and, when it bisects, the
+/// boundary CSV `boundary_output`, written once every cell and boundary is finished; the finished
+/// ones are kept in the journal `output`.partial (cells by index, then one boundary per column)
+/// and a session opened on the same spec, bisection and output goes on from there, with the same
+/// bytes on any number of threads and processes.
+class SpectrumSession {
+ public:
+  /// Builds the grid, checking every run it makes (study::spectrum_grid), and that no input is
+  /// an output, then opens the journal. `file.pulse.bisect` / `file.record.bisect` say whether it
+  /// bisects (`boundary_output` is unused when not). Throws InputError as SweepSession does.
+  SpectrumSession(SpectrumFile file, std::string output, std::string boundary_output,
+                  const StudyTransport& transport = single_process());
+  ~SpectrumSession();
+  SpectrumSession(const SpectrumSession&) = delete;
+  SpectrumSession& operator=(const SpectrumSession&) = delete;
+
+  const SpectrumFile& file() const { return file_; }
+  const Body& body() const { return body_; }
+  bool bisect() const { return bisect_; }
+  /// The grid with nothing run: alpha, p, every cell's amplitudes, the boundary slots.
+  const study::SpectrumResult& grid() const { return grid_; }
+  std::size_t cells() const { return grid_.cells.size(); }
+  /// Cells and boundaries (the journal's runs).
+  std::size_t runs() const { return grid_.cells.size() + grid_.boundary.size(); }
+  std::size_t resumed() const { return journal_.known().size(); }
+  /// Cells left to this process (its share of the columns, or of a record's rows).
+  std::size_t share_cells() const { return share_cells_; }
+  const std::string& journal_path() const { return journal_.path(); }
+
+  /// Runs this process's share (study::compute_spectrum or compute_record_spectrum with the
+  /// journal as its resume), journaling each cell and boundary as it finishes. A stop request
+  /// (options.cancel) ends it between runs.
+  void run(const study::RunOptions& options);
+  /// After run() on every process, when none was stopped: gathers the lines on rank 0, bisects
+  /// a record spectrum run by several processes there (`cancel` stops it: then nothing is
+  /// written, the journals stay and the result has no cells), writes the CSVs (the boundary
+  /// last, an old one removed first) and deletes the journals. Returns the whole result on rank
+  /// 0, every cell and boundary read back as data (empty on the others). Throws
+  /// std::runtime_error when an output cannot be written (the journals are kept).
+  study::SpectrumResult finish(const std::atomic<bool>* cancel = nullptr);
+
+ private:
+  SpectrumFile file_;
+  Body body_;
+  std::string output_, boundary_output_;
+  const StudyTransport& transport_;
+  bool bisect_ = true;
+  study::SpectrumResult grid_;
+  StudyJournal journal_;
+  study::SpectrumResume resume_;
+  std::size_t share_cells_ = 0;
 };
 
 /// A sweep CSV read back as rows through the sweep's columns (read_sweep_row for every line):
