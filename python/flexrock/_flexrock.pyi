@@ -1133,6 +1133,8 @@ class UncertainKind:
     restitution_factor: ClassVar[UncertainKind]
     restitution_ratio: ClassVar[UncertainKind]
     size_scale: ClassVar[UncertainKind]
+    base_width_scale: ClassVar[UncertainKind]
+    cg_height_scale: ClassVar[UncertainKind]
     mass_scale: ClassVar[UncertainKind]
     frequency_scale: ClassVar[UncertainKind]
     damping_ratio: ClassVar[UncertainKind]

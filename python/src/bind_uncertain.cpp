@@ -94,6 +94,8 @@ void bind_uncertain(py::module_& m) {
       .value("restitution_factor", UncertainKind::kRestitutionFactor)
       .value("restitution_ratio", UncertainKind::kRestitutionRatio)
       .value("size_scale", UncertainKind::kSizeScale)
+      .value("base_width_scale", UncertainKind::kBaseWidthScale)
+      .value("cg_height_scale", UncertainKind::kCgHeightScale)
       .value("mass_scale", UncertainKind::kMassScale)
       .value("frequency_scale", UncertainKind::kFrequencyScale)
       .value("damping_ratio", UncertainKind::kDampingRatio);

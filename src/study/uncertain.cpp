@@ -39,6 +39,14 @@ const std::vector<UncertainKindInfo>& uncertain_kinds() {
       {UncertainKind::kSizeScale, "size_scale", "size_scale", "-", 0.0, true, kInf, true, "> 0",
        "every length of the body times s (c.g. height, base distances, mode shapes): the same "
        "shape, mass and modal frequencies; rocking frequency p / sqrt(s)"},
+      {UncertainKind::kBaseWidthScale, "base_width_scale", "base_width_scale", "-", 0.0, true, kInf,
+       true, "> 0",
+       "the distances b1, b2 from the c.g. to the tipping points times s, the mass and its "
+       "distribution held (a body on feet or a plinth of uncertain width; rigid bodies only)"},
+      {UncertainKind::kCgHeightScale, "cg_height_scale", "cg_height_scale", "-", 0.0, true, kInf,
+       true, "> 0",
+       "the c.g. height h times s, the rotary inertia about the c.g. held (uncertain contents; "
+       "rigid bodies only)"},
       {UncertainKind::kMassScale, "mass_scale", "mass_scale", "-", 0.0, true, kInf, true, "> 0",
        "the mass times s, spread as before, stiffness held: modal frequencies / sqrt(s); modal "
        "damping ratios and Rayleigh coefficients held (a rigid body: energies and impulses "
@@ -278,7 +286,8 @@ std::vector<double> SampleDesign::values(std::size_t i) const {
 
 bool changes_body(UncertainKind kind) {
   return kind == UncertainKind::kSizeScale || kind == UncertainKind::kMassScale ||
-         kind == UncertainKind::kFrequencyScale || kind == UncertainKind::kDampingRatio;
+         kind == UncertainKind::kFrequencyScale || kind == UncertainKind::kDampingRatio ||
+         kind == UncertainKind::kBaseWidthScale || kind == UncertainKind::kCgHeightScale;
 }
 
 BodyParameters apply(const Uncertainty& u, const std::vector<double>& values, BodyParameters b) {
@@ -316,6 +325,25 @@ BodyParameters apply(const Uncertainty& u, const std::vector<double>& values, Bo
                 ": the body has Rayleigh damping; expected a body with modal or no damping");
         b.damping.kind = DampingKind::kModal;
         b.damping.modal_ratios = VectorX::Constant(modes, s);
+        break;
+      case UncertainKind::kBaseWidthScale:
+        // pinned-base modes vanish at the tipping points: moving them changes the modes
+        FLEXROCK_THROW_UNLESS(modes == 0, "uncertain " + name + ": the body has modes (" +
+                                              std::to_string(modes) +
+                                              "), whose pinned-base shapes are tied to its "
+                                              "tipping points; expected a rigid body");
+        b.b1 *= s;
+        b.b2 *= s;
+        break;
+      case UncertainKind::kCgHeightScale:
+        // every modal integral is over h: a body with modes would need its shapes again
+        FLEXROCK_THROW_UNLESS(modes == 0, "uncertain " + name + ": the body has modes (" +
+                                              std::to_string(modes) +
+                                              "), whose integrals are taken about its c.g.; "
+                                              "expected a rigid body");
+        // zeta2 = I_cg / (M h^2) with I_cg held
+        b.height *= s;
+        b.zeta2 /= s * s;
         break;
       default:
         break;

@@ -138,6 +138,43 @@ manifest '' >"$WORK/plain.toml"
 run "$FLEXROCK" sweep "$WORK/plain.toml" -o "$WORK/plain.csv" -j 2 -q
 expect_rc 0 "default sampling"
 
+# a rigid block: its base width and c.g. height
+cat >"$WORK/rigid.toml" <<'TOML'
+[body]
+type = "rigid_block"
+width = 0.4
+height = 2.0
+mass = 1000.0
+TOML
+cat >"$WORK/geometry.toml" <<TOML
+[[body]]
+file = "rigid.toml"
+[[record]]
+file = "$DATA/elcentro_1940_ns.dat"
+format = "single_column"
+dt = 0.02
+units = "g"
+[scales]
+target_pga = [0.1, 0.2, 0.3, 0.4]
+[[uncertain]]
+parameter = "base_width_scale"
+distribution = "uniform"
+minimum = 0.8
+maximum = 1.2
+[[uncertain]]
+parameter = "cg_height_scale"
+distribution = "normal"
+mean = 1.0
+standard_deviation = 0.1
+lower = 0.7
+upper = 1.3
+TOML
+run "$FLEXROCK" sweep "$WORK/geometry.toml" -o "$WORK/g1.csv" -j 1 -q
+expect_rc 0 "geometry, 1 thread"
+expect_in "$WORK/g1.csv" "pgv_m_per_s,base_width_scale,cg_height_scale,duration_s"
+run "$FLEXROCK" sweep "$WORK/geometry.toml" -o "$WORK/g2.csv" -j 2 -q
+cmp "$WORK/g1.csv" "$WORK/g2.csv" || fail "geometry: 1 and 2 threads differ"
+
 # bad input: exit 2, file:line: key, what is right, no output
 bad() {  # $1 file name, $2.. fragments expected in the message
   local f="$1"

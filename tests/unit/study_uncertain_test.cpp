@@ -303,6 +303,31 @@ TEST(Uncertain, SizeScaleKeepsModesAndSlowsRocking) {
   EXPECT_EQ(after.params().mass, tank.mass);
 }
 
+// a rigid body about its pivot: p^2 = M g R / I_O, R the pivot to c.g. distance, I_O = I_cg + M R^2
+double pivot_frequency(double mass, double inertia_cg, double b, double h) {
+  const double r = std::hypot(b, h);
+  return std::sqrt(mass * kStandardGravity * r / (inertia_cg + mass * r * r));
+}
+
+TEST(Uncertain, BaseWidthAndCgHeightMoveThePivotAndHoldTheInertia) {
+  // a 1 m x 4 m block of 800 kg: I_cg = M (w^2 + H^2) / 12
+  const double mass = 800.0, inertia = mass * (1.0 + 16.0) / 12.0;
+  const BodyParameters block = rigid_block(1.0, 4.0, mass);
+  Uncertainty u;
+  u.parameters = {{UncertainKind::kBaseWidthScale, Distribution::kUniform, 0.5, 2.0}};
+  const Body wide(apply(u, {1.3}, block));
+  EXPECT_NEAR(wide.tipping_angle(1), std::atan(1.3 * 0.5 / 2.0), 1e-14);
+  EXPECT_NEAR(wide.rocking_frequency(), pivot_frequency(mass, inertia, 1.3 * 0.5, 2.0), 1e-12);
+  u.parameters = {{UncertainKind::kCgHeightScale, Distribution::kUniform, 0.5, 2.0}};
+  const Body tall(apply(u, {0.8}, block));
+  EXPECT_NEAR(tall.tipping_angle(2), std::atan(0.5 / (0.8 * 2.0)), 1e-14);
+  EXPECT_NEAR(tall.rocking_frequency(), pivot_frequency(mass, inertia, 0.5, 0.8 * 2.0), 1e-12);
+  // a body with modes: refused, its pinned-base modes are tied to the pivots and the c.g.
+  test::expect_input_error(
+      [&] { apply(u, {0.8}, oscillator_on_slab(800.0, 3.0, 400.0, 2.0, 1.0, 0.02)); },
+      {"cg_height_scale", "has modes (1)", "expected a rigid body"});
+}
+
 TEST(Uncertain, MassFrequencyAndDampingActOnTheModes) {
   const BodyParameters tank = oscillator_on_slab(800.0, 3.0, 400.0, 2.0, 1.0, 0.02);
   const Body before(tank);

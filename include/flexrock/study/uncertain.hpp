@@ -27,6 +27,8 @@ enum class UncertainKind {
   kMassScale,          // M x s, stiffness held: modal frequencies x 1/sqrt(s) [-]
   kFrequencyScale,     // every pinned-base modal frequency x s (stiffness x s^2) [-]
   kDampingRatio,       // the damping ratio of every pinned-base mode [-]
+  kBaseWidthScale,     // rigid: b1, b2 x s, the mass and its distribution held [-]
+  kCgHeightScale,      // rigid: h x s, the rotary inertia about the c.g. held [-]
 };
 
 /// One entry of the table of uncertain parameters: its name in a manifest, its CSV column, the
@@ -133,12 +135,13 @@ class SampleDesign {
   std::vector<std::vector<std::uint32_t>> strata_;  // Latin hypercube: per parameter, per sample
 };
 
-/// True if a kind changes the body (size, mass, frequencies, damping), not the solver options.
+/// True if a kind changes the body (geometry, mass, frequencies, damping), not the solver
+/// options.
 bool changes_body(UncertainKind kind);
 
 /// `body` with the values of the body-changing parameters applied. Throws InputError when a
 /// parameter cannot apply to it (modal frequencies or damping of a rigid body, a damping ratio
-/// for a body with Rayleigh damping).
+/// for a body with Rayleigh damping, the base width or c.g. height of a body with modes).
 BodyParameters apply(const Uncertainty& u, const std::vector<double>& values, BodyParameters body);
 /// `o` with the values of friction and restitution applied: friction sets the static coefficient
 /// and scales a finite kinetic one with it (their ratio kept); restitution_ratio sets both edges.
