@@ -1498,16 +1498,20 @@ study::SweepRow read_sweep_row(const study::SweepSpec& spec, std::size_t index,
   row.scale_index = index % scales;
   row.record = (index / scales) % records;
   row.body = index / (scales * records);
-  const std::vector<ColumnInfo> info = sweep_column_info(spec);
+  // the column names only for messages: a resume reads every journaled line through here
+  const std::size_t columns = std::size(kSweepColumns) + spec.measures.size() +
+                              spec.uncertainty.parameters.size() +
+                              (study::has_friction(spec) ? std::size(kSlidingColumns) : 0);
   const std::vector<std::string_view> f = fields_of(line);
-  FLEXROCK_THROW_UNLESS(f.size() == info.size(), std::to_string(f.size()) + " fields, expected " +
-                                                     std::to_string(info.size()));
+  FLEXROCK_THROW_UNLESS(f.size() == columns,
+                        std::to_string(f.size()) + " fields, expected " + std::to_string(columns));
   std::size_t k = 0;
   auto next = [&](ColumnType type) {
     try {
       return parse_field(f[k], type);
     } catch (const InputError& e) {
-      throw InputError("field " + std::to_string(k + 1) + " (" + info[k].name + "): " + e.what());
+      throw InputError("field " + std::to_string(k + 1) + " (" + sweep_columns(spec).at(k) +
+                       "): " + e.what());
     }
   };
   for (const SweepColumn& col : kSweepColumns) {
@@ -1532,11 +1536,7 @@ study::SweepRow read_sweep_row(const study::SweepSpec& spec, std::size_t index,
   // what the row writes must be the line: the fields that follow from others agree with them,
   // and the final file written from the rows is the bytes the runs wrote
   const std::string again = sweep_row(spec, row);
-  if (again != line) {
-    std::vector<std::string> names;
-    for (const ColumnInfo& c : info) names.push_back(c.name);
-    throw InputError(first_difference(names, line, again));
-  }
+  if (again != line) throw InputError(first_difference(sweep_columns(spec), line, again));
   return row;
 }
 

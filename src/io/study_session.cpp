@@ -165,13 +165,14 @@ std::size_t checked_runs(const SweepManifest& m, const std::string& output) {
 }
 
 // a journal line must be its run's CSV line (sweep_journal_check, which says what is wrong in
-// the journal's words) and read back as that run's row
-JournalCheck sweep_rows_check(const study::SweepSpec& spec) {
+// the journal's words) and read back as that run's row, kept in `rows` (read once)
+JournalCheck sweep_rows_check(const study::SweepSpec& spec,
+                              std::map<std::size_t, study::SweepRow>& rows) {
   JournalCheck lines = sweep_journal_check(spec);
-  return [&spec, lines](std::size_t index, const std::string& line) -> std::string {
+  return [&spec, &rows, lines](std::size_t index, const std::string& line) -> std::string {
     if (std::string why = lines(index, line); !why.empty()) return why;
     try {
-      read_sweep_row(spec, index, line);
+      rows[index] = read_sweep_row(spec, index, line);
     } catch (const InputError& e) {
       return e.what();
     }
@@ -188,7 +189,7 @@ SweepSession::SweepSession(SweepManifest manifest, std::string output,
       transport_(transport),
       runs_(checked_runs(manifest_, output_)),
       journal_(transport, output_ + ".partial", "sweep", manifest_.hash, runs_,
-               sweep_rows_check(manifest_.spec)) {
+               sweep_rows_check(manifest_.spec, rows_)) {
   std::vector<std::size_t> left;
   for (std::size_t i = 0; i < runs_; ++i) {
     if (!journal_.known().count(i)) left.push_back(i);
@@ -220,8 +221,8 @@ std::vector<study::SweepRow> SweepSession::finish() {
     return {};
   }
   FLEXROCK_DEMAND(lines.size() == runs_);
-  // every row as data: those computed here as they are, the others (resumed, or from other
-  // processes) read back from their lines
+  // every row as data: those computed here or read when the journal was checked as they are,
+  // the others (from other processes) read back from their lines
   std::vector<study::SweepRow> rows;
   rows.reserve(runs_);
   try {

@@ -126,10 +126,11 @@ class SweepSession {
   SweepManifest manifest_;
   std::string output_;
   const StudyTransport& transport_;
+  // rows computed here or read back from the journal (by the journal's check: before journal_)
+  std::map<std::size_t, study::SweepRow> rows_;
   std::size_t runs_ = 0;
   StudyJournal journal_;
   std::vector<std::size_t> share_;
-  std::map<std::size_t, study::SweepRow> rows_;  // computed here
 };
 
 /// A spectrum from its spec file to its CSVs: the cells CSV `output` and, when it bisects, the
