@@ -343,51 +343,53 @@ study::SpectrumResult SpectrumSession::finish(const std::atomic<bool>* cancel) {
   const double g = body_.g();
   const bool normalized = file_.pulse.normalized || file_.is_record;
   const std::size_t n = cells();
-  // every cell as data, read back from its line
   study::SpectrumResult res = grid_;
-  for (std::size_t i = 0; i < n; ++i) {
-    res.cells[i] = read_spectrum_cell(grid_, i, lines.at(i), g);
-    res.cells[i].computed = true;
-  }
-  // a record spectrum spread over processes: the bisection here, from every cell's outcome
-  if (file_.is_record && bisect_ && !lines.count(n)) {
-    const study::OverturnBoundary b =
-        study::record_boundary(body_, file_.record, res.cells, cancel);
-    if (!b.computed) {
-      journal_.finish(false);
-      return {};
-    }
-    journal_.append_on_root(n, boundary_row(grid_, b, true, g));
-  }
-  FLEXROCK_DEMAND(lines.size() == runs());
-  for (std::size_t j = 0; j < res.boundary.size(); ++j) {
-    res.boundary[j] = read_boundary(grid_, j, lines.at(n + j), normalized, g);
-  }
+  bool stopped = false;
+  // whatever fails here, every process still makes the journal's last collective call
   try {
-    // the boundary is written last and an old one removed first: a boundary file on disk is
-    // from the same run as the cells beside it
-    if (bisect_ && ::unlink(boundary_output_.c_str()) != 0 && errno != ENOENT) {
-      throw std::runtime_error("cannot remove the old " + boundary_output_ + ": " +
-                               std::strerror(errno));
+    // every cell as data, read back from its line
+    for (std::size_t i = 0; i < n; ++i) {
+      res.cells[i] = read_spectrum_cell(grid_, i, lines.at(i), g);
+      res.cells[i].computed = true;
     }
-    write_atomically(output_, [&](std::ostream& out) {
-      out << join_columns(spectrum_columns(res.sliding)) << '\n';
-      for (const study::SpectrumCell& c : res.cells) out << spectrum_row(res, c, g) << '\n';
-    });
-    if (bisect_) {
-      write_atomically(boundary_output_, [&](std::ostream& out) {
-        out << join_columns(boundary_columns()) << '\n';
-        for (const study::OverturnBoundary& b : res.boundary) {
-          out << boundary_row(res, b, normalized, g) << '\n';
-        }
+    // a record spectrum spread over processes: the bisection here, from every cell's outcome
+    if (file_.is_record && bisect_ && !lines.count(n)) {
+      const study::OverturnBoundary b =
+          study::record_boundary(body_, file_.record, res.cells, cancel);
+      stopped = !b.computed;
+      if (!stopped) journal_.append_on_root(n, boundary_row(grid_, b, true, g));
+    }
+    if (!stopped) {
+      FLEXROCK_DEMAND(lines.size() == runs());
+      for (std::size_t j = 0; j < res.boundary.size(); ++j) {
+        res.boundary[j] = read_boundary(grid_, j, lines.at(n + j), normalized, g);
+      }
+      // the boundary is written last and an old one removed first: a boundary file on disk is
+      // from the same run as the cells beside it
+      if (bisect_ && ::unlink(boundary_output_.c_str()) != 0 && errno != ENOENT) {
+        throw std::runtime_error("cannot remove the old " + boundary_output_ + ": " +
+                                 std::strerror(errno));
+      }
+      write_atomically(output_, [&](std::ostream& out) {
+        out << join_columns(spectrum_columns(res.sliding)) << '\n';
+        for (const study::SpectrumCell& c : res.cells) out << spectrum_row(res, c, g) << '\n';
       });
+      if (bisect_) {
+        write_atomically(boundary_output_, [&](std::ostream& out) {
+          out << join_columns(boundary_columns()) << '\n';
+          for (const study::OverturnBoundary& b : res.boundary) {
+            out << boundary_row(res, b, normalized, g) << '\n';
+          }
+        });
+      }
     }
   } catch (...) {
     journal_.finish(false);
     throw;
   }
-  journal_.finish(true);
-  return res;
+  journal_.finish(!stopped);
+  // a stopped bisection: nothing written, the journal stays for the next start
+  return stopped ? study::SpectrumResult{} : res;
 }
 
 std::vector<study::SweepRow> read_sweep_csv(const study::SweepSpec& spec, const std::string& path) {
