@@ -22,6 +22,7 @@ flexrock_apply_sanitizers(flexrock_sympy_tests)
 gtest_discover_tests(flexrock_sympy_tests PROPERTIES LABELS unit FIXTURES_REQUIRED sympy_reference)
 flexrock_add_test(flexrock_sim_tests SOURCES unit/simulate_test.cpp LABEL unit)
 flexrock_add_test(flexrock_impact_law_tests SOURCES unit/impact_law_test.cpp LABEL unit)
+flexrock_add_test(flexrock_compliant_tests SOURCES unit/compliant_test.cpp LABEL unit)
 flexrock_add_test(flexrock_step_cost_tests SOURCES unit/step_cost_test.cpp LABEL unit)
 # replaces global operator new to count allocations: its own executable
 flexrock_add_test(flexrock_allocation_tests SOURCES unit/no_allocation_test.cpp LABEL unit)

@@ -110,7 +110,13 @@ void print_summary(const io::Case& c, const Body& body, const SimulationResult& 
     fmt::print("overturning: none\n");
   }
   fmt::print("impacts: {} (chatter cut-offs {})\n", x.impacts, x.chatter_cutoffs);
-  if (x.impacts > 0) {
+  if (c.options.contact_model == ContactModel::kCompliant) {
+    fmt::print(
+        "compliant contact: {} springs of {:.4g} N/m^{:g} at the tipping points; largest corner "
+        "force {:.4g} N (resolved), largest impact impulse {:.4g} N s\n",
+        to_string(c.options.contact_force_law), c.options.contact_stiffness,
+        c.options.contact_exponent, x.max_contact_force, x.max_impulse);
+  } else if (x.impacts > 0) {
     fmt::print(
         "impact law: {}; largest vertical impulse {:.4g} N s, largest force estimate {:.4g} N "
         "(a half-sine contact of an assumed {:.3g} ms: impact_duration)\n",
@@ -446,11 +452,23 @@ int cmd_params(const std::string& file) {
   }
   // the impact regime: the contact duration against the modal periods (theory §21)
   if (n > 0) {
-    const ImpactRegime reg = impact_regime(body.natural_frequencies(), opt.impact_duration);
+    // the compliant contact's own duration: half the period of the body bouncing on both springs
+    // (their secant stiffness under the weight for hunt_crossley)
+    const bool compliant = opt.contact_model == ContactModel::kCompliant;
+    double duration = opt.impact_duration;
+    if (compliant) {
+      const double mg = p.mass * p.gravity;
+      const double k =
+          0.5 * mg / std::pow(0.5 * mg / opt.contact_stiffness, 1.0 / opt.contact_exponent);
+      duration = std::numbers::pi / std::sqrt(2.0 * k / p.mass);
+    }
+    const ImpactRegime reg = impact_regime(body.natural_frequencies(), duration);
     fmt::print(
-        "impact regime (docs/theory.md §21): an assumed contact of {:.3g} ms (impact_duration) "
+        "impact regime (docs/theory.md §21): {} of {:.3g} ms ({}) "
         "lasts {:.3g} x the shortest modal period, {:.3g} x the longest\n",
-        1e3 * opt.impact_duration, reg.duration_over_fastest, reg.duration_over_slowest);
+        compliant ? "the compliant contact's half bounce period" : "an assumed contact",
+        1e3 * duration, compliant ? "contact_stiffness" : "impact_duration",
+        reg.duration_over_fastest, reg.duration_over_slowest);
     fmt::print(
         "  {}; closest impulsive law: {} (this run: {})\n",
         reg.between ? "some modes are neither much slower nor much faster than the contact: "
@@ -458,7 +476,7 @@ int cmd_params(const std::string& file) {
         : reg.closest == ImpactLaw::kPaper
             ? "every mode is much slower than the contact: the modes cannot respond during it"
             : "every mode is much faster than the contact: the body is rigid during it",
-        to_string(reg.closest), to_string(opt.impact_law));
+        to_string(reg.closest), compliant ? "compliant" : to_string(opt.impact_law));
   }
   // a case file: its duration and max_steps too; a body file: the rate alone
   if (!io::has_excitation(file)) {

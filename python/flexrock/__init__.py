@@ -29,6 +29,8 @@ from ._flexrock import (  # noqa: F401  (re-exported API)
     BodyParameters,
     Case,
     Component,
+    ContactForceLaw,
+    ContactModel,
     Damping,
     DampingKind,
     EnergyBalance,
@@ -607,6 +609,11 @@ def _options(options: Optional[SimulationOptions], kwargs: dict) -> SimulationOp
             if value not in ImpactLaw.__members__:
                 raise InputError(f"simulate: impact_law {value!r} is not one of {', '.join(ImpactLaw.__members__)}")
             value = ImpactLaw.__members__[value]
+        for name, enum in (("contact_model", ContactModel), ("contact_force_law", ContactForceLaw)):
+            if key == name and isinstance(value, str):
+                if value not in enum.__members__:
+                    raise InputError(f"simulate: {name} {value!r} is not one of {', '.join(enum.__members__)}")
+                value = enum.__members__[value]
         setattr(options, key, value)
     return options
 

@@ -73,6 +73,13 @@ void bind_sim(py::module_& m) {
     // the impact laws, from the engine's table
     py::enum_<ImpactLaw> laws(m, "ImpactLaw", "How impacts and landings are resolved.");
     for (const ImpactLawInfo& l : kImpactLaws) laws.value(l.name, l.law, l.description);
+    // the contact models and the compliant contact's force laws, from the engine's tables
+    py::enum_<ContactModel> models(m, "ContactModel", "How the floor acts on the body.");
+    for (const ContactModelInfo& c : kContactModels) models.value(c.name, c.model, c.description);
+    py::enum_<ContactForceLaw> forces(m, "ContactForceLaw",
+                                      "The normal force law of the compliant contact.");
+    for (const ContactForceLawInfo& f : kContactForceLaws)
+      forces.value(f.name, f.law, f.description);
   }
   py::enum_<OverturnCriterion>(m, "OverturnCriterion")
       .value("static_instability", OverturnCriterion::kStaticInstability)
@@ -114,7 +121,23 @@ void bind_sim(py::module_& m) {
                      &SimulationOptions::kinetic_friction_coefficient,
                      "kinetic coefficient mu_k <= mu_s while sliding; inf: equal to mu_s")
       .def_readwrite("max_steps", &SimulationOptions::max_steps)
-      .def_readwrite("max_impacts", &SimulationOptions::max_impacts);
+      .def_readwrite("max_impacts", &SimulationOptions::max_impacts)
+      .def_readwrite("contact_model", &SimulationOptions::contact_model,
+                     "impulsive (a rigid floor) or compliant (spring-dashpots at the corners)")
+      .def_readwrite("contact_force_law", &SimulationOptions::contact_force_law,
+                     "compliant: linear or hunt_crossley")
+      .def_readwrite("contact_stiffness", &SimulationOptions::contact_stiffness,
+                     "[N/m^p] compliant: the spring of each tipping point")
+      .def_readwrite("contact_exponent", &SimulationOptions::contact_exponent,
+                     "hunt_crossley: p in F ~ delta^p")
+      .def_readwrite("contact_damping_ratio", &SimulationOptions::contact_damping_ratio,
+                     "linear: the dashpot as a damping ratio of the body on both springs")
+      .def_readwrite("contact_restitution", &SimulationOptions::contact_restitution,
+                     "restitution of a free bounce (linear: sets the damping; hunt_crossley: "
+                     "required); < 0: not given")
+      .def_readwrite("contact_tangential_stiffness",
+                     &SimulationOptions::contact_tangential_stiffness,
+                     "[N/m] a sticking corner's horizontal spring; 0: the normal secant stiffness");
 
   py::class_<Event>(m, "Event", "Something that happened; fields not meaningful are zero.")
       .def_readonly("time", &Event::time)
@@ -129,7 +152,7 @@ void bind_sim(py::module_& m) {
       .def_readonly("friction_demand", &Event::friction_demand)
       .def_readonly("offset", &Event::offset, "[m] horizontal offset of the base centre")
       .def_readonly("force_estimate", &Event::force_estimate,
-                    "[N] pi |impulse| / (2 impact_duration)")
+                    "[N] pi |impulse| / (2 impact_duration); compliant: the resolved peak")
       .def("__repr__", [](const Event& e) {
         return "<Event " + std::string(to_string(e.kind)) + " t=" + std::to_string(e.time) + ">";
       });
@@ -183,6 +206,8 @@ void bind_sim(py::module_& m) {
       .def_readonly("slips", &Extremes::slips, "times sliding started")
       .def_readonly("max_impact_force", &Extremes::max_impact_force,
                     "[N] largest impact force estimate (impact_duration)")
+      .def_readonly("max_contact_force", &Extremes::max_contact_force,
+                    "[N] compliant contact: the largest normal force of a tipping point")
       .def_readonly("impact_law_fallbacks", &Extremes::impact_law_fallbacks,
                     "impacts where the chosen law would have added energy (impact_law_fallback)");
 

@@ -503,7 +503,8 @@ const EventColumn kEventColumns[] = {
      [](const Event& e) { return e.friction_demand; }, nullptr},
     {"force_estimate_N", "N",
      "impacts: the peak force of a half-sine contact of the assumed `impact_duration` carrying the "
-     "impulse, pi \\|impulse\\| / (2 impact_duration)",
+     "impulse, pi \\|impulse\\| / (2 impact_duration); with the compliant contact, the resolved "
+     "peak normal force of the touching tipping point until it leaves the floor",
      [](const Event& e) { return e.force_estimate; }, nullptr},
 };
 
@@ -679,6 +680,18 @@ std::string summary_json(const Case& c, const Body& body, const SimulationResult
   if (std::isfinite(o.friction_coefficient))
     j["solver"]["kinetic_friction_coefficient"] =
         std::min(o.friction_coefficient, o.kinetic_friction_coefficient);
+  if (o.contact_model == ContactModel::kCompliant) {
+    // only with the compliant contact, so that an impulsive run writes what it always did
+    j["contact"] = {
+        {"model", to_string(o.contact_model)},
+        {"force_law", to_string(o.contact_force_law)},
+        {"stiffness", o.contact_stiffness},
+        {"exponent", o.contact_exponent},
+        {"damping_ratio", o.contact_damping_ratio},
+        {"restitution", o.contact_restitution < 0.0 ? json() : json(o.contact_restitution)},
+        {"tangential_stiffness_N_per_m", o.contact_tangential_stiffness},
+        {"max_contact_force_N", x.max_contact_force}};
+  }
   auto jpath = [](const std::string& s) { return s.empty() ? json() : json(s); };
   j["outputs"] = {{"time_history", jpath(paths.time_history)},
                   {"summary", jpath(paths.summary)},

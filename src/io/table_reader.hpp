@@ -275,6 +275,63 @@ class TableReader {
   std::set<std::string> known_;
 };
 
+// the compliant contact's keys of a [solver] table (docs/theory.md, "Compliant contact"); each
+// but contact_model needs contact_model = "compliant"
+inline void read_contact_keys(TableReader& r, SimulationOptions& o) {
+  std::vector<std::string> models;
+  for (const ContactModelInfo& m : kContactModels) models.emplace_back(m.name);
+  const std::string model = r.choice("contact_model", models, to_string(o.contact_model));
+  for (const ContactModelInfo& m : kContactModels)
+    if (model == m.name) o.contact_model = m.model;
+  const bool compliant = o.contact_model == ContactModel::kCompliant;
+  auto only_compliant = [&](const char* key) {
+    if (r.has(key) && !compliant)
+      r.expected(key, std::string("no ") + key +
+                          ": it applies to contact_model = \"compliant\" (contact_model is \"" +
+                          model + "\")");
+  };
+  for (const char* key :
+       {"contact_stiffness", "contact_force_law", "contact_exponent", "contact_damping_ratio",
+        "contact_restitution", "contact_tangential_stiffness"})
+    only_compliant(key);
+  if (!compliant) return;
+  if (!r.has("contact_stiffness"))
+    r.expected("contact_stiffness",
+               "the spring of each tipping point [N/m, or N/m^p with hunt_crossley] with "
+               "contact_model = \"compliant\", e.g. 1e8");
+  o.contact_stiffness = r.positive_or("contact_stiffness", o.contact_stiffness, "[N/m^p]");
+  std::vector<std::string> laws;
+  for (const ContactForceLawInfo& l : kContactForceLaws) laws.emplace_back(l.name);
+  const std::string law = r.choice("contact_force_law", laws, to_string(o.contact_force_law));
+  for (const ContactForceLawInfo& l : kContactForceLaws)
+    if (law == l.name) o.contact_force_law = l.law;
+  const bool hc = o.contact_force_law == ContactForceLaw::kHuntCrossley;
+  if (hc) o.contact_exponent = 1.5;
+  if (r.has("contact_exponent") && !hc)
+    r.expected("contact_exponent",
+               "no contact_exponent with contact_force_law = \"linear\" (p = 1; give "
+               "contact_force_law = \"hunt_crossley\" for another exponent)");
+  o.contact_exponent = r.positive_or("contact_exponent", o.contact_exponent, "[-]");
+  if (!(o.contact_exponent >= 1.0 && o.contact_exponent <= 3.0))
+    r.expected("contact_exponent", "a number in [1, 3] (1.5: Hertz)");
+  if (r.has("contact_damping_ratio") && (hc || r.has("contact_restitution")))
+    r.expected("contact_damping_ratio",
+               "either contact_damping_ratio or contact_restitution, not both, and no damping "
+               "ratio with hunt_crossley (its damping follows from contact_restitution)");
+  o.contact_damping_ratio =
+      r.nonnegative_or("contact_damping_ratio", o.contact_damping_ratio, "[-]");
+  const std::string rw = hc ? "a number in (0, 1] (the restitution of a free bounce)"
+                            : "a number in [0, 1] (the restitution of a free bounce)";
+  if (const auto e = r.number_opt("contact_restitution", rw)) {
+    if (!(*e <= 1.0 && (hc ? *e > 0.0 : *e >= 0.0))) r.expected("contact_restitution", rw);
+    o.contact_restitution = *e;
+  } else if (hc) {
+    r.expected("contact_restitution", rw + " with contact_force_law = \"hunt_crossley\"");
+  }
+  o.contact_tangential_stiffness =
+      r.nonnegative_or("contact_tangential_stiffness", o.contact_tangential_stiffness, "[N/m]");
+}
+
 // the solver keys of a [solver] table but t_end (case files and study files); the defaults are
 // those already in `o` (a study starts from overturning at pi/2)
 inline void read_solver_keys(TableReader& r, SimulationOptions& o) {
@@ -337,6 +394,7 @@ inline void read_solver_keys(TableReader& r, SimulationOptions& o) {
   }
   o.max_steps = r.integer_or("max_steps", o.max_steps, 1, "an integer >= 1");
   o.max_impacts = r.integer_or("max_impacts", o.max_impacts, 1, "an integer >= 1");
+  read_contact_keys(r, o);
 }
 
 // ---------------------------------------------------------------------------------------------

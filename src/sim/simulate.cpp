@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "automaton.hpp"
+#include "compliant.hpp"
 #include "flexrock/core/error.hpp"
 #include "flexrock/core/format.hpp"
 #include "simulator_instances.hpp"
@@ -126,6 +127,44 @@ void check_options(const Body& body, const InitialState& init, const SimulationO
                             std::to_string(o.kinetic_friction_coefficient) +
                             ") must not exceed the static friction_coefficient (" +
                             std::to_string(o.friction_coefficient) + ")");
+  const bool compliant = o.contact_model == ContactModel::kCompliant;
+  const bool hunt_crossley = o.contact_force_law == ContactForceLaw::kHuntCrossley;
+  if (compliant) {
+    positive(o.contact_stiffness, "contact_stiffness",
+             "N/m^p: the spring at each tipping point, e.g. 1e8 for steel on concrete under a "
+             "few tonnes");
+    FLEXROCK_THROW_UNLESS(
+        !hunt_crossley || (o.contact_exponent >= 1.0 && o.contact_exponent <= 3.0),
+        "options: contact_exponent must be in [1, 3] (1.5: Hertz), got " +
+            std::to_string(o.contact_exponent));
+    FLEXROCK_THROW_UNLESS(hunt_crossley || o.contact_exponent == 1.0,
+                          "options: contact_exponent applies to contact_force_law = "
+                          "hunt_crossley (the linear law has p = 1)");
+    FLEXROCK_THROW_UNLESS(std::isfinite(o.contact_damping_ratio) && o.contact_damping_ratio >= 0.0,
+                          "options: contact_damping_ratio must be >= 0 (1: critical), got " +
+                              std::to_string(o.contact_damping_ratio));
+    FLEXROCK_THROW_UNLESS(
+        o.contact_restitution < 0.0 || (o.contact_restitution <= 1.0 && !hunt_crossley) ||
+            (hunt_crossley && o.contact_restitution > 0.0 && o.contact_restitution <= 1.0),
+        "options: contact_restitution must be in [0, 1] (in (0, 1] for hunt_crossley), got " +
+            std::to_string(o.contact_restitution));
+    FLEXROCK_THROW_UNLESS(!hunt_crossley || o.contact_restitution > 0.0,
+                          "options: contact_force_law = hunt_crossley needs contact_restitution "
+                          "in (0, 1] (its damping follows from it)");
+    FLEXROCK_THROW_UNLESS(
+        std::isfinite(o.contact_tangential_stiffness) && o.contact_tangential_stiffness >= 0.0,
+        "options: contact_tangential_stiffness must be >= 0 (0: the normal spring's secant "
+        "stiffness), got " +
+            std::to_string(o.contact_tangential_stiffness));
+  } else {
+    FLEXROCK_THROW_UNLESS(o.contact_stiffness == 0.0 && o.contact_exponent == 1.0 &&
+                              o.contact_damping_ratio == 1.0 && o.contact_restitution < 0.0 &&
+                              o.contact_tangential_stiffness == 0.0 &&
+                              o.contact_force_law == ContactForceLaw::kLinear,
+                          "options: contact_stiffness, contact_force_law, contact_exponent, "
+                          "contact_damping_ratio, contact_restitution and "
+                          "contact_tangential_stiffness apply to contact_model = compliant");
+  }
   FLEXROCK_THROW_UNLESS(o.max_steps > 0 && o.max_impacts > 0,
                         "options: max_steps and max_impacts must be positive");
   const int n = body.modes();
@@ -178,11 +217,8 @@ struct Column {
   double operator[](Eigen::Index i) const { return v[static_cast<std::size_t>(i)]; }
 };
 
-template <int N, int MaxN>
-SimulationResult run(const Body& body, const GroundMotion& motion, const InitialState& init,
-                     const SimulationOptions& opt) {
-  detail::Simulator<N, MaxN> sim(body, motion, opt);
-  SimulationResult r = sim.run(init);
+// the checks every run's result passes, whichever model computed it
+SimulationResult checked(const Body& body, SimulationResult r) {
   // no silent physics: a balance that does not close says so
   if (!(std::abs(r.energy.residual) <= energy_residual_bound(body, r.energy.scale))) {
     r.energy_unbalanced = true;
@@ -206,6 +242,13 @@ SimulationResult run(const Body& body, const GroundMotion& motion, const Initial
     r.events.push_back(ev);
   }
   return r;
+}
+
+template <int N, int MaxN>
+SimulationResult run(const Body& body, const GroundMotion& motion, const InitialState& init,
+                     const SimulationOptions& opt) {
+  detail::Simulator<N, MaxN> sim(body, motion, opt);
+  return checked(body, sim.run(init));
 }
 
 }  // namespace
@@ -307,6 +350,8 @@ std::string non_finite_output(const SimulationResult& r) {
 SimulationResult simulate(const Body& body, const GroundMotion& motion, const InitialState& init,
                           const SimulationOptions& options) {
   check_options(body, init, options);
+  if (options.contact_model == ContactModel::kCompliant)
+    return checked(body, detail::simulate_compliant(body, motion, init, options));
   // fixed sizes for the common small bodies, a stack-bounded size up to 16 modes, heap beyond
   switch (body.modes()) {
     case 0:

@@ -62,6 +62,32 @@ bad "$BODY$PULSE[solver]
 impact_law = \"restitution\"
 restitution_ratio = 1.2
 " "case.toml:14:" "key 'solver.restitution_ratio'" "a number in [0, 1]"
+# the compliant contact: a key without the model, the model without a stiffness, a bad force
+# law, hunt_crossley without its restitution, both damping keys
+bad "$BODY$PULSE[solver]
+contact_stiffness = 1e8
+" "case.toml:13:" "key 'solver.contact_stiffness'" "applies to contact_model = \"compliant\""
+bad "$BODY$PULSE[solver]
+contact_model = \"compliant\"
+" "key 'solver.contact_stiffness'" "with contact_model = \"compliant\""
+bad "$BODY$PULSE[solver]
+contact_model = \"springs\"
+" "case.toml:13:" "key 'solver.contact_model'" "one of: impulsive, compliant"
+bad "$BODY$PULSE[solver]
+contact_model = \"compliant\"
+contact_stiffness = 1e8
+contact_force_law = \"hunt_crossley\"
+" "key 'solver.contact_restitution'" "with contact_force_law = \"hunt_crossley\""
+bad "$BODY$PULSE[solver]
+contact_model = \"compliant\"
+contact_stiffness = 1e8
+contact_damping_ratio = 2.0
+contact_restitution = 0.5
+" "case.toml:15:" "key 'solver.contact_damping_ratio'" "not both"
+bad "$BODY$PULSE[solver]
+contact_model = \"compliant\"
+contact_stiffness = -1e8
+" "case.toml:14:" "key 'solver.contact_stiffness'"
 # negative and zero sizes
 bad "[body]
 type = \"rigid_block\"

@@ -683,6 +683,25 @@ class General:
         dE = (ddt(Tf) + ddt(conv_V_flight(P, yc, q, g))).subs(onflight)
         dE = sp.expand(dE - M * h ** 2 * dot(nu, matvec(Acg, [thdd] + self.qdd)) + M * h ** 2 * dot(nu, f_c))
         res['flight_energy_rate'] = is_zero(dE + M * (self.Xdd * xcd + self.Ydd * ycd))
+        # compliant contact (theory "Compliant contact"): a force F (inertial components) at the
+        # tipping point alpha_k adds F/M to the c.g. acceleration and -B_k^T R^T F / (M h) to
+        # A_cg [thdd; qdd]; then d/dt(T_rel + V) = -M a_b . v_c + F . v_k, with v_k the tipping
+        # point's velocity of theory "Flight": the corner force's generalised forces are right
+        Fx, Fy, ak = sp.symbols('F_x F_y alpha_k')
+        Bk = conv_B(P, ak, q)
+        Fbx, Fby = C * Fx + S * Fy, -S * Fx + C * Fy  # R^T F
+        g_nu = [-(Bk[0][i] * Fbx + Bk[1][i] * Fby) / (M * h) for i in range(n + 1)]
+        onc = {xcdd: cga[0] + Fx / M, ycdd: cga[1] + Fy / M}
+        dEc = (ddt(Tf) + ddt(conv_V_flight(P, yc, q, g))).subs(onc)
+        dEc = sp.expand(dEc - M * h ** 2 * dot(nu, matvec(Acg, [thdd] + self.qdd))
+                        + M * h ** 2 * dot(nu, [f_c[i] + g_nu[i] for i in range(n + 1)]))
+        vk = conv_corner_vel(P, ak, q, vc, thd, qd, S, C)
+        res['compliant_corner_force_power'] = is_zero(
+            dEc + M * (self.Xdd * xcd + self.Ydd * ycd) - (Fx * vk[0] + Fy * vk[1]))
+        # and v_k is the time derivative of the tipping point's position (conv_corner)
+        xk = conv_corner(P, ak, xc, yc, q, S, C)
+        res['compliant_corner_velocity'] = all(
+            is_zero(sp.expand(ddt(xk[i]).subs({xc: 0}) - vk[i])) for i in range(2))
         ae = sp.Symbol('alpha_e')
         # lift-off: rocking on alpha_e and flight describe the same motion (positions and velocities)
         s_e = self.s_body(ae)

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "flexrock/contact/compliant.hpp"
 #include "flexrock/contact/impact.hpp"
 #include "flexrock/core/types.hpp"
 #include "flexrock/excitation/ground_motion.hpp"
@@ -121,6 +122,20 @@ struct SimulationOptions {
   // samples (docs/theory.md, "Exact propagation in full contact"); false: integrated by DOPRI5
   bool exact_full_contact = true;
   std::atomic<double>* progress = nullptr;  // if set: the time reached [s], after every step
+  // the floor (docs/theory.md, "Compliant contact"): impulsive (a rigid floor and the impact law)
+  // or compliant (a no-tension spring-dashpot at each tipping point)
+  ContactModel contact_model = ContactModel::kImpulsive;
+  ContactForceLaw contact_force_law = ContactForceLaw::kLinear;
+  double contact_stiffness = 0.0;  // [N/m^p] k of each tipping point's spring (compliant: > 0)
+  double contact_exponent = 1.0;   // p: F ~ delta^p (linear: 1; Hertz-like: 1.5)
+  // linear: the dashpot as a damping ratio of the body bouncing on both springs (1: critical)
+  double contact_damping_ratio = 1.0;
+  // the restitution of a free bounce (linear: sets the damping ratio; hunt_crossley: its
+  // damping); < 0: not given
+  double contact_restitution = -1.0;
+  // [N/m] the sticking tipping point's horizontal spring; 0: the normal spring's secant stiffness
+  // under the body's weight shared by both tipping points
+  double contact_tangential_stiffness = 0.0;
 };
 
 /// Something that happened, in time order. Fields not meaningful for a kind are zero.
@@ -184,6 +199,8 @@ struct Extremes {
   long slips = 0;                  // times sliding started (from sticking or at an impulse)
   double max_impact_force = 0.0;   // [N] largest force estimate of an impact (impact_duration)
   long impact_law_fallbacks = 0;   // impacts where the chosen law would have added energy
+  double max_contact_force = 0.0;  // [N] compliant contact: the largest normal force of a tipping
+                                   // point (resolved, not estimated)
 };
 
 /// Energy balance relative to the base [J]: residual = input_work - (kinetic_change +

@@ -1,0 +1,742 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "compliant.hpp"
+
+#include <Eigen/Core>
+#include <Eigen/LU>
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <string>
+
+#include "automaton.hpp"
+#include "event_location.hpp"
+#include "flexrock/core/format.hpp"
+#include "flexrock/integrate/dopri5.hpp"
+#include "flexrock/model/dynamics.hpp"
+#include "recorder.hpp"
+
+namespace flexrock::detail {
+
+CornerContact corner_contact(const Body& body, const SimulationOptions& opt) {
+  CornerContact cc;
+  const double m = body.params().mass, g = body.g();
+  cc.law = opt.contact_force_law;
+  cc.k = opt.contact_stiffness;
+  cc.p = cc.law == ContactForceLaw::kLinear ? 1.0 : opt.contact_exponent;
+  // the static penetration with the weight shared by both tipping points, and the secant
+  // stiffness there: the tangential spring's default, and the Hunt-Crossley law's slowest
+  // meaningful approach speed (a contact that begins slower than sqrt(g delta_static) is
+  // quasi-static: its damping is that of one beginning at that speed)
+  const double delta_static = std::pow(0.5 * m * g / cc.k, 1.0 / cc.p);
+  const double k_secant = 0.5 * m * g / delta_static;
+  const double zeta = opt.contact_restitution >= 0.0
+                          ? damping_ratio_for_restitution(opt.contact_restitution)
+                          : opt.contact_damping_ratio;
+  if (cc.law == ContactForceLaw::kLinear) {
+    // the body bouncing on both springs: omega_v = sqrt(2 k / M), each dashpot 2 zeta sqrt(k M/2)
+    cc.c = 2.0 * zeta * std::sqrt(0.5 * cc.k * m);
+  } else {
+    const double e = opt.contact_restitution;
+    cc.hc = 0.75 * (1.0 - e * e);
+    cc.v_floor = std::sqrt(g * delta_static);
+  }
+  cc.k_t = opt.contact_tangential_stiffness > 0.0 ? opt.contact_tangential_stiffness : k_secant;
+  cc.c_t = 2.0 * (cc.law == ContactForceLaw::kLinear ? zeta : 1.0) * std::sqrt(0.5 * cc.k_t * m);
+  return cc;
+}
+
+namespace {
+
+enum class CornerState { kFree, kStick, kSlip };
+
+struct Corner {
+  CornerState state = CornerState::kFree;
+  int slip = 0;       // slip sign s while slipping (+1: along +I)
+  double anchor = 0;  // [m] xi_e: where a sticking corner's horizontal spring is unstretched
+  double v_in = 0;    // [m/s] approach speed at the touch (Hunt-Crossley damping)
+  long touch = -1;    // index of this contact's touch event
+  double peak = 0;    // [N] largest normal force since the touch
+};
+
+// a touch's impulse, loss and theta_dot after, measured until the next touch or release, or
+// until theta_dot has reached zero (the end of the step where it did: a body that stays on both
+// corners would otherwise count its weight into the impulse)
+struct Transfer {
+  long event = -1;
+  double ix = 0, iy = 0, loss = 0;  // the accumulators at the touch
+  double theta_dot = 0;             // [rad/s] at the touch
+};
+
+template <int MaxN>
+class CompliantSim final : private GuardProbe {
+  static constexpr int MaxS = MaxN == Eigen::Dynamic ? Eigen::Dynamic : 2 * (3 + MaxN) + 6;
+
+ public:
+  using Dyn = Dynamics<Eigen::Dynamic, MaxN>;
+  using Vec = typename Dyn::Vec;
+  using Mat = typename Dyn::Mat;
+  using State = Eigen::Matrix<double, Eigen::Dynamic, 1, Eigen::ColMajor, MaxS, 1>;
+
+  CompliantSim(const Body& body, const GroundMotion& motion, const SimulationOptions& opt)
+      : body_(body),
+        dyn_(body),
+        motion_(motion),
+        opt_(opt),
+        n_(body.modes()),
+        cc_(corner_contact(body, opt)),
+        rec_(res_, body.params().mass, body.g(), body.params().height, body.modes()) {
+    m_ = body.params().mass;
+    g_ = body.g();
+    h_ = body.params().height;
+    mg_ = m_ * g_;
+    mu_s_ = opt.friction_coefficient;
+    mu_k_ = std::min(opt.kinetic_friction_coefficient, opt.friction_coefficient);
+    mu_cg_inv_ = body.flight_mu_inverse();
+    const bool half_pi = opt.overturn == OverturnCriterion::kHalfPi;
+    limit_[0] = half_pi ? 0.5 * std::numbers::pi : body.tipping_angle(1);
+    limit_[1] = half_pi ? 0.5 * std::numbers::pi : body.tipping_angle(2);
+    samples_ = std::clamp(opt.event_samples, 1, kMaxSamples);
+    ctl_.rtol = opt.rtol;
+    ctl_.atol = opt.atol;
+    ctl_.max_step = opt.max_step;
+    ctl_.controlled = 2 * (3 + n_);
+    q_.setZero(n_);
+    qd_.setZero(n_);
+    qdd_.setZero(n_);
+    gq_.setZero(n_);
+    z_.setZero(n_);
+    buf_.setZero(size());
+    for (State& s : states_) s.setZero(size());
+  }
+
+  SimulationResult run(const InitialState& init);
+
+ private:
+  // ---- the state: (x_c, y_c, theta, q), their rates, then the accumulated input work, damping
+  // loss, work taken by the floor's springs and dashpots, friction work, and the floor's impulse
+  int size() const { return 2 * (3 + n_) + 6; }
+  int iv() const { return 3 + n_; }
+  int iw() const { return 2 * (3 + n_); }
+
+  template <class X>
+  void unpack(const X& x) {
+    q_ = x.segment(3, n_);
+    qd_ = x.segment(iv() + 3, n_);
+  }
+
+  // the force of the floor on corner e (inertial components) and the corner's velocity
+  template <class X>
+  double corner_force(int e, double s, double c, const X& x, Eigen::Vector2d& f,
+                      Eigen::Vector2d& ve) const {
+    const Corner& k = corner_[static_cast<std::size_t>(e - 1)];
+    const Eigen::Vector2d vc(x(iv()), x(iv() + 1));
+    const Eigen::Vector2d vb = dyn_.corner_velocity_body(e, s, c, q_, x(iv() + 2), qd_, vc);
+    ve = {c * vb(0) - s * vb(1), s * vb(0) + c * vb(1)};
+    const double fn = normal_force(cc_, -dyn_.corner_height(e, s, c, q_, x(1)), -ve(1), k.v_in);
+    double ft = 0.0;
+    if (k.state == CornerState::kStick) {
+      ft = -cc_.k_t * (dyn_.corner_x(e, s, c, q_, x(0)) - k.anchor) - cc_.c_t * ve(0);
+    } else if (k.state == CornerState::kSlip) {
+      ft = -k.slip * mu_k_ * fn;
+    }
+    f = {ft, fn};
+    return fn;
+  }
+
+  void rhs(double t, const State& x, State& dx) {
+    unpack(x);
+    const double s = std::sin(x(2)), c = std::cos(x(2)), thd = x(iv() + 2);
+    const Eigen::Vector2d vc(x(iv()), x(iv() + 1));
+    const BaseAcceleration a = motion_.at(t, rhs_cursor_);
+    double thdd = 0.0;
+    dyn_.flight_acceleration(q_, thd, qd_, thdd, qdd_);
+    // the corner forces' generalised forces on (theta, q) over M h^2: -B_e^T R^T F / (M h)
+    // (docs/theory.md, "Compliant contact")
+    double g_theta = 0.0, fx = 0.0, fy = 0.0, p_floor = 0.0, p_friction = 0.0;
+    gq_.setZero();
+    for (int e = 1; e <= 2; ++e) {
+      const Corner& k = corner_[static_cast<std::size_t>(e - 1)];
+      if (k.state == CornerState::kFree) continue;
+      Eigen::Vector2d f, ve;
+      corner_force(e, s, c, x, f, ve);
+      const double fbx = c * f(0) + s * f(1), fby = -s * f(0) + c * f(1);
+      const double wx = -dyn_.alpha(e) + dyn_.psi_x().dot(q_), wy = 1.0 + dyn_.psi_y().dot(q_);
+      g_theta -= (-wy * fbx + wx * fby) / (m_ * h_);
+      if (n_ > 0) gq_.noalias() -= (dyn_.psi_x() * fbx + dyn_.psi_y() * fby) / (m_ * h_);
+      fx += f(0);
+      fy += f(1);
+      if (k.state == CornerState::kSlip) {
+        p_friction += f(0) * ve(0);
+        p_floor += f(1) * ve(1);
+      } else {
+        p_floor += f.dot(ve);
+      }
+    }
+    // A_cg [dthdd; dqdd] = [g_theta; g_q], by block elimination with the constant mu_cg^-1
+    double dthdd = 0.0;
+    if (n_ == 0) {
+      dthdd = g_theta / dyn_.flight_inertia(q_);
+    } else {
+      const Vec b = dyn_.flight_coupling(q_);
+      z_.noalias() = mu_cg_inv_ * b;
+      const Vec y = mu_cg_inv_ * gq_;
+      dthdd = (g_theta - b.dot(y)) / (dyn_.flight_inertia(q_) - b.dot(z_));
+      qdd_ += y - z_ * dthdd;
+    }
+    dx.head(iv()) = x.segment(iv(), iv());
+    dx(iv()) = -a.x + fx / m_;
+    dx(iv() + 1) = -g_ - a.y + fy / m_;
+    dx(iv() + 2) = thdd + dthdd;
+    dx.segment(iv() + 3, n_) = qdd_;
+    dx(iw()) = dyn_.flight_input_power(vc, a);
+    dx(iw() + 1) = dyn_.damping_power(qd_);
+    dx(iw() + 2) = -p_floor;
+    dx(iw() + 3) = -p_friction;
+    dx(iw() + 4) = fx;
+    dx(iw() + 5) = fy;
+  }
+
+  // guards in slot order: corner 1 and 2 contact, corner 1 and 2 friction, overturning
+  template <class X>
+  void evaluate(double t, const X& x, GuardSample& gs) {
+    unpack(x);
+    const double s = std::sin(x(2)), c = std::cos(x(2));
+    gs.t = t;
+    double fx = 0.0, fy = 0.0, moment = 0.0;
+    for (int e = 1; e <= 2; ++e) {
+      const std::size_t j = static_cast<std::size_t>(e - 1);
+      const Corner& k = corner_[j];
+      const double y = dyn_.corner_height(e, s, c, q_, x(1));
+      fn_[j] = 0.0;
+      if (k.state == CornerState::kFree) {
+        gs.v[j] = y / h_;
+        gs.v[j + 2] = 1.0;
+        continue;
+      }
+      Eigen::Vector2d f, ve;
+      fn_[j] = corner_force(e, s, c, x, f, ve);
+      gs.v[j] = -y / h_;
+      if (k.state == CornerState::kSlip) {
+        gs.v[j + 2] = k.slip * ve(0) / std::sqrt(g_ * h_);
+      } else {
+        gs.v[j + 2] = std::isfinite(mu_s_) ? (mu_s_ * f(1) - std::abs(f(0))) / mg_ : 1.0;
+      }
+      fx += f(0);
+      fy += f(1);
+      moment += (dyn_.corner_x(e, s, c, q_, x(0)) - x(0)) * f(1);
+    }
+    gs.v[4] = std::min(limit_[0] - x(2), limit_[1] + x(2));
+    gs.fi = fx / mg_;
+    gs.fj = fy / mg_;
+    gs.moment = moment / (mg_ * h_);
+  }
+
+  double guard_value(int slot, double t) override {
+    integ_.dense(t, buf_);
+    GuardSample gs;
+    evaluate(t, buf_, gs);
+    return gs.v[static_cast<std::size_t>(slot)];
+  }
+
+  // the body's contact mode, read from the corners
+  ContactMode mode() const {
+    const bool c1 = corner_[0].state != CornerState::kFree;
+    const bool c2 = corner_[1].state != CornerState::kFree;
+    const int pivot = c1 && c2 ? 0 : c1 ? 1 : c2 ? 2 : -1;
+    int slip = 0;
+    for (const Corner& k : corner_)
+      if (k.state == CornerState::kSlip && slip == 0) slip = k.slip;
+    return pivot < 0 ? ContactMode::kFlight : contact_mode(pivot, slip);
+  }
+
+  double contact_energy(const State& x) {
+    unpack(x);
+    const double s = std::sin(x(2)), c = std::cos(x(2));
+    double e = 0.0;
+    for (int i = 1; i <= 2; ++i) {
+      const Corner& k = corner_[static_cast<std::size_t>(i - 1)];
+      if (k.state == CornerState::kFree) continue;
+      e += normal_spring_energy(cc_, -dyn_.corner_height(i, s, c, q_, x(1)));
+      if (k.state == CornerState::kStick) {
+        const double u = dyn_.corner_x(i, s, c, q_, x(0)) - k.anchor;
+        e += 0.5 * cc_.k_t * u * u;
+      }
+    }
+    return e;
+  }
+  double kinetic_energy(const State& x) {
+    unpack(x);
+    return dyn_.flight_kinetic_energy(q_, x(iv() + 2), qd_, Eigen::Vector2d(x(iv()), x(iv() + 1)));
+  }
+  double potential_energy(const State& x) {
+    unpack(x);
+    return dyn_.flight_potential_energy(x(1), q_) + contact_energy(x);
+  }
+  // the dissipation of the springs and dashpots so far: the floor's work less what they store
+  double contact_loss(const State& x) { return x(iw() + 2) - (contact_energy(x) - contact0_); }
+
+  Observation observation(const GuardSample& gs, const State& x) {
+    Observation o;
+    o.t = gs.t;
+    o.mode = mode();
+    o.theta = x(2);
+    o.theta_dot = x(iv() + 2);
+    o.q = x.data() + 3;
+    o.q_dot = x.data() + iv() + 3;
+    o.fi = gs.fi;
+    o.fj = gs.fj;
+    o.moment = gs.moment;
+    o.input_work = x(iw());
+    o.damping_loss = x(iw() + 1);
+    unpack(x);
+    const double s = std::sin(x(2)), c = std::cos(x(2));
+    const double y1 = dyn_.corner_height(1, s, c, q_, x(1));
+    const double y2 = dyn_.corner_height(2, s, c, q_, x(1));
+    o.lift = std::min(y1, y2);
+    o.high = std::max(y1, y2);
+    o.offset = x(0) + h_ * (-c * dyn_.psi_x().dot(q_) + s * (1.0 + dyn_.psi_y().dot(q_)));
+    return o;
+  }
+
+  void observe(const GuardSample& gs, const State& x) {
+    rec_.observe(observation(gs, x));
+    for (std::size_t j = 0; j < 2; ++j) {
+      if (corner_[j].state == CornerState::kFree) continue;
+      corner_[j].peak = std::max(corner_[j].peak, fn_[j]);
+      res_.extremes.max_contact_force = std::max(res_.extremes.max_contact_force, fn_[j]);
+    }
+  }
+
+  void emit_rows_until(double t_cut) {
+    if (opt_.output_dt <= 0.0) return;
+    for (;;) {
+      const double to = static_cast<double>(next_output_) * opt_.output_dt;
+      if (to > t_cut || to > t_end_ * (1.0 + 1e-14)) break;
+      integ_.dense(std::min(to, integ_.t1()), buf_);
+      emit_row(to, buf_);
+      ++next_output_;
+    }
+  }
+  void emit_row(double t, const State& x) {
+    GuardSample gs;
+    evaluate(t, x, gs);
+    const Observation o = observation(gs, x);
+    const double resultant = gs.fj > 0.0 ? h_ * gs.moment / gs.fj : 0.0;
+    rec_.row(o, motion_.at(t, row_cursor_), kinetic_energy(x), potential_energy(x), resultant,
+             contact_loss(x));
+  }
+
+  bool stop(double t, const std::string& why) {
+    res_.status = Status::kStopped;
+    res_.message = why;
+    Event ev;
+    ev.time = t;
+    ev.kind = EventKind::kStopped;
+    rec_.event(ev);
+    return false;
+  }
+
+  // closes the open touch: theta_dot after, the floor's impulse and the dissipation since
+  void close_transfer(const State& x) {
+    if (transfer_.event < 0) return;
+    Event& ev = res_.events[static_cast<std::size_t>(transfer_.event)];
+    ev.theta_dot_after = x(iv() + 2);
+    ev.impulse_x = x(iw() + 4) - transfer_.ix;
+    ev.impulse_y = x(iw() + 5) - transfer_.iy;
+    ev.energy_loss = contact_loss(x) - transfer_.loss;
+    Extremes& ex = res_.extremes;
+    ex.max_impulse = std::max(ex.max_impulse, std::abs(ev.impulse_y));
+    ex.max_impact_energy_loss = std::max(ex.max_impact_energy_loss, ev.energy_loss);
+    transfer_.event = -1;
+  }
+  // the peak normal force of corner j's contact, written to its touch event
+  void close_contact(std::size_t j) {
+    Corner& k = corner_[j];
+    if (k.touch >= 0) {
+      res_.events[static_cast<std::size_t>(k.touch)].force_estimate = k.peak;
+      res_.extremes.max_impact_force = std::max(res_.extremes.max_impact_force, k.peak);
+    }
+    k.touch = -1;
+    k.peak = 0.0;
+  }
+
+  // mode-time bookkeeping around a change of the corners' states
+  void before_change(double t) { mode_before_ = mode(), t_change_ = t; }
+  void after_change(double t) {
+    const ContactMode now = mode();
+    const bool flew = mode_before_ == ContactMode::kFlight, flies = now == ContactMode::kFlight;
+    const bool slid = mode_spec(mode_before_).slip != 0, slides = mode_spec(now).slip != 0;
+    if (!flew && flies) flight_start_ = t;
+    if (flew && !flies) res_.extremes.flight_time += t - flight_start_;
+    if (!slid && slides) {
+      slide_start_ = t;
+      ++res_.extremes.slips;
+      res_.friction_exceeded = true;
+    }
+    if (slid && !slides) res_.extremes.sliding_time += t - slide_start_;
+  }
+
+  Event event_at(double t, EventKind kind, int edge, const State& x) {
+    Event ev;
+    ev.time = t;
+    ev.kind = kind;
+    ev.edge = edge;
+    ev.theta = x(2);
+    ev.theta_dot_before = x(iv() + 2);
+    ev.theta_dot_after = x(iv() + 2);
+    GuardSample gs;
+    evaluate(t, x, gs);
+    ev.offset = observation(gs, x).offset;
+    ev.friction_demand = gs.fj > 0.0 ? std::abs(gs.fi) / gs.fj : 0.0;
+    return ev;
+  }
+
+  // a corner whose sticking force already needs more than mu_s F_n slips at once
+  void resolve_stick(int e, const State& x) {
+    Corner& k = corner_[static_cast<std::size_t>(e - 1)];
+    if (!std::isfinite(mu_s_) || k.state != CornerState::kStick) return;
+    unpack(x);
+    Eigen::Vector2d f, ve;
+    corner_force(e, std::sin(x(2)), std::cos(x(2)), x, f, ve);
+    if (std::abs(f(0)) <= mu_s_ * f(1)) return;
+    k.state = CornerState::kSlip;
+    k.slip = ve(0) != 0.0 ? (ve(0) > 0.0 ? 1 : -1) : (f(0) > 0.0 ? -1 : 1);
+    zero_start_[static_cast<std::size_t>(e + 1)] = true;
+  }
+
+  bool fire(int slot, double t, State& x) {
+    unpack(x);
+    const double s = std::sin(x(2)), c = std::cos(x(2));
+    if (slot == 4) {
+      const int edge = x(2) > 0.0 ? 1 : 2;
+      res_.status = Status::kOverturned;
+      res_.message = "overturned";
+      res_.extremes.overturn_time = t;
+      res_.extremes.overturn_edge = edge;
+      rec_.event(event_at(t, EventKind::kOverturn, edge, x));
+      return false;
+    }
+    before_change(t);
+    const int e = slot % 2 + 1;
+    const std::size_t j = static_cast<std::size_t>(e - 1);
+    Corner& k = corner_[j];
+    Corner& other = corner_[1 - j];
+    if (slot < 2 && k.state == CornerState::kFree) {
+      // a touch: an impact when the other corner presses, a landing when it flies
+      close_transfer(x);
+      if (++res_.extremes.impacts > opt_.max_impacts)
+        return stop(t, "more than max_impacts = " + std::to_string(opt_.max_impacts) +
+                           " touches of the floor");
+      const bool impact = other.state != CornerState::kFree;
+      Eigen::Vector2d vb = dyn_.corner_velocity_body(e, s, c, q_, x(iv() + 2), qd_,
+                                                     Eigen::Vector2d(x(iv()), x(iv() + 1)));
+      const double vy = s * vb(0) + c * vb(1);
+      k.state = CornerState::kStick;
+      k.anchor = dyn_.corner_x(e, s, c, q_, x(0));
+      k.v_in = std::max(-vy, 0.0);
+      k.peak = 0.0;
+      k.touch = static_cast<long>(res_.events.size());
+      rec_.event(event_at(t, impact ? EventKind::kImpact : EventKind::kLanding, e, x));
+      transfer_.event = k.touch;
+      transfer_.ix = x(iw() + 4);
+      transfer_.iy = x(iw() + 5);
+      transfer_.loss = contact_loss(x);
+      transfer_.theta_dot = x(iv() + 2);
+      zero_start_[j] = true;
+      resolve_stick(e, x);
+    } else if (slot < 2) {
+      // a release: the end of an impact's transfer, an uplift, or a lift-off
+      const bool closes = transfer_.event >= 0;
+      close_transfer(x);
+      close_contact(j);
+      k.state = CornerState::kFree;
+      zero_start_[j] = true;
+      if (!closes) {
+        if (other.state != CornerState::kFree) {
+          const int pivot = 3 - e;
+          rec_.event(event_at(t, EventKind::kUplift, pivot, x));
+          if (res_.extremes.first_uplift_time < 0.0) {
+            res_.extremes.first_uplift_time = t;
+            res_.extremes.first_uplift_edge = pivot;
+          }
+        } else {
+          rec_.event(event_at(t, EventKind::kLiftOff, 0, x));
+          ++res_.extremes.lift_offs;
+        }
+      } else if (other.state == CornerState::kFree) {
+        ++res_.extremes.lift_offs;
+        rec_.event(event_at(t, EventKind::kLiftOff, 0, x));
+      }
+    } else if (k.state == CornerState::kStick) {
+      // the friction limit: the corner slips
+      Eigen::Vector2d f, ve;
+      corner_force(e, s, c, x, f, ve);
+      k.state = CornerState::kSlip;
+      k.slip = ve(0) != 0.0 ? (ve(0) > 0.0 ? 1 : -1) : (f(0) > 0.0 ? -1 : 1);
+      zero_start_[j + 2] = true;
+      rec_.event(event_at(t, EventKind::kSlipStart, e, x));
+    } else if (k.state == CornerState::kSlip) {
+      // the slip velocity reached zero: the corner sticks where it is
+      k.state = CornerState::kStick;
+      k.anchor = dyn_.corner_x(e, s, c, q_, x(0));
+      rec_.event(event_at(t, EventKind::kStick, e, x));
+      resolve_stick(e, x);
+    }
+    after_change(t);
+    return true;
+  }
+
+  bool advance(double& t, State& x);
+  void place_at_rest(const InitialState& init, State& x);
+  void finish(double t, const State& x);
+
+  const Body& body_;
+  Dyn dyn_;
+  const GroundMotion& motion_;
+  SimulationOptions opt_;
+  int n_;
+  CornerContact cc_;
+  SimulationResult res_;
+  Recorder rec_;
+  double m_ = 0, g_ = 0, h_ = 0, mg_ = 0, mu_s_ = 0, mu_k_ = 0;
+  Mat mu_cg_inv_;
+  std::array<double, 2> limit_{};
+  int samples_ = 4;
+  StepControl ctl_;
+  Dopri5<State> integ_;
+  std::array<Corner, 2> corner_{};
+  Transfer transfer_;
+  std::array<double, 2> fn_{};  // the corners' normal forces at the last evaluation [N]
+  std::array<bool, kMaxGuards> zero_start_{};
+  std::array<GuardSample, kMaxSamples + 1> smp_;
+  std::array<State, kMaxSamples + 1> states_;
+  GroundMotion::Cursor rhs_cursor_, row_cursor_, break_cursor_;
+  Vec q_, qd_, qdd_, gq_, z_;
+  State buf_;
+  double t_end_ = 0, kinetic0_ = 0, potential0_ = 0, contact0_ = 0;
+  double flight_start_ = 0, slide_start_ = 0, t_change_ = 0;
+  ContactMode mode_before_ = ContactMode::kFullContact;
+  long next_output_ = 0, steps_ = 0;
+  double burst_time_ = -1.0;
+  int burst_ = 0;
+};
+
+// the body at rest on both springs: theta, y_c and (unless given) q from the statics, by Newton's
+// method on the accelerations (a tilt appears when the c.g. is off the base's centre)
+template <int MaxN>
+void CompliantSim<MaxN>::place_at_rest(const InitialState& init, State& x) {
+  const bool solve_q = init.q.size() == 0;
+  const int m = 2 + (solve_q ? n_ : 0);
+  auto residual = [&](const State& z, Eigen::VectorXd& r) {
+    // the corners' anchors where they stand, so that no horizontal spring is stretched
+    unpack(z);
+    const double s = std::sin(z(2)), c = std::cos(z(2));
+    for (int e = 1; e <= 2; ++e)
+      corner_[static_cast<std::size_t>(e - 1)].anchor = dyn_.corner_x(e, s, c, q_, z(0));
+    State dz(size());
+    rhs(0.0, z, dz);
+    r.resize(m);
+    r(0) = dz(iv() + 1) / g_;
+    r(1) = dz(iv() + 2) * h_ / g_;
+    if (solve_q) r.tail(n_) = dz.segment(iv() + 3, n_) * h_ / g_;
+  };
+  auto unknown = [&](State& z, int i) -> double& {
+    return i == 0 ? z(1) : i == 1 ? z(2) : z(i + 1);
+  };
+  Eigen::VectorXd r, r1;
+  for (int it = 0; it < 30; ++it) {
+    residual(x, r);
+    if (r.cwiseAbs().maxCoeff() < 1e-14) break;
+    Eigen::MatrixXd jac(m, m);
+    for (int i = 0; i < m; ++i) {
+      State z = x;
+      const double step = i == 0 ? 1e-7 * h_ : 1e-7;
+      unknown(z, i) += step;
+      residual(z, r1);
+      jac.col(i) = (r1 - r) / step;
+    }
+    const Eigen::VectorXd d = jac.fullPivLu().solve(r);
+    for (int i = 0; i < m; ++i) unknown(x, i) -= d(i);
+  }
+  residual(x, r);  // leaves the anchors at the final place
+}
+
+template <int MaxN>
+SimulationResult CompliantSim<MaxN>::run(const InitialState& init) {
+  State x(size());
+  x.setZero();
+  const VectorX q0 = init.q.size() == n_ ? init.q : VectorX(body_.static_deformation());
+  x.segment(3, n_) = q0;
+  if (init.q_dot.size() == n_) x.segment(iv() + 3, n_) = init.q_dot;
+  x(2) = init.theta;
+  x(iv() + 2) = init.theta_dot;
+  t_end_ = opt_.t_end >= 0.0 ? opt_.t_end : motion_.duration();
+  unpack(x);
+  int pivot = 0;
+  if (init.theta > 0.0 || (init.theta == 0.0 && init.theta_dot > 0.0)) pivot = 1;
+  if (init.theta < 0.0 || (init.theta == 0.0 && init.theta_dot < 0.0)) pivot = 2;
+  if (pivot == 0) {
+    // both corners on their springs, at the static penetration
+    const double delta = std::pow(0.5 * mg_ / cc_.k, 1.0 / cc_.p);
+    x(0) = h_ * dyn_.psi_x().dot(q_);
+    x(1) = h_ * (1.0 + dyn_.psi_y().dot(q_)) - delta;
+    x(iv()) = h_ * dyn_.psi_x().dot(qd_);
+    x(iv() + 1) = h_ * dyn_.psi_y().dot(qd_);
+    corner_[0].state = corner_[1].state = CornerState::kStick;
+    place_at_rest(init, x);
+  } else {
+    // rocking on the pivot's spring, pressed by the whole weight
+    const double delta = std::pow(mg_ / cc_.k, 1.0 / cc_.p);
+    Eigen::Vector2d r, v;
+    const double s = std::sin(x(2)), c = std::cos(x(2));
+    dyn_.cg_from_pivot(pivot, s, c, q_, x(iv() + 2), qd_, r, v);
+    x(0) = h_ * dyn_.alpha(pivot) + r(0);
+    x(1) = -delta + r(1);
+    x(iv()) = v(0);
+    x(iv() + 1) = v(1);
+    Corner& k = corner_[static_cast<std::size_t>(pivot - 1)];
+    k.state = CornerState::kStick;
+    unpack(x);
+    k.anchor = dyn_.corner_x(pivot, s, c, q_, x(0));
+  }
+  kinetic0_ = kinetic_energy(x);
+  potential0_ = potential_energy(x);
+  contact0_ = contact_energy(x);
+  mode_before_ = mode();
+  if (mode_before_ == ContactMode::kFlight) flight_start_ = 0.0;
+  double t = 0.0;
+  integ_.start([this](double tt, const State& z, State& dz) { rhs(tt, z, dz); }, ctl_, t, x);
+  if (opt_.output_dt > 0.0) emit_row(t, x);
+  next_output_ = 1;
+  bool running = true;
+  while (running && t < t_end_) running = advance(t, x);
+  finish(t, x);
+  return std::move(res_);
+}
+
+template <int MaxN>
+bool CompliantSim<MaxN>::advance(double& t, State& x) {
+  auto sys = [this](double tt, const State& z, State& dz) { rhs(tt, z, dz); };
+  const double t_stop = std::min(motion_.next_breakpoint(t, break_cursor_), t_end_);
+  if (integ_.step(sys, t_stop) != Dopri5<State>::Status::kAccepted)
+    return stop(t, "the integrator's step collapsed at t = " + format_number(t, 9) +
+                       " s (a contact stiffer than rtol/atol can follow)");
+  if (++steps_ > opt_.max_steps)
+    return stop(t, "more than max_steps = " + std::to_string(opt_.max_steps) + " steps");
+  ++res_.steps;
+  const double t0 = integ_.t0(), t1 = integ_.t1();
+  // the guards at the samples of the step
+  for (int k = 0; k <= samples_; ++k) {
+    const double tk = k == samples_ ? t1 : t0 + (t1 - t0) * k / samples_;
+    State& xk = states_[static_cast<std::size_t>(k)];
+    if (k == 0) {
+      xk = integ_.x0();
+    } else if (k == samples_) {
+      xk = integ_.x1();
+    } else {
+      integ_.dense(tk, xk);
+    }
+    evaluate(tk, xk, smp_[static_cast<std::size_t>(k)]);
+  }
+  double t_hit = std::numeric_limits<double>::infinity();
+  int slot_hit = -1;
+  for (int slot = 0; slot < kMaxGuards; ++slot) {
+    const double th = first_crossing(slot, smp_.data(), samples_,
+                                     zero_start_[static_cast<std::size_t>(slot)], false, *this);
+    if (th < t_hit) {
+      t_hit = th;
+      slot_hit = slot;
+    }
+  }
+  // the extremes at the samples before the crossing (the normal forces at them included)
+  for (int k = 0; k <= samples_; ++k) {
+    const GuardSample& gs = smp_[static_cast<std::size_t>(k)];
+    if (gs.t >= t_hit) break;
+    evaluate(gs.t, states_[static_cast<std::size_t>(k)], smp_[static_cast<std::size_t>(k)]);
+    observe(gs, states_[static_cast<std::size_t>(k)]);
+  }
+  zero_start_.fill(false);
+  if (slot_hit < 0) {
+    emit_rows_until(t1);
+    t = t1;
+    x = integ_.x1();
+    if (transfer_.event >= 0 && !(x(iv() + 2) * transfer_.theta_dot > 0.0)) close_transfer(x);
+    GuardSample gs;
+    evaluate(t, x, gs);
+    observe(gs, x);
+    if (opt_.progress) opt_.progress->store(t, std::memory_order_relaxed);
+    return true;
+  }
+  integ_.restep_to(sys, t_hit);
+  emit_rows_until(t_hit);
+  t = t_hit;
+  x = integ_.x1();
+  GuardSample gs;
+  evaluate(t, x, gs);
+  observe(gs, x);
+  // Zeno: more than 64 changes within 1e-9 s end the run
+  if (burst_time_ >= 0.0 && t - burst_time_ <= 1e-9) {
+    if (++burst_ > 64)
+      return stop(t, "more than 64 contact changes within 1e-9 s at t = " + format_number(t, 9) +
+                         " s (Zeno behaviour)");
+  } else {
+    burst_time_ = t;
+    burst_ = 0;
+  }
+  if (!fire(slot_hit, t, x)) return false;
+  integ_.start(sys, ctl_, t, x, integ_.suggested_step());
+  if (opt_.progress) opt_.progress->store(t, std::memory_order_relaxed);
+  return true;
+}
+
+template <int MaxN>
+void CompliantSim<MaxN>::finish(double t, const State& x) {
+  res_.t_end = t;
+  if (opt_.progress) opt_.progress->store(t, std::memory_order_relaxed);
+  if (opt_.output_dt > 0.0 && (res_.history.time.empty() || res_.history.time.back() < t - 1e-12))
+    emit_row(t, x);
+  close_transfer(x);
+  for (std::size_t j = 0; j < 2; ++j) close_contact(j);
+  const ContactMode now = mode();
+  if (now == ContactMode::kFlight && res_.status != Status::kOverturned)
+    res_.extremes.flight_time += t - flight_start_;
+  if (mode_spec(now).slip != 0 && res_.status != Status::kOverturned)
+    res_.extremes.sliding_time += t - slide_start_;
+  res_.final_phase = now;
+  res_.final_theta = x(2);
+  res_.final_theta_dot = x(iv() + 2);
+  res_.final_q = x.segment(3, n_);
+  res_.final_q_dot = x.segment(iv() + 3, n_);
+  GuardSample gs;
+  State xf = x;
+  evaluate(t, xf, gs);
+  res_.final_offset = observation(gs, xf).offset;
+  EnergyBalance& e = res_.energy;
+  const double kin = kinetic_energy(xf), pot = potential_energy(xf);
+  e.input_work = x(iw());
+  e.damping_loss = x(iw() + 1);
+  e.impact_loss = contact_loss(xf);
+  e.friction_loss = x(iw() + 3);
+  e.kinetic_change = kin - kinetic0_;
+  e.potential_change = pot - potential0_;
+  e.residual = e.input_work - (e.kinetic_change + e.potential_change + e.damping_loss +
+                               e.impact_loss + e.friction_loss);
+  e.scale = std::max({rec_.energy_scale(), std::abs(pot - potential0_), std::abs(kin), kinetic0_,
+                      std::abs(e.impact_loss) + e.friction_loss, x(iw() + 2)});
+  res_.rejected_steps = integ_.rejected_steps();
+  res_.rhs_evaluations = integ_.rhs_evaluations();
+  if (res_.status == Status::kCompleted) res_.message = "completed";
+}
+
+}  // namespace
+
+SimulationResult simulate_compliant(const Body& body, const GroundMotion& motion,
+                                    const InitialState& init, const SimulationOptions& opt) {
+  // a stack-bounded state up to 16 modes, heap beyond
+  if (body.modes() <= 16) return CompliantSim<16>(body, motion, opt).run(init);
+  return CompliantSim<Eigen::Dynamic>(body, motion, opt).run(init);
+}
+
+}  // namespace flexrock::detail

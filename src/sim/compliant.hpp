@@ -1,0 +1,33 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// The compliant contact's event loop (docs/theory.md, "Compliant contact"). Internal header.
+//
+// The body moves freely in the plane (flight's coordinates: the deformed c.g., theta, q) and the
+// floor acts through a no-tension spring-dashpot at each tipping point. Each tipping point is a
+// small automaton of its own:
+//
+// | corner state | guard (function down to 0)        | reset                     | next      |
+// |--------------|-----------------------------------|---------------------------|-----------|
+// | free         | y_e / h (height over the floor)   | anchor xi_e = x_e         | stick *   |
+// | stick        | -y_e / h (penetration)            | none                      | free      |
+// |              | (mu_s F_n - |F_t|) / M g          | none                      | slip s    |
+// | slip s       | -y_e / h                          | none                      | free      |
+// |              | s x_e' / sqrt(g h)                | anchor xi_e = x_e         | stick     |
+//
+// (* slip at once when the sticking force already needs more than mu_s F_n.) Overturning, as in
+// the impulsive model, is |theta| reaching the chosen angle. The body's contact mode in the
+// outputs (full contact, rocking on an edge, flight, their sliding variants) is read from which
+// corners press and which slip.
+#pragma once
+
+#include "flexrock/sim/simulate.hpp"
+
+namespace flexrock::detail {
+
+/// One run with the compliant contact; the options are already checked.
+SimulationResult simulate_compliant(const Body& body, const GroundMotion& motion,
+                                    const InitialState& init, const SimulationOptions& opt);
+
+/// The spring-dashpot constants of each tipping point for `body` under `opt`.
+CornerContact corner_contact(const Body& body, const SimulationOptions& opt);
+
+}  // namespace flexrock::detail
