@@ -822,6 +822,15 @@ def section_impact_laws(md):
             md.append(fh.read())
 
 
+def section_compliant_evidence(md):
+    # the impulsive laws against the compliant contact on the same six bodies: written by
+    # tools/validation/compliant_evidence.py --md docs/validation/compliant_evidence.md
+    path = os.path.join(ROOT, "docs", "validation", "compliant_evidence.md")
+    if os.path.exists(path):
+        with open(path) as fh:
+            md.append(fh.read())
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--driver", required=True, help="path to flexrock_validate")
@@ -868,6 +877,7 @@ def main():
     section_sliding(md)
     section_sliding_regimes(md)
     section_impact_laws(md)
+    section_compliant_evidence(md)
     total = time.time() - t_start
     md.append("## Regeneration\n")
     md.append(
