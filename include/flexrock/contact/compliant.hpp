@@ -38,6 +38,13 @@ inline const char* to_string(ContactModel m) {
   return "?";
 }
 
+/// How the compliant contact is integrated (the event loop's choice; tests force one).
+enum class ContactIntegrator {
+  kAuto = 0,      // DOPRI5 while accuracy sets the step, Rosenbrock while stability would
+  kExplicit = 1,  // DOPRI5 only
+  kImplicit = 2,  // the Rosenbrock method only
+};
+
 /// The normal force of a compliant corner as a function of its penetration delta >= 0 and rate.
 enum class ContactForceLaw {
   kLinear,        // Kelvin-Voigt: F = k delta + c delta_dot (>= 0)

@@ -136,6 +136,9 @@ struct SimulationOptions {
   // [N/m] the sticking tipping point's horizontal spring; 0: the normal spring's secant stiffness
   // under the body's weight shared by both tipping points
   double contact_tangential_stiffness = 0.0;
+  // how the compliant contact is integrated: kAuto switches between DOPRI5 and a Rosenbrock
+  // method as the springs' stiffness would hold the explicit step (tests force either)
+  ContactIntegrator contact_integrator = ContactIntegrator::kAuto;
 };
 
 /// Something that happened, in time order. Fields not meaningful for a kind are zero.
