@@ -2066,6 +2066,23 @@ def simulate(body: Body, motion: GroundMotion, initial: InitialState = ..., opti
         GIL is released while it runs.
     """
 
+def spectrum_arrays(result: SpectrumResult, g: float = ...) -> dict:
+    """The cells of a spectrum as numpy arrays, one per column of its CSV, typed by the column
+    table (the columns of ``spectrum_columns(result.sliding)``).
+
+    Parameters
+    ----------
+    result : SpectrumResult
+    g : float
+        [m/s^2] the body's gravity, as for the CSV.
+
+    Returns
+    -------
+    dict of str to numpy.ndarray
+        int64 for indices and counts, float64 for reals (nan where the CSV leaves the field empty),
+        object (str) for classes.
+    """
+
 def spectrum_columns(sliding: bool = ...) -> list[str]:
     """Columns of the spectrum CSV (unit-suffixed).
 

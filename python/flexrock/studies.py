@@ -59,6 +59,7 @@ from ._flexrock import (  # noqa: F401  (re-exported API)
     sweep_columns,
     sweep_has_friction,
     read_sweep_csv,
+    spectrum_arrays,
     sweep_arrays,
     sweep_column_info,
     sweep_row,

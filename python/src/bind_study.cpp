@@ -48,20 +48,21 @@ const char* type_name(io::ColumnType t) {
   return "text";
 }
 
-// the rows of a sweep as numpy arrays, one per column of the sweep's table, of the column's type:
-// int64, float64 (a value the CSV leaves empty, not finite, is nan) or str objects
-py::dict sweep_arrays(const study::SweepSpec& spec, const std::vector<study::SweepRow>& rows) {
-  const std::vector<io::ColumnInfo> info = io::sweep_column_info(spec);
-  const auto n = static_cast<py::ssize_t>(rows.size());
+// rows as numpy arrays, one per column of a study's table, of the column's type: int64, float64
+// (a value the CSV leaves empty, not finite, is nan) or str objects
+template <class Values>
+py::dict typed_arrays(const std::vector<io::ColumnInfo>& info, std::size_t rows, Values values) {
+  const auto n = static_cast<py::ssize_t>(rows);
   std::vector<py::array> arrays;
   for (const io::ColumnInfo& c : info) {
     if (c.type == io::ColumnType::kInteger) arrays.emplace_back(py::array_t<long long>(n));
     if (c.type == io::ColumnType::kReal) arrays.emplace_back(py::array_t<double>(n));
-    if (c.type == io::ColumnType::kText)
+    if (c.type == io::ColumnType::kText) {
       arrays.emplace_back(py::array(py::dtype("O"), std::vector<py::ssize_t>{n}));
+    }
   }
   for (py::ssize_t i = 0; i < n; ++i) {
-    const std::vector<io::FieldValue> v = io::sweep_values(spec, rows[static_cast<std::size_t>(i)]);
+    const std::vector<io::FieldValue> v = values(static_cast<std::size_t>(i));
     for (std::size_t k = 0; k < info.size(); ++k) {
       if (const auto* x = std::get_if<long long>(&v[k])) {
         arrays[k].mutable_unchecked<long long, 1>()(i) = *x;
@@ -77,6 +78,16 @@ py::dict sweep_arrays(const study::SweepSpec& spec, const std::vector<study::Swe
   py::dict out;
   for (std::size_t k = 0; k < info.size(); ++k) out[py::str(info[k].name)] = arrays[k];
   return out;
+}
+
+py::dict sweep_arrays(const study::SweepSpec& spec, const std::vector<study::SweepRow>& rows) {
+  return typed_arrays(io::sweep_column_info(spec), rows.size(),
+                      [&](std::size_t i) { return io::sweep_values(spec, rows[i]); });
+}
+
+py::dict spectrum_arrays(const study::SpectrumResult& res, double g) {
+  return typed_arrays(io::spectrum_column_info(res.sliding), res.cells.size(),
+                      [&](std::size_t i) { return io::spectrum_values(res, res.cells[i], g); });
 }
 
 }  // namespace
@@ -845,6 +856,22 @@ Returns
 dict of str to numpy.ndarray
     int64 for indices and counts, float64 for reals (nan where the CSV leaves the field empty),
     object (str) for names and classes.)doc");
+  m.def(
+      "spectrum_arrays", &spectrum_arrays, py::arg("result"), py::arg("g") = 9.80665,
+      R"doc(The cells of a spectrum as numpy arrays, one per column of its CSV, typed by the column
+table (the columns of ``spectrum_columns(result.sliding)``).
+
+Parameters
+----------
+result : SpectrumResult
+g : float
+    [m/s^2] the body's gravity, as for the CSV.
+
+Returns
+-------
+dict of str to numpy.ndarray
+    int64 for indices and counts, float64 for reals (nan where the CSV leaves the field empty),
+    object (str) for classes.)doc");
   m.def("read_sweep_csv", &io::read_sweep_csv, py::arg("spec"), py::arg("path"),
         R"doc(A sweep CSV read back as the rows it was written from (every line checked against its
 run: it must be exactly what the row writes).

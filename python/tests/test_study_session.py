@@ -168,6 +168,18 @@ def test_python_finishes_a_spectrum_the_cli_left_with_the_same_bytes(cli, source
     rows = (tmp_path / "ref.csv").read_text().splitlines()
     col = rows[0].split(",").index("outcome")
     assert [c.run.outcome.name for c in res.cells] == [r.split(",")[col] for r in rows[1:]]
+    # the cells as typed arrays, by the spectrum's column table: the CSV's columns and numbers
+    arrays = fr.spectrum_arrays(res, fr.Body(fr.load_spectrum_file(str(spec)).body).g)
+    assert list(arrays) == rows[0].split(",")
+    assert arrays["row"].dtype == np.int64 and arrays["outcome"].dtype == object
+    assert arrays["a_p_m_per_s2"].dtype == np.float64
+    text = fr.read_csv_table(str(tmp_path / "ref.csv"))
+    for j, name in enumerate(text.columns):
+        if arrays[name].dtype == np.float64:
+            expected = [float(r[j]) if r[j] else math.nan for r in text.rows]
+            np.testing.assert_array_equal(arrays[name], expected)
+        else:
+            assert [str(x) for x in arrays[name]] == [r[j] for r in text.rows], name
     # the same file again from the convenience function (no journal: every run afresh)
     again = fr.spectrum_file(spec, tmp_path / "again.csv", threads=2)
     assert (tmp_path / "again.csv").read_bytes() == (tmp_path / "ref.csv").read_bytes()

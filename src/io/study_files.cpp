@@ -677,6 +677,25 @@ std::vector<std::string> spectrum_columns(bool sliding) {
   return v;
 }
 
+std::vector<ColumnInfo> spectrum_column_info(bool sliding) {
+  std::vector<ColumnInfo> v;
+  for (const SpectrumColumn& c : kSpectrumColumns) v.push_back({c.name, c.unit, c.type});
+  if (sliding) {
+    for (const SlidingColumn& c : kSlidingColumns) v.push_back({c.name, c.unit, c.type});
+  }
+  return v;
+}
+
+std::vector<FieldValue> spectrum_values(const study::SpectrumResult& res,
+                                        const study::SpectrumCell& c, double g) {
+  std::vector<FieldValue> v;
+  for (const SpectrumColumn& col : kSpectrumColumns) v.push_back(col.get(res, c, g));
+  if (res.sliding) {
+    for (const SlidingColumn& col : kSlidingColumns) v.push_back(col.get(c.run));
+  }
+  return v;
+}
+
 std::string spectrum_row(const study::SpectrumResult& res, const study::SpectrumCell& c, double g) {
   std::string s;
   for (const SpectrumColumn& col : kSpectrumColumns) {

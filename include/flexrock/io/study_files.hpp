@@ -133,6 +133,11 @@ std::vector<ColumnInfo> sweep_column_info(const study::SweepSpec& spec);
 /// The fields of a row, one per column of sweep_column_info(spec); a real the run did not have
 /// (not finite) is written empty.
 std::vector<FieldValue> sweep_values(const study::SweepSpec& spec, const study::SweepRow& row);
+/// The columns of the spectrum CSV (spectrum_columns(sliding)) with units and types.
+std::vector<ColumnInfo> spectrum_column_info(bool sliding = false);
+/// The fields of a cell, one per column of spectrum_column_info(result.sliding).
+std::vector<FieldValue> spectrum_values(const study::SpectrumResult& result,
+                                        const study::SpectrumCell& cell, double g);
 /// A field's text in a study CSV or journal.
 std::string format_field(const FieldValue& v);
 
