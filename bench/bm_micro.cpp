@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// Micro-benchmarks for n = 0, 1, 2, 4 and 10 modes: one right-hand side of the event loop's state
-// (rocking), one DOPRI5 step, one event location on the dense output, one impact map.
+// Micro-benchmarks for n = 0, 1, 2, 4, 8 and 10 modes (8 also on the dynamic size that bodies of 9
+// to 16 modes run on): one right-hand side of the event loop's state (rocking), one DOPRI5 step,
+// one event location on the dense output, one impact map.
 #include <benchmark/benchmark.h>
 
 #include <boost/math/tools/roots.hpp>
@@ -139,7 +140,8 @@ void BM_ImpactMap(benchmark::State& state) {
   BENCHMARK(bm<1>)->Name(#bm "/n:1"); \
   BENCHMARK(bm<2>)->Name(#bm "/n:2"); \
   BENCHMARK(bm<4>)->Name(#bm "/n:4"); \
-  BENCHMARK(bm<Eigen::Dynamic, 16>)->Name(#bm "/n")->Arg(10)
+  BENCHMARK(bm<8>)->Name(#bm "/n:8"); \
+  BENCHMARK(bm<Eigen::Dynamic, 16>)->Name(#bm "/n")->Arg(8)->Arg(10)
 
 FLEXROCK_FOR_MODES(BM_Rhs);
 FLEXROCK_FOR_MODES(BM_Dopri5Step);

@@ -30,6 +30,10 @@ BENCHMARK(BM_RockingAcceleration<0>)->Name("BM_RockingAcceleration/n:0");
 BENCHMARK(BM_RockingAcceleration<1>)->Name("BM_RockingAcceleration/n:1");
 BENCHMARK(BM_RockingAcceleration<2>)->Name("BM_RockingAcceleration/n:2");
 BENCHMARK(BM_RockingAcceleration<4>)->Name("BM_RockingAcceleration/n:4");
-BENCHMARK(BM_RockingAcceleration<Eigen::Dynamic, 16>)->Name("BM_RockingAcceleration/n")->Arg(10);
+BENCHMARK(BM_RockingAcceleration<8>)->Name("BM_RockingAcceleration/n:8");
+BENCHMARK(BM_RockingAcceleration<Eigen::Dynamic, 16>)
+    ->Name("BM_RockingAcceleration/n")
+    ->Arg(8)
+    ->Arg(10);
 
 }  // namespace

@@ -69,6 +69,14 @@ void BM_B_RigidPulse6pi(benchmark::State& s) { run_case(s, case_b(6.0 * kPi)); }
 void BM_C_RigidKobe(benchmark::State& s) { run_case(s, case_c()); }
 void BM_D_OscillatorKobe(benchmark::State& s) { run_case(s, case_d_oscillator()); }
 void BM_D_Cantilever4Kobe(benchmark::State& s) { run_case(s, case_d_cantilever()); }
+void BM_D_Cantilever8Kobe(benchmark::State& s) { run_case(s, case_d_cantilever(8)); }
+// the same cantilever with n = 0 (rigid), 1, 2, 4 and 8 modes: the cost against n, per record
+// interval (CPU per run / intervals) and per right-hand side (CPU per run / rhs)
+void BM_ModesKobe(benchmark::State& s) {
+  const Case c = case_d_cantilever(static_cast<int>(s.range(0)));
+  run_case(s, c);
+  s.counters["intervals"] = static_cast<double>(c.motion.times().size() - 1);
+}
 
 // the same cases with the options the engine had before it followed flight (chatter_ratio 0.01,
 // overturning at the static angle): the event loop's cost at equal work, against the old engine
@@ -126,6 +134,8 @@ FLEXROCK_WHOLE_RUN(BM_B_RigidPulse6pi);
 FLEXROCK_WHOLE_RUN(BM_C_RigidKobe);
 FLEXROCK_WHOLE_RUN(BM_D_OscillatorKobe);
 FLEXROCK_WHOLE_RUN(BM_D_Cantilever4Kobe);
+FLEXROCK_WHOLE_RUN(BM_D_Cantilever8Kobe);
+FLEXROCK_WHOLE_RUN(BM_ModesKobe)->ArgName("n")->Arg(0)->Arg(1)->Arg(2)->Arg(4)->Arg(8);
 FLEXROCK_WHOLE_RUN(BM_A_RigidFreeRocking_OldOptions);
 FLEXROCK_WHOLE_RUN(BM_B_RigidPulse2pi_OldOptions);
 FLEXROCK_WHOLE_RUN(BM_C_RigidKobe_OldOptions);

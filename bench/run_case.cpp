@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Runs one benchmark case at a given tolerance, repeatedly, and prints the median CPU time per
 // run with the quantities the peer comparison judges accuracy by (bench/peers/compare.py).
-//   flexrock_run_case <a|b2|b6|c|d1|d4> <rtol> <repetitions>
+//   flexrock_run_case <a|b2|b6|c|d1|d4|d8> <rtol> <repetitions>
 #include <algorithm>
 #include <cstdio>
 #include <ctime>
@@ -24,7 +24,7 @@ int main(int argc, char** argv) {
   using namespace flexrock;
   using namespace flexrock::bench;
   if (argc != 4) {
-    std::fprintf(stderr, "usage: flexrock_run_case <a|b2|b6|c|d1|d4> <rtol> <repetitions>\n");
+    std::fprintf(stderr, "usage: flexrock_run_case <a|b2|b6|c|d1|d4|d8> <rtol> <repetitions>\n");
     return 2;
   }
   const std::string name = argv[1];
@@ -35,7 +35,8 @@ int main(int argc, char** argv) {
            : name == "b6" ? case_b(6.0 * kPi, rtol)
            : name == "c"  ? case_c(rtol)
            : name == "d1" ? case_d_oscillator(rtol)
-                          : case_d_cantilever(rtol);
+           : name == "d8" ? case_d_cantilever(8, rtol)
+                          : case_d_cantilever(4, rtol);
   std::vector<double> times;
   SimulationResult r;
   for (int i = 0; i < reps; ++i) {
