@@ -459,7 +459,7 @@ int cmd_params(const std::string& file) {
     if (compliant) {
       const double mg = p.mass * p.gravity;
       const double k =
-          0.5 * mg / std::pow(0.5 * mg / opt.contact_stiffness, 1.0 / opt.contact_exponent);
+          0.5 * mg / static_penetration(opt.contact_stiffness, opt.contact_exponent, 0.5 * mg);
       duration = std::numbers::pi / std::sqrt(2.0 * k / p.mass);
     }
     const ImpactRegime reg = impact_regime(body.natural_frequencies(), duration);

@@ -605,11 +605,8 @@ def _options(options: Optional[SimulationOptions], kwargs: dict) -> SimulationOp
             raise InputError(f"simulate: unknown option {key!r}")
         if key == "overturn" and isinstance(value, str):
             value = getattr(OverturnCriterion, value)
-        if key == "impact_law" and isinstance(value, str):
-            if value not in ImpactLaw.__members__:
-                raise InputError(f"simulate: impact_law {value!r} is not one of {', '.join(ImpactLaw.__members__)}")
-            value = ImpactLaw.__members__[value]
-        for name, enum in (("contact_model", ContactModel), ("contact_force_law", ContactForceLaw)):
+        for name, enum in (("impact_law", ImpactLaw), ("contact_model", ContactModel),
+                           ("contact_force_law", ContactForceLaw)):
             if key == name and isinstance(value, str):
                 if value not in enum.__members__:
                     raise InputError(f"simulate: {name} {value!r} is not one of {', '.join(enum.__members__)}")

@@ -31,8 +31,8 @@ CornerContact corner_contact(const Body& body, const SimulationOptions& opt) {
   // stiffness there: the tangential spring's default, and the Hunt-Crossley law's slowest
   // meaningful approach speed (a contact that begins slower than sqrt(g delta_static) is
   // quasi-static: its damping is that of one beginning at that speed)
-  const double delta_static = std::pow(0.5 * m * g / cc.k, 1.0 / cc.p);
-  const double k_secant = 0.5 * m * g / delta_static;
+  const double delta_static = static_penetration(cc.k, cc.p, 0.5 * m * g);
+  cc.k_secant = 0.5 * m * g / delta_static;
   const double zeta = opt.contact_restitution >= 0.0
                           ? damping_ratio_for_restitution(opt.contact_restitution)
                           : opt.contact_damping_ratio;
@@ -44,7 +44,7 @@ CornerContact corner_contact(const Body& body, const SimulationOptions& opt) {
     cc.hc = 0.75 * (1.0 - e * e);
     cc.v_floor = std::sqrt(g * delta_static);
   }
-  cc.k_t = opt.contact_tangential_stiffness > 0.0 ? opt.contact_tangential_stiffness : k_secant;
+  cc.k_t = opt.contact_tangential_stiffness > 0.0 ? opt.contact_tangential_stiffness : cc.k_secant;
   cc.c_t = 2.0 * (cc.law == ContactForceLaw::kLinear ? zeta : 1.0) * std::sqrt(0.5 * cc.k_t * m);
   return cc;
 }
@@ -55,10 +55,8 @@ namespace {
 // horizontal ones), omega (zeta + sqrt(zeta^2 - 1)) when overdamped, twice that because a
 // corner's effective mass is below half the body's
 double contact_rate(const Body& body, const CornerContact& cc) {
-  const double m = body.params().mass, g = body.g();
-  const double k_n = cc.law == ContactForceLaw::kLinear
-                         ? cc.k
-                         : 0.5 * m * g / std::pow(0.5 * m * g / cc.k, 1.0 / cc.p);
+  const double m = body.params().mass;
+  const double k_n = cc.law == ContactForceLaw::kLinear ? cc.k : cc.k_secant;
   auto rate = [m](double k, double c) {
     const double w = std::sqrt(2.0 * k / m), zeta = c / (2.0 * std::sqrt(0.5 * k * m));
     return w * (zeta + std::sqrt(std::max(zeta * zeta - 1.0, 0.0)));
@@ -423,12 +421,13 @@ class CompliantSim final : private GuardProbe {
     return o;
   }
 
-  void observe(const GuardSample& gs, const State& x) {
+  // gs and fn (the corners' normal forces) as evaluate() left them for the instant x
+  void observe(const GuardSample& gs, const State& x, const std::array<double, 2>& fn) {
     rec_.observe(observation(gs, x));
     for (std::size_t j = 0; j < 2; ++j) {
       if (corner_[j].state == CornerState::kFree) continue;
-      corner_[j].peak = std::max(corner_[j].peak, fn_[j]);
-      res_.extremes.max_contact_force = std::max(res_.extremes.max_contact_force, fn_[j]);
+      corner_[j].peak = std::max(corner_[j].peak, fn[j]);
+      res_.extremes.max_contact_force = std::max(res_.extremes.max_contact_force, fn[j]);
     }
   }
 
@@ -486,7 +485,7 @@ class CompliantSim final : private GuardProbe {
   }
 
   // mode-time bookkeeping around a change of the corners' states
-  void before_change(double t) { mode_before_ = mode(), t_change_ = t; }
+  void before_change() { mode_before_ = mode(); }
   void after_change(double t) {
     const ContactMode now = mode();
     const bool flew = mode_before_ == ContactMode::kFlight, flies = now == ContactMode::kFlight;
@@ -541,7 +540,7 @@ class CompliantSim final : private GuardProbe {
       rec_.event(event_at(t, EventKind::kOverturn, edge, x));
       return false;
     }
-    before_change(t);
+    before_change();
     const int e = slot % 2 + 1;
     const std::size_t j = static_cast<std::size_t>(e - 1);
     Corner& k = corner_[j];
@@ -576,21 +575,16 @@ class CompliantSim final : private GuardProbe {
       close_contact(j);
       k.state = CornerState::kFree;
       zero_start_[j] = true;
-      if (!closes) {
-        if (other.state != CornerState::kFree) {
-          const int pivot = 3 - e;
-          rec_.event(event_at(t, EventKind::kUplift, pivot, x));
-          if (res_.extremes.first_uplift_time < 0.0) {
-            res_.extremes.first_uplift_time = t;
-            res_.extremes.first_uplift_edge = pivot;
-          }
-        } else {
-          rec_.event(event_at(t, EventKind::kLiftOff, 0, x));
-          ++res_.extremes.lift_offs;
-        }
-      } else if (other.state == CornerState::kFree) {
-        ++res_.extremes.lift_offs;
+      if (other.state == CornerState::kFree) {
         rec_.event(event_at(t, EventKind::kLiftOff, 0, x));
+        ++res_.extremes.lift_offs;
+      } else if (!closes) {
+        const int pivot = 3 - e;
+        rec_.event(event_at(t, EventKind::kUplift, pivot, x));
+        if (res_.extremes.first_uplift_time < 0.0) {
+          res_.extremes.first_uplift_time = t;
+          res_.extremes.first_uplift_edge = pivot;
+        }
       }
     } else if (k.state == CornerState::kStick) {
       // the friction limit: the corner slips
@@ -632,6 +626,7 @@ class CompliantSim final : private GuardProbe {
   std::array<Corner, 2> corner_{};
   Transfer transfer_;
   std::array<double, 2> fn_{};  // the corners' normal forces at the last evaluation [N]
+  std::array<std::array<double, 2>, kMaxSamples + 1> fn_at_{};  // fn_ at this step's samples
   std::array<bool, kMaxGuards> zero_start_{};
   std::array<GuardSample, kMaxSamples + 1> smp_;
   std::array<State, kMaxSamples + 1> states_;
@@ -639,7 +634,7 @@ class CompliantSim final : private GuardProbe {
   Vec q_, qd_, qdd_, gq_, z_;
   State buf_;
   double t_end_ = 0, kinetic0_ = 0, potential0_ = 0, contact0_ = 0;
-  double flight_start_ = 0, slide_start_ = 0, t_change_ = 0;
+  double flight_start_ = 0, slide_start_ = 0;
   ContactMode mode_before_ = ContactMode::kFullContact;
   long next_output_ = 0, steps_ = 0;
   double burst_time_ = -1.0;
@@ -702,7 +697,7 @@ SimulationResult CompliantSim<MaxN>::run(const InitialState& init) {
   if (init.theta < 0.0 || (init.theta == 0.0 && init.theta_dot < 0.0)) pivot = 2;
   if (pivot == 0) {
     // both corners on their springs, at the static penetration
-    const double delta = std::pow(0.5 * mg_ / cc_.k, 1.0 / cc_.p);
+    const double delta = static_penetration(cc_.k, cc_.p, 0.5 * mg_);
     x(0) = h_ * dyn_.psi_x().dot(q_);
     x(1) = h_ * (1.0 + dyn_.psi_y().dot(q_)) - delta;
     x(iv()) = h_ * dyn_.psi_x().dot(qd_);
@@ -711,7 +706,7 @@ SimulationResult CompliantSim<MaxN>::run(const InitialState& init) {
     place_at_rest(init, x);
   } else {
     // rocking on the pivot's spring, pressed by the whole weight
-    const double delta = std::pow(mg_ / cc_.k, 1.0 / cc_.p);
+    const double delta = static_penetration(cc_.k, cc_.p, mg_);
     Eigen::Vector2d r, v;
     const double s = std::sin(x(2)), c = std::cos(x(2));
     dyn_.cg_from_pivot(pivot, s, c, q_, x(iv() + 2), qd_, r, v);
@@ -762,6 +757,7 @@ bool CompliantSim<MaxN>::advance(double& t, State& x) {
       integ_.dense(tk, xk);
     }
     evaluate(tk, xk, smp_[static_cast<std::size_t>(k)]);
+    fn_at_[static_cast<std::size_t>(k)] = fn_;
   }
   double t_hit = std::numeric_limits<double>::infinity();
   int slot_hit = -1;
@@ -775,10 +771,9 @@ bool CompliantSim<MaxN>::advance(double& t, State& x) {
   }
   // the extremes at the samples before the crossing (the normal forces at them included)
   for (int k = 0; k <= samples_; ++k) {
-    const GuardSample& gs = smp_[static_cast<std::size_t>(k)];
-    if (gs.t >= t_hit) break;
-    evaluate(gs.t, states_[static_cast<std::size_t>(k)], smp_[static_cast<std::size_t>(k)]);
-    observe(gs, states_[static_cast<std::size_t>(k)]);
+    const std::size_t i = static_cast<std::size_t>(k);
+    if (smp_[i].t >= t_hit) break;
+    observe(smp_[i], states_[i], fn_at_[i]);
   }
   zero_start_.fill(false);
   if (slot_hit < 0) {
@@ -786,9 +781,6 @@ bool CompliantSim<MaxN>::advance(double& t, State& x) {
     t = t1;
     x = integ_.x1();
     if (transfer_.event >= 0 && !(x(iv() + 2) * transfer_.theta_dot > 0.0)) close_transfer(x);
-    GuardSample gs;
-    evaluate(t, x, gs);
-    observe(gs, x);
     if (opt_.progress) opt_.progress->store(t, std::memory_order_relaxed);
     return true;
   }
@@ -798,7 +790,7 @@ bool CompliantSim<MaxN>::advance(double& t, State& x) {
   x = integ_.x1();
   GuardSample gs;
   evaluate(t, x, gs);
-  observe(gs, x);
+  observe(gs, x, fn_);
   // Zeno: more than 64 changes within 1e-9 s end the run
   if (burst_time_ >= 0.0 && t - burst_time_ <= 1e-9) {
     if (++burst_ > 64)

@@ -76,15 +76,21 @@ inline const char* to_string(ContactForceLaw l) {
 /// body's mass (docs/theory.md, "Compliant contact").
 struct CornerContact {
   ContactForceLaw law = ContactForceLaw::kLinear;
-  double k = 0.0;        // [N/m^p] normal stiffness
-  double p = 1.0;        // exponent of the penetration
-  double c = 0.0;        // [N s/m] linear: normal dashpot
-  double hc = 0.0;       // [-] Hunt-Crossley: 3 (1 - e^2) / 4 (times delta_dot / v_in)
-  double v_floor = 0.0;  // [m/s] Hunt-Crossley: the approach speed below which a contact is
-                         // quasi-static: sqrt(g delta_static)
-  double k_t = 0.0;      // [N/m] tangential spring of a sticking corner
-  double c_t = 0.0;      // [N s/m] tangential dashpot
+  double k = 0.0;         // [N/m^p] normal stiffness
+  double p = 1.0;         // exponent of the penetration
+  double c = 0.0;         // [N s/m] linear: normal dashpot
+  double hc = 0.0;        // [-] Hunt-Crossley: 3 (1 - e^2) / 4 (times delta_dot / v_in)
+  double v_floor = 0.0;   // [m/s] Hunt-Crossley: the approach speed below which a contact is
+                          // quasi-static: sqrt(g delta_static)
+  double k_secant = 0.0;  // [N/m] the normal spring's secant stiffness under half the weight
+  double k_t = 0.0;       // [N/m] tangential spring of a sticking corner
+  double c_t = 0.0;       // [N s/m] tangential dashpot
 };
+
+/// The penetration [m] at which a spring k delta^p [N/m^p] carries `load` [N].
+inline double static_penetration(double k, double p, double load) {
+  return std::pow(load / k, 1.0 / p);
+}
 
 /// The damping ratio of a linear spring-dashpot whose free rebound has restitution e:
 /// e = exp(-zeta pi / sqrt(1 - zeta^2)); e = 0 gives critical damping.
