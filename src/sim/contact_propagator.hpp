@@ -228,8 +228,8 @@ class ContactPropagator {
       eta_(i) = sd * inv_omega_(i) + eta_static_(i);
       etad_(i) = sv;
     }
-    q.noalias() = from_modal_ * eta_;
-    qd.noalias() = from_modal_ * etad_;
+    q.noalias() = Dyn::mv(from_modal_, eta_);
+    qd.noalias() = Dyn::mv(from_modal_, etad_);
   }
 
   // q, q_dot at tau in the current step: from the cache at the usual fractions, else computed
@@ -261,8 +261,8 @@ class ContactPropagator {
     g1_ = gxm_ * slope_.x + gym_ * (slope_.y / dyn_.g());
     q_ = x.segment(1, n_);
     qd_ = x.segment(n_ + 2, n_);
-    eta_.noalias() = to_modal_ * q_;
-    sv0_.noalias() = to_modal_ * qd_;
+    eta_.noalias() = Dyn::mv(to_modal_, q_);
+    sv0_.noalias() = Dyn::mv(to_modal_, qd_);
     sd0_ = omega_.cwiseProduct(eta_ - eta_static_);
     h_ = h;
     // the usual step fills the cache; a short one after an event computes its own

@@ -452,10 +452,10 @@ void Simulator<N, MaxN>::evaluate(double t, const State& x, GuardSample& s) {
       constexpr ContactMode m = ContactMode::kFullContact;
       dyn_.full_contact_acceleration(q_, qd_, a, qdd_);
       const Eigen::Vector2d r = dyn_.full_contact_reaction(qdd_, a);
-      const Eigen::Vector2d u = dyn_.uplift_functions(q_, qdd_, a);
+      Eigen::Vector2d u;
       s.fi = r(0);
       s.fj = r(1);
-      s.moment = dyn_.contact_moment(0.0, q_, qdd_, a);
+      s.moment = dyn_.contact_moments(q_, qdd_, a, u);
       v[kSlot<m, Guard::kUpliftEdge1>] = u(0);
       v[kSlot<m, Guard::kUpliftEdge2>] = u(1);
       v[kSlot<m, Guard::kLiftOff>] = s.fj;
@@ -494,10 +494,10 @@ void Simulator<N, MaxN>::evaluate(double t, const State& x, GuardSample& s) {
       Eigen::Vector2d r;
       const double dd = slide_acceleration(0.0, 1.0, 0.0, a, thdd, r);
       const BaseAcceleration as{a.x + dd, a.y};  // the sliding base's acceleration
-      const Eigen::Vector2d u = dyn_.uplift_functions(q_, qdd_, as);
+      Eigen::Vector2d u;
       s.fi = r(0);
       s.fj = r(1);
-      s.moment = dyn_.contact_moment(0.0, q_, qdd_, as);
+      s.moment = dyn_.contact_moments(q_, qdd_, as, u);
       v[kSlot<m, Guard::kUpliftEdge1>] = u(0);
       v[kSlot<m, Guard::kUpliftEdge2>] = u(1);
       v[kSlot<m, Guard::kLiftOff>] = s.fj;

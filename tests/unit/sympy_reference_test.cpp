@@ -161,6 +161,12 @@ TEST_F(SympyReference, FullContactAccelerationReactionAndResultant) {
       const double fj = r(1) / mg;
       expect_close(u(0), fj * (alpha_star + body.alpha1()), fj * alpha_star, "U1");
       expect_close(u(1), fj * (body.alpha2() - alpha_star), fj * alpha_star, "U2");
+      // the same three moments from the one product the event loop evaluates
+      Eigen::Vector2d uc;
+      const double r0 = dyn.contact_moments(q, qdd, base, uc);
+      expect_close(r0, fj * alpha_star, fj * alpha_star, "R(0)");
+      expect_close(uc(0), fj * (alpha_star + body.alpha1()), fj * alpha_star, "U1 (moments)");
+      expect_close(uc(1), fj * (body.alpha2() - alpha_star), fj * alpha_star, "U2 (moments)");
       ++checked;
     }
   }

@@ -65,6 +65,18 @@ class Dynamics {
     }
   }
 
+  /// A matrix-vector product: unrolled in place for fixed sizes above 4, where Eigen would call
+  /// its general kernel at a cost above the product's own (up to 4 it unrolls by itself); the
+  /// kernel for dynamic sizes.
+  template <class A, class V>
+  static auto mv(const A& a, const V& v) {
+    if constexpr (N != Eigen::Dynamic && N > 4) {
+      return a.lazyProduct(v);
+    } else {
+      return a * v;
+    }
+  }
+
   int modes() const { return n_; }
   double mass() const { return mass_; }
   double height() const { return h_; }
@@ -82,12 +94,12 @@ class Dynamics {
   /// Rotational inertia about the pivot, over M h^2: m = 1 + zeta^2 + alpha^2 +
   /// 2 (delta - alpha psi_x + psi_y).q + q^T mu q.
   double inertia(double a, const Vec& q) const {
-    return 1.0 + zeta2_ + a * a + 2.0 * (delta_ - a * psi_x_ + psi_y_).dot(q) + q.dot(mu_ * q);
+    return 1.0 + zeta2_ + a * a + 2.0 * (delta_ - a * psi_x_ + psi_y_).dot(q) + q.dot(mv(mu_, q));
   }
   /// Coupling of theta_dot and q_dot in the kinetic energy: b_j = beta_j + gamma_ij q_i -
   /// alpha psi_yj - psi_xj.
   Vec coupling(double a, const Vec& q) const {
-    return beta_ + gamma_.transpose() * q - a * psi_y_ - psi_x_;
+    return beta_ + mv(gamma_.transpose(), q) - a * psi_y_ - psi_x_;
   }
 
   /// Accelerations while rocking on `edge` (the paper's eqs. 1 and 2, derived in theory.md).
@@ -106,16 +118,16 @@ class Dynamics {
     // effective gravity over g in body axes: G = f(Xdd/g, 1 + Ydd/g, theta)
     const double gx = ax * c + ay * s, gy = ay * c - ax * s;
     const double wx = -a + psi_x_.dot(q), wy = 1.0 + psi_y_.dot(q);
-    const Vec cv = delta_ - a * psi_x_ + psi_y_ + mu_ * q;  // half the gradient of m in q
+    const Vec cv = delta_ - a * psi_x_ + psi_y_ + mv(mu_, q);  // half the gradient of m in q
     const Vec b = coupling(a, q);
     const double m = 1.0 + zeta2_ + a * a + (cv + delta_ - a * psi_x_ + psi_y_).dot(q);
     const double f_theta = -2.0 * cv.dot(q_dot) * theta_dot - gh_ * (wx * gy - wy * gx);
-    Vec f_q = theta_dot * (theta_dot * cv - 2.0 * (gamma_.transpose() * q_dot)) - stiffness_ * q -
-              gh_ * (psi_x_ * gx + psi_y_ * gy);
-    if (damped_) f_q.noalias() -= damping_ * q_dot;
+    Vec f_q = theta_dot * (theta_dot * cv - 2.0 * mv(gamma_.transpose(), q_dot)) -
+              mv(stiffness_, q) - gh_ * (psi_x_ * gx + psi_y_ * gy);
+    if (damped_) f_q.noalias() -= mv(damping_, q_dot);
     // block elimination with the constant mu^-1: (m - b^T mu^-1 b) thdd = f_theta - b^T mu^-1 f_q
-    const Vec z = mu_inv_ * b;
-    const Vec y = mu_inv_ * f_q;
+    const Vec z = mv(mu_inv_, b);
+    const Vec y = mv(mu_inv_, f_q);
     theta_ddot = (f_theta - b.dot(y)) / (m - b.dot(z));
     q_ddot = y - z * theta_ddot;
   }
@@ -124,9 +136,11 @@ class Dynamics {
   void full_contact_acceleration(const Vec& q, const Vec& q_dot, BaseAcceleration base,
                                  Vec& q_ddot) const {
     const double ax = base.x / g_, ay = 1.0 + base.y / g_;
-    Vec f = -(stiffness_ * q) - gh_ * (psi_x_ * ax + psi_y_ * ay);
-    if (damped_) f.noalias() -= damping_ * q_dot;
-    q_ddot = mu_inv_ * f;
+    // K q and the static load cancel at rest before mu^-1 applies: a product mu^-1 K formed once
+    // would round at cond(K) ulp of the sag, where a soft mode beside a stiff one then swings
+    Vec f = -mv(stiffness_, q) - gh_ * (psi_x_ * ax + psi_y_ * ay);
+    if (damped_) f.noalias() -= mv(damping_, q_dot);
+    q_ddot = mv(mu_inv_, f);
   }
 
   /// Reaction of the floor on the body over M g, inertial components (I, J), while rocking on
@@ -172,6 +186,18 @@ class Dynamics {
   Eigen::Vector2d uplift_functions(const Vec& q, const Vec& q_ddot, BaseAcceleration base) const {
     return {contact_moment(-alpha1_, q, q_ddot, base), -contact_moment(alpha2_, q, q_ddot, base)};
   }
+  /// The contact moments of a guard sample at once: R(0) (returned) and the uplift functions
+  /// (U1, U2) = (R(-alpha1), -R(alpha2)). R is linear in a, R(a) = R(0) - a (psi_y.q''/(g/h) +
+  /// 1 + Ydd/g), so one product gamma^T q serves all three.
+  double contact_moments(const Vec& q, const Vec& q_ddot, BaseAcceleration base,
+                         Eigen::Vector2d& uplift) const {
+    const double ax = base.x / g_, ay = 1.0 + base.y / g_;
+    const double r0 =
+        coupling(0.0, q).dot(q_ddot) / gh_ + psi_x_.dot(q) * ay - (1.0 + psi_y_.dot(q)) * ax;
+    const double slope = psi_y_.dot(q_ddot) / gh_ + ay;  // -dR/da
+    uplift = {r0 + alpha1_ * slope, alpha2_ * slope - r0};
+    return r0;
+  }
 
   /// Location of the resultant in full contact over h, from the c.g. projection (paper eq. 4).
   double resultant_location(const Vec& q, const Vec& q_ddot, BaseAcceleration base) const {
@@ -183,7 +209,7 @@ class Dynamics {
   double kinetic_energy(double a, const Vec& q, double theta_dot, const Vec& q_dot) const {
     return 0.5 * mass_ * h_ * h_ *
            (inertia(a, q) * theta_dot * theta_dot + 2.0 * theta_dot * coupling(a, q).dot(q_dot) +
-            q_dot.dot(mu_ * q_dot));
+            q_dot.dot(mv(mu_, q_dot)));
   }
   /// Gravity and strain energy [J]: V = M g h (J.w + 1/2 q^T kappa q), evaluated as
   /// M g h (sin(theta) w_x + cos(theta) + (cos(theta) - 1) psi_y.q + sag_terms(q)).
@@ -209,7 +235,7 @@ class Dynamics {
   }
   /// Power dissipated by material damping [W]: M h^2 q_dot^T C q_dot.
   double damping_power(const Vec& q_dot) const {
-    return damped_ ? mass_ * h_ * h_ * q_dot.dot(damping_ * q_dot) : 0.0;
+    return damped_ ? mass_ * h_ * h_ * q_dot.dot(mv(damping_, q_dot)) : 0.0;
   }
 
   /// Linear velocity of the c.g. relative to the base [m/s], body axes at theta = 0 (= inertial).
