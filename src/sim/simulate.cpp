@@ -352,7 +352,7 @@ SimulationResult simulate(const Body& body, const GroundMotion& motion, const In
   check_options(body, init, options);
   if (options.contact_model == ContactModel::kCompliant)
     return checked(body, detail::simulate_compliant(body, motion, init, options));
-  // fixed sizes for the common small bodies, a stack-bounded size up to 16 modes, heap beyond
+  // fixed sizes up to 8 modes, a stack-bounded size up to 16, heap beyond
   switch (body.modes()) {
     case 0:
       return run<0, 0>(body, motion, init, options);
@@ -364,6 +364,14 @@ SimulationResult simulate(const Body& body, const GroundMotion& motion, const In
       return run<3, 3>(body, motion, init, options);
     case 4:
       return run<4, 4>(body, motion, init, options);
+    case 5:
+      return run<5, 5>(body, motion, init, options);
+    case 6:
+      return run<6, 6>(body, motion, init, options);
+    case 7:
+      return run<7, 7>(body, motion, init, options);
+    case 8:
+      return run<8, 8>(body, motion, init, options);
     default:
       if (body.modes() <= 16) return run<Eigen::Dynamic, 16>(body, motion, init, options);
       return run<Eigen::Dynamic, Eigen::Dynamic>(body, motion, init, options);

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// The event loop for bodies with 5 to 16 modes (stack-bounded) and with more (heap), see
+// The event loop for bodies with 9 to 16 modes (stack-bounded) and with more (heap), see
 // simulator_instances.hpp.
 #include "simulator.hpp"
 

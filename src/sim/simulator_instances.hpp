@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// The body sizes the event loop is compiled for: fixed sizes for the common small bodies, a
-// stack-bounded size up to 16 modes, heap beyond. Each is instantiated once, in its own file
+// The body sizes the event loop is compiled for: fixed sizes up to 8 modes (the usual bodies: the
+// products of the equations then unroll, where a dynamic size calls a general kernel for each),
+// a stack-bounded size up to 16 modes, heap beyond. Each is instantiated once, in its own file
 // (simulator_n*.cpp), so that they compile in parallel. Internal header.
 #pragma once
 
@@ -13,6 +14,10 @@ extern template class Simulator<1, 1>;
 extern template class Simulator<2, 2>;
 extern template class Simulator<3, 3>;
 extern template class Simulator<4, 4>;
+extern template class Simulator<5, 5>;
+extern template class Simulator<6, 6>;
+extern template class Simulator<7, 7>;
+extern template class Simulator<8, 8>;
 extern template class Simulator<Eigen::Dynamic, 16>;
 extern template class Simulator<Eigen::Dynamic, Eigen::Dynamic>;
 

@@ -1,0 +1,7 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// The event loop for bodies with 8 mode(s) (see simulator_instances.hpp).
+#include "simulator.hpp"
+
+namespace flexrock::detail {
+template class Simulator<8, 8>;
+}  // namespace flexrock::detail
