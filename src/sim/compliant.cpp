@@ -14,8 +14,7 @@
 #include "automaton.hpp"
 #include "event_location.hpp"
 #include "flexrock/core/format.hpp"
-#include "flexrock/integrate/dopri5.hpp"
-#include "flexrock/integrate/rosenbrock4.hpp"
+#include "flexrock/integrate/stiff_switching.hpp"
 #include "flexrock/model/dynamics.hpp"
 #include "recorder.hpp"
 
@@ -85,110 +84,6 @@ struct Transfer {
   double theta_dot = 0;             // [rad/s] at the touch
 };
 
-// The contact's integrator: DOPRI5 while accuracy sets the step, the Rosenbrock method while the
-// springs' stability would (an explicit step is held below about 3.3 / lambda by the contact's
-// fastest rate lambda however slowly the body moves: a body resting on its springs), switched at
-// step boundaries like LSODA switches between its methods. Both meet the same tolerances, so the
-// switch changes cost, not answers (tests: runs forced to either agree to the tolerance).
-template <class State>
-class ContactStepper {
- public:
-  // lambda: the contact's fastest rate [1/s]; mode: 0 switch, 1 explicit only, 2 implicit only
-  ContactStepper(double lambda, int mode)
-      : h_stable_(3.3 / lambda), mode_(mode), stiff_(mode == 2) {}
-
-  template <class System>
-  void start(System&& sys, const StepControl& ctl, double t, const State& x, double h = 0.0) {
-    ctl_ = ctl;
-    // a Rosenbrock step: a Jacobian by differences of the controlled components, six stages, an
-    // LU; a DOPRI5 step: six stages
-    const double m = ctl.controlled < 0 ? static_cast<double>(x.size()) : ctl.controlled;
-    cost_ratio_ = (m + 7.0) / 6.0;
-    count_ = 0;
-    if (stiff_) {
-      ros_.start(sys, ctl, t, x, h);
-    } else {
-      dop_.start(sys, ctl, t, x, h);
-    }
-  }
-
-  template <class System>
-  bool step(System&& sys, double t_stop) {
-    if (mode_ == 0) switch_if_due(sys);
-    const bool ok = stiff_ ? ros_.step(sys, t_stop) == Rosenbrock4<State>::Status::kAccepted
-                           : dop_.step(sys, t_stop) == Dopri5<State>::Status::kAccepted;
-    if (!ok) return false;
-    const double h = t1() - t0();
-    const bool full = h < t_stop - t0() || t1() < t_stop;  // not a step cut short by t_stop
-    ++dwell_steps_;
-    if (stiff_) {
-      // accuracy now asks for steps short enough that the explicit method, stable up to
-      // h_stable and cost_ratio times cheaper a step, does the same work for less
-      count_ = full && h < 0.5 * cost_ratio_ * h_stable_ ? count_ + 1 : 0;
-    } else {
-      // the explicit steps are at the stability bound: stability, not accuracy, holds them
-      count_ = full && h > 0.25 * h_stable_ ? count_ + 1 : (full ? 0 : count_);
-    }
-    return true;
-  }
-
-  template <class System>
-  void restep_to(System&& sys, double t) {
-    if (stiff_) {
-      ros_.restep_to(sys, t);
-    } else {
-      dop_.restep_to(sys, t);
-    }
-  }
-  void dense(double t, State& out) const {
-    if (stiff_) {
-      ros_.dense(t, out);
-    } else {
-      dop_.dense(t, out);
-    }
-  }
-  double t0() const { return stiff_ ? ros_.t0() : dop_.t0(); }
-  double t1() const { return stiff_ ? ros_.t1() : dop_.t1(); }
-  const State& x0() const { return stiff_ ? ros_.x0() : dop_.x0(); }
-  const State& x1() const { return stiff_ ? ros_.x1() : dop_.x1(); }
-  double suggested_step() const { return stiff_ ? ros_.suggested_step() : dop_.suggested_step(); }
-  long rhs_evaluations() const { return ros_.rhs_evaluations() + dop_.rhs_evaluations(); }
-  long rejected_steps() const { return ros_.rejected_steps() + dop_.rejected_steps(); }
-  long switches() const { return switches_; }
-
- private:
-  template <class System>
-  void switch_if_due(System& sys) {
-    if (count_ < (stiff_ ? 4 : dwell_)) return;
-    const double t = t1(), h = suggested_step();
-    x_ = x1();
-    // a stiff period that did not last makes the next switch to it wait longer (no ping-pong)
-    if (stiff_) dwell_ = dwell_steps_ < 64 ? std::min(2 * dwell_, 4096) : std::max(dwell_ / 2, 8);
-    stiff_ = !stiff_;
-    count_ = 0;
-    dwell_steps_ = 0;
-    ++switches_;
-    if (stiff_) {
-      ros_.start(sys, ctl_, t, x_, 2.0 * h);
-    } else {
-      dop_.start(sys, ctl_, t, x_, std::min(h, h_stable_));
-    }
-  }
-
-  double h_stable_;
-  int mode_;
-  double cost_ratio_ = 2.0;
-  int dwell_ = 8;         // explicit steps at the stability bound before the switch to Rosenbrock
-  long dwell_steps_ = 0;  // steps since the last switch
-  StepControl ctl_;
-  Dopri5<State> dop_;
-  Rosenbrock4<State> ros_;
-  State x_;
-  bool stiff_;
-  int count_ = 0;
-  long switches_ = 0;
-};
-
 template <int MaxN>
 class CompliantSim final : private GuardProbe {
   static constexpr int MaxS = MaxN == Eigen::Dynamic ? Eigen::Dynamic : 2 * (3 + MaxN) + 6;
@@ -206,7 +101,7 @@ class CompliantSim final : private GuardProbe {
         opt_(opt),
         n_(body.modes()),
         cc_(corner_contact(body, opt)),
-        integ_(contact_rate(body, cc_), static_cast<int>(opt.contact_integrator)),
+        integ_(3.3 / contact_rate(body, cc_), static_cast<StiffMethod>(opt.contact_integrator)),
         rec_(res_, body.params().mass, body.g(), body.params().height, body.modes()) {
     m_ = body.params().mass;
     g_ = body.g();
@@ -615,7 +510,10 @@ class CompliantSim final : private GuardProbe {
   SimulationOptions opt_;
   int n_;
   CornerContact cc_;
-  ContactStepper<State> integ_;
+  // DOPRI5 while accuracy sets the step, the Rosenbrock method while the springs' stability
+  // would: an explicit step is held below about 3.3 / lambda by the contact's fastest rate lambda
+  // however slowly the body moves (a body resting on its springs)
+  StiffSwitching<State> integ_;
   SimulationResult res_;
   Recorder rec_;
   double m_ = 0, g_ = 0, h_ = 0, mg_ = 0, mu_s_ = 0, mu_k_ = 0;
@@ -738,7 +636,7 @@ template <int MaxN>
 bool CompliantSim<MaxN>::advance(double& t, State& x) {
   auto sys = [this](double tt, const State& z, State& dz) { rhs(tt, z, dz); };
   const double t_stop = std::min(motion_.next_breakpoint(t, break_cursor_), t_end_);
-  if (!integ_.step(sys, t_stop))
+  if (integ_.step(sys, t_stop) != StiffSwitching<State>::Status::kAccepted)
     return stop(t, "the integrator's step collapsed at t = " + format_number(t, 9) +
                        " s (a contact stiffer than rtol/atol can follow)");
   if (++steps_ > opt_.max_steps)

@@ -7,6 +7,7 @@
 #include <Eigen/LU>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "flexrock/integrate/dopri5.hpp"
 
@@ -67,6 +68,7 @@ class Rosenbrock4 {
     h_ = h > 0.0 ? h : std::min(1e-3 * ctl.max_step, 1e-5);
     first_ = true;
     last_rejected_ = false;
+    t_right_ = -std::numeric_limits<double>::infinity();
   }
 
   enum class Status { kAccepted, kStepCollapsed };
@@ -120,6 +122,13 @@ class Rosenbrock4 {
     extension();
   }
 
+  /// After a step that ended on a jump of the forcing, the next step (and a re-step from there)
+  /// evaluates f at its start at `t_eval`, the jump's right-hand side.
+  template <class System>
+  void refresh_derivative(System&& /*sys*/, double t_eval) {
+    t_right_ = t_eval;
+  }
+
   void dense(double t, State& out) const {
     const double s = (t - t0_) / (t1_ - t0_), s1 = 1.0 - s;
     out = x0_ * s1 + s * (x1_ + s1 * (c3_ + s * c4_));
@@ -161,7 +170,9 @@ class Rosenbrock4 {
   void stages(System& sys, const State& x, double t, double dt) {
     const Eigen::Index m = x.size();
     const Eigen::Index controlled = ctl_.controlled < 0 ? m : ctl_.controlled;
-    sys(t, x, f_);
+    // at a jump of the forcing the step starts from its right-hand limit (refresh_derivative)
+    const double ts = t < t_right_ && t_right_ <= std::nextafter(t, t_right_) ? t_right_ : t;
+    sys(ts, x, f_);
     // the Jacobian by forward differences; the accumulated integrals feed no right-hand side
     tmp_ = x;
     for (Eigen::Index j = 0; j < m; ++j) {
@@ -171,12 +182,12 @@ class Rosenbrock4 {
       }
       const double d = 1.5e-8 * std::max(std::abs(x(j)), 1e-4);
       tmp_(j) = x(j) + d;
-      sys(t, tmp_, f1_);
+      sys(ts, tmp_, f1_);
       tmp_(j) = x(j);
       jac_.col(j) = (f1_ - f_) / d;
     }
     const double dtt = 1.5e-8 * std::max(std::abs(t), 1.0);
-    sys(t + dtt, x, f1_);
+    sys(ts + dtt, x, f1_);
     dfdt_ = (f1_ - f_) / dtt;
     rhs_ += controlled + 2;
     jac_ *= -1.0;
@@ -207,6 +218,7 @@ class Rosenbrock4 {
   Matrix jac_;
   Eigen::PartialPivLU<Matrix> lu_;
   double t0_ = 0.0, t1_ = 0.0, h_ = 0.0, dt_old_ = 0.0, err_old_ = 0.0;
+  double t_right_ = -std::numeric_limits<double>::infinity();  // [s] see refresh_derivative
   bool first_ = true, last_rejected_ = false;
   long rhs_ = 0, rejected_ = 0;
 };
