@@ -22,8 +22,10 @@
 #include "flexrock/contact/impact.hpp"
 #include "flexrock/core/error.hpp"
 #include "flexrock/integrate/dopri5.hpp"
+#include "flexrock/integrate/stiff_switching.hpp"
 #include "flexrock/model/dynamics.hpp"
 #include "flexrock/sim/simulate.hpp"
+#include "flexrock/sim/step_cost.hpp"
 #include "recorder.hpp"
 
 namespace flexrock::detail {
@@ -143,6 +145,7 @@ class Simulator final : private GuardProbe {
 
   // ---- the loop
   bool enter_mode(double t, State& x);
+  void configure_rocking_integrator();
   bool advance(double& t, State& x);
   // `buf`: scratch for the stepper's dense output (a vector of the stepper's state)
   template <class Stepper, class System, class Buffer>
@@ -212,7 +215,10 @@ class Simulator final : private GuardProbe {
   int n_;
   StepControl ctl_;
   int samples_ = 4;
-  Dopri5<ContactState> integ_;  // rocking, and full contact when not stepped exactly
+  // rocking, and full contact when not stepped exactly: DOPRI5, and the Rosenbrock method while a
+  // flexible body's stiffest rocking motion would hold the explicit step (theory, "Stiff rocking")
+  StiffSwitching<ContactState> integ_;
+  std::array<double, 2> rocking_h_stable_{-1.0, -1.0};  // [s] per edge, once known (< 0: not yet)
   Dopri5<FlightState> flight_integ_;
   Dopri5<SlideState> slide_integ_;
   mutable SlideState slide_buf_;
@@ -599,6 +605,7 @@ bool Simulator<N, MaxN>::enter_mode(double t, State& x) {
         slide_buf_);
   } else {
     dense_buf_ = x.head(2 * n_ + 4);
+    configure_rocking_integrator();
     integ_.start(
         [this](double tt, const ContactState& xx, ContactState& dd) { contact_rhs(tt, xx, dd); },
         ctl_, t, dense_buf_);
@@ -643,6 +650,22 @@ bool Simulator<N, MaxN>::enter_mode(double t, State& x) {
     }
   }
   return true;
+}
+
+// a flexible body's rocking may be stiff: the explicit method's stability bound on the rocking
+// equations about the pivot (once per edge and run) lets the stepper see when stability, not
+// accuracy, holds its step. Full contact and a rigid body keep DOPRI5.
+template <int N, int MaxN>
+void Simulator<N, MaxN>::configure_rocking_integrator() {
+  const auto method = static_cast<StiffMethod>(opt_.rocking_integrator);
+  if (n_ == 0 || !rocking()) {
+    integ_.configure(std::numeric_limits<double>::infinity(), StiffMethod::kExplicit);
+    return;
+  }
+  double& h = rocking_h_stable_[static_cast<std::size_t>(edge() - 1)];
+  if (h < 0.0 && method == StiffMethod::kAuto)
+    h = rocking_stable_step(body_, edge()) / opt_.stiff_switch_scale;
+  integ_.configure(h, method);
 }
 
 // one accepted step plus whatever happens in it; false when the run ends

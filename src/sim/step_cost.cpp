@@ -4,20 +4,24 @@
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
+#include <complex>
+#include <limits>
 #include <numbers>
 
 #include "flexrock/core/format.hpp"
+#include "flexrock/integrate/dopri5.hpp"
 #include "flexrock/model/dynamics.hpp"
 
 namespace flexrock {
 
 namespace {
 
-// the largest |eigenvalue| of the rocking equations on `edge`, linearized by central
-// differences at theta = 0, the static deformation, no velocity and no base motion: x = (theta,
-// q, theta_dot, q_dot), x' = (theta_dot, q_dot, theta_ddot, q_ddot)
-double rocking_omega(const Body& body, const Dynamics<Eigen::Dynamic, Eigen::Dynamic>& dyn,
-                     int edge) {
+// the eigenvalues of the rocking equations on `edge`, linearized by central differences at
+// theta = 0, the static deformation, no velocity and no base motion: x = (theta, q, theta_dot,
+// q_dot), x' = (theta_dot, q_dot, theta_ddot, q_ddot)
+Eigen::VectorXcd rocking_eigenvalues(const Body& body,
+                                     const Dynamics<Eigen::Dynamic, Eigen::Dynamic>& dyn,
+                                     int edge) {
   const int n = body.modes();
   const int dim = 2 * n + 2;
   VectorX x0 = VectorX::Zero(dim);
@@ -42,7 +46,13 @@ double rocking_omega(const Body& body, const Dynamics<Eigen::Dynamic, Eigen::Dyn
     jac.col(j) = (rhs(xp) - rhs(xm)) / (2.0 * eps);
   }
   const Eigen::EigenSolver<MatrixX> es(jac, false);
-  return es.eigenvalues().cwiseAbs().maxCoeff();
+  return es.eigenvalues();
+}
+
+// the largest |eigenvalue| of the rocking equations on `edge`
+double rocking_omega(const Body& body, const Dynamics<Eigen::Dynamic, Eigen::Dynamic>& dyn,
+                     int edge) {
+  return rocking_eigenvalues(body, dyn, edge).cwiseAbs().maxCoeff();
 }
 
 std::string hz(double omega) {
@@ -63,6 +73,17 @@ StepCost estimate_step_cost(const Body& body, const SimulationOptions& options) 
   c.rocking_min_steps_per_second = c.rocking_omega / kDopri5ImaginaryStability;
   c.rocking_steps_per_second = std::max(c.rocking_omega / c.h_omega, 1.0 / options.max_step);
   return c;
+}
+
+double rocking_stable_step(const Body& body, int edge) {
+  const Dynamics<Eigen::Dynamic, Eigen::Dynamic> dyn(body);
+  double h = std::numeric_limits<double>::infinity();
+  // an undamped mode's eigenvalues come out of the differences with a real part of either sign
+  // at rounding level: taken on the imaginary axis. The rocking motion's growing eigenvalue (real,
+  // about +p) bounds no step.
+  for (const std::complex<double>& mu : rocking_eigenvalues(body, dyn, edge))
+    h = std::min(h, dopri5_stable_step({std::min(mu.real(), 0.0), mu.imag()}));
+  return h;
 }
 
 std::string step_cost_warning(const StepCost& c, double duration, long max_steps) {

@@ -139,6 +139,13 @@ struct SimulationOptions {
   // how the compliant contact is integrated: kAuto switches between DOPRI5 and a Rosenbrock
   // method as the springs' stiffness would hold the explicit step (tests force either)
   ContactIntegrator contact_integrator = ContactIntegrator::kAuto;
+  // how a flexible body's rocking is integrated (docs/theory.md, "Stiff rocking"): kAuto switches
+  // between DOPRI5 and the Rosenbrock method as the body's stiffest rocking motion would hold the
+  // explicit step (tests force either)
+  ContactIntegrator rocking_integrator = ContactIntegrator::kAuto;
+  // factor on that motion's rate where the switch is decided (tests: the switch changes the
+  // cost, not the answer)
+  double stiff_switch_scale = 1.0;
 };
 
 /// Something that happened, in time order. Fields not meaningful for a kind are zero.

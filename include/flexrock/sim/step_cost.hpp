@@ -37,6 +37,14 @@ struct StepCost {
 /// The step cost of `body` at `options` (rtol, max_step); cheap: one eigenproblem per edge.
 StepCost estimate_step_cost(const Body& body, const SimulationOptions& options = {});
 
+/// DOPRI5's stability bound [s] while `body` rocks on `edge` (1 or 2): the longest step with
+/// h lambda in its stability region for every eigenvalue lambda of the rocking equations
+/// linearized at theta = 0 (at rest, the static deformation, no base motion); dopri5_stable_step
+/// of each. The structure's stiffness and damping set the fast eigenvalues, and the tilt and the
+/// deformation change them only through gravity and geometry, by O(g/h) and O(q): the bound holds
+/// along the motion (docs/theory.md, "Stiff rocking").
+double rocking_stable_step(const Body& body, int edge);
+
 /// Steps per simulated second above which a run is called very slow (seconds of computing per
 /// simulated second at ~1-10 us a step).
 inline constexpr double kSlowStepsPerSecond = 1e6;
