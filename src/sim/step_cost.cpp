@@ -109,7 +109,10 @@ std::string step_cost_warning(const StepCost& c, double duration, long max_steps
   } else {
     w += ": a long run is slow";
   }
-  w += " (docs/theory.md, \"Stiff rocking\")";
+  // the estimate is the explicit method's: a damped stiff motion decays, and the rocking
+  // integrator then switches to the Rosenbrock method
+  w += "; where that motion is damped, the rocking integrator switches to a Rosenbrock method "
+       "and takes far fewer (docs/theory.md, \"Stiff rocking\")";
   return w;
 }
 
