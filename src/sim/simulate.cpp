@@ -113,6 +113,8 @@ void check_options(const Body& body, const InitialState& init, const SimulationO
                             "rigid_body)");
   positive(o.impact_duration, "impact_duration",
            "seconds: the contact duration assumed for an impact's force estimate, e.g. 0.002");
+  positive(o.stiff_switch_scale, "stiff_switch_scale",
+           "a factor on the rate where the rocking integrator switches methods; 1 by default");
   FLEXROCK_THROW_UNLESS(!(o.friction_coefficient <= 0.0) && !std::isnan(o.friction_coefficient),
                         "options: friction_coefficient must be > 0 (or infinite for none), got " +
                             std::to_string(o.friction_coefficient));

@@ -9,8 +9,10 @@
 #include <algorithm>
 #include <cmath>
 #include <complex>
+#include <string>
 #include <vector>
 
+#include "flexrock/core/error.hpp"
 #include "flexrock/excitation/ground_motion.hpp"
 #include "flexrock/integrate/dopri5.hpp"
 #include "flexrock/model/builders.hpp"
@@ -175,6 +177,21 @@ TEST(StiffRocking, OrdinaryBodyKeepsTheExplicitMethod) {
   EXPECT_EQ(a.steps, b.steps);
   EXPECT_EQ(a.rhs_evaluations, b.rhs_evaluations);
   EXPECT_EQ(max_theta(a), max_theta(b));
+}
+
+TEST(StiffRocking, SwitchScaleMustBePositive) {
+  SimulationOptions o;
+  for (double bad : {0.0, -1.0, std::nan("")}) {
+    o.stiff_switch_scale = bad;
+    try {
+      simulate(stiff_slab(), sine_record(0.12, 0.1), InitialState{}, o);
+      ADD_FAILURE() << "stiff_switch_scale = " << bad << " accepted";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("stiff_switch_scale must be positive"),
+                std::string::npos)
+          << e.what();
+    }
+  }
 }
 
 }  // namespace
