@@ -101,6 +101,13 @@ class ContactPropagator {
         static_cast<std::size_t>(samples_ + 1 + kNodes) * static_cast<std::size_t>(n_);
     cache_.assign(cells, ModeStep{});
     scratch_.assign(static_cast<std::size_t>(n_), ModeStep{});
+    // the walk's modal coupling and its storage, sized once (a run allocates nothing)
+    betam_ = from_modal_.transpose() * dyn.beta();
+    gamma_norm_ = (from_modal_.transpose() * dyn.gamma() * from_modal_).norm();
+    for (Vec* v : {&wd_, &wv_, &bm_}) v->setZero(n_);
+    for (Vec& b : bound_) b.setZero(n_);
+    for (Piece& p : pieces_)
+      p.steps.assign(static_cast<std::size_t>((1 + kNodes) * n_), ModeStep{});
     available_ = true;
   }
 
@@ -162,7 +169,163 @@ class ContactPropagator {
   const State& x0() const { return x0_; }
   const State& x1() const { return x1_; }
 
+  // ---- the record walk (docs/theory.md, "Exact propagation in full contact"): one exact update
+  // per piece of a record interval, in the modes; the energies by the Gauss nodes, kept per piece
+  // length; and bounds over the piece on the modal derivatives, which bound the excursion of the
+  // guards between the piece's ends
+
+  // bounds over the last piece on |f''| of the full-contact functions, in evaluate()'s units
+  struct Curvature {
+    double fi = 0.0, fj = 0.0;  // floor reaction over M g
+    double u1 = 0.0, u2 = 0.0;  // uplift functions over M g h
+    double moment = 0.0;        // moment about the c.g. projection over M g h
+  };
+
+  /// The longest piece of the walk [s]: the phase cap (the guards are bounded, not sampled).
+  double walk_cap() const { return h_cap_; }
+
+  /// Starts the walk at the state x.
+  void walk_start(const State& x) {
+    q_ = x.segment(1, n_);
+    qd_ = x.segment(n_ + 2, n_);
+    eta_.noalias() = to_modal_ * q_;
+    wv_.noalias() = to_modal_ * qd_;
+    wd_ = omega_.cwiseProduct(eta_ - eta_static_);
+    ww_ = x(2 * n_ + 2);
+    wl_ = x(2 * n_ + 3);
+  }
+
+  /// One exact piece of length h under the base acceleration a0 + slope tau: the modal state at
+  /// its end, the input work and damping loss across it, and the bounds over it.
+  /// `keep`: keep the piece length's steps for later pieces (false: a length met once).
+  void walk_piece(double h, BaseAcceleration a0, BaseAcceleration slope, bool keep = true) {
+    sd0_ = wd_;
+    sv0_ = wv_;
+    a0_ = a0;
+    slope_ = slope;
+    h_ = h;
+    g0_ = gxm_ * a0.x + gym_ * (a0.y / dyn_.g());
+    g1_ = gxm_ * slope.x + gym_ * (slope.y / dyn_.g());
+    const Piece& pc = piece(h, keep);
+    // a piece differing from the kept length by rounding: s(h + d) = s(h) + d s'(h)
+    const double d = h - pc.h;
+    for (int i = 0; i < n_; ++i) {
+      const ModeStep& m = pc.steps[static_cast<std::size_t>(i)];
+      const double g = g0_(i), g1 = g1_(i), x0 = sd0_(i), v0 = sv0_(i);
+      double sd = m.e(0, 0) * x0 + m.e(0, 1) * v0 + m.p1(0) * g + m.p2(0) * g1;
+      double sv = m.e(1, 0) * x0 + m.e(1, 1) * v0 + m.p1(1) * g + m.p2(1) * g1;
+      if (d != 0.0) {
+        const double w = omega_(i), dsd = w * sv, dsv = -w * sd - damp_(i) * sv + g + g1 * pc.h;
+        sd += d * dsd;
+        sv += d * dsv;
+      }
+      wd_(i) = sd;
+      wv_(i) = sv;
+      // the piece's bounds: |e^{B tau}| <= 1 (B + B^T = diag(0, -2c) <= 0), so |s| stays below
+      // |s(0)| + h max|g|; each derivative of s' = B s + (0, g0 + g1 tau) multiplies by at most
+      // |B| <= w + c and adds the forcing's term (docs/theory.md)
+      const double gmax = std::max(std::abs(g), std::abs(g + g1 * h));
+      const double s0 = std::hypot(x0, v0) + h * gmax, b = omega_(i) + damp_(i);
+      const double s1 = b * s0 + gmax, s2 = b * s1 + std::abs(g1), s3 = b * s2;
+      bound_[0](i) = s0 * inv_omega_(i) + std::abs(eta_static_(i));  // |eta|
+      bound_[1](i) = s0;                                             // |eta'|  <= |s|
+      bound_[2](i) = s1;                                             // |eta''| <= |s'|
+      bound_[3](i) = s2;
+      bound_[4](i) = s3;
+    }
+    // the energies by 8-point Gauss-Legendre on the exact integrands, as in a step
+    double work = 0.0, loss = 0.0;
+    for (int j = 0; j < kNodes; ++j) {
+      const auto jj = static_cast<std::size_t>(j);
+      const double tau = h * kGaussX[jj], tk = pc.h * kGaussX[jj];
+      const BaseAcceleration a{a0.x + slope.x * tau, a0.y + slope.y * tau};
+      double p = 0.0, dl = 0.0;
+      node_powers(&pc.steps[static_cast<std::size_t>((1 + j) * n_)], tk, tau - tk, a, p, dl);
+      work += kGaussW[jj] * p;
+      loss += kGaussW[jj] * dl;
+    }
+    ww_ += h * work;
+    wl_ += h * loss;
+  }
+
+  /// The walk's state into x: q, q_dot, input work and damping loss (the rest is left as is).
+  void walk_state(State& x) const {
+    eta_ = wd_.cwiseProduct(inv_omega_) + eta_static_;
+    x.segment(1, n_).noalias() = from_modal_ * eta_;
+    x.segment(n_ + 2, n_).noalias() = from_modal_ * wv_;
+    x(2 * n_ + 2) = ww_;
+    x(2 * n_ + 3) = wl_;
+  }
+
+  /// q and q_dot at tau within the last piece into x, exactly (the energies are left as is).
+  void walk_dense(double tau, State& x) const {
+    for (int i = 0; i < n_; ++i)
+      mode_step(omega_(i), damp_(i), tau, scratch_[static_cast<std::size_t>(i)]);
+    eval(scratch_.data(), tau, 0.0, qo_, qdo_);
+    x.segment(1, n_) = qo_;
+    x.segment(n_ + 2, n_) = qdo_;
+  }
+
+  /// Bounds over the last piece on |f''| of the floor reaction, the uplift functions and the
+  /// moment about the c.g. projection. They are quadratic in (q, q'', a) with a linear in time:
+  ///   F_I = a_x + psi_x.q''/(g/h),  F_J = a_y + psi_y.q''/(g/h),
+  ///   R(al) = (b(al) + Gamma^T q).q''/(g/h) + (-al + psi_x.q) a_y - (1 + psi_y.q) a_x
+  /// (a_x = X''/g, a_y = 1 + Y''/g, b(al) = beta - al psi_y - psi_x), so with a'' = 0
+  ///   R'' = (b.q'''' + q.Gamma q'''' + 2 q'.Gamma q''' + q''.Gamma q'')/(g/h)
+  ///         + psi_x.q'' a_y + 2 psi_x.q' a_y' - psi_y.q'' a_x - 2 psi_y.q' a_x',
+  /// each term bounded through the modes, q^(k) = phi eta^(k), by the piece's bounds.
+  /// `ax`, `ay`: max |a_x|, |a_y| over the piece; `dax`, `day`: |a_x'|, |a_y'| [1/s].
+  Curvature walk_curvature(double ax, double ay, double dax, double day) const {
+    auto weigh = [&](const Vec& c, int k) {
+      return c.cwiseAbs().dot(bound_[static_cast<std::size_t>(k)]);
+    };
+    const double gh = dyn_.g_over_h();
+    const double x1 = weigh(pxm_, 1), x2 = weigh(pxm_, 2), x4 = weigh(pxm_, 4);
+    const double y1 = weigh(pym_, 1), y2 = weigh(pym_, 2), y4 = weigh(pym_, 4);
+    const double n0 = bound_[0].norm(), n1 = bound_[1].norm(), n2 = bound_[2].norm(),
+                 n3 = bound_[3].norm(), n4 = bound_[4].norm();
+    const double quad = gamma_norm_ * (n0 * n4 + 2.0 * n1 * n3 + n2 * n2);
+    const double rest = x2 * ay + 2.0 * x1 * day + y2 * ax + 2.0 * y1 * dax;
+    auto moment = [&](double al) {
+      bm_ = betam_ - al * pym_ - pxm_;
+      return (weigh(bm_, 4) + quad) / gh + rest;
+    };
+    Curvature c;
+    c.fi = x4 / gh;
+    c.fj = y4 / gh;
+    c.u1 = moment(-dyn_.alpha1());
+    c.u2 = moment(dyn_.alpha2());
+    c.moment = moment(0.0);
+    return c;
+  }
+
+  /// A bound over the last piece on |q_j''|.
+  double walk_q_curvature(int j) const { return from_modal_.row(j).cwiseAbs().dot(bound_[2]); }
+
  private:
+  // a piece length's steps of the modes: at its end, then at the Gauss nodes
+  struct Piece {
+    double h = -1.0;
+    std::vector<ModeStep> steps;
+  };
+  static constexpr int kPieces = 8;  // piece lengths kept (a uniform record needs one or two)
+  const Piece& piece(double h, bool keep) {
+    for (int k = 0; k < pieces_used_; ++k) {
+      const Piece& p = pieces_[static_cast<std::size_t>(k)];
+      if (std::abs(h - p.h) <= 1e-9 * h) return p;
+    }
+    // a new length: kept while there is room, else computed for this piece alone
+    Piece& p = keep && pieces_used_ < kPieces ? pieces_[static_cast<std::size_t>(pieces_used_++)]
+                                              : pieces_[static_cast<std::size_t>(kPieces)];
+    p.h = h;
+    for (int k = 0; k <= kNodes; ++k) {
+      const double tau = k == 0 ? h : h * kGaussX[static_cast<std::size_t>(k - 1)];
+      for (int i = 0; i < n_; ++i)
+        mode_step(omega_(i), damp_(i), tau, p.steps[static_cast<std::size_t>(k * n_ + i)]);
+    }
+    return p;
+  }
+
   // the base acceleration on [t, t + h] as a0 + slope tau, from two interior points: exact for
   // the linear pieces of a record, and blind to the jump where a record starts late or ends
   void forcing(double t, double h) {
@@ -331,6 +494,15 @@ class ContactPropagator {
   double p0_ = 0.0, p1_ = 0.0, d0_ = 0.0, d1_ = 0.0;  // input and damping power at the ends [W]
   double t0_ = 0.0, t1_ = 0.0;
   State x0_, x1_, xn_;
+  // the walk
+  Vec wd_, wv_;                            // the modal state s = (w (eta - eta_static), eta')
+  double ww_ = 0.0, wl_ = 0.0;             // input work and damping loss [J]
+  std::array<Vec, 5> bound_;               // per mode: bounds over the piece on |eta^(k)|, k = 0..4
+  Vec betam_;                              // phi^T beta
+  mutable Vec bm_;                         // scratch: phi^T b(alpha)
+  double gamma_norm_ = 0.0;                // Frobenius norm of phi^T Gamma phi (>= its 2-norm)
+  std::array<Piece, kPieces + 1> pieces_;  // kept piece lengths, then one computed afresh
+  int pieces_used_ = 0;
 };
 
 // a rigid body has no modes: nothing to propagate (it is not integrated in full contact at all)
@@ -350,6 +522,16 @@ class ContactPropagator<0, MaxN, State> {
   template <class System>
   void refresh_derivative(System&&, double) {}
   void dense(double, State&) const {}
+  struct Curvature {
+    double fi = 0.0, fj = 0.0, u1 = 0.0, u2 = 0.0, moment = 0.0;
+  };
+  double walk_cap() const { return 0.0; }
+  void walk_start(const State&) {}
+  void walk_piece(double, BaseAcceleration, BaseAcceleration, bool = true) {}
+  void walk_state(State&) const {}
+  void walk_dense(double, State&) const {}
+  Curvature walk_curvature(double, double, double, double) const { return {}; }
+  double walk_q_curvature(int) const { return 0.0; }
   double t0() const { return 0.0; }
   double t1() const { return 0.0; }
   const State& x0() const { return x_; }

@@ -152,6 +152,16 @@ class Simulator final : private GuardProbe {
   bool advance_with(Stepper& integ, System&& sys, Buffer& buf, double& t, State& x);
   bool advance_still(double& t, State& x);
   double scan_record(double t);
+  bool can_walk(double t) const;
+  bool advance_walk(double& t, State& x);
+  bool guards_clear(const GuardSample& sa, const GuardSample& sb,
+                    const typename ContactPropagator<N, MaxN, State>::Curvature& c, double h) const;
+  int walk_search(double tp0, double a, double b, const GuardSample& sa, const GuardSample& sb,
+                  const typename ContactPropagator<N, MaxN, State>::Curvature& c, int depth,
+                  double& a_out, double& b_out);
+  void emit_walk_rows(double tp0, double tp1);
+  void locate_extremes(double tp0, double h, const GuardSample& sa, const GuardSample& sb,
+                       const typename ContactPropagator<N, MaxN, State>::Curvature& c);
   bool step_guards(int samples, double t1, double& t_hit, int& slot_hit);
   void state_at(double t, State& out) const;
 
@@ -241,6 +251,12 @@ class Simulator final : private GuardProbe {
   std::size_t scan_index_ = 0;  // the record sample the last scan stopped at
   double scan_from_ = 0.0;      // [s] the last sample the scan passed with no event
   State x_still_;
+  State xw_, xe_;             // the walk's state at its piece's start and end
+  double fine_until_ = -1.0;  // [s] the walk resumes once the stepped propagation reaches it
+  // [s] the stepped propagation's next step ends here: a bracket the walk found a crossing in
+  double step_stop_ = std::numeric_limits<double>::infinity();
+  std::vector<int> wanted_;                    // the walk's extremes search: the quantities sought
+  std::vector<double> best_, best_at_;         // their largest values found, and where [s]
   double still_t1_ = 0.0;                      // [s] end of the span checked last while still
   std::array<bool, kMaxGuards> zero_start_{};  // guards known to turn positive from zero
   std::array<double, 2> overturn_limit_{};     // [rad] on edge 1 (theta > 0) and edge 2
@@ -310,6 +326,11 @@ Simulator<N, MaxN>::Simulator(const Body& body, const GroundMotion& motion,
   xr_.setZero(2 * n_ + 11);  // written through put(): sized once, as on the heap path
   flight_buf_.setZero(2 * n_ + 8);
   prop_buf_.setZero(2 * n_ + 11);
+  xw_.setZero(2 * n_ + 11);
+  xe_.setZero(2 * n_ + 11);
+  wanted_.assign(static_cast<std::size_t>(n_ + 3), 0);
+  best_.assign(static_cast<std::size_t>(n_ + 3), 0.0);
+  best_at_.assign(static_cast<std::size_t>(n_ + 3), 0.0);
 }
 
 template <int N, int MaxN>
@@ -581,6 +602,7 @@ bool Simulator<N, MaxN>::enter_mode(double t, State& x) {
     x(0) = 0.0;
     x(ithd()) = 0.0;
   }
+  step_stop_ = std::numeric_limits<double>::infinity();
   still_ = n_ == 0 && mode_ == ContactMode::kFullContact;
   exact_ = !still_ && mode_ == ContactMode::kFullContact && prop_.available();
   // quadratures steer no step of a sticking contact mode; a slide's d, d_dot come after them
@@ -673,9 +695,12 @@ template <int N, int MaxN>
 bool Simulator<N, MaxN>::advance(double& t, State& x) {
   if (still_) return advance_still(t, x);
   // the exact propagator takes no right-hand side
-  if (exact_)
+  if (exact_) {
+    if (t >= step_stop_) step_stop_ = std::numeric_limits<double>::infinity();
+    if (can_walk(t)) return advance_walk(t, x);
     return advance_with(
         prop_, [](double, const State&, State&) {}, prop_buf_, t, x);
+  }
   if (flying()) {
     auto sys = [this](double tt, const FlightState& xx, FlightState& dd) {
       flight_rhs(tt, xx, dd);
@@ -726,7 +751,7 @@ template <int N, int MaxN>
 template <class Stepper, class System, class Buffer>
 bool Simulator<N, MaxN>::advance_with(Stepper& integ, System&& sys, Buffer& buf, double& t,
                                       State& x) {
-  const double t_stop = std::min(t_end_, motion_.next_breakpoint(t, break_cursor_));
+  const double t_stop = std::min({t_end_, motion_.next_breakpoint(t, break_cursor_), step_stop_});
   if (++res_.steps > opt_.max_steps)
     return stop(
         t, "step limit reached (" + std::to_string(opt_.max_steps) + " steps; raise max_steps)");
@@ -791,6 +816,273 @@ bool Simulator<N, MaxN>::advance_with(Stepper& integ, System&& sys, Buffer& buf,
   t = t_hit;
   put(t_hit > t0 ? integ.x1() : integ.x0(), x);
   return fire(slot_hit, t, x);
+}
+
+// a flexible body in full contact under a sampled record, walked piece by piece from a record
+// sample (docs/theory.md, "Exact propagation in full contact"): true when the walk can start at t
+template <int N, int MaxN>
+bool Simulator<N, MaxN>::can_walk(double t) const {
+  if (!exact_ || !opt_.full_contact_walk || !motion_.is_sampled()) return false;
+  if (t < fine_until_ - 1e-12 * std::max(1.0, t)) return false;
+  if (tension_ || hold_tension_) return false;
+  const ModeSpec& spec = mode_spec(mode_);
+  for (int j = 0; j < spec.count; ++j) {
+    const auto k = static_cast<std::size_t>(j);
+    if (zero_start_[k] || !(s0_.v[k] > 0.0)) return false;
+  }
+  const std::vector<double>& ts = motion_.times();
+  return t >= ts.front() && t < ts.back();
+}
+
+// The walk: one exact update per piece (a record interval, or an equal part of it within the
+// phase cap), with the guards at its ends from evaluate(). The guards are quadratic in the modal
+// state and linear in the base acceleration, and the piece bounds their second derivative
+// (ContactPropagator::walk_curvature); with |f''| <= M on [0, h], f - (its chord) vanishes at
+// both ends, so f >= min(f(0), f(h)) - M h^2/8 throughout. Where that stays positive for every
+// guard no crossing lies in the piece; else the walk hands its record interval to the stepped
+// propagation, which samples and locates the events there. The extremes are located the same
+// way: a piece whose bound could raise one is searched (locate_extremes).
+template <int N, int MaxN>
+bool Simulator<N, MaxN>::advance_walk(double& t, State& x) {
+  const std::vector<double>& ts = motion_.times();
+  const std::vector<double>& hx = motion_.horizontal();
+  const std::vector<double>& vy = motion_.vertical();
+  const bool vertical = vy.size() == ts.size();
+  const double g = dyn_.g();
+  std::size_t i = scan_index_;
+  if (i >= ts.size()) i = ts.size() - 1;
+  while (i > 0 && ts[i] > t) --i;
+  while (i + 1 < ts.size() && ts[i + 1] <= t) ++i;
+  prop_.walk_start(x);
+  xw_ = x;
+  GuardSample& sa = samples_buf_[0];
+  GuardSample& sb = samples_buf_[1];
+  sa = s0_;
+  const double cap = prop_.walk_cap();
+  for (; i + 1 < ts.size() && ts[i + 1] <= t_end_; ++i) {
+    if (++res_.steps > opt_.max_steps) {
+      x = xw_;
+      return stop(
+          t, "step limit reached (" + std::to_string(opt_.max_steps) + " steps; raise max_steps)");
+    }
+    const double tb = ts[i + 1], span = ts[i + 1] - ts[i];
+    const BaseAcceleration slope{(hx[i + 1] - hx[i]) / span,
+                                 vertical ? (vy[i + 1] - vy[i]) / span : 0.0};
+    const double pieces = std::max(1.0, std::ceil((tb - t) / cap - 1e-9));
+    const double hp = (tb - t) / pieces;
+    const double ti = t;
+    for (int k = 0; k < static_cast<int>(pieces); ++k) {
+      const double tp0 = t, tp1 = k + 1 == static_cast<int>(pieces) ? tb : ti + hp * (k + 1);
+      const double h = tp1 - tp0;
+      const BaseAcceleration a0{hx[i] + slope.x * (tp0 - ts[i]),
+                                vertical ? vy[i] + slope.y * (tp0 - ts[i]) : 0.0};
+      prop_.walk_piece(h, a0, slope);
+      xe_ = xw_;
+      prop_.walk_state(xe_);
+      evaluate(tp1, xe_, sb);
+      // the guards' excursion between the piece's ends
+      const double ax = std::max(std::abs(a0.x), std::abs(a0.x + slope.x * h)) / g;
+      const double ay =
+          std::max(std::abs(1.0 + a0.y / g), std::abs(1.0 + (a0.y + slope.y * h) / g));
+      const auto c = prop_.walk_curvature(ax, ay, std::abs(slope.x) / g, std::abs(slope.y) / g);
+      if (!guards_clear(sa, sb, c, h)) {
+        // a crossing may lie in this piece: halve it until the bound clears every part or a
+        // guard is found <= 0 at a part's end
+        double ba = 0.0, bb = h;
+        const int found = walk_search(tp0, 0.0, h, sa, sb, c, 40, ba, bb);
+        if (found != 0) {
+          scan_index_ = i;
+          fine_until_ = tb;
+          if (found == 1 && ba > 0.0) {
+            // the stepped propagation from the bracket's start, its first step ending at the
+            // bracket's end (where a guard is <= 0): it locates the crossing there
+            prop_.walk_start(xw_);
+            prop_.walk_piece(ba, a0, slope, false);
+            x = xw_;
+            prop_.walk_state(x);
+            t = tp0 + ba;
+            evaluate(t, x, s0_);
+            // the extremes before the bracket, located as in a whole piece
+            xe_ = x;
+            locate_extremes(tp0, ba, sa, s0_, c);
+          } else {
+            x = xw_;
+            s0_ = sa;
+          }
+          if (found == 1) step_stop_ = tp0 + bb;
+          prop_.start(t, x);
+          return true;
+        }
+      }
+      locate_extremes(tp0, h, sa, sb, c);
+      emit_walk_rows(tp0, tp1);
+      observe(sb, xe_);
+      xw_ = xe_;
+      sa = sb;
+      t = tp1;
+      if (opt_.progress) opt_.progress->store(t, std::memory_order_relaxed);
+    }
+  }
+  scan_index_ = i;
+  x = xw_;
+  s0_ = sa;
+  release_latches(s0_);
+  prop_.start(t, x);
+  // the rest (past the record's last sample within t_end) goes to the stepped propagation
+  fine_until_ = t_end_;
+  return true;
+}
+
+// the full-contact guards over a part of the walk's piece of length h with values sa, sb at its
+// ends cannot cross there: each stays above min(f(a), f(b)) - M h^2/8 > 0 (M: its |f''| bound)
+template <int N, int MaxN>
+bool Simulator<N, MaxN>::guards_clear(
+    const GuardSample& sa, const GuardSample& sb,
+    const typename ContactPropagator<N, MaxN, State>::Curvature& c, double h) const {
+  constexpr ContactMode m = ContactMode::kFullContact;
+  const double w = 0.125 * h * h, mu = opt_.friction_coefficient;
+  auto clear = [&](std::size_t j, double curv) {
+    const double lo = std::min(sa.v[j], sb.v[j]) - curv * w;
+    return lo > 1e-12 * (1.0 + std::abs(sa.v[j]) + std::abs(sb.v[j]));
+  };
+  return clear(kSlot<m, Guard::kUpliftEdge1>, c.u1) && clear(kSlot<m, Guard::kUpliftEdge2>, c.u2) &&
+         clear(kSlot<m, Guard::kLiftOff>, c.fj) &&
+         (!std::isfinite(mu) || clear(kSlot<m, Guard::kFrictionLimit>, mu * c.fj + c.fi));
+}
+
+// [a, b] of the walk's piece from tp0 (guards sa, sb at its ends, every one > 0 at a), halved
+// until the bound clears each part (0), a guard is <= 0 at a part's end b_out with all > 0 at
+// its start a_out (1), or `depth` halvings leave a part unresolved (2, a grazing guard)
+template <int N, int MaxN>
+int Simulator<N, MaxN>::walk_search(double tp0, double a, double b, const GuardSample& sa,
+                                    const GuardSample& sb,
+                                    const typename ContactPropagator<N, MaxN, State>::Curvature& c,
+                                    int depth, double& a_out, double& b_out) {
+  if (guards_clear(sa, sb, c, b - a)) return 0;
+  const ModeSpec& spec = mode_spec(mode_);
+  for (int j = 0; j < spec.count; ++j) {
+    if (!(sb.v[static_cast<std::size_t>(j)] > 0.0)) {
+      a_out = a;
+      b_out = b;
+      return 1;
+    }
+  }
+  if (depth == 0) {
+    a_out = a;
+    b_out = b;
+    return 2;
+  }
+  const double mid = 0.5 * (a + b);
+  GuardSample sm;
+  xr_ = xw_;
+  prop_.walk_dense(mid, xr_);
+  evaluate(tp0 + mid, xr_, sm);
+  const int left = walk_search(tp0, a, mid, sa, sm, c, depth - 1, a_out, b_out);
+  if (left != 0) return left;
+  return walk_search(tp0, mid, b, sm, sb, c, depth - 1, a_out, b_out);
+}
+
+// the rows due in the walk's piece [tp0, tp1] (state xw_ at tp0, xe_ at tp1): one at the piece's
+// end from its state, others from the propagator's exact steps over the piece
+template <int N, int MaxN>
+void Simulator<N, MaxN>::emit_walk_rows(double tp0, double tp1) {
+  if (opt_.output_dt <= 0.0) return;
+  const double to = static_cast<double>(next_output_) * opt_.output_dt;
+  if (to > tp1 || to > t_end_ * (1.0 + 1e-14)) return;
+  if (to >= tp1 - 1e-12 * std::max(1.0, tp1)) {
+    emit_row(to, xe_);
+    ++next_output_;
+    return;
+  }
+  prop_.start(tp0, xw_);
+  auto none = [](double, const State&, State&) {};
+  while (prop_.t1() < tp1) {
+    prop_.step(none, tp1);
+    emit_rows_until(prop_.t1());
+  }
+}
+
+// the extremes the piece [tp0, tp0 + h] could raise between its ends (by the curvature bounds
+// `c`), located: the exact solution at 8 points across the piece, then a golden-section search
+// about the largest of each such quantity; every point searched is observed, so the extremes stay
+// values the motion reaches
+template <int N, int MaxN>
+void Simulator<N, MaxN>::locate_extremes(
+    double tp0, double h, const GuardSample& sa, const GuardSample& sb,
+    const typename ContactPropagator<N, MaxN, State>::Curvature& c) {
+  const Extremes& ex = res_.extremes;
+  const double w = 0.125 * h * h;
+  const double mg = dyn_.mass() * dyn_.g(), mgh = mg * dyn_.height();
+  // which quantities might exceed their extreme within the piece: -1 none, j < n: q_j,
+  // n: shear, n + 1: moment, n + 2: friction demand
+  std::vector<int>& wanted = wanted_;
+  int count = 0;
+  for (int j = 0; j < n_; ++j) {
+    const double top =
+        std::max(std::abs(xw_(iq() + j)), std::abs(xe_(iq() + j))) + w * prop_.walk_q_curvature(j);
+    if (top > ex.max_abs_q(j)) wanted[static_cast<std::size_t>(count++)] = j;
+  }
+  const double fi_top = std::max(std::abs(sa.fi), std::abs(sb.fi)) + w * c.fi;
+  if (mg * fi_top > ex.max_base_shear) wanted[static_cast<std::size_t>(count++)] = n_;
+  if (mgh * (std::max(std::abs(sa.moment), std::abs(sb.moment)) + w * c.moment) >
+      ex.max_overturning_moment)
+    wanted[static_cast<std::size_t>(count++)] = n_ + 1;
+  const double fj_lo = std::min(sa.fj, sb.fj) - w * c.fj;
+  const double fj_hi = std::max(sa.fj, sb.fj) + w * c.fj;
+  if (fj_hi >= kPressingFraction &&
+      !(fj_lo >= kPressingFraction && fi_top / fj_lo <= ex.max_friction_demand))
+    wanted[static_cast<std::size_t>(count++)] = n_ + 2;
+  if (count == 0) return;
+  // the quantity `k` at tau in the piece (observed on the way)
+  GuardSample s;
+  auto value = [&](int k, double tau) {
+    prop_.walk_dense(tau, xr_);
+    evaluate(tp0 + tau, xr_, s);
+    observe(s, xr_);
+    if (k < n_) return std::abs(xr_(iq() + k));
+    if (k == n_) return std::abs(s.fi);
+    if (k == n_ + 1) return std::abs(s.moment);
+    return s.fj >= kPressingFraction ? std::abs(s.fi) / s.fj : 0.0;
+  };
+  xr_ = xw_;
+  constexpr int kPoints = 8;
+  std::vector<double>& best = best_;
+  std::vector<double>& at = best_at_;
+  std::fill(best.begin(), best.end(), -1.0);
+  for (int p = 1; p < kPoints; ++p) {
+    const double tau = h * p / kPoints;
+    for (int q = 0; q < count; ++q) {
+      const double v = value(wanted[static_cast<std::size_t>(q)], tau);
+      if (v > best[static_cast<std::size_t>(q)]) {
+        best[static_cast<std::size_t>(q)] = v;
+        at[static_cast<std::size_t>(q)] = tau;
+      }
+    }
+  }
+  // golden-section search on [at - h/8, at + h/8] for each quantity
+  constexpr double kInv = 0.6180339887498949;
+  for (int q = 0; q < count; ++q) {
+    const int k = wanted[static_cast<std::size_t>(q)];
+    double lo = std::max(0.0, at[static_cast<std::size_t>(q)] - h / kPoints);
+    double hi = std::min(h, at[static_cast<std::size_t>(q)] + h / kPoints);
+    double x1 = hi - kInv * (hi - lo), x2 = lo + kInv * (hi - lo);
+    double f1 = value(k, x1), f2 = value(k, x2);
+    for (int it = 0; it < 40 && hi - lo > 1e-12 * h; ++it) {
+      if (f1 < f2) {
+        lo = x1;
+        x1 = x2;
+        f1 = f2;
+        x2 = lo + kInv * (hi - lo);
+        f2 = value(k, x2);
+      } else {
+        hi = x2;
+        x2 = x1;
+        f2 = f1;
+        x1 = hi - kInv * (hi - lo);
+        f1 = value(k, x1);
+      }
+    }
+  }
 }
 
 // a rigid body in full contact does not move, and its guards (uplift about either edge, lift-off,

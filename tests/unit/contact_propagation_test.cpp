@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "flexrock/core/error.hpp"
+#include "flexrock/model/builders.hpp"
 #include "flexrock/sim/simulate.hpp"
 #include "support/bodies.hpp"
 
@@ -387,6 +388,160 @@ TEST(ExactFullContact, AnalyticMotionStillIntegrates) {
   SimulationOptions opt;
   const SimulationResult r = simulate(body, m, {}, opt);
   EXPECT_GT(r.rhs_evaluations, 0);
+}
+
+// ---- the record walk: one exact update per piece, the guards bounded between the pieces' ends
+
+namespace walk {
+
+SimulationResult run(const Body& body, const GroundMotion& m, int path, double output_dt,
+                     const InitialState& init = {}, double t_end = -1.0) {
+  SimulationOptions opt;
+  opt.output_dt = output_dt;
+  opt.t_end = t_end;
+  if (path == 1) opt.full_contact_walk = false;  // the stepped, sampled propagation
+  if (path == 2) {
+    // the integrator at its tightest, with short steps
+    opt.exact_full_contact = false;
+    opt.rtol = 1e-13;
+    opt.atol = 1e-16;
+    opt.max_step = 0.001;
+  }
+  return simulate(body, m, init, opt);
+}
+
+}  // namespace walk
+
+void compare_full_contact(const Body& body, const SimulationResult& wk, const SimulationResult& st,
+                          const SimulationResult& in);
+
+TEST(FullContactWalk, MatchesTheSteppedPathAndTheTightIntegration) {
+  // below uplift and through it; uniform records and uneven ones (more distinct intervals than
+  // the walk keeps, so most pieces are computed afresh)
+  for (int n : {1, 2, 3}) {
+    for (double amplitude : {0.01, 0.6}) {
+      for (bool uniform : {true, false}) {
+        const unsigned seed = 300u + 10u * static_cast<unsigned>(n) + (uniform ? 1u : 0u) +
+                              (amplitude > 0.1 ? 5u : 0u);
+        const Body body = damped_body(n, seed, 1 + n % 2);
+        const GroundMotion m = random_record(seed, amplitude, 4.0, uniform);
+        const SimulationResult wk = walk::run(body, m, 0, 0.0137),
+                               st = walk::run(body, m, 1, 0.0137),
+                               in = walk::run(body, m, 2, 0.0137);
+        SCOPED_TRACE("n = " + std::to_string(n) + ", amplitude " + std::to_string(amplitude) +
+                     (uniform ? ", uniform" : ", uneven"));
+        ASSERT_EQ(wk.status, in.status);
+        ASSERT_EQ(st.status, in.status);
+        EXPECT_EQ(wk.rhs_evaluations, st.rhs_evaluations);
+        // the same uplift, on the same edge
+        EXPECT_NEAR(wk.extremes.first_uplift_time, in.extremes.first_uplift_time, 1e-9);
+        EXPECT_NEAR(wk.extremes.first_uplift_time, st.extremes.first_uplift_time, 1e-12);
+        EXPECT_EQ(wk.extremes.first_uplift_edge, in.extremes.first_uplift_edge);
+        EXPECT_LT(std::abs(wk.energy.residual), 1e-6 * wk.energy.scale);
+        // the rest compares the full-contact phase alone (rocking after it is chaotic: rounding
+        // differences grow there): the runs stop just before the first uplift
+        const double t_end =
+            in.extremes.first_uplift_time > 0.0 ? in.extremes.first_uplift_time - 1e-6 : -1.0;
+        const SimulationResult wkc = walk::run(body, m, 0, 0.0137, {}, t_end),
+                               stc = walk::run(body, m, 1, 0.0137, {}, t_end),
+                               inc = walk::run(body, m, 2, 0.0137, {}, t_end);
+        compare_full_contact(body, wkc, stc, inc);
+      }
+    }
+  }
+}
+
+void compare_full_contact(const Body& body, const SimulationResult& wk, const SimulationResult& st,
+                          const SimulationResult& in) {
+  const int n = body.modes();
+  ASSERT_EQ(wk.extremes.first_uplift_time, -1.0);
+  EXPECT_LE(wk.steps, st.steps);
+  // the extremes: located by the walk, sampled by the stepped path (so never above the walk's
+  // beyond rounding); the integration's within its sampling's reach
+  const double qs = in.extremes.max_abs_q.maxCoeff();
+  for (int i = 0; i < n; ++i) {
+    EXPECT_GE(wk.extremes.max_abs_q(i), st.extremes.max_abs_q(i) - 1e-12 * qs);
+    EXPECT_NEAR(wk.extremes.max_abs_q(i), in.extremes.max_abs_q(i), 1e-3 * qs);
+  }
+  const double mg = body.params().mass * g;
+  EXPECT_GE(wk.extremes.max_base_shear, st.extremes.max_base_shear - 1e-12 * mg);
+  EXPECT_GE(wk.extremes.max_overturning_moment,
+            st.extremes.max_overturning_moment - 1e-12 * mg * body.params().height);
+  EXPECT_GE(wk.extremes.max_friction_demand, st.extremes.max_friction_demand - 1e-12);
+  // the histories and the energies
+  ASSERT_EQ(wk.history.size(), st.history.size());
+  double worst = 0.0;
+  for (std::size_t k = 0; k < wk.history.q.size(); ++k)
+    worst = std::max(worst, std::abs(wk.history.q[k] - st.history.q[k]));
+  EXPECT_LT(worst, 1e-9 * qs);
+  const double es = in.energy.scale;
+  EXPECT_NEAR(wk.energy.input_work, st.energy.input_work, 1e-9 * es);
+  EXPECT_NEAR(wk.energy.damping_loss, st.energy.damping_loss, 1e-9 * es);
+  EXPECT_NEAR(wk.energy.input_work, in.energy.input_work, 1e-6 * es);
+  EXPECT_NEAR(wk.energy.damping_loss, in.energy.damping_loss, 1e-6 * es);
+}
+
+TEST(FullContactWalk, LocatedExtremesBoundEverySampleOfTheExactSolution) {
+  // rows every 0.1 ms are the exact solution at those times: the located max|q| is above every
+  // one of them, and within the rows' spacing of the largest
+  for (int n : {1, 3}) {
+    const Body body = damped_body(n, 900u + static_cast<unsigned>(n), 1);
+    const GroundMotion m = random_record(910u + static_cast<unsigned>(n), 0.02, 2.0, true);
+    const SimulationResult wk = walk::run(body, m, 0, 1e-4);
+    ASSERT_EQ(wk.extremes.first_uplift_time, -1.0);
+    const double qs = wk.extremes.max_abs_q.maxCoeff();
+    for (int i = 0; i < n; ++i) {
+      double rows = 0.0;
+      for (std::size_t k = static_cast<std::size_t>(i); k < wk.history.q.size();
+           k += static_cast<std::size_t>(n))
+        rows = std::max(rows, std::abs(wk.history.q[k]));
+      EXPECT_GE(wk.extremes.max_abs_q(i), rows - 1e-13 * qs);
+      const double w = body.natural_frequencies().maxCoeff();
+      EXPECT_LE(wk.extremes.max_abs_q(i) - rows, 0.5 * std::pow(w * 1e-4, 2) * qs);
+    }
+  }
+}
+
+TEST(FullContactWalk, FindsAnUpliftBetweenSamplesThatTheSamplesDoNotShow) {
+  // an oscillator (8 Hz) on a slab, thrown from its static state by q_dot0 under a record of
+  // zero acceleration sampled every 20 ms (one walk piece, 1 rad of the mode's phase): the
+  // uplift function dips to its minimum at 1/4 period, 31 ms, between the samples at 20 and
+  // 40 ms where it is well positive. The walk's bound must see the dip; the crossing is where
+  // the tight integration puts it.
+  const Body body(oscillator_on_slab(1000.0, 8.0, 500.0, 2.0, 0.8, 0.0));
+  const std::vector<double> zero(11, 0.0);
+  const GroundMotion m = GroundMotion::uniform(0.02, zero, zero);
+  auto start = [&](double v) {
+    InitialState init;
+    init.q = body.static_deformation();
+    init.q_dot = VectorX::Constant(1, v);
+    return init;
+  };
+  auto uplifts = [&](double v) {
+    const SimulationResult r = walk::run(body, m, 2, 0.0, start(v), 0.05);
+    return r.extremes.first_uplift_time > 0.0;
+  };
+  // the least q_dot0 that uplifts within 50 ms, by bisection on the tight integration
+  double lo = 0.0, hi = 1.0;
+  while (!uplifts(hi)) hi *= 2.0;
+  for (int k = 0; k < 50; ++k) (uplifts(0.5 * (lo + hi)) ? hi : lo) = 0.5 * (lo + hi);
+  const double v_up = hi * (1.0 + 1e-4), v_down = lo * (1.0 - 1e-4);
+  // just below: no uplift, and at the samples the resultant is well inside the base
+  const SimulationResult below = walk::run(body, m, 0, 0.02, start(v_down), 0.05);
+  ASSERT_EQ(below.extremes.first_uplift_time, -1.0);
+  const double h = body.params().height, a1 = body.alpha1(), a2 = body.alpha2();
+  for (std::size_t k = 0; k < below.history.size(); ++k) {
+    const double r = below.history.resultant[k] / h;
+    EXPECT_GT(r + a1, 0.02 * (a1 + a2)) << "t = " << below.history.time[k];
+    EXPECT_GT(a2 - r, 0.02 * (a1 + a2)) << "t = " << below.history.time[k];
+  }
+  // just above: the walk finds the uplift between the samples, where the integration does
+  const SimulationResult wk = walk::run(body, m, 0, 0.0, start(v_up), 0.05);
+  const SimulationResult in = walk::run(body, m, 2, 0.0, start(v_up), 0.05);
+  ASSERT_GT(in.extremes.first_uplift_time, 0.02);
+  ASSERT_LT(in.extremes.first_uplift_time, 0.04);
+  EXPECT_NEAR(wk.extremes.first_uplift_time, in.extremes.first_uplift_time, 1e-6);
+  EXPECT_EQ(wk.extremes.first_uplift_edge, in.extremes.first_uplift_edge);
 }
 
 }  // namespace

@@ -895,6 +895,41 @@ class General:
         return res
 
 
+def walk_bound_checks(n=2):
+    """The record walk's bound on the full-contact guards between samples (docs/theory.md, "Exact
+    propagation in full contact"): the energy coordinates' flow is a contraction, the second
+    derivative of the reaction and of the contact moment is the one the engine bounds
+    (ContactPropagator::walk_curvature), and a function vanishing at both ends of [0, h] with
+    |f''| <= M stays within M tau (h - tau)/2 <= M h^2/8 there."""
+    out = {}
+    w, c = sp.symbols('omega c', nonnegative=True)
+    B = sp.Matrix([[0, w], [-w, -c]])
+    out['walk_B_dissipative'] = all(is_zero(e) for e in (B + B.T) - sp.diag(0, -2 * c))
+    t, al, gh, ax0, ax1, ay0, ay1 = sp.symbols('t alpha gh ax0 ax1 ay0 ay1')
+    q = sp.Matrix([sp.Function('q%d' % (k + 1))(t) for k in range(n)])
+    beta = sp.Matrix(sp.symbols('beta1:%d' % (n + 1)))
+    px = sp.Matrix(sp.symbols('psx1:%d' % (n + 1)))
+    py = sp.Matrix(sp.symbols('psy1:%d' % (n + 1)))
+    Gam = sp.Matrix(n, n, sp.symbols('Gam1:%d' % (n * n + 1)))
+    ax, ay = ax0 + ax1 * t, ay0 + ay1 * t  # a sampled record is linear between samples
+    d = lambda v, k: v.diff(t, k)
+    b = beta + Gam.T * q - al * py - px
+    R = (b.T * d(q, 2))[0] / gh + (-al + (px.T * q)[0]) * ay - (1 + (py.T * q)[0]) * ax
+    R2 = ((beta - al * py - px).T * d(q, 4) + q.T * Gam * d(q, 4) + 2 * d(q, 1).T * Gam * d(q, 3)
+          + d(q, 2).T * Gam * d(q, 2))[0] / gh + (px.T * d(q, 2))[0] * ay + 2 * (px.T * d(q, 1))[0] * ay1 \
+        - (py.T * d(q, 2))[0] * ax - 2 * (py.T * d(q, 1))[0] * ax1
+    out['walk_moment_curvature'] = is_zero(sp.expand(d(sp.Matrix([R]), 2)[0] - R2))
+    FI = ax + (px.T * d(q, 2))[0] / gh
+    out['walk_reaction_curvature'] = is_zero(sp.expand(d(sp.Matrix([FI]), 2)[0] - (px.T * d(q, 4))[0] / gh))
+    h, M, tau = sp.symbols('h M tau', positive=True)
+    env = M * tau * (h - tau) / 2
+    # env'' = -M: env -/+ e is concave where |e''| <= M and vanishes at both ends, so it is >= 0
+    out['walk_envelope'] = is_zero(env.diff(tau, 2) + M) and is_zero(env.subs(tau, 0)) and \
+        is_zero(env.subs(tau, h)) and is_zero(env.subs(tau, h / 2) - M * h ** 2 / 8) and \
+        is_zero(env.diff(tau).subs(tau, h / 2))
+    return out
+
+
 def symbolic_checks(nlist, verbose=False, flight_n=2):
     allres = {}
     gens = {}
@@ -2696,6 +2731,8 @@ def main():
     sres, gens = symbolic_checks(range(0, args.symbolic_n + 1), verbose=True, flight_n=args.symbolic_flight_n)
     rres, rforms = derive_rigid_friction()
     sres['rigid_friction'] = rres
+    sres['walk_bound'] = walk_bound_checks()
+    print('  symbolic record-walk bound: %s' % sres['walk_bound'], file=sys.stderr)
     print('  symbolic rigid block with friction: %s' % rres, file=sys.stderr)
     failed = [(n, k) for n, r in sres.items() for k, v in r.items()
               if (isinstance(v, bool) and not v) or (isinstance(v, list) and v)]

@@ -395,6 +395,8 @@ class Dynamics {
 
   const Vec& psi_x() const { return psi_x_; }  // participation, body i component
   const Vec& psi_y() const { return psi_y_; }  // participation, body j component
+  const Vec& beta() const { return beta_; }    // coupling of theta_dot and q_dot at q = 0
+  const Mat& gamma() const { return gamma_; }  // its change with q: b = beta + Gamma^T q - ...
 
  private:
   /// psi_y.q + 1/2 q^T kappa q, written about the static sag r (kappa r = -psi_y to rounding):

@@ -146,6 +146,10 @@ struct SimulationOptions {
   // factor on that motion's rate where the switch is decided (tests: the switch changes the
   // cost, not the answer)
   double stiff_switch_scale = 1.0;
+  // with exact_full_contact: the record is walked one exact update per sample, the guards checked
+  // between samples by a bound on their excursion (docs/theory.md, "Exact propagation in full
+  // contact"); false: every step is sampled at event_samples points (the walk's reference)
+  bool full_contact_walk = true;
 };
 
 /// Something that happened, in time order. Fields not meaningful for a kind are zero.
