@@ -399,7 +399,7 @@ SimulationResult run(const Body& body, const GroundMotion& m, int path, double o
   SimulationOptions opt;
   opt.output_dt = output_dt;
   opt.t_end = t_end;
-  if (path == 1) opt.full_contact_walk = false;  // the stepped, sampled propagation
+  opt.full_contact_walk = path == 0;  // path 1: the stepped, sampled propagation
   if (path == 2) {
     // the integrator at its tightest, with short steps
     opt.exact_full_contact = false;

@@ -148,8 +148,10 @@ struct SimulationOptions {
   double stiff_switch_scale = 1.0;
   // with exact_full_contact: the record is walked one exact update per sample, the guards checked
   // between samples by a bound on their excursion (docs/theory.md, "Exact propagation in full
-  // contact"); false: every step is sampled at event_samples points (the walk's reference)
-  bool full_contact_walk = true;
+  // contact"); false (the default): every step is sampled at event_samples points. Off by default
+  // while the walk's search for the extremes between samples costs more than the sampled steps
+  // save (case d, n = 1: 6.2 ms against 4.2 ms)
+  bool full_contact_walk = false;
 };
 
 /// Something that happened, in time order. Fields not meaningful for a kind are zero.
