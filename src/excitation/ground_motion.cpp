@@ -77,7 +77,9 @@ GroundMotion GroundMotion::analytic(Function f, double duration, std::vector<dou
 }
 
 GroundMotion GroundMotion::none(double duration) {
-  return analytic([](double) { return BaseAcceleration{}; }, duration);
+  GroundMotion m = analytic([](double) { return BaseAcceleration{}; }, duration);
+  m.none_ = true;
+  return m;
 }
 
 BaseAcceleration GroundMotion::at(double t, Cursor& c) const {

@@ -27,6 +27,7 @@
 #include "flexrock/sim/simulate.hpp"
 #include "flexrock/sim/step_cost.hpp"
 #include "recorder.hpp"
+#include "rocking_series.hpp"
 
 namespace flexrock::detail {
 
@@ -229,6 +230,7 @@ class Simulator final : private GuardProbe {
   // flexible body's stiffest rocking motion would hold the explicit step (theory, "Stiff rocking")
   StiffSwitching<ContactState> integ_;
   std::array<double, 2> rocking_h_stable_{-1.0, -1.0};  // [s] per edge, once known (< 0: not yet)
+  RockingSeries<ContactState> series_integ_;  // a rigid body's rocking under a record or none
   Dopri5<FlightState> flight_integ_;
   Dopri5<SlideState> slide_integ_;
   mutable SlideState slide_buf_;
@@ -240,8 +242,9 @@ class Simulator final : private GuardProbe {
   SimulationResult res_;
   Recorder rec_;
   ContactMode mode_ = ContactMode::kFullContact;
-  bool exact_ = false;  // a flexible body in full contact, stepped by prop_
-  bool still_ = false;  // a rigid body in full contact: the state is x_still_, nothing integrates
+  bool exact_ = false;   // a flexible body in full contact, stepped by prop_
+  bool still_ = false;   // a rigid body in full contact: the state is x_still_, nothing integrates
+  bool series_ = false;  // a rigid body rocking, stepped by series_integ_
   GroundMotion::Cursor rhs_cursor_, event_cursor_, break_cursor_;
   Vec q_, qd_, qdd_;
   State xr_;
@@ -295,6 +298,7 @@ Simulator<N, MaxN>::Simulator(const Body& body, const GroundMotion& motion,
       opt_(opt),
       n_(body.modes()),
       samples_(std::clamp(opt.event_samples, 1, kMaxSamples)),
+      series_integ_(motion),
       prop_(dyn_, motion, samples_, opt.max_step, opt.exact_full_contact),
       rec_(res_, body.params().mass, body.g(), body.params().height, body.modes()) {
   q_.resize(n_);
@@ -605,6 +609,9 @@ bool Simulator<N, MaxN>::enter_mode(double t, State& x) {
   step_stop_ = std::numeric_limits<double>::infinity();
   still_ = n_ == 0 && mode_ == ContactMode::kFullContact;
   exact_ = !still_ && mode_ == ContactMode::kFullContact && prop_.available();
+  // the series needs a base acceleration linear between the steps' ends: a record's, or none
+  series_ = N == 0 && opt_.series_rocking && rocking() && !sliding() &&
+            (motion_.is_sampled() || motion_.is_none());
   // quadratures steer no step of a sticking contact mode; a slide's d, d_dot come after them
   ctl_.controlled = flying() ? 2 * n_ + 8 : (sliding() ? -1 : 2 * n_ + 2);
   if (still_) {
@@ -625,6 +632,13 @@ bool Simulator<N, MaxN>::enter_mode(double t, State& x) {
     slide_integ_.start(
         [this](double tt, const SlideState& xx, SlideState& dd) { slide_rhs(tt, xx, dd); }, ctl_, t,
         slide_buf_);
+  } else if (series_) {
+    const int e = edge();
+    const double a = dyn_.alpha(e);
+    series_integ_.set_pivot(a, dyn_.g_over_h() / dyn_.inertia(a, q_),
+                            dyn_.mass() * dyn_.height() * dyn_.g(), dyn_.g());
+    dense_buf_ = x.head(2 * n_ + 4);
+    series_integ_.start([](double, const ContactState&, ContactState&) {}, ctl_, t, dense_buf_);
   } else {
     dense_buf_ = x.head(2 * n_ + 4);
     configure_rocking_integrator();
@@ -711,6 +725,9 @@ bool Simulator<N, MaxN>::advance(double& t, State& x) {
     auto sys = [this](double tt, const SlideState& xx, SlideState& dd) { slide_rhs(tt, xx, dd); };
     return advance_with(slide_integ_, sys, slide_buf_, t, x);
   }
+  if (series_)
+    return advance_with(
+        series_integ_, [](double, const ContactState&, ContactState&) {}, dense_buf_, t, x);
   auto sys = [this](double tt, const ContactState& xx, ContactState& dd) {
     contact_rhs(tt, xx, dd);
   };
@@ -1190,6 +1207,9 @@ void Simulator<N, MaxN>::state_at(double t, State& out) const {
   } else if (sliding()) {
     slide_integ_.dense(t, slide_buf_);
     put(slide_buf_, out);
+  } else if (series_) {
+    series_integ_.dense(t, dense_buf_);
+    put(dense_buf_, out);
   } else {
     integ_.dense(t, dense_buf_);
     put(dense_buf_, out);
@@ -1910,6 +1930,7 @@ void Simulator<N, MaxN>::emit_rows_until(double t_cut) {
                       : exact_    ? prop_.t1()
                       : flying()  ? flight_integ_.t1()
                       : sliding() ? slide_integ_.t1()
+                      : series_   ? series_integ_.t1()
                                   : integ_.t1();
     state_at(std::min(to, t1), xr_);
     emit_row(to, xr_);

@@ -2718,6 +2718,77 @@ def print_equations(gens):
             print('rigid ratio thd+/thd- =', Gn.rigid_ratio)
 
 
+def rocking_series_recurrence(P0, P1, Q0, Q1, th0, om0, order):
+    """the Taylor coefficients of the rigid rocking motion by the recurrence of docs/theory.md
+    (Rocking of a rigid body by its Taylor series), as src/sim/rocking_series.hpp computes them:
+    theta to power order + 1, sin and cos of theta to power order - 1"""
+    th, s, c = [th0, om0] + [0] * order, [sp.sin(th0)] + [0] * order, [sp.cos(th0)] + [0] * order
+    for j in range(order):
+        if j > 0:
+            s[j] = sum((i * th[i] * c[j - i] for i in range(1, j + 1)), 0) / j
+            c[j] = -sum((i * th[i] * s[j - i] for i in range(1, j + 1)), 0) / j
+        a = P0 * c[j] + Q0 * s[j] + ((P1 * c[j - 1] + Q1 * s[j - 1]) if j > 0 else 0)
+        th[j + 2] = a / ((j + 1) * (j + 2))
+    return th, s, c
+
+
+def derive_rocking_series(order=5):
+    """a rigid body's rocking by its Taylor series (docs/theory.md): the equation and the input
+    power as the series uses them against the general equations of theory 4 and the c.g.'s
+    kinematics, and the recurrence against the series of the equation's right-hand side."""
+    al, z2, g, h, M, tau = sp.symbols('alpha zeta2 g h M tau', real=True)
+    u0, u1, v0, v1, th0, om0, s, c, thd = sp.symbols('u0 u1 v0 v1 theta0 omega0 s c thd', real=True)
+    P = dict(n=0, M=M, h=h, zeta2=z2, mu=[], kappa=[], gamma=[], psi_x=[], psi_y=[], delta=[], beta=[])
+    res = {}
+    u, v = sp.Symbol('u'), sp.Symbol('v')
+    k = (g / h) / (1 + z2 + al ** 2)
+    # the equation: theta'' = k ((alpha v + u) cos + (v - alpha u) sin) from theory 4 at n = 0
+    thdd = conv_f(P, al, [], thd, [], s, c, u, v, g)[0] / conv_A(P, al, [])[0][0]
+    res['series_equation'] = is_zero(thdd - k * ((al * v + u) * c + (v - al * u) * s))
+    # the input power -M a_base . v_cm, the c.g. at h R(theta) (-alpha, 1) from the pivot, the base
+    # accelerating by (g u, g (v - 1))
+    th = sp.Function('th')(tau)
+    r = [h * (-al * sp.cos(th) - sp.sin(th)), h * (-al * sp.sin(th) + sp.cos(th))]
+    vel = [sp.diff(x, tau) for x in r]
+    power = -M * (g * u * vel[0] + g * (v - 1) * vel[1])
+    series_power = M * h * g * sp.diff(th, tau) * ((u + al * (v - 1)) * sp.cos(th)
+                                                   + ((v - 1) - al * u) * sp.sin(th))
+    res['series_power'] = is_zero(sp.expand(power - series_power))
+    # the recurrence: the polynomial's residual in the equation, and sin, cos, the work, vanish to
+    # the powers the series claims; the parameters as exact rationals (symbols make the series
+    # expansion slow), the initial state symbolic
+    num = {al: sp.Rational(-3, 11), z2: sp.Rational(2, 5), g: sp.Rational(49, 5), h: sp.Rational(13, 10),
+           M: sp.Rational(800), u0: sp.Rational(3, 10), u1: sp.Rational(-47, 10), v0: sp.Rational(9, 10),
+           v1: sp.Rational(23, 10)}
+    al, z2, g, h, M, u0, u1, v0, v1 = [num[x] for x in (al, z2, g, h, M, u0, u1, v0, v1)]
+    k = (g / h) / (1 + z2 + al ** 2)
+    uu, vv = u0 + u1 * tau, v0 + v1 * tau
+    Pk, Qk = k * (al * vv + uu), k * (vv - al * uu)
+    thc, sc, cc = rocking_series_recurrence(sp.expand(k * (al * v0 + u0)), sp.expand(k * (al * v1 + u1)),
+                                            sp.expand(k * (v0 - al * u0)), sp.expand(k * (v1 - al * u1)),
+                                            th0, om0, order)
+    poly = sum((thc[i] * tau ** i for i in range(order + 2)), 0)
+    resid = sp.diff(poly, tau, 2) - (Pk * sp.cos(poly) + Qk * sp.sin(poly))
+    ser = sp.series(resid, tau, 0, order).removeO()
+    res['series_recurrence'] = all(is_zero(ser.coeff(tau, i)) for i in range(order))
+    sin_ser = sp.series(sp.sin(poly), tau, 0, order).removeO()
+    cos_ser = sp.series(sp.cos(poly), tau, 0, order).removeO()
+    res['series_sincos'] = all(is_zero(sin_ser.coeff(tau, i) - sc[i]) and is_zero(cos_ser.coeff(tau, i) - cc[i])
+                               for i in range(order))
+    # the work's terms: W_{k+1} = M h g sum_j (j + 1) theta_{j+1} r_{k-j} / (k + 1)
+    a0, a1 = M * h * g * (u0 + al * (v0 - 1)), M * h * g * (u1 + al * v1)
+    b0, b1 = M * h * g * ((v0 - 1) - al * u0), M * h * g * (v1 - al * u1)
+    rr = [a0 * cc[j] + b0 * sc[j] + ((a1 * cc[j - 1] + b1 * sc[j - 1]) if j > 0 else 0) for j in range(order)]
+    W = [0] + [sum(((j + 1) * thc[j + 1] * rr[kk - j] for j in range(kk + 1)), 0) / (kk + 1) for kk in range(order)]
+    wpoly = sum((W[i] * tau ** i for i in range(order + 1)), 0)
+    dpoly = sp.diff(poly, tau)
+    wres = sp.diff(wpoly, tau) - M * h * g * dpoly * ((uu + al * (vv - 1)) * sp.cos(poly)
+                                                     + ((vv - 1) - al * uu) * sp.sin(poly))
+    wser = sp.series(wres, tau, 0, order).removeO()
+    res['series_work'] = all(is_zero(wser.coeff(tau, i)) for i in range(order))
+    return res
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument('--out')
@@ -2734,6 +2805,8 @@ def main():
     sres['walk_bound'] = walk_bound_checks()
     print('  symbolic record-walk bound: %s' % sres['walk_bound'], file=sys.stderr)
     print('  symbolic rigid block with friction: %s' % rres, file=sys.stderr)
+    sres['rocking_series'] = derive_rocking_series()
+    print('  rigid rocking by its Taylor series: %s' % sres['rocking_series'], file=sys.stderr)
     failed = [(n, k) for n, r in sres.items() for k, v in r.items()
               if (isinstance(v, bool) and not v) or (isinstance(v, list) and v)]
     print('symbolic checks (n=0..%d): %s  [%.1f s]' % (args.symbolic_n, 'ALL PASS' if not failed else

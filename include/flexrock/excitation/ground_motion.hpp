@@ -55,6 +55,8 @@ class GroundMotion {
   std::size_t samples() const { return time_.size(); }
   bool is_sampled() const { return !time_.empty(); }
   bool has_vertical() const { return has_vertical_; }
+  /// Made by none(): zero throughout.
+  bool is_none() const { return none_; }
   const std::vector<double>& times() const { return time_; }
   const std::vector<double>& horizontal() const { return ax_; }
   const std::vector<double>& vertical() const { return ay_; }
@@ -71,6 +73,7 @@ class GroundMotion {
   bool has_vertical_ = false;
   bool uniform_ = false;
   double dt_ = 0.0, t0_ = 0.0;
+  bool none_ = false;
 };
 
 }  // namespace flexrock

@@ -1,0 +1,255 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// A rigid body's rocking (no modes, no slip) stepped by the Taylor series of its motion
+// (docs/theory.md, "Rocking of a rigid body by its Taylor series"). Under a sampled record the base
+// acceleration is linear between two samples, so the series' coefficients follow from the
+// equation of motion by a recurrence with one sine and cosine per step; the polynomial is the
+// step's dense output. Same interface as Dopri5 (the event loop's stepper); the `sys` arguments
+// are unused: the equation is built in. Internal header.
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <vector>
+
+#include "flexrock/excitation/ground_motion.hpp"
+#include "flexrock/integrate/dopri5.hpp"
+
+namespace flexrock::detail {
+
+/// The rocking equation of a rigid body about a pivot at alpha (over h), the floor accelerating by
+/// (g u, g (v - 1)):  theta'' = k ((alpha v + u) cos theta + (v - alpha u) sin theta), k = (g/h)/m,
+/// m = 1 + zeta^2 + alpha^2, and the input power M h g theta' ((u + alpha (v - 1)) cos theta +
+/// ((v - 1) - alpha u) sin theta). `State` holds theta, theta_dot, input work, damping loss.
+template <class State>
+class RockingSeries {
+ public:
+  enum class Status { kAccepted, kStepCollapsed };
+  static constexpr int kMaxOrder = 30;  // highest power of theta's series
+
+  explicit RockingSeries(const GroundMotion& motion) : motion_(motion) {}
+
+  /// The pivot: alpha, k = (g/h)/m [1/s^2], M h g [J] and g [m/s^2].
+  void set_pivot(double alpha, double k, double mhg, double g) {
+    alpha_ = alpha;
+    k_ = k;
+    mhg_ = mhg;
+    g_ = g;
+  }
+
+  template <class System>
+  void start(System&&, const StepControl& ctl, double t, const State& x, double = 0.0) {
+    ctl_ = ctl;
+    // the order: Jorba & Zou's -ln(eps)/2 + 1 as the most the step may need; fewer terms are used
+    // where they reach the tolerance already (a record's short intervals)
+    const double eps = std::clamp(ctl.rtol, 1e-16, 1e-3);
+    max_order_ = std::clamp(static_cast<int>(std::ceil(-0.5 * std::log(eps))) + 2, 8, kMaxOrder);
+    t0_ = t1_ = t;
+    x0_ = x;
+    x1_ = x;
+    order_ = 0;
+    th_.fill(0.0);
+    w_.fill(0.0);
+    th_[0] = x(0);
+    th_[1] = x(1);
+    w_[0] = x(2);
+    h_ = ctl.max_step;
+  }
+
+  /// One step from t1() toward t_stop, ending on it when reached; t_stop must not lie past the
+  /// record sample after t1() (the base acceleration must be linear on the step).
+  template <class System>
+  Status step(System&&, double t_stop) {
+    const double t = t1_;
+    double h = std::min(t_stop - t, ctl_.max_step);
+    bool ends = t + h >= t_stop;
+    if (!(h > 0.0)) return Status::kStepCollapsed;
+    forcing(t);
+    x0_ = x1_;
+    const double tol_th = ctl_.atol + ctl_.rtol * std::abs(x1_(0));
+    const double tol_om = ctl_.atol + ctl_.rtol * std::abs(x1_(1));
+    // terms up to the first order whose last two terms at h are within the tolerance
+    series_start(x1_(0), x1_(1));
+    int p = 0;  // theta's series is known to power p + 1
+    for (;;) {
+      add_term(p);
+      ++p;
+      if (p >= kMinOrder && within(p, h, tol_th, tol_om)) break;
+      if (p >= max_order_) {
+        // the step is too long for this order: the radius from the last two terms
+        const double hr = radius(p, tol_th, tol_om);
+        if (!(hr >= ctl_.min_step * std::max(1.0, std::abs(t)))) return Status::kStepCollapsed;
+        if (hr < h) {
+          h = hr;
+          ends = false;
+        }
+        break;
+      }
+    }
+    order_ = p;
+    work_series(p);
+    t0_ = t;
+    t1_ = ends ? t_stop : t + h;
+    hd_ = h;
+    h_ = h;
+    eval(t1_ - t0_, x1_);
+    return Status::kAccepted;
+  }
+
+  /// Ends the last step at t_target (within it): the polynomial holds there too.
+  template <class System>
+  void restep_to(System&&, double t_target) {
+    t1_ = t_target;
+    eval(t_target - t0_, x1_);
+  }
+
+  /// The forcing is re-read at every step: nothing to refresh.
+  template <class System>
+  void refresh_derivative(System&&, double) {}
+
+  /// State at t in [t0(), t1()] from the step's polynomial.
+  void dense(double t, State& out) const {
+    out.resize(x0_.size());
+    eval(t - t0_, out);
+  }
+
+  double t0() const { return t0_; }
+  double t1() const { return t1_; }
+  const State& x0() const { return x0_; }
+  const State& x1() const { return x1_; }
+  double suggested_step() const { return h_; }
+  long rhs_evaluations() const { return 0; }
+  long rejected_steps() const { return 0; }
+  /// theta's series on the last step: theta(t0 + tau) = sum_k c[k] tau^k, k = 0..order()
+  const double* theta_coefficients() const { return th_.data(); }
+  int order() const { return order_ + 1; }
+
+ private:
+  static constexpr int kMinOrder = 5;
+
+  // u = Xdd/g and v = 1 + Ydd/g on [t, t_stop] as u0 + u1 tau, v0 + v1 tau (zero outside the
+  // record); the interval is found by index, walking from the last one
+  void forcing(double t) {
+    u0_ = u1_ = v1_ = 0.0;
+    v0_ = 1.0;
+    const std::vector<double>& ts = motion_.times();
+    if (ts.size() < 2 || t < ts.front() || t >= ts.back()) return;
+    std::size_t i = std::min(index_, ts.size() - 2);
+    while (i > 0 && ts[i] > t) --i;
+    while (i + 2 < ts.size() && ts[i + 1] <= t) ++i;
+    index_ = i;
+    const double dt = ts[i + 1] - ts[i], w = (t - ts[i]) / dt;
+    const std::vector<double>& hx = motion_.horizontal();
+    const double gi = 1.0 / g_;
+    u0_ = gi * (hx[i] + w * (hx[i + 1] - hx[i]));
+    u1_ = gi * (hx[i + 1] - hx[i]) / dt;
+    if (motion_.has_vertical()) {
+      const std::vector<double>& vy = motion_.vertical();
+      v0_ = 1.0 + gi * (vy[i] + w * (vy[i + 1] - vy[i]));
+      v1_ = gi * (vy[i + 1] - vy[i]) / dt;
+    }
+  }
+
+  void series_start(double theta, double theta_dot) {
+    th_[0] = theta;
+    th_[1] = theta_dot;
+    s_[0] = std::sin(theta);
+    c_[0] = std::cos(theta);
+    // theta'' = k (P cos + Q sin), P = alpha v + u, Q = v - alpha u: linear in tau
+    p0_ = k_ * (alpha_ * v0_ + u0_);
+    p1_ = k_ * (alpha_ * v1_ + u1_);
+    q0_ = k_ * (v0_ - alpha_ * u0_);
+    q1_ = k_ * (v1_ - alpha_ * u1_);
+  }
+
+  // the sine and cosine terms of order j, then theta's term of order j + 2
+  void add_term(int j) {
+    if (j > 0) {
+      double s = 0.0, c = 0.0;
+      for (int i = 1; i <= j; ++i) {
+        const double it = i * th_[i];
+        s += it * c_[j - i];
+        c -= it * s_[j - i];
+      }
+      const double inv = 1.0 / j;
+      s_[j] = s * inv;
+      c_[j] = c * inv;
+    }
+    double a = p0_ * c_[j] + q0_ * s_[j];
+    if (j > 0) a += p1_ * c_[j - 1] + q1_ * s_[j - 1];
+    th_[j + 2] = a / ((j + 1.0) * (j + 2.0));
+  }
+
+  // the last two terms of theta (powers p, p + 1) and theta_dot (p - 1, p) at h are within
+  // their tolerances
+  bool within(int p, double h, double tol_th, double tol_om) const {
+    double hp = h;
+    for (int i = 1; i < p - 1; ++i) hp *= h;  // h^(p-1)
+    const double a = std::abs(th_[p]), b = std::abs(th_[p + 1]);
+    const double e_th = hp * h * (a + b * h);
+    const double e_om = hp * (p * a + (p + 1) * b * h);
+    return e_th <= tol_th && e_om <= tol_om;
+  }
+
+  // the longest step at which each of those terms alone is within its tolerance, with a margin
+  double radius(int p, double tol_th, double tol_om) const {
+    double r = std::numeric_limits<double>::infinity();
+    auto cap = [&r](double tol, double c, int k) {
+      if (c > 0.0) r = std::min(r, std::exp(std::log(tol / c) / k));
+    };
+    const double a = std::abs(th_[p]), b = std::abs(th_[p + 1]);
+    cap(tol_th, a, p);
+    cap(tol_th, b, p + 1);
+    cap(tol_om, p * a, p - 1);
+    cap(tol_om, (p + 1) * b, p);
+    return kSafe * r;
+  }
+
+  // the input work's series: W' = M h g theta' ((u + alpha (v - 1)) cos + ((v - 1) - alpha u) sin)
+  void work_series(int p) {
+    const double a0 = mhg_ * (u0_ + alpha_ * (v0_ - 1.0)), a1 = mhg_ * (u1_ + alpha_ * v1_);
+    const double b0 = mhg_ * ((v0_ - 1.0) - alpha_ * u0_), b1 = mhg_ * (v1_ - alpha_ * u1_);
+    // r_k, k = 0..p-1: the bracket's series (sine and cosine are known to p - 1)
+    for (int k = 0; k < p; ++k) {
+      r_[k] = a0 * c_[k] + b0 * s_[k];
+      if (k > 0) r_[k] += a1 * c_[k - 1] + b1 * s_[k - 1];
+    }
+    w_[0] = x0_(2);
+    for (int k = 0; k < p; ++k) {
+      double sum = 0.0;
+      for (int j = 0; j <= k; ++j) sum += (j + 1) * th_[j + 1] * r_[k - j];
+      w_[k + 1] = sum / (k + 1);
+    }
+  }
+
+  void eval(double tau, State& out) const {
+    const int p = order_;  // theta to p + 1, theta_dot to p, work to p
+    double th = th_[p + 1], om = (p + 1) * th_[p + 1], w = w_[p];
+    for (int k = p; k >= 1; --k) {
+      th = th * tau + th_[k];
+      om = om * tau + k * th_[k];
+      w = w * tau + w_[k - 1];
+    }
+    th = th * tau + th_[0];
+    out(0) = th;
+    out(1) = om;
+    out(2) = w;
+    out(3) = x0_(3);  // no damping without modes
+  }
+
+  static constexpr double kSafe = 0.9;
+  const GroundMotion& motion_;
+  StepControl ctl_;
+  double alpha_ = 0.0, k_ = 0.0, mhg_ = 0.0, g_ = 9.81;
+  double u0_ = 0.0, u1_ = 0.0, v0_ = 1.0, v1_ = 0.0;
+  double p0_ = 0.0, p1_ = 0.0, q0_ = 0.0, q1_ = 0.0;
+  std::array<double, kMaxOrder + 2> th_{}, s_{}, c_{}, r_{}, w_{};
+  State x0_, x1_;
+  double t0_ = 0.0, t1_ = 0.0, hd_ = 0.0, h_ = 0.0;
+  int order_ = 0, max_order_ = 12;
+  std::size_t index_ = 0;
+};
+
+}  // namespace flexrock::detail

@@ -1,0 +1,196 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// A rigid body's rocking stepped by its Taylor series against DOPRI5 (series_rocking = false), the
+// closed-form free rocking, and mirror symmetry; one series step against an independent
+// integration of the rocking equation.
+#include "sim/rocking_series.hpp"
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Core>
+#include <algorithm>
+#include <boost/math/quadrature/gauss_kronrod.hpp>
+#include <cmath>
+#include <random>
+#include <vector>
+
+#include "flexrock/integrate/dopri5.hpp"
+#include "flexrock/sim/simulate.hpp"
+
+namespace flexrock {
+namespace {
+
+constexpr double g = kStandardGravity;
+
+std::vector<double> impact_times(const SimulationResult& r) {
+  std::vector<double> out;
+  for (const Event& e : r.events)
+    if (e.kind == EventKind::kImpact || e.kind == EventKind::kRockingEnded ||
+        e.kind == EventKind::kChatterCutoff)
+      out.push_back(e.time);
+  return out;
+}
+
+// a random record with uneven spacing, both components, amplitude in g
+GroundMotion random_record(unsigned seed, double amplitude, double duration, double sign = 1.0) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::vector<double> t{0.0}, ax{0.0}, ay{0.0};
+  while (t.back() < duration) {
+    t.push_back(t.back() + 0.004 + 0.016 * u(rng));
+    // a smooth-ish random ground motion: a few harmonics with random phases plus noise
+    const double s = t.back();
+    ax.push_back(sign * amplitude * g *
+                 (std::sin(7.0 * s) + 0.6 * std::sin(17.0 * s + 1.0) + 0.3 * (2 * u(rng) - 1)));
+    ay.push_back(0.3 * amplitude * g * (std::sin(11.0 * s + 0.5) + 0.3 * (2 * u(rng) - 1)));
+  }
+  return GroundMotion::sampled(t, ax, ay);
+}
+
+// free rocking of a symmetric rigid block: the time to fall from a peak th0 to theta = 0 by
+// quadrature of the energy integral (as in the validation tests and bench/peers/compare.py)
+double fall_time(double alpha, double m, double h, double th0) {
+  auto dv = [&](double d) {
+    return 2 * std::sin(0.5 * d) * (alpha * std::cos(th0 - 0.5 * d) - std::sin(th0 - 0.5 * d));
+  };
+  auto f = [&](double v) {
+    if (v == 0.0) {
+      const double dvdth = alpha * std::cos(th0) - std::sin(th0);
+      return 2.0 * std::sqrt(th0) / std::sqrt(2 * g / (h * m) * dvdth);
+    }
+    return 2 * th0 * v / std::sqrt(2 * g / (h * m) * dv(th0 * v * v));
+  };
+  return boost::math::quadrature::gauss_kronrod<double, 61>::integrate(f, 0.0, 1.0, 15, 1e-15);
+}
+
+TEST(RockingSeries, FreeRockingImpactTimesMatchEnergyQuadrature) {
+  const double b = 0.2, h = 1.0, alpha = b / h, m = 1 + (1 + alpha * alpha) / 3 + alpha * alpha;
+  const Body body(BodyParameters::rectangular_block(1000, b, h));
+  const double r = 1 - 1.5 * std::pow(std::sin(std::atan(alpha)), 2);
+  const double aH = std::atan(alpha);
+  InitialState init;
+  init.theta = 0.8 * alpha;
+  for (bool series : {true, false}) {
+    SimulationOptions opt;
+    opt.t_end = 20.0;
+    opt.max_step = 1.0;
+    opt.rtol = 1e-13;
+    opt.atol = 1e-15;
+    opt.series_rocking = series;
+    const auto res = simulate(body, GroundMotion::none(opt.t_end), init, opt);
+    const auto times = impact_times(res);
+    ASSERT_GE(times.size(), 12u);
+    double th = init.theta, t = fall_time(alpha, m, h, th);
+    for (std::size_t k = 0; k < 12; ++k) {
+      EXPECT_NEAR(times[k], t, 2e-11 * t) << "impact " << k << (series ? " series" : " dopri5");
+      th = aH - std::acos(std::cos(aH) + r * r * (std::cos(aH - th) - std::cos(aH)));
+      t += 2 * fall_time(alpha, m, h, th);
+    }
+  }
+}
+
+SimulationResult run_record(const GroundMotion& motion, bool series, double rtol) {
+  const Body body(BodyParameters::rectangular_block(1000, 0.2, 1.0));
+  SimulationOptions opt;
+  opt.rtol = rtol;
+  opt.atol = 1e-2 * rtol;
+  opt.series_rocking = series;
+  return simulate(body, motion, InitialState{}, opt);
+}
+
+TEST(RockingSeries, UnderARecordAgreesWithDopri5) {
+  int overturned = 0, rocked = 0;
+  for (unsigned seed : {1u, 2u, 3u, 4u}) {
+    for (double amp : {0.25, 0.45}) {
+      const GroundMotion motion = random_record(seed, amp, 8.0);
+      const auto s = run_record(motion, true, 1e-13);
+      const auto d = run_record(motion, false, 1e-13);
+      const std::string where = "seed " + std::to_string(seed) + ", " + std::to_string(amp) + " g";
+      ASSERT_EQ(s.status, d.status) << where;
+      EXPECT_EQ(s.extremes.overturn_edge, d.extremes.overturn_edge) << where;
+      if (s.status == Status::kOverturned) {
+        ++overturned;
+        EXPECT_NEAR(s.extremes.overturn_time, d.extremes.overturn_time, 1e-9) << where;
+      }
+      EXPECT_NEAR(s.extremes.first_uplift_time, d.extremes.first_uplift_time, 1e-12) << where;
+      EXPECT_NEAR(s.extremes.max_theta_edge1, d.extremes.max_theta_edge1,
+                  1e-9 * std::max(1e-3, d.extremes.max_theta_edge1))
+          << where;
+      EXPECT_NEAR(s.extremes.max_theta_edge2, d.extremes.max_theta_edge2,
+                  1e-9 * std::max(1e-3, d.extremes.max_theta_edge2))
+          << where;
+      const auto ts = impact_times(s), td = impact_times(d);
+      ASSERT_EQ(ts.size(), td.size()) << where;
+      if (!ts.empty()) ++rocked;
+      for (std::size_t k = 0; k < ts.size(); ++k) EXPECT_NEAR(ts[k], td[k], 1e-9) << where << k;
+      // the input work, integrated with the series, closes the energy balance as tightly
+      EXPECT_LT(std::abs(s.energy.residual), 1e-9 * s.energy.scale) << where;
+    }
+  }
+  // the cases must exercise rocking with impacts and an overturn
+  EXPECT_GT(rocked, 3);
+  EXPECT_GT(overturned, 0);
+}
+
+TEST(RockingSeries, MirroredRecordMirrorsTheMotion) {
+  for (unsigned seed : {5u, 6u}) {
+    const auto p = run_record(random_record(seed, 0.35, 8.0, 1.0), true, 1e-10);
+    const auto m = run_record(random_record(seed, 0.35, 8.0, -1.0), true, 1e-10);
+    ASSERT_EQ(p.status, m.status);
+    ASSERT_GT(p.extremes.max_theta_edge1 + p.extremes.max_theta_edge2, 0.0);
+    EXPECT_EQ(p.extremes.first_uplift_edge, 3 - m.extremes.first_uplift_edge);
+    EXPECT_NEAR(p.extremes.max_theta_edge1, m.extremes.max_theta_edge2, 1e-12);
+    EXPECT_NEAR(p.extremes.max_theta_edge2, m.extremes.max_theta_edge1, 1e-12);
+    const auto tp = impact_times(p), tm = impact_times(m);
+    ASSERT_EQ(tp.size(), tm.size());
+    for (std::size_t k = 0; k < tp.size(); ++k) EXPECT_NEAR(tp[k], tm[k], 1e-12) << k;
+  }
+}
+
+// one step of the series across a record interval against DOPRI5 at rtol 1e-13 on the rocking
+// equation written out here (theory §11), at points inside the step (the dense output)
+TEST(RockingSeries, OneStepMatchesAnIndependentIntegration) {
+  using State = Eigen::Vector4d;
+  const double alpha = -0.25, zeta2 = 0.4, h = 1.3, mass = 800.0;
+  const double m = 1 + zeta2 + alpha * alpha, k = g / h / m;
+  // one record interval [0.1, 0.14] of both components
+  const GroundMotion motion =
+      GroundMotion::sampled({0.0, 0.1, 0.14, 0.2}, {0.0, 3.1, -4.7, 0.0}, {0.0, -1.9, 2.3, 0.0});
+  const double t0 = 0.1, t1 = 0.14;
+  auto rhs = [&](double t, const State& x, State& dx) {
+    const BaseAcceleration a = motion.at(t);
+    const double ax = a.x / g, ay = 1 + a.y / g, s = std::sin(x(0)), c = std::cos(x(0));
+    dx(0) = x(1);
+    // (1 + zeta^2 + alpha^2) theta'' = g/h [a_y (sin + alpha cos) ... ] with alpha = -alpha_1
+    dx(1) = k * (ay * (s + alpha * c) + ax * (c - alpha * s));
+    // -M a_base . v_cm with v_cm = h theta' (-cos + alpha sin, -sin - alpha cos) in the inertial
+    // axes of a pivot at alpha h
+    const double vx = h * x(1) * (-c + alpha * s), vy = h * x(1) * (-s - alpha * c);
+    dx(2) = -mass * (a.x * vx + a.y * vy);
+    dx(3) = 0.0;
+  };
+  const State x0(0.05, -0.3, 1.5, 0.0);
+  StepControl ctl;
+  ctl.rtol = 1e-13;
+  ctl.atol = 1e-15;
+  ctl.controlled = 2;
+  detail::RockingSeries<State> series(motion);
+  series.set_pivot(alpha, k, mass * h * g, g);
+  series.start(rhs, ctl, t0, x0);
+  ASSERT_EQ(series.step(rhs, t1), detail::RockingSeries<State>::Status::kAccepted);
+  EXPECT_EQ(series.t1(), t1);  // one step spans the interval
+  for (double f : {0.25, 0.5, 0.8, 1.0}) {
+    const double tf = t0 + f * (t1 - t0);
+    Dopri5<State> ref;
+    ctl.max_step = 1e-3;
+    ref.start(rhs, ctl, t0, x0);
+    while (ref.t1() < tf) ref.step(rhs, tf);
+    State xs;
+    series.dense(tf, xs);
+    EXPECT_NEAR(xs(0), ref.x1()(0), 1e-13) << f;
+    EXPECT_NEAR(xs(1), ref.x1()(1), 1e-12) << f;
+    EXPECT_NEAR(xs(2), ref.x1()(2), 1e-11 * std::abs(ref.x1()(2) - x0(2))) << f;
+  }
+}
+
+}  // namespace
+}  // namespace flexrock
