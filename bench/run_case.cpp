@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Runs one benchmark case at a given tolerance, repeatedly, and prints the median CPU time per
 // run with the quantities the peer comparison judges accuracy by (bench/peers/compare.py).
-//   flexrock_run_case <a|b2|b6|c|d1|d4|d8> <rtol> <repetitions>
+//   flexrock_run_case <a|b2|b6|c|d1|d4|d8> <rtol> <repetitions> [dopri5]
+// `dopri5` steps a rigid body's rocking by DOPRI5 instead of its Taylor series (series_rocking =
+// false), for the work-precision comparison of the two.
 #include <algorithm>
 #include <cstdio>
 #include <ctime>
@@ -23,8 +25,9 @@ double cpu_seconds() {
 int main(int argc, char** argv) {
   using namespace flexrock;
   using namespace flexrock::bench;
-  if (argc != 4) {
-    std::fprintf(stderr, "usage: flexrock_run_case <a|b2|b6|c|d1|d4|d8> <rtol> <repetitions>\n");
+  if (argc != 4 && !(argc == 5 && std::string(argv[4]) == "dopri5")) {
+    std::fprintf(stderr,
+                 "usage: flexrock_run_case <a|b2|b6|c|d1|d4|d8> <rtol> <repetitions> [dopri5]\n");
     return 2;
   }
   const std::string name = argv[1];
@@ -37,6 +40,7 @@ int main(int argc, char** argv) {
            : name == "d1" ? case_d_oscillator(rtol)
            : name == "d8" ? case_d_cantilever(8, rtol)
                           : case_d_cantilever(4, rtol);
+  if (argc == 5) c.opt.series_rocking = false;
   std::vector<double> times;
   SimulationResult r;
   for (int i = 0; i < reps; ++i) {

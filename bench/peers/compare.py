@@ -9,6 +9,10 @@ python3-siconos package is installed. flexrock runs through bench's flexrock_run
     /usr/bin/python3 bench/peers/compare.py --run-case build/bench/bench/flexrock_run_case \
         --out build/bench/peers.json [--plot docs/img/work_precision.png] [--quick]
 
+With --old-step each rtol also runs flexrock with the rigid body's rocking stepped by DOPRI5
+(flexrock_run_case ... dopri5) instead of its Taylor series; --cases a,c and --flexrock-only give
+the work-precision comparison of the two steps alone (docs/img/rocking_step.png).
+
 Accuracy: case (a) against the exact solution (energy quadrature between impacts); (b) and (c)
 against flexrock at rtol = 1e-13, checked against DOP853 at rtol = 1e-13. Times are the median
 CPU time per run (time.process_time) of a few repetitions, all in this one process session.
@@ -200,8 +204,8 @@ def time_scipy(case, spec, method, rtol, reps):
     return out
 
 
-def time_flexrock(run_case, case, rtol, reps):
-    line = subprocess.run([run_case, case, repr(rtol), str(reps)], check=True,
+def time_flexrock(run_case, case, rtol, reps, extra=()):
+    line = subprocess.run([run_case, case, repr(rtol), str(reps), *extra], check=True,
                           capture_output=True, text=True).stdout
     r = json.loads(line)
     if r["first_uplift"] < 0:
@@ -216,15 +220,21 @@ def main():
     ap.add_argument("--out", required=True, help="JSON results")
     ap.add_argument("--plot", help="work-precision plot (PNG or SVG)")
     ap.add_argument("--quick", action="store_true", help="fewer tolerances and repetitions")
+    ap.add_argument("--old-step", action="store_true",
+                    help="also flexrock with the rigid rocking stepped by DOPRI5")
+    ap.add_argument("--flexrock-only", action="store_true", help="no scipy or Siconos runs")
+    ap.add_argument("--cases", default="a,b2,b6,c", help="comma-separated cases")
     args = ap.parse_args()
-    specs = cases()
+    specs = {k: v for k, v in cases().items() if k in args.cases.split(",")}
     results = {"cases": {}, "machine": os.uname().nodename, "load": os.getloadavg()}
     reps_fast, reps_slow = (3, 1) if args.quick else (7, 3)
     tols = [1e-6, 1e-8, 1e-10] if args.quick else [1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10, 1e-11]
     # Siconos' event-driven block is run by bench/peers/siconos_block.py (run(case, rtol, reps)
     # -> dict like time_scipy's) when that file and python3-siconos are present
     siconos = None
-    if os.path.exists(os.path.join(HERE, "siconos_block.py")):
+    if args.flexrock_only:
+        pass
+    elif os.path.exists(os.path.join(HERE, "siconos_block.py")):
         try:
             sys.path.insert(0, HERE)
             import siconos_block  # noqa: E402  (needs python3-siconos)
@@ -245,13 +255,19 @@ def main():
             ref_used = exact
         else:
             ref_used = ref
-        chk = time_scipy(case, spec, "DOP853", 1e-13, 1)
+        # the reference checked against DOP853, or (flexrock only) against the DOPRI5 step
+        chk = (time_flexrock(args.run_case, case, 1e-13, 1, ("dopri5",)) if args.flexrock_only
+               else time_scipy(case, spec, "DOP853", 1e-13, 1))
         rows = []
         for rtol in tols:
             fr = time_flexrock(args.run_case, case, rtol, reps_fast)
             rows.append(dict(solver="flexrock", rtol=rtol, cpu_s=fr["cpu_s"],
                              error=error(fr, ref_used, case), steps=fr["steps"]))
-            for method in ("DOP853", "RK45"):
+            if args.old_step:
+                fo = time_flexrock(args.run_case, case, rtol, reps_fast, ("dopri5",))
+                rows.append(dict(solver="flexrock DOPRI5 rocking", rtol=rtol, cpu_s=fo["cpu_s"],
+                                 error=error(fo, ref_used, case), steps=fo["steps"]))
+            for method in () if args.flexrock_only else ("DOP853", "RK45"):
                 if method == "RK45" and rtol < 1e-9:
                     continue  # RK45 needs tens of thousands of steps there: minutes per run
                 sp = time_scipy(case, spec, method, rtol, reps_slow)
@@ -281,7 +297,8 @@ def plot(results, path):
     import matplotlib.pyplot as plt
     names = list(results["cases"])
     fig, axes = plt.subplots(1, len(names), figsize=(4.2 * len(names), 3.8))
-    styles = {"flexrock": "o-", "scipy DOP853": "s--", "scipy RK45": "^:",
+    styles = {"flexrock": "o-", "flexrock DOPRI5 rocking": "v-", "scipy DOP853": "s--",
+              "scipy RK45": "^:",
               "siconos event-driven": "d-."}
     for ax, case in zip(axes, names):
         rows = results["cases"][case]["rows"]

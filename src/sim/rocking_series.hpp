@@ -64,7 +64,12 @@ class RockingSeries {
   Status step(System&&, double t_stop) {
     const double t = t1_;
     double h = std::min(t_stop - t, ctl_.max_step);
-    bool ends = t + h >= t_stop;
+    bool ends = false;
+    if (t + 1.01 * h >= t_stop) {
+      // as Dopri5: a step within 1 % of t_stop ends on it (no sliver of a step left after it)
+      h = t_stop - t;
+      ends = true;
+    }
     if (!(h > 0.0)) return Status::kStepCollapsed;
     forcing(t);
     x0_ = x1_;
