@@ -242,9 +242,18 @@ class Simulator final : private GuardProbe {
   SimulationResult res_;
   Recorder rec_;
   ContactMode mode_ = ContactMode::kFullContact;
-  bool exact_ = false;   // a flexible body in full contact, stepped by prop_
-  bool still_ = false;   // a rigid body in full contact: the state is x_still_, nothing integrates
-  bool series_ = false;  // a rigid body rocking, stepped by series_integ_
+  // what steps the current mode's motion, chosen once in enter_mode
+  enum class Stepping {
+    kStill,    // a rigid body in full contact: the state is x_still_, nothing integrates
+    kExact,    // a flexible body in full contact under a record or none: prop_
+    kSeries,   // a rigid body rocking under a record or none: series_integ_
+    kRocking,  // any other sticking contact mode (rocking, or full contact under pulses): integ_
+    kFlight,   // flight_integ_
+    kSlide,    // a sliding mode: slide_integ_
+  };
+  Stepping stepping_ = Stepping::kRocking;
+  Stepping choose_stepping() const;
+  double stepped_until() const;  // [s] the end of the last step taken (of the still span)
   GroundMotion::Cursor rhs_cursor_, event_cursor_, break_cursor_;
   Vec q_, qd_, qdd_;
   State xr_;
@@ -607,44 +616,46 @@ bool Simulator<N, MaxN>::enter_mode(double t, State& x) {
     x(ithd()) = 0.0;
   }
   step_stop_ = std::numeric_limits<double>::infinity();
-  still_ = n_ == 0 && mode_ == ContactMode::kFullContact;
-  exact_ = !still_ && mode_ == ContactMode::kFullContact && prop_.available();
-  // the series needs a base acceleration linear between the steps' ends: a record's, or none
-  series_ = N == 0 && opt_.series_rocking && rocking() && !sliding() &&
-            (motion_.is_sampled() || motion_.is_none());
+  stepping_ = choose_stepping();
   // quadratures steer no step of a sticking contact mode; a slide's d, d_dot come after them
   ctl_.controlled = flying() ? 2 * n_ + 8 : (sliding() ? -1 : 2 * n_ + 2);
-  if (still_) {
-    // a rigid body in full contact does not move: no integration until it uplifts
-    x_still_ = x;
-    still_t1_ = t;
-  } else if (exact_) {
-    // a flexible body in full contact under a record: exact steps between its samples
-    prop_.start(t, x);
-  } else if (flying()) {
-    flight_buf_ = x.head(2 * n_ + 8);
-    flight_integ_.start(
-        [this](double tt, const FlightState& xx, FlightState& dd) { flight_rhs(tt, xx, dd); }, ctl_,
-        t, flight_buf_);
-  } else if (sliding()) {
-    slide_buf_.head(2 * n_ + 4) = x.head(2 * n_ + 4);
-    slide_buf_.tail(3) = x.segment(isd(), 3);
-    slide_integ_.start(
-        [this](double tt, const SlideState& xx, SlideState& dd) { slide_rhs(tt, xx, dd); }, ctl_, t,
-        slide_buf_);
-  } else if (series_) {
-    const int e = edge();
-    const double a = dyn_.alpha(e);
-    series_integ_.set_pivot(a, dyn_.g_over_h() / dyn_.inertia(a, q_),
-                            dyn_.mass() * dyn_.height() * dyn_.g(), dyn_.g());
-    dense_buf_ = x.head(2 * n_ + 4);
-    series_integ_.start([](double, const ContactState&, ContactState&) {}, ctl_, t, dense_buf_);
-  } else {
-    dense_buf_ = x.head(2 * n_ + 4);
-    configure_rocking_integrator();
-    integ_.start(
-        [this](double tt, const ContactState& xx, ContactState& dd) { contact_rhs(tt, xx, dd); },
-        ctl_, t, dense_buf_);
+  switch (stepping_) {
+    case Stepping::kStill:
+      x_still_ = x;
+      still_t1_ = t;
+      break;
+    case Stepping::kExact:
+      prop_.start(t, x);
+      break;
+    case Stepping::kFlight:
+      flight_buf_ = x.head(2 * n_ + 8);
+      flight_integ_.start(
+          [this](double tt, const FlightState& xx, FlightState& dd) { flight_rhs(tt, xx, dd); },
+          ctl_, t, flight_buf_);
+      break;
+    case Stepping::kSlide:
+      slide_buf_.head(2 * n_ + 4) = x.head(2 * n_ + 4);
+      slide_buf_.tail(3) = x.segment(isd(), 3);
+      slide_integ_.start(
+          [this](double tt, const SlideState& xx, SlideState& dd) { slide_rhs(tt, xx, dd); }, ctl_,
+          t, slide_buf_);
+      break;
+    case Stepping::kSeries: {
+      const int e = edge();
+      const double a = dyn_.alpha(e);
+      series_integ_.set_pivot(a, dyn_.g_over_h() / dyn_.inertia(a, q_),
+                              dyn_.mass() * dyn_.height() * dyn_.g(), dyn_.g());
+      dense_buf_ = x.head(2 * n_ + 4);
+      series_integ_.start([](double, const ContactState&, ContactState&) {}, ctl_, t, dense_buf_);
+      break;
+    }
+    case Stepping::kRocking:
+      dense_buf_ = x.head(2 * n_ + 4);
+      configure_rocking_integrator();
+      integ_.start(
+          [this](double tt, const ContactState& xx, ContactState& dd) { contact_rhs(tt, xx, dd); },
+          ctl_, t, dense_buf_);
+      break;
   }
   evaluate(t, x, s0_);
   observe(s0_, x);
@@ -688,6 +699,43 @@ bool Simulator<N, MaxN>::enter_mode(double t, State& x) {
   return true;
 }
 
+// the stepper of mode_: the cheapest that is exact or accurate for its equations
+template <int N, int MaxN>
+auto Simulator<N, MaxN>::choose_stepping() const -> Stepping {
+  if (flying()) return Stepping::kFlight;
+  if (sliding()) return Stepping::kSlide;
+  if (mode_ == ContactMode::kFullContact) {
+    // a rigid body in full contact does not move: no integration until it uplifts
+    if (n_ == 0) return Stepping::kStill;
+    // a flexible body in full contact under a record or none: exact steps between its samples
+    if (prop_.available()) return Stepping::kExact;
+    return Stepping::kRocking;
+  }
+  // the series needs a base acceleration linear between the steps' ends: a record's, or none
+  if (N == 0 && opt_.series_rocking && (motion_.is_sampled() || motion_.is_none()))
+    return Stepping::kSeries;
+  return Stepping::kRocking;
+}
+
+template <int N, int MaxN>
+double Simulator<N, MaxN>::stepped_until() const {
+  switch (stepping_) {
+    case Stepping::kStill:
+      return still_t1_;
+    case Stepping::kExact:
+      return prop_.t1();
+    case Stepping::kFlight:
+      return flight_integ_.t1();
+    case Stepping::kSlide:
+      return slide_integ_.t1();
+    case Stepping::kSeries:
+      return series_integ_.t1();
+    case Stepping::kRocking:
+      break;
+  }
+  return integ_.t1();
+}
+
 // a flexible body's rocking may be stiff: the explicit method's stability bound on the rocking
 // equations about the pivot (once per edge and run) lets the stepper see when stability, not
 // accuracy, holds its step. Full contact and a rigid body keep DOPRI5.
@@ -707,27 +755,31 @@ void Simulator<N, MaxN>::configure_rocking_integrator() {
 // one accepted step plus whatever happens in it; false when the run ends
 template <int N, int MaxN>
 bool Simulator<N, MaxN>::advance(double& t, State& x) {
-  if (still_) return advance_still(t, x);
-  // the exact propagator takes no right-hand side
-  if (exact_) {
-    if (t >= step_stop_) step_stop_ = std::numeric_limits<double>::infinity();
-    if (can_walk(t)) return advance_walk(t, x);
-    return advance_with(
-        prop_, [](double, const State&, State&) {}, prop_buf_, t, x);
+  switch (stepping_) {
+    case Stepping::kStill:
+      return advance_still(t, x);
+    case Stepping::kExact:
+      // the exact propagator takes no right-hand side
+      if (t >= step_stop_) step_stop_ = std::numeric_limits<double>::infinity();
+      if (can_walk(t)) return advance_walk(t, x);
+      return advance_with(
+          prop_, [](double, const State&, State&) {}, prop_buf_, t, x);
+    case Stepping::kFlight: {
+      auto sys = [this](double tt, const FlightState& xx, FlightState& dd) {
+        flight_rhs(tt, xx, dd);
+      };
+      return advance_with(flight_integ_, sys, flight_buf_, t, x);
+    }
+    case Stepping::kSlide: {
+      auto sys = [this](double tt, const SlideState& xx, SlideState& dd) { slide_rhs(tt, xx, dd); };
+      return advance_with(slide_integ_, sys, slide_buf_, t, x);
+    }
+    case Stepping::kSeries:
+      return advance_with(
+          series_integ_, [](double, const ContactState&, ContactState&) {}, dense_buf_, t, x);
+    case Stepping::kRocking:
+      break;
   }
-  if (flying()) {
-    auto sys = [this](double tt, const FlightState& xx, FlightState& dd) {
-      flight_rhs(tt, xx, dd);
-    };
-    return advance_with(flight_integ_, sys, flight_buf_, t, x);
-  }
-  if (sliding()) {
-    auto sys = [this](double tt, const SlideState& xx, SlideState& dd) { slide_rhs(tt, xx, dd); };
-    return advance_with(slide_integ_, sys, slide_buf_, t, x);
-  }
-  if (series_)
-    return advance_with(
-        series_integ_, [](double, const ContactState&, ContactState&) {}, dense_buf_, t, x);
   auto sys = [this](double tt, const ContactState& xx, ContactState& dd) {
     contact_rhs(tt, xx, dd);
   };
@@ -839,7 +891,8 @@ bool Simulator<N, MaxN>::advance_with(Stepper& integ, System&& sys, Buffer& buf,
 // sample (docs/theory.md, "Exact propagation in full contact"): true when the walk can start at t
 template <int N, int MaxN>
 bool Simulator<N, MaxN>::can_walk(double t) const {
-  if (!exact_ || !opt_.full_contact_walk || !motion_.is_sampled()) return false;
+  if (stepping_ != Stepping::kExact || !opt_.full_contact_walk || !motion_.is_sampled())
+    return false;
   if (t < fine_until_ - 1e-12 * std::max(1.0, t)) return false;
   if (tension_ || hold_tension_) return false;
   const ModeSpec& spec = mode_spec(mode_);
@@ -1197,22 +1250,29 @@ double Simulator<N, MaxN>::scan_record(double t) {
 // the state at t within the last step (or the still state)
 template <int N, int MaxN>
 void Simulator<N, MaxN>::state_at(double t, State& out) const {
-  if (still_) {
-    out = x_still_;
-  } else if (exact_) {
-    prop_.dense(t, out);
-  } else if (flying()) {
-    flight_integ_.dense(t, flight_buf_);
-    put(flight_buf_, out);
-  } else if (sliding()) {
-    slide_integ_.dense(t, slide_buf_);
-    put(slide_buf_, out);
-  } else if (series_) {
-    series_integ_.dense(t, dense_buf_);
-    put(dense_buf_, out);
-  } else {
-    integ_.dense(t, dense_buf_);
-    put(dense_buf_, out);
+  switch (stepping_) {
+    case Stepping::kStill:
+      out = x_still_;
+      return;
+    case Stepping::kExact:
+      prop_.dense(t, out);
+      return;
+    case Stepping::kFlight:
+      flight_integ_.dense(t, flight_buf_);
+      put(flight_buf_, out);
+      return;
+    case Stepping::kSlide:
+      slide_integ_.dense(t, slide_buf_);
+      put(slide_buf_, out);
+      return;
+    case Stepping::kSeries:
+      series_integ_.dense(t, dense_buf_);
+      put(dense_buf_, out);
+      return;
+    case Stepping::kRocking:
+      integ_.dense(t, dense_buf_);
+      put(dense_buf_, out);
+      return;
   }
 }
 
@@ -1926,13 +1986,7 @@ void Simulator<N, MaxN>::emit_rows_until(double t_cut) {
   for (;;) {
     const double to = static_cast<double>(next_output_) * opt_.output_dt;
     if (to > t_cut || to > t_end_ * (1.0 + 1e-14)) break;
-    const double t1 = still_      ? still_t1_
-                      : exact_    ? prop_.t1()
-                      : flying()  ? flight_integ_.t1()
-                      : sliding() ? slide_integ_.t1()
-                      : series_   ? series_integ_.t1()
-                                  : integ_.t1();
-    state_at(std::min(to, t1), xr_);
+    state_at(std::min(to, stepped_until()), xr_);
     emit_row(to, xr_);
     ++next_output_;
   }
