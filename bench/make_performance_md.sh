@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: BSD-3-Clause
 # Regenerates docs/performance.md: builds the benchmarks, runs Google Benchmark (JSON) and the
-# peer comparison, and writes the tables, the commands, the machine and the date.
+# peer comparison (with the rigid rocking's former DOPRI5 step beside its Taylor series), the
+# study timings (a 256 x 256 spectrum unless GRID is set), and writes the tables, the commands, the
+# machine and the date.
 # Usage: bench/make_performance_md.sh [--quick]
 #   BUILD_DIR (default build/bench, the bench preset) is configured if needed.
 #   --quick: fewer tolerances and repetitions in the peer comparison (minutes instead of ~15).
@@ -29,7 +31,7 @@ load_before=$(cut -d' ' -f1-3 /proc/loadavg)
   --benchmark_out_format=json >/dev/null
 mkdir -p docs/img
 $py bench/peers/compare.py --run-case "$build/bench/flexrock_run_case" --out "$tmp/peers.json" \
-  --plot docs/img/work_precision.png "${quick[@]}"
+  --plot docs/img/work_precision.png --old-step "${quick[@]}"
 load_after=$(cut -d' ' -f1-3 /proc/loadavg)
 
 studies=""

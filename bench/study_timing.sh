@@ -69,6 +69,7 @@ measure() {
   rows+=("$(printf '| %s | %s | %d | %.1f | %.1f | %.0f | %.0f |' "$label" "$cores" "$runs" \
     "$wall" "$cpu" "$(echo "$runs / $wall / $cores" | bc -l)" "$(echo "$runs / $cpu" | bc -l)")")
   eval "wall_$(printf '%s' "$label" | tr -c 'A-Za-z0-9' '_')=$wall"
+  eval "cpu_$(printf '%s' "$label" | tr -c 'A-Za-z0-9' '_')=$cpu"
 }
 
 load_before=$(cut -d' ' -f1-3 /proc/loadavg)
@@ -102,6 +103,11 @@ echo "Speed-up, 1 -> 2 threads: block $(speedup "$wall_block__1_thread" "$wall_b
 if [ "$has_mpi" = yes ]; then
   echo "Speed-up, 1 -> 2 MPI processes (1 thread each): block"\
 " $(speedup "$wall_block__1_MPI_process" "$wall_block__2_MPI_processes")."
+fi
+if [ "$GRID" = 256 ]; then
+  met=$(echo "$cpu_block__1_thread < 5" | bc -l)
+  printf '\nTarget: the 256 x 256 block spectrum on one core in under 5 s of CPU: %.1f s, %s.\n' \
+    "$cpu_block__1_thread" "$([ "$met" = 1 ] && echo met || echo NOT met)"
 fi
 echo
 echo "Commands (SPEC as in bench/study_timing.sh):"
