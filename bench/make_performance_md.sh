@@ -24,8 +24,10 @@ if [ ! -f "$build/CMakeCache.txt" ]; then
 fi
 cmake --build "$build" -j2 --target flexrock_bench flexrock_run_case flexrock >/dev/null
 
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
+# the measurements stay in $build/perf (bench.json, peers.json, studies.md): a failure of the
+# writer does not lose half an hour of runs
+tmp="$build/perf"
+mkdir -p "$tmp"
 load_before=$(cut -d' ' -f1-3 /proc/loadavg)
 "$build/bench/flexrock_bench" --benchmark_format=json --benchmark_out="$tmp/bench.json" \
   --benchmark_out_format=json >/dev/null
@@ -37,6 +39,7 @@ load_after=$(cut -d' ' -f1-3 /proc/loadavg)
 studies=""
 if [ -x bench/study_timing.sh ] && [ -x "$build/apps/flexrock" ]; then
   studies=$(bench/study_timing.sh "$build/apps/flexrock" || true)
+  printf '%s\n' "$studies" >"$tmp/studies.md"
 fi
 
 $py bench/peers/write_performance_md.py --bench "$tmp/bench.json" --peers "$tmp/peers.json" \
