@@ -26,23 +26,23 @@ cmake --build "$build" -j2 --target flexrock_bench flexrock_run_case flexrock >/
 
 # the measurements stay in $build/perf (bench.json, peers.json, studies.md): a failure of the
 # writer does not lose half an hour of runs
-tmp="$build/perf"
-mkdir -p "$tmp"
+perf="$build/perf"
+mkdir -p "$perf"
 load_before=$(cut -d' ' -f1-3 /proc/loadavg)
-"$build/bench/flexrock_bench" --benchmark_format=json --benchmark_out="$tmp/bench.json" \
+"$build/bench/flexrock_bench" --benchmark_format=json --benchmark_out="$perf/bench.json" \
   --benchmark_out_format=json >/dev/null
 mkdir -p docs/img
-$py bench/peers/compare.py --run-case "$build/bench/flexrock_run_case" --out "$tmp/peers.json" \
+$py bench/peers/compare.py --run-case "$build/bench/flexrock_run_case" --out "$perf/peers.json" \
   --plot docs/img/work_precision.png --old-step "${quick[@]}"
 load_after=$(cut -d' ' -f1-3 /proc/loadavg)
 
 studies=""
 if [ -x bench/study_timing.sh ] && [ -x "$build/apps/flexrock" ]; then
   studies=$(bench/study_timing.sh "$build/apps/flexrock" || true)
-  printf '%s\n' "$studies" >"$tmp/studies.md"
+  printf '%s\n' "$studies" >"$perf/studies.md"
 fi
 
-$py bench/peers/write_performance_md.py --bench "$tmp/bench.json" --peers "$tmp/peers.json" \
+$py bench/peers/write_performance_md.py --bench "$perf/bench.json" --peers "$perf/peers.json" \
   --load "$load_before / $load_after" --command "bench/make_performance_md.sh ${quick[*]}" \
   --studies "$studies" --out docs/performance.md
 echo "wrote docs/performance.md and docs/img/work_precision.png"

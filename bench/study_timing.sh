@@ -68,8 +68,10 @@ measure() {
   fi
   rows+=("$(printf '| %s | %s | %d | %.1f | %.1f | %.0f | %.0f |' "$label" "$cores" "$runs" \
     "$wall" "$cpu" "$(echo "$runs / $wall / $cores" | bc -l)" "$(echo "$runs / $cpu" | bc -l)")")
-  eval "wall_$(printf '%s' "$label" | tr -c 'A-Za-z0-9' '_')=$wall"
-  eval "cpu_$(printf '%s' "$label" | tr -c 'A-Za-z0-9' '_')=$cpu"
+  local key
+  key=$(printf '%s' "$label" | tr -c 'A-Za-z0-9' '_')
+  eval "wall_$key=$wall"
+  eval "cpu_$key=$cpu"
 }
 
 load_before=$(cut -d' ' -f1-3 /proc/loadavg)
