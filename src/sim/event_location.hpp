@@ -23,10 +23,27 @@ struct GuardSample {
   double moment = 0.0;                 // overturning moment about the c.g. projection, over M g h
 };
 
-/// The guard values at any time within the last step (from its dense output).
+class GuardProbe;
+
+/// The crossing in [tl, tr] (gl > 0 >= gr) to 2e-15 relative in time: the side where g <= 0.
+double locate_crossing(int slot, double tl, double tr, double gl, double gr, GuardProbe& probe);
+
+/// The same for the polynomial g(t) = sign * sum_k c[k] (t - t0)^k, k = 0..degree, evaluated by
+/// Horner's rule as the stepper's dense output evaluates it (so the sign at the returned time is
+/// the sign guard_value gives): Newton's method kept inside the bracket, then the first time past
+/// the root, by ulps, where g <= 0.
+double polynomial_crossing(const double* c, int degree, double sign, double t0, double tl,
+                           double tr);
+
+/// The guard values at any time within the last step (from its dense output), and the crossing of
+/// one in a bracket: by default TOMS 748 on guard_value; a stepper whose guard is a polynomial on
+/// the step (the rocking series) finds the root on the polynomial instead.
 class GuardProbe {
  public:
   virtual double guard_value(int slot, double t) = 0;
+  virtual double crossing(int slot, double tl, double tr, double gl, double gr) {
+    return locate_crossing(slot, tl, tr, gl, gr, *this);
+  }
 
  protected:
   ~GuardProbe() = default;
@@ -38,9 +55,6 @@ class GuardProbe {
 /// if no positive point is found by halving toward the start, it fires at the start when
 /// `fires_if_unresolved`, else never in this step. Between three positive samples whose parabola
 /// dips below a quarter of the smaller end value, the vertex is probed too.
-/// The crossing in [tl, tr] (gl > 0 >= gr) to 2e-15 relative in time: the side where g <= 0.
-double locate_crossing(int slot, double tl, double tr, double gl, double gr, GuardProbe& probe);
-
 // inline: the loop calls it for every guard after every step, and the scan is a few comparisons
 inline double first_crossing(int slot, const GuardSample* smp, int count, bool zero_start,
                              bool fires_if_unresolved, GuardProbe& probe) {
@@ -66,7 +80,7 @@ inline double first_crossing(int slot, const GuardSample* smp, int count, bool z
         // the excursion is below resolution
         if (!found) return fires_if_unresolved ? t_prev : kInf;
       }
-      return locate_crossing(slot, tl, smp[k].t, gl, cur, probe);
+      return probe.crossing(slot, tl, smp[k].t, gl, cur);
     }
     // a dip between samples: parabola through three positive values with a vertex below zero
     if (armed && k + 1 <= count && cur > 0.0 && prev > 0.0 && smp[k + 1].v[j] > 0.0) {
@@ -81,7 +95,7 @@ inline double first_crossing(int slot, const GuardSample* smp, int count, bool z
           if (gv <= 0.0) {
             const double tl = u > 0 ? smp[k].t : smp[k - 1].t;
             const double gl = u > 0 ? g1 : g0;
-            return locate_crossing(slot, tl, tv, gl, gv, probe);
+            return probe.crossing(slot, tl, tv, gl, gv);
           }
         }
       }

@@ -143,6 +143,7 @@ class Simulator final : private GuardProbe {
   // ---- guard functions of the current mode, in its slot order, with the floor reaction
   void evaluate(double t, const State& x, GuardSample& s);
   double guard_value(int slot, double t) override;
+  double crossing(int slot, double tl, double tr, double gl, double gr) override;
 
   // ---- the loop
   bool enter_mode(double t, State& x);
@@ -588,6 +589,25 @@ double Simulator<N, MaxN>::guard_value(int slot, double t) {
   state_at(t, xr_);
   evaluate(t, xr_, s);
   return s.v[static_cast<std::size_t>(slot)];
+}
+
+// the rocking series' impact guard (s theta) and peak guard (s theta_dot) are polynomials on the
+// step: their crossings are found on the polynomial; every other guard by TOMS 748
+template <int N, int MaxN>
+double Simulator<N, MaxN>::crossing(int slot, double tl, double tr, double gl, double gr) {
+  if (stepping_ == Stepping::kSeries) {
+    const Guard g = mode_spec(mode_).guards[static_cast<std::size_t>(slot)];
+    const double sg = edge_sign(edge());
+    const double* c = series_integ_.theta_coefficients();
+    const int degree = series_integ_.order();  // theta's; theta_dot's is one less
+    if (g == Guard::kImpact) return polynomial_crossing(c, degree, sg, series_integ_.t0(), tl, tr);
+    if (g == Guard::kPeak) {
+      std::array<double, RockingSeries<ContactState>::kMaxOrder + 2> d;
+      for (int k = 1; k <= degree; ++k) d[static_cast<std::size_t>(k - 1)] = k * c[k];
+      return polynomial_crossing(d.data(), degree - 1, sg, series_integ_.t0(), tl, tr);
+    }
+  }
+  return locate_crossing(slot, tl, tr, gl, gr, *this);
 }
 
 // ---- the loop

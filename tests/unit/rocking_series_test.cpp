@@ -15,6 +15,7 @@
 
 #include "flexrock/integrate/dopri5.hpp"
 #include "flexrock/sim/simulate.hpp"
+#include "sim/event_location.hpp"
 
 namespace flexrock {
 namespace {
@@ -193,6 +194,34 @@ TEST(RockingSeries, OneStepMatchesAnIndependentIntegration) {
     EXPECT_NEAR(xs(0), ref.x1()(0), 1e-13) << f;
     EXPECT_NEAR(xs(1), ref.x1()(1), 1e-12) << f;
     EXPECT_NEAR(xs(2), ref.x1()(2), 1e-11 * std::abs(ref.x1()(2) - x0(2))) << f;
+  }
+}
+
+// the impact and peak guards' crossings are found on the series polynomial: against the known
+// roots of a cubic, on both sides of its extremes, and the first time where the polynomial (as
+// Horner's rule evaluates it) is <= 0
+TEST(PolynomialCrossing, FindsTheRootsOfAKnownCubicToRounding) {
+  const double t0 = 10.0;
+  const double r1 = 0.1, r2 = 0.25, r3 = 0.4;  // roots in tau = t - t0
+  // (tau - r1)(tau - r2)(tau - r3)
+  const double c[4] = {-r1 * r2 * r3, r1 * r2 + r1 * r3 + r2 * r3, -(r1 + r2 + r3), 1.0};
+  auto poly = [&](double sign, double t) {
+    const double tau = t - t0;
+    return sign * (((c[3] * tau + c[2]) * tau + c[1]) * tau + c[0]);
+  };
+  struct Case {
+    double sign, tl, tr, root;
+  };
+  // the first root from the left end, the second from a bracket that holds the first extreme
+  // (Newton's first step leaves it), the third from far away
+  for (const Case& k : {Case{-1.0, t0, t0 + 0.2, t0 + r1}, Case{1.0, t0 + 0.11, t0 + 0.3, t0 + r2},
+                        Case{-1.0, t0 + 0.26, t0 + 5.0, t0 + r3}}) {
+    ASSERT_GT(poly(k.sign, k.tl), 0.0);
+    ASSERT_LE(poly(k.sign, k.tr), 0.0);
+    const double t = detail::polynomial_crossing(c, 3, k.sign, t0, k.tl, k.tr);
+    EXPECT_NEAR(t, k.root, 4e-15 * k.root) << k.root;
+    EXPECT_LE(poly(k.sign, t), 0.0) << k.root;
+    EXPECT_GT(poly(k.sign, std::nextafter(t, k.tl)), 0.0) << k.root;
   }
 }
 
