@@ -20,3 +20,8 @@ set(FLEXROCK_WITH_MPI "AUTO" CACHE STRING
     "MPI for `flexrock spectrum/sweep` across processes: AUTO (if found), ON (required), OFF")
 set_property(CACHE FLEXROCK_WITH_MPI PROPERTY STRINGS AUTO ON OFF)
 set(FLEXROCK_SANITIZE "" CACHE STRING "Sanitizers for flexrock targets, e.g. address;undefined")
+# each fixed size is its own compile of the event loop: half a minute in a release build, five
+# under the sanitizers, whose presets keep 0 to 2 (bodies with more modes then run on the
+# dynamic-size loop: the same code, with the products not unrolled)
+set(FLEXROCK_FIXED_MODES "8" CACHE STRING
+    "Largest mode count (0 to 8) with its own fixed-size event loop; more modes use the dynamic size")

@@ -253,6 +253,20 @@ SimulationResult run(const Body& body, const GroundMotion& motion, const Initial
   return checked(body, sim.run(init));
 }
 
+// fixed sizes up to FLEXROCK_FIXED_MODES modes (8; the sanitizer builds compile fewer, each size
+// being minutes of compiling there), a stack-bounded size up to 16, heap beyond
+template <int N>
+SimulationResult run_sized(const Body& body, const GroundMotion& motion, const InitialState& init,
+                           const SimulationOptions& opt) {
+  if constexpr (N <= FLEXROCK_FIXED_MODES) {
+    if (body.modes() == N) return run<N, N>(body, motion, init, opt);
+    return run_sized<N + 1>(body, motion, init, opt);
+  } else {
+    if (body.modes() <= 16) return run<Eigen::Dynamic, 16>(body, motion, init, opt);
+    return run<Eigen::Dynamic, Eigen::Dynamic>(body, motion, init, opt);
+  }
+}
+
 }  // namespace
 
 double energy_residual_bound(const Body& body, double scale) {
@@ -365,30 +379,7 @@ SimulationResult simulate(const Body& body, const GroundMotion& motion, const In
   check_options(body, init, options);
   if (options.contact_model == ContactModel::kCompliant)
     return checked(body, detail::simulate_compliant(body, motion, init, options));
-  // fixed sizes up to 8 modes, a stack-bounded size up to 16, heap beyond
-  switch (body.modes()) {
-    case 0:
-      return run<0, 0>(body, motion, init, options);
-    case 1:
-      return run<1, 1>(body, motion, init, options);
-    case 2:
-      return run<2, 2>(body, motion, init, options);
-    case 3:
-      return run<3, 3>(body, motion, init, options);
-    case 4:
-      return run<4, 4>(body, motion, init, options);
-    case 5:
-      return run<5, 5>(body, motion, init, options);
-    case 6:
-      return run<6, 6>(body, motion, init, options);
-    case 7:
-      return run<7, 7>(body, motion, init, options);
-    case 8:
-      return run<8, 8>(body, motion, init, options);
-    default:
-      if (body.modes() <= 16) return run<Eigen::Dynamic, 16>(body, motion, init, options);
-      return run<Eigen::Dynamic, Eigen::Dynamic>(body, motion, init, options);
-  }
+  return run_sized<0>(body, motion, init, options);
 }
 
 }  // namespace flexrock

@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// The body sizes the event loop is compiled for: fixed sizes up to 8 modes (the usual bodies: the
-// products of the equations then unroll, where a dynamic size calls a general kernel for each),
-// a stack-bounded size up to 16 modes, heap beyond. Each is instantiated once, in its own file
-// (simulator_n*.cpp), so that they compile in parallel. Internal header.
+// The body sizes the event loop is compiled for: fixed sizes up to FLEXROCK_FIXED_MODES modes (8;
+// the sanitizer builds keep 2) for the usual bodies (the products of the equations then unroll,
+// where a dynamic size calls a general kernel for each), a stack-bounded size up to 16 modes,
+// heap beyond. Each is instantiated once, in its own file (simulator_n*.cpp), so that they
+// compile in parallel; a size not compiled is never named (simulate.cpp). Internal header.
 #pragma once
 
 #include "simulator.hpp"
