@@ -22,7 +22,7 @@ double locate_crossing(int slot, double tl, double tr, double gl, double gr, Gua
 // Newton rather than TOMS 748 on the dense output: the polynomial and its derivative cost one
 // Horner pass each, where every TOMS 748 probe rebuilt the state and all guards of the mode
 double polynomial_crossing(const double* c, int degree, double sign, double t0, double tl,
-                           double tr) {
+                           double tr, double gl, double gr) {
   auto g = [&](double t) {
     const double tau = t - t0;
     double v = c[degree];
@@ -35,9 +35,8 @@ double polynomial_crossing(const double* c, int degree, double sign, double t0, 
     for (int k = degree - 1; k >= 1; --k) v = v * tau + k * c[k];
     return sign * v;
   };
-  double a = tl, b = tr;  // g(a) > 0 >= g(b) throughout
-  const double ga = g(a), gb = g(b);
-  double t = ga > gb ? a + (b - a) * ga / (ga - gb) : 0.5 * (a + b);  // a secant start
+  double a = tl, b = tr;                    // g(a) > 0 >= g(b) throughout
+  double t = a + (b - a) * gl / (gl - gr);  // a secant start
   for (int it = 0; it < 100; ++it) {
     const double v = g(t);
     (v > 0.0 ? a : b) = t;

@@ -600,11 +600,12 @@ double Simulator<N, MaxN>::crossing(int slot, double tl, double tr, double gl, d
     const double sg = edge_sign(edge());
     const double* c = series_integ_.theta_coefficients();
     const int degree = series_integ_.order();  // theta's; theta_dot's is one less
-    if (g == Guard::kImpact) return polynomial_crossing(c, degree, sg, series_integ_.t0(), tl, tr);
+    if (g == Guard::kImpact)
+      return polynomial_crossing(c, degree, sg, series_integ_.t0(), tl, tr, gl, gr);
     if (g == Guard::kPeak) {
       std::array<double, RockingSeries<ContactState>::kMaxOrder + 2> d;
       for (int k = 1; k <= degree; ++k) d[static_cast<std::size_t>(k - 1)] = k * c[k];
-      return polynomial_crossing(d.data(), degree - 1, sg, series_integ_.t0(), tl, tr);
+      return polynomial_crossing(d.data(), degree - 1, sg, series_integ_.t0(), tl, tr, gl, gr);
     }
   }
   return locate_crossing(slot, tl, tr, gl, gr, *this);

@@ -216,9 +216,10 @@ TEST(PolynomialCrossing, FindsTheRootsOfAKnownCubicToRounding) {
   // (Newton's first step leaves it), the third from far away
   for (const Case& k : {Case{-1.0, t0, t0 + 0.2, t0 + r1}, Case{1.0, t0 + 0.11, t0 + 0.3, t0 + r2},
                         Case{-1.0, t0 + 0.26, t0 + 5.0, t0 + r3}}) {
-    ASSERT_GT(poly(k.sign, k.tl), 0.0);
-    ASSERT_LE(poly(k.sign, k.tr), 0.0);
-    const double t = detail::polynomial_crossing(c, 3, k.sign, t0, k.tl, k.tr);
+    const double gl = poly(k.sign, k.tl), gr = poly(k.sign, k.tr);
+    ASSERT_GT(gl, 0.0);
+    ASSERT_LE(gr, 0.0);
+    const double t = detail::polynomial_crossing(c, 3, k.sign, t0, k.tl, k.tr, gl, gr);
     EXPECT_NEAR(t, k.root, 4e-15 * k.root) << k.root;
     EXPECT_LE(poly(k.sign, t), 0.0) << k.root;
     EXPECT_GT(poly(k.sign, std::nextafter(t, k.tl)), 0.0) << k.root;
