@@ -1600,9 +1600,11 @@ template <int N, int MaxN>
 bool Simulator<N, MaxN>::overturned(double t, State& x) {
   const int side = flying() ? (x(0) >= 0.0 ? 1 : 2) : edge();
   res_.status = Status::kOverturned;
-  Extremes& ex = res_.extremes;
-  if (x(0) > 0.0) ex.max_theta_edge1 = std::max(ex.max_theta_edge1, x(0));
-  if (x(0) < 0.0) ex.max_theta_edge2 = std::max(ex.max_theta_edge2, -x(0));
+  // the run ends here: every extreme (tilt, uplift, reaction, modes) takes this state too, not
+  // only the samples before it
+  GuardSample now;
+  evaluate(t, x, now);
+  observe(now, x);
   res_.extremes.overturn_time = t;
   res_.extremes.overturn_edge = side;
   if (sliding()) res_.extremes.sliding_time += t - slide_start_;

@@ -234,6 +234,9 @@ TEST(RigidBlock, LargeLongPulseOverturnsAndCriterionOptionGoesFurther) {
   EXPECT_EQ(res.status, Status::kOverturned);
   const double theta_c = std::atan(0.2);
   EXPECT_NEAR(std::max(res.extremes.max_theta_edge1, res.extremes.max_theta_edge2), theta_c, 1e-9);
+  // the extremes include the overturning instant: the lifted corner of the 0.4 m base is then
+  // 0.4 sin(theta) high
+  EXPECT_NEAR(res.extremes.max_uplift, 0.4 * std::sin(theta_c), 1e-9);
   SimulationOptions opt;
   opt.overturn = OverturnCriterion::kHalfPi;
   const auto further = simulate(body, motion, {}, opt);
@@ -243,6 +246,7 @@ TEST(RigidBlock, LargeLongPulseOverturnsAndCriterionOptionGoesFurther) {
   EXPECT_EQ(simulate(body, motion).extremes.overturn_time, further.extremes.overturn_time);
   EXPECT_NEAR(std::max(further.extremes.max_theta_edge1, further.extremes.max_theta_edge2),
               M_PI / 2, 1e-9);
+  EXPECT_NEAR(further.extremes.max_uplift, 0.4, 1e-9);
 }
 
 TEST(RigidBlock, SquatBlockStopsOnBothEdgesAtFirstImpact) {
