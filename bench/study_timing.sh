@@ -117,5 +117,6 @@ echo
 echo '```'
 echo "flexrock spectrum SPEC -o out.csv -q --no-progress -j 1    # and -j 2"
 [ "$has_mpi" = yes ] && echo "mpirun --allow-run-as-root --oversubscribe -n 2 flexrock spectrum SPEC -o out.csv -q -j 1"
-echo "GRID=$GRID bench/study_timing.sh $FLEXROCK"
+# the binary as given from the source tree (an absolute path names one machine's checkout)
+echo "GRID=$GRID bench/study_timing.sh $(realpath --relative-to="$SRC" "$FLEXROCK")"
 echo '```'
