@@ -82,6 +82,27 @@ GroundMotion GroundMotion::none(double duration) {
   return m;
 }
 
+GroundMotion GroundMotion::with_sinusoids(std::vector<SinusoidPiece> pieces) const {
+  FLEXROCK_THROW_UNLESS(!is_sampled() && !none_,
+                        "ground motion: only an analytic motion is described by sinusoids");
+  GroundMotion m = *this;
+  for (SinusoidPiece& p : pieces) {
+    FLEXROCK_THROW_UNLESS(std::isfinite(p.begin) && std::isfinite(p.end) &&
+                              std::isfinite(p.amplitude) && std::isfinite(p.omega) &&
+                              std::isfinite(p.phase) && p.begin >= 0.0 && p.end > p.begin &&
+                              p.end <= duration_,
+                          "ground motion: a sinusoidal piece must be finite and lie within [0, " +
+                              std::to_string(duration_) + "] s with end > begin");
+    p.amplitude *= scale_;  // as the motion's function is scaled
+    m.breaks_.push_back(p.begin);
+    m.breaks_.push_back(p.end);
+  }
+  std::sort(m.breaks_.begin(), m.breaks_.end());
+  m.breaks_.erase(std::unique(m.breaks_.begin(), m.breaks_.end()), m.breaks_.end());
+  m.sinusoids_.insert(m.sinusoids_.end(), pieces.begin(), pieces.end());
+  return m;
+}
+
 BaseAcceleration GroundMotion::at(double t, Cursor& c) const {
   if (!time_.empty()) {
     if (t < time_.front() || t > time_.back()) return {};
@@ -139,6 +160,7 @@ GroundMotion GroundMotion::scaled(double factor) const {
   // samples are scaled in place, so horizontal() and vertical() give what the body feels
   if (m.time_.empty()) {
     m.scale_ *= factor;
+    for (SinusoidPiece& p : m.sinusoids_) p.amplitude *= factor;
   } else {
     for (double& v : m.ax_) v *= factor;
     for (double& v : m.ay_) v *= factor;

@@ -59,6 +59,15 @@ GroundMotion make_pulse(F a, double t_end, double duration, Component component,
   return GroundMotion::analytic(std::move(f), duration, std::move(breakpoints));
 }
 
+// the same pulse described as amplitude sin(omega t + phase) on [0, t_end]: its function stays
+// the one the guards and the integrators read; the description lets a rigid body's rocking series
+// expand it (GroundMotion::with_sinusoids)
+GroundMotion described(const GroundMotion& m, double amplitude, double omega, double phase,
+                       double t_end, Component component) {
+  return m.with_sinusoids(
+      {SinusoidPiece{0.0, t_end, amplitude, omega, phase, component == Component::kVertical}});
+}
+
 // common checks of the sinusoidal pulses
 void check_sine_args(const char* pulse, double a_p, double omega_p) {
   require_finite(pulse, "a_p", a_p);
@@ -74,8 +83,9 @@ GroundMotion harmonic(double amplitude, double omega, double duration, double ph
   require_positive(name, "omega", omega);
   require_positive(name, "duration", duration);
   require_finite(name, "phase", phase);
-  return make_pulse([=](double t) { return amplitude * std::sin(omega * t + phase); }, duration,
-                    duration, component, {});
+  return described(make_pulse([=](double t) { return amplitude * std::sin(omega * t + phase); },
+                              duration, duration, component, {}),
+                   amplitude, omega, phase, duration, component);
 }
 
 GroundMotion harmonic_cycles(double amplitude, double omega, double cycles, double duration,
@@ -87,8 +97,9 @@ GroundMotion harmonic_cycles(double amplitude, double omega, double cycles, doub
   require_finite(name, "phase", phase);
   double t_end = cycles * 2.0 * kPi / omega;
   require_duration(name, duration, t_end);
-  return make_pulse([=](double t) { return amplitude * std::sin(omega * t + phase); }, t_end,
-                    duration, component, {t_end});
+  return described(make_pulse([=](double t) { return amplitude * std::sin(omega * t + phase); },
+                              t_end, duration, component, {t_end}),
+                   amplitude, omega, phase, t_end, component);
 }
 
 namespace {
@@ -98,8 +109,9 @@ GroundMotion sine_pulse(const char* name, double a_p, double omega_p, double hal
   check_sine_args(name, a_p, omega_p);
   double t_end = half_periods * kPi / omega_p;
   require_duration(name, duration, t_end);
-  return make_pulse([=](double t) { return a_p * std::sin(omega_p * t); }, t_end, duration,
-                    component, {t_end});
+  return described(make_pulse([=](double t) { return a_p * std::sin(omega_p * t); }, t_end,
+                              duration, component, {t_end}),
+                   a_p, omega_p, 0.0, t_end, component);
 }
 }  // namespace
 
@@ -120,8 +132,9 @@ GroundMotion cycloidal_pulse_b(double a_p, double omega_p, double duration, Comp
   check_sine_args(name, a_p, omega_p);
   double t_end = 2.0 * kPi / omega_p;
   require_duration(name, duration, t_end);
-  return make_pulse([=](double t) { return a_p * std::cos(omega_p * t); }, t_end, duration,
-                    component, {t_end});
+  return described(make_pulse([=](double t) { return a_p * std::cos(omega_p * t); }, t_end,
+                              duration, component, {t_end}),
+                   a_p, omega_p, 0.5 * kPi, t_end, component);
 }
 
 double cycloidal_c_phase(int n) {
@@ -148,8 +161,9 @@ GroundMotion cycloidal_pulse_c(double a_p, double omega_p, double duration, int 
   const double phi = cycloidal_c_phase(n);
   double t_end = (n + 0.5 - phi / kPi) * 2.0 * kPi / omega_p;
   require_duration(name, duration, t_end);
-  return make_pulse([=](double t) { return a_p * std::cos(omega_p * t + phi); }, t_end, duration,
-                    component, {t_end});
+  return described(make_pulse([=](double t) { return a_p * std::cos(omega_p * t + phi); }, t_end,
+                              duration, component, {t_end}),
+                   a_p, omega_p, phi + 0.5 * kPi, t_end, component);
 }
 
 GroundMotion ricker_wavelet(double a_p, double omega_p, double t_c, double duration,
@@ -173,7 +187,9 @@ GroundMotion rectangular_pulse(double a_p, double t_1, double duration, Componen
   require_finite(name, "a_p", a_p);
   require_positive(name, "t_1", t_1);
   require_duration(name, duration, t_1);
-  return make_pulse([=](double) { return a_p; }, t_1, duration, component, {t_1});
+  // omega = 0: the constant a_p sin(pi/2) = a_p
+  return described(make_pulse([=](double) { return a_p; }, t_1, duration, component, {t_1}), a_p,
+                   0.0, 0.5 * kPi, t_1, component);
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -507,11 +507,20 @@ GroundMotion combine_any(GroundMotion h, GroundMotion v) {
   const std::vector<double> bv = breakpoints_of(v);
   breaks.insert(breaks.end(), bv.begin(), bv.end());
   const double duration = std::max(h.duration(), v.duration());
+  // two pulses made of sinusoids stay so described: h's horizontal pieces and v's vertical ones
+  std::vector<SinusoidPiece> pieces;
+  if (h.is_sinusoidal() && v.is_sinusoidal()) {
+    for (const SinusoidPiece& p : h.sinusoids())
+      if (!p.vertical) pieces.push_back(p);
+    for (const SinusoidPiece& p : v.sinusoids())
+      if (p.vertical) pieces.push_back(p);
+  }
   // stateless, so copies of the motion may run on several threads (at() searches the samples)
   auto f = [h = std::move(h), v = std::move(v)](double t) {
     return BaseAcceleration{h.at(t).x, v.at(t).y};
   };
-  return GroundMotion::analytic(std::move(f), duration, std::move(breaks));
+  GroundMotion m = GroundMotion::analytic(std::move(f), duration, std::move(breaks));
+  return pieces.empty() ? m : m.with_sinusoids(std::move(pieces));
 }
 
 GroundMotion record_motion(const Record& rec, bool vertical) {

@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // A rigid body's rocking (no modes, no slip) stepped by the Taylor series of its motion
 // (docs/theory.md, "Rocking of a rigid body by its Taylor series"). Under a sampled record the base
-// acceleration is linear between two samples, so the series' coefficients follow from the
-// equation of motion by a recurrence with one sine and cosine per step; the polynomial is the
-// step's dense output. Same interface as Dopri5 (the event loop's stepper); the `sys` arguments
+// acceleration is linear between two samples, and a pulse made of sinusoids has its own series in
+// closed form, so the series' coefficients follow from the equation of motion by a recurrence with
+// one sine and cosine per step (and one per active sinusoid); the polynomial is the step's dense
+// output. Same interface as Dopri5 (the event loop's stepper); the `sys` arguments
 // are unused: the equation is built in. Internal header.
 #pragma once
 
@@ -46,6 +47,7 @@ class RockingSeries {
     // where they reach the tolerance already (a record's short intervals)
     const double eps = std::clamp(ctl.rtol, 1e-16, 1e-3);
     max_order_ = std::clamp(static_cast<int>(std::ceil(-0.5 * std::log(eps))) + 2, 8, kMaxOrder);
+    higher_ = 0;
     t0_ = t1_ = t;
     x0_ = x;
     x1_ = x;
@@ -59,7 +61,8 @@ class RockingSeries {
   }
 
   /// One step from t1() toward t_stop, ending on it when reached; t_stop must not lie past the
-  /// record sample after t1() (the base acceleration must be linear on the step).
+  /// record sample or the motion's breakpoint after t1() (the base acceleration must be linear, or
+  /// one sinusoid, on the step).
   template <class System>
   Status step(System&&, double t_stop) {
     const double t = t1_;
@@ -135,10 +138,16 @@ class RockingSeries {
   static constexpr int kMinOrder = 5;
 
   // u = Xdd/g and v = 1 + Ydd/g on [t, t_stop] as u0 + u1 tau, v0 + v1 tau (zero outside the
-  // record); the interval is found by index, walking from the last one
+  // record); the interval is found by index, walking from the last one. A motion of sinusoids
+  // adds the terms of order 2 and up (higher_ of them).
   void forcing(double t) {
     u0_ = u1_ = v1_ = 0.0;
     v0_ = 1.0;
+    higher_ = 0;
+    if (motion_.is_sinusoidal()) {
+      sinusoid_forcing(t);
+      return;
+    }
     const std::vector<double>& ts = motion_.times();
     if (ts.size() < 2 || t < ts.front() || t >= ts.back()) return;
     std::size_t i = std::min(index_, ts.size() - 2);
@@ -157,6 +166,33 @@ class RockingSeries {
     }
   }
 
+  // the Taylor series at t of the sinusoids active on [t, next breakpoint): a sin(w (t + tau) +
+  // phi) = sum_k a w^k / k! sin(w t + phi + k pi/2) tau^k, to the highest order a step may use
+  void sinusoid_forcing(double t) {
+    const int terms = max_order_ + 1;  // add_term(j < max_order_) and work_series reach j
+    std::fill_n(uk_.begin(), terms, 0.0);
+    std::fill_n(vk_.begin(), terms, 0.0);
+    bool any = false;
+    for (const SinusoidPiece& p : motion_.sinusoids()) {
+      if (!(p.begin <= t && t < p.end)) continue;
+      any = true;
+      const double sn = std::sin(p.omega * t + p.phase), cs = std::cos(p.omega * t + p.phase);
+      const double cycle[4] = {sn, cs, -sn, -cs};
+      std::array<double, kMaxOrder + 2>& out = p.vertical ? vk_ : uk_;
+      double f = p.amplitude / g_;  // a w^k / k! over g
+      for (int k = 0; k < terms; ++k) {
+        out[static_cast<std::size_t>(k)] += f * cycle[k & 3];
+        f *= p.omega / (k + 1);
+      }
+    }
+    if (!any) return;
+    u0_ = uk_[0];
+    u1_ = uk_[1];
+    v0_ = 1.0 + vk_[0];
+    v1_ = vk_[1];
+    higher_ = terms;
+  }
+
   void series_start(double theta, double theta_dot) {
     th_[0] = theta;
     th_[1] = theta_dot;
@@ -167,6 +203,11 @@ class RockingSeries {
     p1_ = k_ * (alpha_ * v1_ + u1_);
     q0_ = k_ * (v0_ - alpha_ * u0_);
     q1_ = k_ * (v1_ - alpha_ * u1_);
+    for (int i = 2; i < higher_; ++i) {
+      const auto k = static_cast<std::size_t>(i);
+      pk_[k] = k_ * (alpha_ * vk_[k] + uk_[k]);
+      qk_[k] = k_ * (vk_[k] - alpha_ * uk_[k]);
+    }
   }
 
   // the sine and cosine terms of order j, then theta's term of order j + 2
@@ -184,6 +225,10 @@ class RockingSeries {
     }
     double a = p0_ * c_[j] + q0_ * s_[j];
     if (j > 0) a += p1_ * c_[j - 1] + q1_ * s_[j - 1];
+    for (int i = 2; i <= j && i < higher_; ++i) {
+      const auto k = static_cast<std::size_t>(i), l = static_cast<std::size_t>(j - i);
+      a += pk_[k] * c_[l] + qk_[k] * s_[l];
+    }
     th_[j + 2] = a / ((j + 1.0) * (j + 2.0));
   }
 
@@ -220,6 +265,11 @@ class RockingSeries {
     for (int k = 0; k < p; ++k) {
       r_[k] = a0 * c_[k] + b0 * s_[k];
       if (k > 0) r_[k] += a1 * c_[k - 1] + b1 * s_[k - 1];
+      // a sinusoid's terms of order 2 and up: (u_i + alpha v_i) c + (v_i - alpha u_i) s
+      for (int i = 2; i <= k && i < higher_; ++i) {
+        const auto m = static_cast<std::size_t>(i), l = static_cast<std::size_t>(k - i);
+        r_[k] += mhg_ * ((uk_[m] + alpha_ * vk_[m]) * c_[l] + (vk_[m] - alpha_ * uk_[m]) * s_[l]);
+      }
     }
     w_[0] = x0_(2);
     for (int k = 0; k < p; ++k) {
@@ -251,6 +301,10 @@ class RockingSeries {
   double u0_ = 0.0, u1_ = 0.0, v0_ = 1.0, v1_ = 0.0;
   double p0_ = 0.0, p1_ = 0.0, q0_ = 0.0, q1_ = 0.0;
   std::array<double, kMaxOrder + 2> th_{}, s_{}, c_{}, r_{}, w_{};
+  // a sinusoidal motion's series of u and v - 1, and k P, k Q from them; used from order 2 up to
+  // higher_ - 1 (0: a linear forcing)
+  std::array<double, kMaxOrder + 2> uk_{}, vk_{}, pk_{}, qk_{};
+  int higher_ = 0;
   State x0_, x1_;
   double t0_ = 0.0, t1_ = 0.0, hd_ = 0.0, h_ = 0.0;
   int order_ = 0, max_order_ = 12;

@@ -732,8 +732,10 @@ auto Simulator<N, MaxN>::choose_stepping() const -> Stepping {
     if (prop_.available()) return Stepping::kExact;
     return Stepping::kRocking;
   }
-  // the series needs a base acceleration linear between the steps' ends: a record's, or none
-  if (N == 0 && opt_.series_rocking && (motion_.is_sampled() || motion_.is_none()))
+  // the series needs a base acceleration it can expand between the steps' ends: a record's
+  // (linear), sinusoids' (a pulse's), or none
+  if (N == 0 && opt_.series_rocking &&
+      (motion_.is_sampled() || motion_.is_none() || motion_.is_sinusoidal()))
     return Stepping::kSeries;
   return Stepping::kRocking;
 }

@@ -329,6 +329,54 @@ duration = 50.0
   EXPECT_NE(c.motion.at(7.09).x, 0.0);
 }
 
+// two pulses on the two components stay described as sinusoids (a rigid body's rocking series
+// expands them), scaled with the motion; a record with a pulse is not so described
+TEST_F(CaseFile, TwoPulsesCombineIntoSinusoids) {
+  const Case c = load_case(write("two.toml", kBlock + R"(
+[excitation]
+scale = 1.5
+[excitation.horizontal]
+type = "one_sine"
+amplitude = 2.0
+units = "m/s^2"
+period = 0.8
+duration = 5.0
+[excitation.vertical]
+type = "harmonic"
+amplitude = 1.0
+units = "m/s^2"
+frequency_hz = 3.0
+cycles = 2
+phase = 0.7
+duration = 5.0
+)"));
+  ASSERT_TRUE(c.motion.is_sinusoidal());
+  ASSERT_EQ(c.motion.sinusoids().size(), 2u);
+  for (double t = 0.0; t < 5.0; t += 0.0137) {
+    BaseAcceleration sum;
+    for (const SinusoidPiece& p : c.motion.sinusoids()) {
+      if (p.begin <= t && t < p.end)
+        (p.vertical ? sum.y : sum.x) += p.amplitude * std::sin(p.omega * t + p.phase);
+    }
+    EXPECT_NEAR(sum.x, c.motion.at(t).x, 1e-14) << t;
+    EXPECT_NEAR(sum.y, c.motion.at(t).y, 1e-14) << t;
+  }
+  EXPECT_NEAR(c.motion.at(0.2).x, 1.5 * 2.0, 1e-14);  // the peak of the one-sine pulse, scaled
+  const std::string rel = fs::relative(kData, dir_).string();
+  const Case r = load_case(write("r.toml", kBlock + R"(
+[excitation.horizontal]
+type = "record"
+file = ")" + rel + R"(/kobe_1995_nishi_akashi_090.AT2"
+[excitation.vertical]
+type = "harmonic"
+amplitude = 1.0
+units = "m/s^2"
+frequency_hz = 3.0
+duration = 50.0
+)"));
+  EXPECT_FALSE(r.motion.is_sinusoidal());
+}
+
 TEST_F(CaseFile, SyntheticMotionsOfEveryKindLoad) {
   for (const std::string spec :
        {"type = \"harmonic\"\nfrequency_hz = 2\n",

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <initializer_list>
@@ -245,6 +246,60 @@ TEST(Pulses, RejectBadShapeArguments) {
   expect_input_error([] { ricker_wavelet(1.0, 1.0, 6.0, 5.0); },
                      {"ricker_wavelet", "'t_c' = 6", "[0, duration]"});
   expect_input_error([] { harmonic(1.0, 1.0, 5.0, std::nan("")); }, {"'phase' = nan"});
+}
+
+// every pulse type but the Ricker wavelet is described also as sinusoids (which a rigid body's
+// rocking series expands): their sum is the pulse's own function everywhere, on either component
+// and scaled; a piece holds on [begin, end), the function at a pulse end its left limit
+TEST(Pulses, SinusoidsDescribeEveryPulseButTheRickerWavelet) {
+  int described = 0;
+  for (const PulseKind& kind : pulse_kinds()) {
+    for (Component c : {Component::kHorizontal, Component::kVertical}) {
+      PulseArgs args{1.7, kind.frequency ? 3.0 : 0.0, 8.0, c, {}};
+      for (const PulseKey& k : kind.keys)
+        if (k.required) args.keys[k.name] = 1.3;
+      const GroundMotion m = make_pulse(kind, args).scaled(-0.6);
+      const std::string name = kind.name;
+      if (name == "ricker") {
+        EXPECT_FALSE(m.is_sinusoidal());
+        continue;
+      }
+      ASSERT_TRUE(m.is_sinusoidal()) << name;
+      ++described;
+      auto sum = [&m](double t) {
+        BaseAcceleration a;
+        for (const SinusoidPiece& p : m.sinusoids()) {
+          if (!(p.begin <= t && t < p.end)) continue;
+          (p.vertical ? a.y : a.x) += p.amplitude * std::sin(p.omega * t + p.phase);
+        }
+        return a;
+      };
+      std::vector<double> ts;
+      for (int i = 0; i <= 4000; ++i) ts.push_back(8.0 * i / 4000.0);
+      for (const SinusoidPiece& p : m.sinusoids()) {
+        ts.push_back(p.begin);
+        ts.push_back(std::nextafter(p.end, 0.0));
+        ts.push_back(std::nextafter(p.end, 10.0));
+      }
+      for (double t : ts) {
+        if (t >= 8.0) continue;
+        const bool at_end = std::any_of(m.sinusoids().begin(), m.sinusoids().end(),
+                                        [t](const SinusoidPiece& p) { return t == p.end; });
+        if (at_end) continue;  // the function's left limit there, the pieces' right one
+        const BaseAcceleration f = m.at(t), d = sum(t);
+        EXPECT_NEAR(d.x, f.x, 2e-15 * 1.7) << name << " t = " << t;
+        EXPECT_NEAR(d.y, f.y, 2e-15 * 1.7) << name << " t = " << t;
+      }
+      // the pieces' ends are breakpoints, where steps end
+      GroundMotion::Cursor cur;
+      for (const SinusoidPiece& p : m.sinusoids()) {
+        if (p.end < m.duration()) {
+          EXPECT_EQ(m.next_breakpoint(std::nextafter(p.end, 0.0), cur), p.end) << name;
+        }
+      }
+    }
+  }
+  EXPECT_GE(described, 14);  // seven types, two components
 }
 
 }  // namespace

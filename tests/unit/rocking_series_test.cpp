@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// A rigid body's rocking stepped by its Taylor series against DOPRI5 (series_rocking = false), the
-// closed-form free rocking, and mirror symmetry; one series step against an independent
-// integration of the rocking equation.
+// A rigid body's rocking stepped by its Taylor series against DOPRI5 (series_rocking = false)
+// under records and pulses, the closed-form free rocking, and mirror symmetry; one series step
+// under a record and one under sinusoids against an independent integration of the equation.
 #include "sim/rocking_series.hpp"
 
 #include <gtest/gtest.h>
@@ -10,9 +10,14 @@
 #include <algorithm>
 #include <boost/math/quadrature/gauss_kronrod.hpp>
 #include <cmath>
+#include <numbers>
 #include <random>
+#include <sstream>
+#include <string>
+#include <utility>
 #include <vector>
 
+#include "flexrock/excitation/pulses.hpp"
 #include "flexrock/integrate/dopri5.hpp"
 #include "flexrock/sim/simulate.hpp"
 #include "sim/event_location.hpp"
@@ -183,6 +188,120 @@ TEST(RockingSeries, OneStepMatchesAnIndependentIntegration) {
   series.start(rhs, ctl, t0, x0);
   ASSERT_EQ(series.step(rhs, t1), detail::RockingSeries<State>::Status::kAccepted);
   EXPECT_EQ(series.t1(), t1);  // one step spans the interval
+  for (double f : {0.25, 0.5, 0.8, 1.0}) {
+    const double tf = t0 + f * (t1 - t0);
+    Dopri5<State> ref;
+    ctl.max_step = 1e-3;
+    ref.start(rhs, ctl, t0, x0);
+    while (ref.t1() < tf) ref.step(rhs, tf);
+    State xs;
+    series.dense(tf, xs);
+    EXPECT_NEAR(xs(0), ref.x1()(0), 1e-13) << f;
+    EXPECT_NEAR(xs(1), ref.x1()(1), 1e-12) << f;
+    EXPECT_NEAR(xs(2), ref.x1()(2), 1e-11 * std::abs(ref.x1()(2) - x0(2))) << f;
+  }
+}
+
+// a rigid block under the pulses made of sinusoids: the series (which expands the sinusoids)
+// against DOPRI5 (which evaluates the pulse's function), both at rtol 1e-13, with impacts, an
+// overturn and a motion of two components whose vertical piece starts after t = 0
+TEST(RockingSeries, UnderSinusoidalPulsesAgreesWithDopri5) {
+  const double wp = 2.2 * std::sqrt(3.0 * g / 4.0 / 1.0196);  // a few times the block's p
+  const double tp = 2.0 * std::numbers::pi / wp;
+  std::vector<std::pair<std::string, GroundMotion>> cases;
+  for (double a : {0.35, 0.9}) {
+    auto label = [a](const char* kind) {
+      std::ostringstream o;
+      o << kind << ' ' << a << " g";
+      return o.str();
+    };
+    cases.emplace_back(label("one_sine"), one_sine_pulse(a * g, wp, 6.0));
+    cases.emplace_back(label("cycloidal_b"), cycloidal_pulse_b(a * g, wp, 6.0));
+    cases.emplace_back(label("cycloidal_c"), cycloidal_pulse_c(a * g, wp, 6.0, 2));
+    cases.emplace_back(label("rectangular"), rectangular_pulse(-0.8 * a * g, 0.7 * tp, 6.0));
+    cases.emplace_back(label("cycles"), harmonic_cycles(a * g, wp, 2.5, 6.0, 0.4));
+  }
+  // horizontal one-sine, vertical harmonic from t = 0.3 s to 2.1 s: two pieces by hand
+  {
+    const double a = 0.4 * g;
+    auto f = [=](double t) {
+      BaseAcceleration b;
+      if (t <= tp) b.x = a * std::sin(wp * t);
+      if (t >= 0.3 && t <= 2.1) b.y = 0.5 * a * std::sin(13.0 * t + 1.1);
+      return b;
+    };
+    cases.emplace_back("two components",
+                       GroundMotion::analytic(f, 6.0, {tp, 0.3, 2.1})
+                           .with_sinusoids({SinusoidPiece{0.0, tp, a, wp, 0.0, false},
+                                            SinusoidPiece{0.3, 2.1, 0.5 * a, 13.0, 1.1, true}}));
+  }
+  int overturned = 0, rocked = 0;
+  for (const auto& [where, motion] : cases) {
+    ASSERT_TRUE(motion.is_sinusoidal()) << where;
+    const auto s = run_record(motion, true, 1e-13);
+    const auto d = run_record(motion, false, 1e-13);
+    ASSERT_EQ(s.status, d.status) << where;
+    EXPECT_EQ(s.extremes.overturn_edge, d.extremes.overturn_edge) << where;
+    if (s.status == Status::kOverturned) {
+      ++overturned;
+      EXPECT_NEAR(s.extremes.overturn_time, d.extremes.overturn_time, 1e-9) << where;
+    }
+    EXPECT_NEAR(s.extremes.first_uplift_time, d.extremes.first_uplift_time, 1e-12) << where;
+    EXPECT_NEAR(s.extremes.max_theta_edge1, d.extremes.max_theta_edge1,
+                1e-9 * std::max(1e-3, d.extremes.max_theta_edge1))
+        << where;
+    EXPECT_NEAR(s.extremes.max_theta_edge2, d.extremes.max_theta_edge2,
+                1e-9 * std::max(1e-3, d.extremes.max_theta_edge2))
+        << where;
+    const auto ts = impact_times(s), td = impact_times(d);
+    ASSERT_EQ(ts.size(), td.size()) << where;
+    if (!ts.empty()) ++rocked;
+    for (std::size_t k = 0; k < ts.size(); ++k) EXPECT_NEAR(ts[k], td[k], 1e-9) << where << k;
+    // the series did the rocking: no right-hand side while rocking
+    if (s.extremes.first_uplift_time >= 0.0) {
+      EXPECT_LT(s.rhs_evaluations, d.rhs_evaluations / 10) << where;
+    }
+    EXPECT_LT(std::abs(s.energy.residual), 1e-9 * s.energy.scale) << where;
+  }
+  EXPECT_GT(rocked, 3);
+  EXPECT_GT(overturned, 0);
+}
+
+// one series step under two sinusoids (one per component) against DOPRI5 at rtol 1e-13 on the
+// rocking equation written out here, at points inside the step
+TEST(RockingSeries, OneStepUnderSinusoidsMatchesAnIndependentIntegration) {
+  using State = Eigen::Vector4d;
+  const double alpha = 0.3, zeta2 = 0.4, h = 1.3, mass = 800.0;
+  const double m = 1 + zeta2 + alpha * alpha, k = g / h / m;
+  auto ax = [](double t) { return 3.1 * std::sin(9.0 * t + 0.3); };
+  auto ay = [](double t) { return -1.9 * std::sin(14.0 * t + 2.0); };
+  const GroundMotion motion = GroundMotion::analytic(
+                                  [&](double t) {
+                                    return BaseAcceleration{ax(t), ay(t)};
+                                  },
+                                  2.0)
+                                  .with_sinusoids({SinusoidPiece{0.0, 2.0, 3.1, 9.0, 0.3, false},
+                                                   SinusoidPiece{0.0, 2.0, -1.9, 14.0, 2.0, true}});
+  auto rhs = [&](double t, const State& x, State& dx) {
+    const double u = ax(t) / g, v = 1 + ay(t) / g, s = std::sin(x(0)), c = std::cos(x(0));
+    dx(0) = x(1);
+    dx(1) = k * (v * (s + alpha * c) + u * (c - alpha * s));
+    const double vx = h * x(1) * (-c + alpha * s), vy = h * x(1) * (-s - alpha * c);
+    dx(2) = -mass * (ax(t) * vx + ay(t) * vy);
+    dx(3) = 0.0;
+  };
+  const State x0(0.05, -0.3, 1.5, 0.0);
+  StepControl ctl;
+  ctl.rtol = 1e-13;
+  ctl.atol = 1e-15;
+  ctl.controlled = 2;
+  detail::RockingSeries<State> series(motion);
+  series.set_pivot(alpha, k, mass * h * g, g);
+  const double t0 = 0.1;
+  series.start(rhs, ctl, t0, x0);
+  ASSERT_EQ(series.step(rhs, 0.5), detail::RockingSeries<State>::Status::kAccepted);
+  const double t1 = series.t1();
+  EXPECT_GT(t1 - t0, 0.02);  // a step of several hundredths over the sinusoids' periods
   for (double f : {0.25, 0.5, 0.8, 1.0}) {
     const double tf = t0 + f * (t1 - t0);
     Dopri5<State> ref;

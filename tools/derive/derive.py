@@ -2718,18 +2718,27 @@ def print_equations(gens):
             print('rigid ratio thd+/thd- =', Gn.rigid_ratio)
 
 
-def rocking_series_recurrence(P0, P1, Q0, Q1, th0, om0, order):
+def rocking_series_recurrence(P, Q, th0, om0, order):
     """the Taylor coefficients of the rigid rocking motion by the recurrence of docs/theory.md
     (Rocking of a rigid body by its Taylor series), as src/sim/rocking_series.hpp computes them:
-    theta to power order + 1, sin and cos of theta to power order - 1"""
+    theta to power order + 1, sin and cos of theta to power order - 1; P and Q are the series of
+    k (alpha v + u) and k (v - alpha u), two terms under a record, more under sinusoids"""
+    P, Q = list(P) + [0] * order, list(Q) + [0] * order
     th, s, c = [th0, om0] + [0] * order, [sp.sin(th0)] + [0] * order, [sp.cos(th0)] + [0] * order
     for j in range(order):
         if j > 0:
             s[j] = sum((i * th[i] * c[j - i] for i in range(1, j + 1)), 0) / j
             c[j] = -sum((i * th[i] * s[j - i] for i in range(1, j + 1)), 0) / j
-        a = P0 * c[j] + Q0 * s[j] + ((P1 * c[j - 1] + Q1 * s[j - 1]) if j > 0 else 0)
+        a = sum((P[i] * c[j - i] + Q[i] * s[j - i] for i in range(j + 1)), 0)
         th[j + 2] = a / ((j + 1) * (j + 2))
     return th, s, c
+
+
+def sinusoid_series(A, w, sc, cc, order):
+    """the Taylor coefficients of A sin(w tau + c) at tau = 0 as src/sim/rocking_series.hpp forms
+    them: A w^k / k! times sin c, cos c, -sin c, -cos c in turn (sc = sin c, cc = cos c)"""
+    cyc = [sc, cc, -sc, -cc]
+    return [A * w ** k / sp.factorial(k) * cyc[k % 4] for k in range(order)]
 
 
 def derive_rocking_series(order=5):
@@ -2764,8 +2773,8 @@ def derive_rocking_series(order=5):
     k = (g / h) / (1 + z2 + al ** 2)
     uu, vv = u0 + u1 * tau, v0 + v1 * tau
     Pk, Qk = k * (al * vv + uu), k * (vv - al * uu)
-    thc, sc, cc = rocking_series_recurrence(sp.expand(k * (al * v0 + u0)), sp.expand(k * (al * v1 + u1)),
-                                            sp.expand(k * (v0 - al * u0)), sp.expand(k * (v1 - al * u1)),
+    thc, sc, cc = rocking_series_recurrence([sp.expand(k * (al * v0 + u0)), sp.expand(k * (al * v1 + u1))],
+                                            [sp.expand(k * (v0 - al * u0)), sp.expand(k * (v1 - al * u1))],
                                             th0, om0, order)
     poly = sum((thc[i] * tau ** i for i in range(order + 2)), 0)
     resid = sp.diff(poly, tau, 2) - (Pk * sp.cos(poly) + Qk * sp.sin(poly))
@@ -2786,6 +2795,72 @@ def derive_rocking_series(order=5):
                                                      + ((vv - 1) - al * uu) * sp.sin(poly))
     wser = sp.series(wres, tau, 0, order).removeO()
     res['series_work'] = all(is_zero(wser.coeff(tau, i)) for i in range(order))
+    # a pulse of sinusoids, one per component (u = A sin(w tau + c) / g, v = 1 + B sin(w2 tau +
+    # c2) / g): the sinusoid's coefficients against sympy's series, then the recurrence and the
+    # work with those series for P and Q. The residuals are formed on coefficient lists, exact
+    # polynomials in sin theta0, cos theta0, omega0 and sin c, cos c of each sinusoid (the identities
+    # are linear in the forcing): sin(theta0 + d) = sin theta0 cos d + cos theta0 sin d with
+    # d = O(tau) by Maclaurin's series, independent of the recurrence (sympy's series is slow here).
+    n = order
+    A, w, B, w2 = sp.Rational(31, 10), sp.Rational(9), sp.Rational(-19, 10), sp.Rational(14)
+    S0, C0, sA, cA, sB, cB, c_ = sp.symbols('S0 C0 sA cA sB cB c_', real=True)
+    gens = (S0, C0, om0, sA, cA, sB, cB)
+    us = [x / g for x in sinusoid_series(A, w, sA, cA, n + 1)]
+    vs = [x / g for x in sinusoid_series(B, w2, sB, cB, n + 1)]
+    vs[0] += 1
+    useries = sp.series(A * sp.sin(w * tau + c_), tau, 0, n + 1).removeO()
+    res['series_sinusoid'] = all(
+        is_zero(useries.coeff(tau, i).subs({sp.sin(c_): sA, sp.cos(c_): cA}) - us[i] * g) for i in range(n + 1))
+
+    def poly_(e):  # an exact polynomial in gens
+        return sp.Poly(sp.expand(sp.sympify(e).subs({sp.sin(th0): S0, sp.cos(th0): C0})), *gens, domain='QQ')
+
+    def mul(a, b):  # Cauchy product to power n - 1
+        return [sum((a[i] * b[j - i] for i in range(j + 1)), poly_(0)) for j in range(n)]
+
+    def sin_cos(s0, c0, d):  # sin and cos of x0 + d from sin x0, cos x0; d[0] = 0
+        sd, cd, term = [poly_(0)] * n, [poly_(0)] * n, [poly_(1)] + [poly_(0)] * (n - 1)
+        for m in range(n):
+            if m > 0:
+                term = [x * poly_(sp.Rational(1, m)) for x in mul(term, d)]
+            acc, sgn = (sd if m % 2 else cd), (-1) ** (m // 2)
+            for j in range(n):
+                acc[j] = acc[j] + term[j] * poly_(sgn)
+        sx = [x * poly_(s0) + y * poly_(c0) for x, y in zip(cd, sd)]
+        cx = [x * poly_(c0) - y * poly_(s0) for x, y in zip(cd, sd)]
+        return sx, cx
+
+    su, cu = sin_cos(0, 1, [poly_(0), poly_(w)] + [poly_(0)] * (n - 2))
+    sv, cv = sin_cos(0, 1, [poly_(0), poly_(w2)] + [poly_(0)] * (n - 2))
+    uu = [(x * poly_(sA) + y * poly_(cA)) * poly_(A / g) for x, y in zip(cu, su)]
+    vv = [(x * poly_(sB) + y * poly_(cB)) * poly_(B / g) for x, y in zip(cv, sv)]
+    vv[0] = vv[0] + poly_(1)
+    Pk = [(poly_(al) * y + x) * poly_(k) for x, y in zip(uu, vv)]
+    Qk = [(y - poly_(al) * x) * poly_(k) for x, y in zip(uu, vv)]
+    thc, sc, cc = rocking_series_recurrence([k * (al * vs[i] + us[i]) for i in range(n + 1)],
+                                            [k * (vs[i] - al * us[i]) for i in range(n + 1)],
+                                            th0, om0, n)
+    th = [poly_(x) for x in thc[1:n + 2]]  # theta - theta0, powers 1..n+1
+    d = [poly_(0)] + th[:n - 1]
+    sp_, cp_ = sin_cos(S0, C0, d)
+    acc = [poly_((j + 2) * (j + 1)) * th[j + 1] for j in range(n)]  # theta'' to power n - 1
+    rhs = [x + y for x, y in zip(mul(Pk, cp_), mul(Qk, sp_))]
+    res['series_recurrence_sinusoids'] = all((x - y).is_zero for x, y in zip(acc, rhs))
+    res['series_sincos_sinusoids'] = all((sp_[i] - poly_(sc[i])).is_zero and (cp_[i] - poly_(cc[i])).is_zero
+                                         for i in range(n))
+    # the work's bracket: a_i c + b_i s summed over the forcing's terms, the constant -1 in v's first
+    ai = [M * h * g * (us[i] + al * (vs[i] - (1 if i == 0 else 0))) for i in range(n)]
+    bi = [M * h * g * ((vs[i] - (1 if i == 0 else 0)) - al * us[i]) for i in range(n)]
+    rr = [sum((ai[i] * cc[j - i] + bi[i] * sc[j - i] for i in range(j + 1)), 0) for j in range(n)]
+    W = [sum(((j + 1) * thc[j + 1] * rr[kk - j] for j in range(kk + 1)), 0) / (kk + 1) for kk in range(n)]
+    dW = [poly_((kk + 1) * W[kk]) for kk in range(n)]  # W' to power n - 1
+    vm1 = list(vv)
+    vm1[0] = vm1[0] - poly_(1)
+    bracket = [a + b for a, b in zip(mul([x + poly_(al) * y for x, y in zip(uu, vm1)], cp_),
+                                     mul([y - poly_(al) * x for x, y in zip(uu, vm1)], sp_))]
+    dth = [poly_(j + 1) * th[j] for j in range(n)]  # theta' to power n - 1
+    power = [x * poly_(M * h * g) for x in mul(dth, bracket)]
+    res['series_work_sinusoids'] = all((x - y).is_zero for x, y in zip(dW, power))
     return res
 
 

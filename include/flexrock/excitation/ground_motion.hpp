@@ -18,6 +18,19 @@ struct BaseAcceleration {
   double y = 0.0;  // Yddot [m/s^2]
 };
 
+/// One sinusoidal piece of an analytic motion: amplitude sin(omega t + phase) [m/s^2] for
+/// begin <= t < end along one component, zero elsewhere (omega = 0: the constant amplitude
+/// sin(phase)). The pulses made of such pieces carry them, so that a rigid body's rocking is
+/// stepped by its Taylor series with the motion expanded in closed form (docs/theory.md, "Rocking
+/// of a rigid body by its Taylor series").
+struct SinusoidPiece {
+  double begin = 0.0, end = 0.0;  // [s]
+  double amplitude = 0.0;         // [m/s^2]
+  double omega = 0.0;             // [rad/s]
+  double phase = 0.0;             // [rad]
+  bool vertical = false;          // Yddot, else Xddot
+};
+
 /// A ground motion, in memory. Sampled records are linear between samples; their sample times
 /// are breakpoints where the simulation ends a step, so kinks cost no accuracy.
 class GroundMotion {
@@ -35,6 +48,11 @@ class GroundMotion {
   static GroundMotion analytic(Function f, double duration, std::vector<double> breakpoints = {});
   /// No motion at all (free rocking), lasting `duration` [s].
   static GroundMotion none(double duration);
+
+  /// This analytic motion described also as the sum of `pieces`, which must be what its function
+  /// gives (the pulses' tests check it); their ends become breakpoints. Throws on a sampled motion
+  /// or a piece that is not finite, ends before it begins or lies outside [0, duration].
+  GroundMotion with_sinusoids(std::vector<SinusoidPiece> pieces) const;
 
   /// Walks forward through the samples so that a sequence of calls at increasing times costs O(1);
   /// any other call costs a binary search. One cursor per thread.
@@ -57,6 +75,10 @@ class GroundMotion {
   bool has_vertical() const { return has_vertical_; }
   /// Made by none(): zero throughout.
   bool is_none() const { return none_; }
+  /// The sinusoidal pieces of an analytic motion that has them (scaled as the motion); empty
+  /// otherwise.
+  const std::vector<SinusoidPiece>& sinusoids() const { return sinusoids_; }
+  bool is_sinusoidal() const { return !sinusoids_.empty(); }
   const std::vector<double>& times() const { return time_; }
   const std::vector<double>& horizontal() const { return ax_; }
   const std::vector<double>& vertical() const { return ay_; }
@@ -65,9 +87,10 @@ class GroundMotion {
   GroundMotion scaled(double factor) const;
 
  private:
-  std::vector<double> time_, ax_, ay_;  // sampled record
-  Function f_;                          // analytic motion
-  std::vector<double> breaks_;          // analytic breakpoints, sorted
+  std::vector<double> time_, ax_, ay_;    // sampled record
+  Function f_;                            // analytic motion
+  std::vector<double> breaks_;            // analytic breakpoints, sorted
+  std::vector<SinusoidPiece> sinusoids_;  // the analytic motion as sinusoids, when it is so made
   double duration_ = 0.0;
   double scale_ = 1.0;  // analytic motions only; sampled ones are scaled in place
   bool has_vertical_ = false;

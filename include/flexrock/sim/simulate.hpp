@@ -152,8 +152,9 @@ struct SimulationOptions {
   // while the walk's search for the extremes between samples costs more than the sampled steps
   // save (case d, n = 1: 6.2 ms against 4.2 ms)
   bool full_contact_walk = false;
-  // a rigid body's rocking under a sampled record (or none) is stepped by the Taylor series of its
-  // motion (docs/theory.md, "Rocking of a rigid body by its Taylor series"); false: by DOPRI5
+  // a rigid body's rocking under a sampled record, a pulse of sinusoids (GroundMotion::sinusoids)
+  // or none is stepped by the Taylor series of its motion (docs/theory.md, "Rocking of a rigid body
+  // by its Taylor series"); false: by DOPRI5
   bool series_rocking = true;
 };
 
