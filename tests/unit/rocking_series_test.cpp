@@ -103,37 +103,44 @@ SimulationResult run_record(const GroundMotion& motion, bool series, double rtol
   return simulate(body, motion, InitialState{}, opt);
 }
 
+// the series (series = true) against DOPRI5 under `motion`, both at rtol 1e-13: status, overturn
+// side and time, first uplift, largest tilts, impact times and the energy balance; counts the
+// runs that rocked and that overturned
+void expect_series_agrees(const GroundMotion& motion, const std::string& where, int& rocked,
+                          int& overturned) {
+  const auto s = run_record(motion, true, 1e-13);
+  const auto d = run_record(motion, false, 1e-13);
+  ASSERT_EQ(s.status, d.status) << where;
+  EXPECT_EQ(s.extremes.overturn_edge, d.extremes.overturn_edge) << where;
+  if (s.status == Status::kOverturned) {
+    ++overturned;
+    EXPECT_NEAR(s.extremes.overturn_time, d.extremes.overturn_time, 1e-9) << where;
+  }
+  EXPECT_NEAR(s.extremes.first_uplift_time, d.extremes.first_uplift_time, 1e-12) << where;
+  EXPECT_NEAR(s.extremes.max_theta_edge1, d.extremes.max_theta_edge1,
+              1e-9 * std::max(1e-3, d.extremes.max_theta_edge1))
+      << where;
+  EXPECT_NEAR(s.extremes.max_theta_edge2, d.extremes.max_theta_edge2,
+              1e-9 * std::max(1e-3, d.extremes.max_theta_edge2))
+      << where;
+  const auto ts = impact_times(s), td = impact_times(d);
+  ASSERT_EQ(ts.size(), td.size()) << where;
+  if (!ts.empty()) ++rocked;
+  for (std::size_t k = 0; k < ts.size(); ++k) EXPECT_NEAR(ts[k], td[k], 1e-9) << where << k;
+  // the series did the rocking: DOPRI5 evaluated the right-hand side only in the other run
+  if (s.extremes.first_uplift_time >= 0.0) {
+    EXPECT_LT(s.rhs_evaluations, d.rhs_evaluations / 10) << where;
+  }
+  // the input work, integrated with the series, closes the energy balance as tightly
+  EXPECT_LT(std::abs(s.energy.residual), 1e-9 * s.energy.scale) << where;
+}
+
 TEST(RockingSeries, UnderARecordAgreesWithDopri5) {
   int overturned = 0, rocked = 0;
   for (unsigned seed : {1u, 2u, 3u, 4u}) {
     for (double amp : {0.25, 0.45}) {
-      const GroundMotion motion = random_record(seed, amp, 8.0);
-      const auto s = run_record(motion, true, 1e-13);
-      const auto d = run_record(motion, false, 1e-13);
       const std::string where = "seed " + std::to_string(seed) + ", " + std::to_string(amp) + " g";
-      ASSERT_EQ(s.status, d.status) << where;
-      EXPECT_EQ(s.extremes.overturn_edge, d.extremes.overturn_edge) << where;
-      if (s.status == Status::kOverturned) {
-        ++overturned;
-        EXPECT_NEAR(s.extremes.overturn_time, d.extremes.overturn_time, 1e-9) << where;
-      }
-      EXPECT_NEAR(s.extremes.first_uplift_time, d.extremes.first_uplift_time, 1e-12) << where;
-      EXPECT_NEAR(s.extremes.max_theta_edge1, d.extremes.max_theta_edge1,
-                  1e-9 * std::max(1e-3, d.extremes.max_theta_edge1))
-          << where;
-      EXPECT_NEAR(s.extremes.max_theta_edge2, d.extremes.max_theta_edge2,
-                  1e-9 * std::max(1e-3, d.extremes.max_theta_edge2))
-          << where;
-      const auto ts = impact_times(s), td = impact_times(d);
-      ASSERT_EQ(ts.size(), td.size()) << where;
-      if (!ts.empty()) ++rocked;
-      for (std::size_t k = 0; k < ts.size(); ++k) EXPECT_NEAR(ts[k], td[k], 1e-9) << where << k;
-      // the series did the rocking: DOPRI5 evaluated the right-hand side only in the other run
-      if (!ts.empty()) {
-        EXPECT_LT(s.rhs_evaluations, d.rhs_evaluations / 10) << where;
-      }
-      // the input work, integrated with the series, closes the energy balance as tightly
-      EXPECT_LT(std::abs(s.energy.residual), 1e-9 * s.energy.scale) << where;
+      expect_series_agrees(random_record(seed, amp, 8.0), where, rocked, overturned);
     }
   }
   // the cases must exercise rocking with impacts and an overturn
@@ -153,6 +160,35 @@ TEST(RockingSeries, MirroredRecordMirrorsTheMotion) {
     const auto tp = impact_times(p), tm = impact_times(m);
     ASSERT_EQ(tp.size(), tm.size());
     for (std::size_t k = 0; k < tp.size(); ++k) EXPECT_NEAR(tp[k], tm[k], 1e-12) << k;
+  }
+}
+
+// the step control of the one-step comparisons: rtol 1e-13 on theta and theta_dot
+StepControl tight_control() {
+  StepControl ctl;
+  ctl.rtol = 1e-13;
+  ctl.atol = 1e-15;
+  ctl.controlled = 2;
+  return ctl;
+}
+
+// the series' dense output on [t0, t1] against DOPRI5 at rtol 1e-13 (steps of at most 1e-3 s) on
+// the equation `rhs`, at points inside the step and at its end
+template <class Rhs>
+void expect_dense_matches(const detail::RockingSeries<Eigen::Vector4d>& series, Rhs& rhs,
+                          StepControl ctl, double t0, double t1, const Eigen::Vector4d& x0) {
+  using State = Eigen::Vector4d;
+  for (double f : {0.25, 0.5, 0.8, 1.0}) {
+    const double tf = t0 + f * (t1 - t0);
+    Dopri5<State> ref;
+    ctl.max_step = 1e-3;
+    ref.start(rhs, ctl, t0, x0);
+    while (ref.t1() < tf) ref.step(rhs, tf);
+    State xs;
+    series.dense(tf, xs);
+    EXPECT_NEAR(xs(0), ref.x1()(0), 1e-13) << f;
+    EXPECT_NEAR(xs(1), ref.x1()(1), 1e-12) << f;
+    EXPECT_NEAR(xs(2), ref.x1()(2), 1e-11 * std::abs(ref.x1()(2) - x0(2))) << f;
   }
 }
 
@@ -179,27 +215,13 @@ TEST(RockingSeries, OneStepMatchesAnIndependentIntegration) {
     dx(3) = 0.0;
   };
   const State x0(0.05, -0.3, 1.5, 0.0);
-  StepControl ctl;
-  ctl.rtol = 1e-13;
-  ctl.atol = 1e-15;
-  ctl.controlled = 2;
+  const StepControl ctl = tight_control();
   detail::RockingSeries<State> series(motion);
   series.set_pivot(alpha, k, mass * h * g, g);
   series.start(rhs, ctl, t0, x0);
   ASSERT_EQ(series.step(rhs, t1), detail::RockingSeries<State>::Status::kAccepted);
   EXPECT_EQ(series.t1(), t1);  // one step spans the interval
-  for (double f : {0.25, 0.5, 0.8, 1.0}) {
-    const double tf = t0 + f * (t1 - t0);
-    Dopri5<State> ref;
-    ctl.max_step = 1e-3;
-    ref.start(rhs, ctl, t0, x0);
-    while (ref.t1() < tf) ref.step(rhs, tf);
-    State xs;
-    series.dense(tf, xs);
-    EXPECT_NEAR(xs(0), ref.x1()(0), 1e-13) << f;
-    EXPECT_NEAR(xs(1), ref.x1()(1), 1e-12) << f;
-    EXPECT_NEAR(xs(2), ref.x1()(2), 1e-11 * std::abs(ref.x1()(2) - x0(2))) << f;
-  }
+  expect_dense_matches(series, rhs, ctl, t0, t1, x0);
 }
 
 // a rigid block under the pulses made of sinusoids: the series (which expands the sinusoids)
@@ -238,30 +260,7 @@ TEST(RockingSeries, UnderSinusoidalPulsesAgreesWithDopri5) {
   int overturned = 0, rocked = 0;
   for (const auto& [where, motion] : cases) {
     ASSERT_TRUE(motion.is_sinusoidal()) << where;
-    const auto s = run_record(motion, true, 1e-13);
-    const auto d = run_record(motion, false, 1e-13);
-    ASSERT_EQ(s.status, d.status) << where;
-    EXPECT_EQ(s.extremes.overturn_edge, d.extremes.overturn_edge) << where;
-    if (s.status == Status::kOverturned) {
-      ++overturned;
-      EXPECT_NEAR(s.extremes.overturn_time, d.extremes.overturn_time, 1e-9) << where;
-    }
-    EXPECT_NEAR(s.extremes.first_uplift_time, d.extremes.first_uplift_time, 1e-12) << where;
-    EXPECT_NEAR(s.extremes.max_theta_edge1, d.extremes.max_theta_edge1,
-                1e-9 * std::max(1e-3, d.extremes.max_theta_edge1))
-        << where;
-    EXPECT_NEAR(s.extremes.max_theta_edge2, d.extremes.max_theta_edge2,
-                1e-9 * std::max(1e-3, d.extremes.max_theta_edge2))
-        << where;
-    const auto ts = impact_times(s), td = impact_times(d);
-    ASSERT_EQ(ts.size(), td.size()) << where;
-    if (!ts.empty()) ++rocked;
-    for (std::size_t k = 0; k < ts.size(); ++k) EXPECT_NEAR(ts[k], td[k], 1e-9) << where << k;
-    // the series did the rocking: no right-hand side while rocking
-    if (s.extremes.first_uplift_time >= 0.0) {
-      EXPECT_LT(s.rhs_evaluations, d.rhs_evaluations / 10) << where;
-    }
-    EXPECT_LT(std::abs(s.energy.residual), 1e-9 * s.energy.scale) << where;
+    expect_series_agrees(motion, where, rocked, overturned);
   }
   EXPECT_GT(rocked, 3);
   EXPECT_GT(overturned, 0);
@@ -291,10 +290,7 @@ TEST(RockingSeries, OneStepUnderSinusoidsMatchesAnIndependentIntegration) {
     dx(3) = 0.0;
   };
   const State x0(0.05, -0.3, 1.5, 0.0);
-  StepControl ctl;
-  ctl.rtol = 1e-13;
-  ctl.atol = 1e-15;
-  ctl.controlled = 2;
+  const StepControl ctl = tight_control();
   detail::RockingSeries<State> series(motion);
   series.set_pivot(alpha, k, mass * h * g, g);
   const double t0 = 0.1;
@@ -302,18 +298,7 @@ TEST(RockingSeries, OneStepUnderSinusoidsMatchesAnIndependentIntegration) {
   ASSERT_EQ(series.step(rhs, 0.5), detail::RockingSeries<State>::Status::kAccepted);
   const double t1 = series.t1();
   EXPECT_GT(t1 - t0, 0.02);  // a step of several hundredths over the sinusoids' periods
-  for (double f : {0.25, 0.5, 0.8, 1.0}) {
-    const double tf = t0 + f * (t1 - t0);
-    Dopri5<State> ref;
-    ctl.max_step = 1e-3;
-    ref.start(rhs, ctl, t0, x0);
-    while (ref.t1() < tf) ref.step(rhs, tf);
-    State xs;
-    series.dense(tf, xs);
-    EXPECT_NEAR(xs(0), ref.x1()(0), 1e-13) << f;
-    EXPECT_NEAR(xs(1), ref.x1()(1), 1e-12) << f;
-    EXPECT_NEAR(xs(2), ref.x1()(2), 1e-11 * std::abs(ref.x1()(2) - x0(2))) << f;
-  }
+  expect_dense_matches(series, rhs, ctl, t0, t1, x0);
 }
 
 // the impact and peak guards' crossings are found on the series polynomial: against the known
