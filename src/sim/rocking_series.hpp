@@ -261,14 +261,22 @@ class RockingSeries {
   void work_series(int p) {
     const double a0 = mhg_ * (u0_ + alpha_ * (v0_ - 1.0)), a1 = mhg_ * (u1_ + alpha_ * v1_);
     const double b0 = mhg_ * ((v0_ - 1.0) - alpha_ * u0_), b1 = mhg_ * (v1_ - alpha_ * u1_);
+    // a sinusoid's terms of order 2 and up, once per step: M h g (u_i + alpha v_i) and
+    // M h g (v_i - alpha u_i)
+    const int top = std::min(p, higher_);
+    std::array<double, kMaxOrder + 2> ak, bk;
+    for (int i = 2; i < top; ++i) {
+      const auto m = static_cast<std::size_t>(i);
+      ak[m] = mhg_ * (uk_[m] + alpha_ * vk_[m]);
+      bk[m] = mhg_ * (vk_[m] - alpha_ * uk_[m]);
+    }
     // r_k, k = 0..p-1: the bracket's series (sine and cosine are known to p - 1)
     for (int k = 0; k < p; ++k) {
       r_[k] = a0 * c_[k] + b0 * s_[k];
       if (k > 0) r_[k] += a1 * c_[k - 1] + b1 * s_[k - 1];
-      // a sinusoid's terms of order 2 and up: (u_i + alpha v_i) c + (v_i - alpha u_i) s
-      for (int i = 2; i <= k && i < higher_; ++i) {
+      for (int i = 2; i <= k && i < top; ++i) {
         const auto m = static_cast<std::size_t>(i), l = static_cast<std::size_t>(k - i);
-        r_[k] += mhg_ * ((uk_[m] + alpha_ * vk_[m]) * c_[l] + (vk_[m] - alpha_ * uk_[m]) * s_[l]);
+        r_[k] += ak[m] * c_[l] + bk[m] * s_[l];
       }
     }
     w_[0] = x0_(2);
