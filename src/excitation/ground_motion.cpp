@@ -16,6 +16,12 @@ void require_finite(const std::vector<double>& v, const char* what) {
                                                    std::to_string(i) + " is not finite");
   }
 }
+
+// breakpoints in increasing order, each once
+void sort_unique(std::vector<double>& v) {
+  std::sort(v.begin(), v.end());
+  v.erase(std::unique(v.begin(), v.end()), v.end());
+}
 }  // namespace
 
 GroundMotion GroundMotion::sampled(std::vector<double> time, std::vector<double> horizontal,
@@ -69,8 +75,7 @@ GroundMotion GroundMotion::analytic(Function f, double duration, std::vector<dou
   m.duration_ = duration;
   breakpoints.push_back(0.0);
   breakpoints.push_back(duration);
-  std::sort(breakpoints.begin(), breakpoints.end());
-  breakpoints.erase(std::unique(breakpoints.begin(), breakpoints.end()), breakpoints.end());
+  sort_unique(breakpoints);
   m.breaks_ = std::move(breakpoints);
   m.has_vertical_ = true;
   return m;
@@ -97,8 +102,7 @@ GroundMotion GroundMotion::with_sinusoids(std::vector<SinusoidPiece> pieces) con
     m.breaks_.push_back(p.begin);
     m.breaks_.push_back(p.end);
   }
-  std::sort(m.breaks_.begin(), m.breaks_.end());
-  m.breaks_.erase(std::unique(m.breaks_.begin(), m.breaks_.end()), m.breaks_.end());
+  sort_unique(m.breaks_);
   m.sinusoids_.insert(m.sinusoids_.end(), pieces.begin(), pieces.end());
   return m;
 }
