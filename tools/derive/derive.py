@@ -2734,6 +2734,16 @@ def rocking_series_recurrence(P, Q, th0, om0, order):
     return th, s, c
 
 
+def rocking_work_recurrence(a, b, thc, sc, cc, order):
+    """the input work's terms W_1..W_order as src/sim/rocking_series.hpp computes them: the
+    bracket's series r_j = sum_i (a_i c_{j-i} + b_i s_{j-i}), a and b the series of M h g (u +
+    alpha (v - 1)) and M h g ((v - 1) - alpha u), then W_{k+1} = sum_j (j + 1) theta_{j+1} r_{k-j}
+    / (k + 1)"""
+    a, b = list(a) + [0] * order, list(b) + [0] * order
+    rr = [sum((a[i] * cc[j - i] + b[i] * sc[j - i] for i in range(j + 1)), 0) for j in range(order)]
+    return [sum(((j + 1) * thc[j + 1] * rr[kk - j] for j in range(kk + 1)), 0) / (kk + 1) for kk in range(order)]
+
+
 def sinusoid_series(A, w, sc, cc, order):
     """the Taylor coefficients of A sin(w tau + c) at tau = 0 as src/sim/rocking_series.hpp forms
     them: A w^k / k! times sin c, cos c, -sin c, -cos c in turn (sc = sin c, cc = cos c)"""
@@ -2784,11 +2794,10 @@ def derive_rocking_series(order=5):
     cos_ser = sp.series(sp.cos(poly), tau, 0, order).removeO()
     res['series_sincos'] = all(is_zero(sin_ser.coeff(tau, i) - sc[i]) and is_zero(cos_ser.coeff(tau, i) - cc[i])
                                for i in range(order))
-    # the work's terms: W_{k+1} = M h g sum_j (j + 1) theta_{j+1} r_{k-j} / (k + 1)
+    # the work's terms, from a linear forcing
     a0, a1 = M * h * g * (u0 + al * (v0 - 1)), M * h * g * (u1 + al * v1)
     b0, b1 = M * h * g * ((v0 - 1) - al * u0), M * h * g * (v1 - al * u1)
-    rr = [a0 * cc[j] + b0 * sc[j] + ((a1 * cc[j - 1] + b1 * sc[j - 1]) if j > 0 else 0) for j in range(order)]
-    W = [0] + [sum(((j + 1) * thc[j + 1] * rr[kk - j] for j in range(kk + 1)), 0) / (kk + 1) for kk in range(order)]
+    W = [0] + rocking_work_recurrence([a0, a1], [b0, b1], thc, sc, cc, order)
     wpoly = sum((W[i] * tau ** i for i in range(order + 1)), 0)
     dpoly = sp.diff(poly, tau)
     wres = sp.diff(wpoly, tau) - M * h * g * dpoly * ((uu + al * (vv - 1)) * sp.cos(poly)
@@ -2851,8 +2860,7 @@ def derive_rocking_series(order=5):
     # the work's bracket: a_i c + b_i s summed over the forcing's terms, the constant -1 in v's first
     ai = [M * h * g * (us[i] + al * (vs[i] - (1 if i == 0 else 0))) for i in range(n)]
     bi = [M * h * g * ((vs[i] - (1 if i == 0 else 0)) - al * us[i]) for i in range(n)]
-    rr = [sum((ai[i] * cc[j - i] + bi[i] * sc[j - i] for i in range(j + 1)), 0) for j in range(n)]
-    W = [sum(((j + 1) * thc[j + 1] * rr[kk - j] for j in range(kk + 1)), 0) / (kk + 1) for kk in range(n)]
+    W = rocking_work_recurrence(ai, bi, thc, sc, cc, n)
     dW = [poly_((kk + 1) * W[kk]) for kk in range(n)]  # W' to power n - 1
     vm1 = list(vv)
     vm1[0] = vm1[0] - poly_(1)
