@@ -107,6 +107,14 @@ GroundMotion GroundMotion::with_sinusoids(std::vector<SinusoidPiece> pieces) con
   return m;
 }
 
+double GroundMotion::quiet_from() const {
+  if (none_) return 0.0;
+  if (sinusoids_.empty()) return duration_;
+  double end = 0.0;
+  for (const SinusoidPiece& p : sinusoids_) end = std::max(end, p.end);
+  return end;
+}
+
 BaseAcceleration GroundMotion::at(double t, Cursor& c) const {
   if (!time_.empty()) {
     if (t < time_.front() || t > time_.back()) return {};

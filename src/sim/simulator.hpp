@@ -290,6 +290,7 @@ class Simulator final : private GuardProbe {
   double last_contact_change_ = 0.0;
   double flight_start_ = 0.0;
   double t_end_ = 0.0;
+  double quiet_from_ = 0.0;  // the base acceleration is zero after this [s]
   long next_output_ = 0;
   double energy0_ = 0.0, kinetic0_ = 0.0;
   double impact_loss_ = 0.0, chatter_loss_ = 0.0;
@@ -361,6 +362,7 @@ SimulationResult Simulator<N, MaxN>::run(const InitialState& init) {
     mode_ = ContactMode::kRockingEdge2;
   }
   t_end_ = opt_.t_end >= 0.0 ? opt_.t_end : motion_.duration();
+  quiet_from_ = motion_.quiet_from();
   energy0_ = kinetic_energy(x) + potential_energy(x);
   kinetic0_ = kinetic_energy(x);
   last_contact_change_ = -std::numeric_limits<double>::infinity();
@@ -1193,8 +1195,10 @@ bool Simulator<N, MaxN>::advance_still(double& t, State& x) {
   int samples = 1;
   if (motion_.is_sampled()) {
     tb = scan_record(t);
-  } else if (t >= motion_.duration()) {
-    tb = t_end_;  // the motion is over (zero): nothing can change any more
+  } else if (t >= quiet_from_) {
+    // the base acceleration is zero from here on (a pulse has ended): the body at rest stays so,
+    // every guard constant and positive, so nothing can change any more
+    tb = t_end_;
   } else {
     tb = std::min({t_end_, motion_.next_breakpoint(t, break_cursor_), t + opt_.max_step});
     samples = samples_;

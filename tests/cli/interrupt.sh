@@ -13,7 +13,7 @@ expect_no_temporaries() {
   [ -z "$left" ] || fail "temporary files left: $left"
 }
 
-# a body rocking forever (e = 1, no damping, no motion): killed mid-run
+# a body rocking forever (elastic impacts, no damping, no motion): killed mid-run
 cat >"$WORK/endless.toml" <<'TOML'
 [body]
 type = "rigid_block"
@@ -25,6 +25,9 @@ type = "none"
 duration = 1e6
 [initial]
 theta = 0.1
+[solver]
+impact_law = "restitution"
+restitution_ratio = 1.0
 [output]
 dt = 0
 TOML

@@ -302,5 +302,35 @@ TEST(Pulses, SinusoidsDescribeEveryPulseButTheRickerWavelet) {
   EXPECT_GE(described, 14);  // seven types, two components
 }
 
+TEST(Pulses, QuietFromIsWherePulsesThatEndEnd) {
+  // the motion is zero after quiet_from() (read from its own function, not the pieces), and a
+  // pulse that ends is quiet from its end: the engine lets a rigid body at rest skip the rest
+  for (const PulseKind& kind : pulse_kinds()) {
+    PulseArgs args{1.7, kind.frequency ? 3.0 : 0.0, 8.0, Component::kHorizontal, {}};
+    for (const PulseKey& k : kind.keys)
+      if (k.required) args.keys[k.name] = 1.3;
+    const GroundMotion m = make_pulse(kind, args);
+    const std::string name = kind.name;
+    const double quiet = m.quiet_from();
+    EXPECT_LE(quiet, m.duration()) << name;
+    for (int i = 1; i <= 400; ++i) {
+      const double t = quiet + (m.duration() - quiet) * i / 400.0;
+      if (!(t > quiet)) continue;  // at quiet_from() itself a pulse may hold its left limit
+      EXPECT_EQ(m.at(t).x, 0.0) << name << " t = " << t;
+    }
+    if (kind.length && kind.ends) {
+      EXPECT_NEAR(quiet, kind.length(3.0), 1e-14) << name;
+    } else if (!kind.ends) {
+      EXPECT_EQ(quiet, m.duration()) << name;
+    }
+  }
+  EXPECT_NEAR(half_sine_pulse(2.0, 4.0, 6.0).quiet_from(), kPi / 4.0, 1e-15);
+  EXPECT_EQ(GroundMotion::none(5.0).quiet_from(), 0.0);
+  EXPECT_EQ(GroundMotion::uniform(0.01, {0.0, 1.0, 0.0}).quiet_from(), 0.02);
+  // an analytic motion known only by its function may move up to its end
+  EXPECT_EQ(GroundMotion::analytic([](double) { return BaseAcceleration{}; }, 7.0).quiet_from(),
+            7.0);
+}
+
 }  // namespace
 }  // namespace flexrock

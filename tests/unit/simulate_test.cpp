@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "flexrock/core/error.hpp"
+#include "flexrock/excitation/pulses.hpp"
 #include "support/bodies.hpp"
 
 namespace flexrock {
@@ -179,6 +180,37 @@ TEST(Simulate, RigidFullContactHistoryIsExact) {
     EXPECT_NEAR(r.history.reaction_y[i], 250 * (g + a.y), 1e-9);
     EXPECT_EQ(r.history.phase[i], 0);
   }
+}
+
+TEST(Simulate, RigidBodyAtRestAfterAPulseSkipsToTheEnd) {
+  // once a pulse has ended a rigid body at rest stays at rest: the run jumps to its end, and its
+  // rows, extremes and events are those of the same motion stepped to the end (known only by its
+  // function, so the engine cannot tell it has ended)
+  const Body body(BodyParameters::rectangular_block(250, 0.3, 1.0));
+  const double duration = 30.0, wp = 6.0;
+  const GroundMotion pulse = one_sine_pulse(0.5 * 0.3 * g, wp, duration);
+  ASSERT_NEAR(pulse.quiet_from(), 2 * M_PI / wp, 1e-15);
+  const GroundMotion plain =
+      GroundMotion::analytic([pulse](double t) { return pulse.at(t); }, duration, {2 * M_PI / wp});
+  SimulationOptions opt;
+  opt.output_dt = 0.05;
+  const auto quick = simulate(body, pulse, {}, opt);
+  const auto stepped = simulate(body, plain, {}, opt);
+  ASSERT_EQ(quick.status, Status::kCompleted);
+  EXPECT_EQ(quick.t_end, duration);
+  EXPECT_EQ(quick.extremes.first_uplift_time, -1.0);
+  // the pulse's steps and one to the end, where the stepped run takes max_step to the end
+  EXPECT_LT(quick.steps, stepped.steps / 10);
+  ASSERT_EQ(quick.history.size(), stepped.history.size());
+  EXPECT_EQ(quick.history.time, stepped.history.time);
+  EXPECT_EQ(quick.history.reaction_x, stepped.history.reaction_x);
+  EXPECT_EQ(quick.history.reaction_y, stepped.history.reaction_y);
+  EXPECT_EQ(quick.history.phase, stepped.history.phase);
+  EXPECT_EQ(quick.extremes.max_base_shear, stepped.extremes.max_base_shear);
+  EXPECT_EQ(quick.extremes.max_overturning_moment, stepped.extremes.max_overturning_moment);
+  EXPECT_EQ(quick.extremes.max_friction_demand, stepped.extremes.max_friction_demand);
+  EXPECT_EQ(quick.events.size(), stepped.events.size());
+  EXPECT_EQ(quick.final_phase, ContactMode::kFullContact);
 }
 
 TEST(Simulate, RigidUpliftUnderARecordIsAtTheExactCrossing) {

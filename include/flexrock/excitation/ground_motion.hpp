@@ -69,6 +69,9 @@ class GroundMotion {
   double next_breakpoint(double t, Cursor& cursor) const;
   /// End of the record (last sample, or the analytic duration) [s].
   double duration() const { return duration_; }
+  /// The time after which the base acceleration is zero for good [s]: 0 for none(), the end of the
+  /// last piece of a motion made of sinusoids (its function is their sum), else duration().
+  double quiet_from() const;
   /// Sample count (0 for analytic motions).
   std::size_t samples() const { return time_.size(); }
   bool is_sampled() const { return !time_.empty(); }

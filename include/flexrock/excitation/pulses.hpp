@@ -160,8 +160,8 @@ struct PulseKind {
   /// nullptr: not a spectrum family (no frequency, or no end).
   double (*length)(double omega_p);
   const char* length_text;  // the length as the docs state it ("" without a length)
-  bool ends;        // false: never quite ends (Ricker): spectra always follow the free motion
-  const char* doc;  // one line: the acceleration
+  bool ends;                // false: never quite ends (Ricker): nonzero up to the end of the motion
+  const char* doc;          // one line: the acceleration
 };
 
 /// Every pulse type, in the order the docs list them.
