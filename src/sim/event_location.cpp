@@ -21,8 +21,8 @@ double locate_crossing(int slot, double tl, double tr, double gl, double gr, Gua
 
 // Newton rather than TOMS 748 on the dense output: the polynomial and its derivative cost one
 // Horner pass each, where every TOMS 748 probe rebuilt the state and all guards of the mode
-double polynomial_crossing(const double* c, int degree, double sign, double t0, double tl,
-                           double tr, double gl, double gr) {
+double polynomial_crossing(const double* c, const double* dc, int degree, double sign, double t0,
+                           double tl, double tr, double gl, double gr) {
   auto g = [&](double t) {
     const double tau = t - t0;
     double v = c[degree];
@@ -31,8 +31,8 @@ double polynomial_crossing(const double* c, int degree, double sign, double t0, 
   };
   auto dg = [&](double t) {
     const double tau = t - t0;
-    double v = degree * c[degree];
-    for (int k = degree - 1; k >= 1; --k) v = v * tau + k * c[k];
+    double v = dc[degree];
+    for (int k = degree - 1; k >= 1; --k) v = v * tau + dc[k];
     return sign * v;
   };
   double a = tl, b = tr;                    // g(a) > 0 >= g(b) throughout

@@ -28,12 +28,13 @@ class GuardProbe;
 /// The crossing in [tl, tr] (gl > 0 >= gr) to 2e-15 relative in time: the side where g <= 0.
 double locate_crossing(int slot, double tl, double tr, double gl, double gr, GuardProbe& probe);
 
-/// The same for the polynomial g(t) = sign * sum_k c[k] (t - t0)^k, k = 0..degree, evaluated by
+/// The same for the polynomial g(t) = sign * sum_k c[k] (t - t0)^k, k = 0..degree, with
+/// dc[k] = k c[k] (k = 1..degree; its derivative's, formed once by the caller), evaluated by
 /// Horner's rule as the stepper's dense output evaluates it (so the sign at the returned time is
 /// the sign guard_value gives; gl and gr are its values at tl and tr): Newton's method kept inside
 /// the bracket, then the first time past the root, by ulps, where g <= 0.
-double polynomial_crossing(const double* c, int degree, double sign, double t0, double tl,
-                           double tr, double gl, double gr);
+double polynomial_crossing(const double* c, const double* dc, int degree, double sign, double t0,
+                           double tl, double tr, double gl, double gr);
 
 /// The guard values at any time within the last step (from its dense output), and the crossing of
 /// one in a bracket: by default TOMS 748 on guard_value; a stepper whose guard is a polynomial on

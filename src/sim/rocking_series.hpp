@@ -53,9 +53,11 @@ class RockingSeries {
     x1_ = x;
     order_ = 0;
     th_.fill(0.0);
+    dth_.fill(0.0);
     w_.fill(0.0);
     th_[0] = x(0);
     th_[1] = x(1);
+    dth_[1] = x(1);
     w_[0] = x(2);
     h_ = ctl.max_step;
   }
@@ -80,11 +82,16 @@ class RockingSeries {
     const double tol_om = ctl_.atol + ctl_.rtol * std::abs(x1_(1));
     // terms up to the first order whose last two terms at h are within the tolerance
     series_start(x1_(0), x1_(1));
-    int p = 0;  // theta's series is known to power p + 1
+    int p = 0;      // theta's series is known to power p + 1
+    double hp = h;  // h^(p-1) for the tolerance test, one product per order
+    int hp_power = 1;
     for (;;) {
       add_term(p);
       ++p;
-      if (p >= kMinOrder && within(p, h, tol_th, tol_om)) break;
+      if (p >= kMinOrder) {
+        for (; hp_power < p - 1; ++hp_power) hp *= h;
+        if (within(p, h, hp, tol_th, tol_om)) break;
+      }
       if (p >= max_order_) {
         // the step is too long for this order: the radius from the last two terms
         const double hr = radius(p, tol_th, tol_om);
@@ -132,6 +139,8 @@ class RockingSeries {
   long rejected_steps() const { return 0; }
   /// theta's series on the last step: theta(t0 + tau) = sum_k c[k] tau^k, k = 0..order()
   const double* theta_coefficients() const { return th_.data(); }
+  /// k c[k], k = 0..order(): theta_dot(t0 + tau) = sum_k (k + 1) c[k + 1] tau^k
+  const double* theta_rate_coefficients() const { return dth_.data(); }
   int order() const { return order_ + 1; }
 
  private:
@@ -196,6 +205,7 @@ class RockingSeries {
   void series_start(double theta, double theta_dot) {
     th_[0] = theta;
     th_[1] = theta_dot;
+    dth_[1] = theta_dot;
     s_[0] = std::sin(theta);
     c_[0] = std::cos(theta);
     // theta'' = k (P cos + Q sin), P = alpha v + u, Q = v - alpha u: linear in tau
@@ -215,7 +225,7 @@ class RockingSeries {
     if (j > 0) {
       double s = 0.0, c = 0.0;
       for (int i = 1; i <= j; ++i) {
-        const double it = i * th_[i];
+        const double it = dth_[i];
         s += it * c_[j - i];
         c -= it * s_[j - i];
       }
@@ -230,13 +240,12 @@ class RockingSeries {
       a += pk_[k] * c_[l] + qk_[k] * s_[l];
     }
     th_[j + 2] = a / ((j + 1.0) * (j + 2.0));
+    dth_[j + 2] = (j + 2) * th_[j + 2];
   }
 
   // the last two terms of theta (powers p, p + 1) and theta_dot (p - 1, p) at h are within
   // their tolerances
-  bool within(int p, double h, double tol_th, double tol_om) const {
-    double hp = h;
-    for (int i = 1; i < p - 1; ++i) hp *= h;  // h^(p-1)
+  bool within(int p, double h, double hp, double tol_th, double tol_om) const {
     const double a = std::abs(th_[p]), b = std::abs(th_[p + 1]);
     const double e_th = hp * h * (a + b * h);
     const double e_om = hp * (p * a + (p + 1) * b * h);
@@ -282,17 +291,17 @@ class RockingSeries {
     w_[0] = x0_(2);
     for (int k = 0; k < p; ++k) {
       double sum = 0.0;
-      for (int j = 0; j <= k; ++j) sum += (j + 1) * th_[j + 1] * r_[k - j];
+      for (int j = 0; j <= k; ++j) sum += dth_[j + 1] * r_[k - j];
       w_[k + 1] = sum / (k + 1);
     }
   }
 
   void eval(double tau, State& out) const {
     const int p = order_;  // theta to p + 1, theta_dot to p, work to p
-    double th = th_[p + 1], om = (p + 1) * th_[p + 1], w = w_[p];
+    double th = th_[p + 1], om = dth_[p + 1], w = w_[p];
     for (int k = p; k >= 1; --k) {
       th = th * tau + th_[k];
-      om = om * tau + k * th_[k];
+      om = om * tau + dth_[k];
       w = w * tau + w_[k - 1];
     }
     th = th * tau + th_[0];
@@ -309,6 +318,7 @@ class RockingSeries {
   double u0_ = 0.0, u1_ = 0.0, v0_ = 1.0, v1_ = 0.0;
   double p0_ = 0.0, p1_ = 0.0, q0_ = 0.0, q1_ = 0.0;
   std::array<double, kMaxOrder + 2> th_{}, s_{}, c_{}, r_{}, w_{};
+  std::array<double, kMaxOrder + 2> dth_{};  // k th_[k], formed once per term (theta_dot's)
   // a sinusoidal motion's series of u and v - 1, and k P, k Q from them; used from order 2 up to
   // higher_ - 1 (0: a linear forcing)
   std::array<double, kMaxOrder + 2> uk_{}, vk_{}, pk_{}, qk_{};

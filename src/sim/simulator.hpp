@@ -290,7 +290,8 @@ class Simulator final : private GuardProbe {
   double last_contact_change_ = 0.0;
   double flight_start_ = 0.0;
   double t_end_ = 0.0;
-  double quiet_from_ = 0.0;  // the base acceleration is zero after this [s]
+  double quiet_from_ = 0.0;        // the base acceleration is zero after this [s]
+  bool friction_limited_ = false;  // a finite friction coefficient (the friction-limit guard)
   long next_output_ = 0;
   double energy0_ = 0.0, kinetic0_ = 0.0;
   double impact_loss_ = 0.0, chatter_loss_ = 0.0;
@@ -363,6 +364,7 @@ SimulationResult Simulator<N, MaxN>::run(const InitialState& init) {
   }
   t_end_ = opt_.t_end >= 0.0 ? opt_.t_end : motion_.duration();
   quiet_from_ = motion_.quiet_from();
+  friction_limited_ = std::isfinite(opt_.friction_coefficient);
   energy0_ = kinetic_energy(x) + potential_energy(x);
   kinetic0_ = kinetic_energy(x);
   last_contact_change_ = -std::numeric_limits<double>::infinity();
@@ -601,13 +603,16 @@ double Simulator<N, MaxN>::crossing(int slot, double tl, double tr, double gl, d
     const Guard g = mode_spec(mode_).guards[static_cast<std::size_t>(slot)];
     const double sg = edge_sign(edge());
     const double* c = series_integ_.theta_coefficients();
-    const int degree = series_integ_.order();  // theta's; theta_dot's is one less
+    const double* dc = series_integ_.theta_rate_coefficients();  // k c[k]
+    const int degree = series_integ_.order();                    // theta's; theta_dot's is one less
     if (g == Guard::kImpact)
-      return polynomial_crossing(c, degree, sg, series_integ_.t0(), tl, tr, gl, gr);
+      return polynomial_crossing(c, dc, degree, sg, series_integ_.t0(), tl, tr, gl, gr);
     if (g == Guard::kPeak) {
-      std::array<double, RockingSeries<ContactState>::kMaxOrder + 2> d;
-      for (int k = 1; k <= degree; ++k) d[static_cast<std::size_t>(k - 1)] = k * c[k];
-      return polynomial_crossing(d.data(), degree - 1, sg, series_integ_.t0(), tl, tr, gl, gr);
+      // theta_dot's coefficients d[k] = dc[k + 1], and k d[k]
+      const double* d = dc + 1;
+      std::array<double, RockingSeries<ContactState>::kMaxOrder + 2> dd;
+      for (int k = 1; k < degree; ++k) dd[static_cast<std::size_t>(k)] = k * d[k];
+      return polynomial_crossing(d, dd.data(), degree - 1, sg, series_integ_.t0(), tl, tr, gl, gr);
     }
   }
   return locate_crossing(slot, tl, tr, gl, gr, *this);
@@ -825,6 +830,8 @@ bool Simulator<N, MaxN>::step_guards(int samples, double t1, double& t_hit, int&
     const GuardSpec& g = guard_spec(spec.guards[k]);
     if (g.guard == Guard::kPeak && !rocking()) continue;
     if (g.guard == Guard::kLiftOff && tension_) continue;
+    // without a friction limit its guard is the constant 1 (evaluate): it never crosses
+    if (g.guard == Guard::kFrictionLimit && !friction_limited_) continue;
     when[k] = first_crossing(j, samples_buf_.data(), samples, zero_start_[k], g.fires_if_unresolved,
                              *this);
     if (g.reset != Reset::kRecord && when[k] < t_hit) {

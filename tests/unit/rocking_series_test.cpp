@@ -309,6 +309,7 @@ TEST(PolynomialCrossing, FindsTheRootsOfAKnownCubicToRounding) {
   const double r1 = 0.1, r2 = 0.25, r3 = 0.4;  // roots in tau = t - t0
   // (tau - r1)(tau - r2)(tau - r3)
   const double c[4] = {-r1 * r2 * r3, r1 * r2 + r1 * r3 + r2 * r3, -(r1 + r2 + r3), 1.0};
+  const double dc[4] = {0.0, c[1], 2.0 * c[2], 3.0 * c[3]};  // k c[k]
   auto poly = [&](double sign, double t) {
     const double tau = t - t0;
     return sign * (((c[3] * tau + c[2]) * tau + c[1]) * tau + c[0]);
@@ -323,7 +324,7 @@ TEST(PolynomialCrossing, FindsTheRootsOfAKnownCubicToRounding) {
     const double gl = poly(k.sign, k.tl), gr = poly(k.sign, k.tr);
     ASSERT_GT(gl, 0.0);
     ASSERT_LE(gr, 0.0);
-    const double t = detail::polynomial_crossing(c, 3, k.sign, t0, k.tl, k.tr, gl, gr);
+    const double t = detail::polynomial_crossing(c, dc, 3, k.sign, t0, k.tl, k.tr, gl, gr);
     EXPECT_NEAR(t, k.root, 4e-15 * k.root) << k.root;
     EXPECT_LE(poly(k.sign, t), 0.0) << k.root;
     EXPECT_GT(poly(k.sign, std::nextafter(t, k.tl)), 0.0) << k.root;
