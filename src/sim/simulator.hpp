@@ -290,8 +290,7 @@ class Simulator final : private GuardProbe {
   double last_contact_change_ = 0.0;
   double flight_start_ = 0.0;
   double t_end_ = 0.0;
-  double quiet_from_ = 0.0;        // the base acceleration is zero after this [s]
-  bool friction_limited_ = false;  // a finite friction coefficient (the friction-limit guard)
+  double quiet_from_ = 0.0;  // the base acceleration is zero after this [s]
   long next_output_ = 0;
   double energy0_ = 0.0, kinetic0_ = 0.0;
   double impact_loss_ = 0.0, chatter_loss_ = 0.0;
@@ -364,7 +363,6 @@ SimulationResult Simulator<N, MaxN>::run(const InitialState& init) {
   }
   t_end_ = opt_.t_end >= 0.0 ? opt_.t_end : motion_.duration();
   quiet_from_ = motion_.quiet_from();
-  friction_limited_ = std::isfinite(opt_.friction_coefficient);
   energy0_ = kinetic_energy(x) + potential_energy(x);
   kinetic0_ = kinetic_energy(x);
   last_contact_change_ = -std::numeric_limits<double>::infinity();
@@ -831,7 +829,7 @@ bool Simulator<N, MaxN>::step_guards(int samples, double t1, double& t_hit, int&
     if (g.guard == Guard::kPeak && !rocking()) continue;
     if (g.guard == Guard::kLiftOff && tension_) continue;
     // without a friction limit its guard is the constant 1 (evaluate): it never crosses
-    if (g.guard == Guard::kFrictionLimit && !friction_limited_) continue;
+    if (g.guard == Guard::kFrictionLimit && !std::isfinite(opt_.friction_coefficient)) continue;
     when[k] = first_crossing(j, samples_buf_.data(), samples, zero_start_[k], g.fires_if_unresolved,
                              *this);
     if (g.reset != Reset::kRecord && when[k] < t_hit) {
