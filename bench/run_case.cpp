@@ -1,9 +1,11 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Runs one benchmark case at a given tolerance, repeatedly, and prints the median CPU time per
 // run with the quantities the peer comparison judges accuracy by (bench/peers/compare.py).
-//   flexrock_run_case <a|b2|b6|c|d1|d4|d8> <rtol> <repetitions> [dopri5]
+//   flexrock_run_case <a|b2|b6|c|d1|d4|d8> <rtol> <repetitions> [dopri5|stepped]
 // `dopri5` steps a rigid body's rocking by DOPRI5 instead of its Taylor series (series_rocking =
-// false), for the work-precision comparison of the two.
+// false), for the work-precision comparison of the two; `stepped` takes a flexible body's full
+// contact by sampled steps of the exact propagation instead of the record walk
+// (full_contact_walk = false), to compare the two side by side.
 #include <algorithm>
 #include <cstdio>
 #include <ctime>
@@ -25,9 +27,11 @@ double cpu_seconds() {
 int main(int argc, char** argv) {
   using namespace flexrock;
   using namespace flexrock::bench;
-  if (argc != 4 && !(argc == 5 && std::string(argv[4]) == "dopri5")) {
+  const std::string variant = argc == 5 ? argv[4] : "";
+  if (argc != 4 && !(argc == 5 && (variant == "dopri5" || variant == "stepped"))) {
     std::fprintf(stderr,
-                 "usage: flexrock_run_case <a|b2|b6|c|d1|d4|d8> <rtol> <repetitions> [dopri5]\n");
+                 "usage: flexrock_run_case <a|b2|b6|c|d1|d4|d8> <rtol> <repetitions> "
+                 "[dopri5|stepped]\n");
     return 2;
   }
   const std::string name = argv[1];
@@ -40,7 +44,8 @@ int main(int argc, char** argv) {
            : name == "d1" ? case_d_oscillator(rtol)
            : name == "d8" ? case_d_cantilever(8, rtol)
                           : case_d_cantilever(4, rtol);
-  if (argc == 5) c.opt.series_rocking = false;
+  if (variant == "dopri5") c.opt.series_rocking = false;
+  if (variant == "stepped") c.opt.full_contact_walk = false;
   std::vector<double> times;
   SimulationResult r;
   for (int i = 0; i < reps; ++i) {

@@ -29,6 +29,8 @@ flexrock_add_test(flexrock_stiff_rocking_tests SOURCES unit/stiff_rocking_test.c
 flexrock_add_test(flexrock_allocation_tests SOURCES unit/no_allocation_test.cpp LABEL unit)
 flexrock_add_test(flexrock_excitation_motion_tests SOURCES unit/ground_motion_test.cpp LABEL unit)
 flexrock_add_test(flexrock_contact_propagation_tests SOURCES unit/contact_propagation_test.cpp LABEL unit)
+# also the closed-form exponential of a mode (src/sim)
+target_include_directories(flexrock_contact_propagation_tests PRIVATE ${PROJECT_SOURCE_DIR}/src)
 # the rigid body's rocking series: also one step of the internal stepper (src/sim)
 flexrock_add_test(flexrock_rocking_series_tests SOURCES unit/rocking_series_test.cpp LABEL unit)
 target_include_directories(flexrock_rocking_series_tests PRIVATE ${PROJECT_SOURCE_DIR}/src)

@@ -57,6 +57,27 @@ bool decompose_contact_matrix(const MatrixX& mu, const MatrixX& k, const MatrixX
                               ContactModes& out);
 /// The exact step of the mode (omega, damping) over tau; allocates nothing.
 void mode_step(double omega, double damping, double tau, ModeStep& out);
+/// e^{B tau} of the mode (omega, damping) in closed form (one sincos or sinh/cosh and one exp):
+/// with B = [0 w; -w -c] and k^2 = w^2 - c^2/4,
+///   e^{B tau} = e^{-c tau/2} (C(tau) I + S(tau) (B + c/2 I)),
+/// C = cos k tau, S = sin(k tau)/k (cosh, sinh(|k| tau)/|k| where k^2 < 0; 1, tau at k = 0).
+inline Eigen::Matrix2d mode_exponential(double omega, double damping, double tau) {
+  const double half = 0.5 * damping, k2 = omega * omega - half * half;
+  double cs = 1.0, sn = tau;
+  if (k2 > 0.0) {
+    const double k = std::sqrt(k2);
+    cs = std::cos(k * tau);
+    sn = std::sin(k * tau) / k;
+  } else if (k2 < 0.0) {
+    const double k = std::sqrt(-k2);
+    cs = std::cosh(k * tau);
+    sn = std::sinh(k * tau) / k;
+  }
+  const double decay = std::exp(-half * tau);
+  Eigen::Matrix2d e;
+  e << decay * (cs + sn * half), decay * sn * omega, -decay * sn * omega, decay * (cs - sn * half);
+  return e;
+}
 
 template <int N, int MaxN, class State>
 class ContactPropagator {
@@ -81,6 +102,7 @@ class ContactPropagator {
     omega_ = modes.omega;
     damp_ = modes.damping;
     h_cap_ = kMaxPhase / modes.rate;
+    rate_ = modes.rate;
     // the modal forcing per unit base acceleration, and gravity's static part
     gxm_ = -dyn.g_over_h() * (from_modal_.transpose() * dyn.psi_x()) / dyn.g();
     gym_ = -dyn.g_over_h() * (from_modal_.transpose() * dyn.psi_y());
@@ -104,10 +126,11 @@ class ContactPropagator {
     // the walk's modal coupling and its storage, sized once (a run allocates nothing)
     betam_ = from_modal_.transpose() * dyn.beta();
     gamma_norm_ = (from_modal_.transpose() * dyn.gamma() * from_modal_).norm();
-    for (Vec* v : {&wd_, &wv_, &bm_}) v->setZero(n_);
+    for (Vec* v :
+         {&wd_, &wv_, &bm_, &hom_, &slope_eta_, &acc_hom_, &dev2_, &p0d_, &p0v_, &hd_, &hv_})
+      v->setZero(n_);
     for (Vec& b : bound_) b.setZero(n_);
-    for (Piece& p : pieces_)
-      p.steps.assign(static_cast<std::size_t>((1 + kNodes) * n_), ModeStep{});
+    for (Piece& p : pieces_) p.steps.assign(static_cast<std::size_t>(kPoints * n_), ModeStep{});
     available_ = true;
   }
 
@@ -169,20 +192,25 @@ class ContactPropagator {
   const State& x0() const { return x0_; }
   const State& x1() const { return x1_; }
 
-  // ---- the record walk (docs/theory.md, "Exact propagation in full contact"): one exact update
-  // per piece of a record interval, in the modes; the energies by the Gauss nodes, kept per piece
-  // length; and bounds over the piece on the modal derivatives, which bound the excursion of the
-  // guards between the piece's ends
+  // ---- the record walk (docs/theory.md, "Walking the record"): one exact update per record
+  // interval, in the modes; the energies exactly from the interval's ends; and bounds over it on
+  // the excursion of the guards from their chord between its ends
 
-  // bounds over the last piece on |f''| of the full-contact functions, in evaluate()'s units
-  struct Curvature {
+  // bounds on |f - (its chord)| over a part of the last piece, in evaluate()'s units
+  struct Excursion {
     double fi = 0.0, fj = 0.0;  // floor reaction over M g
     double u1 = 0.0, u2 = 0.0;  // uplift functions over M g h
     double moment = 0.0;        // moment about the c.g. projection over M g h
   };
 
-  /// The longest piece of the walk [s]: the phase cap (the guards are bounded, not sampled).
-  double walk_cap() const { return h_cap_; }
+  // the longest piece, in radians of the fastest mode: the doublings of mode_step stay few (7),
+  // so a piece's update keeps the accuracy of the stepped propagation's
+  static constexpr double kWalkPhase = 64.0;
+  // the points across a piece kept for the extremes' search: tau = h k / kPoints, 0 < k < kPoints
+  static constexpr int kPoints = 8;
+
+  /// The longest piece of the walk [s] (the guards are bounded between its ends, not sampled).
+  double walk_cap() const { return kWalkPhase / rate_; }
 
   /// Starts the walk at the state x.
   void walk_start(const State& x) {
@@ -207,45 +235,55 @@ class ContactPropagator {
     g0_ = gxm_ * a0.x + gym_ * (a0.y / dyn_.g());
     g1_ = gxm_ * slope.x + gym_ * (slope.y / dyn_.g());
     const Piece& pc = piece(h, keep);
+    piece_ = &pc;
     // a piece differing from the kept length by rounding: s(h + d) = s(h) + d s'(h)
     const double d = h - pc.h;
+    double work = 0.0, loss = 0.0;
     for (int i = 0; i < n_; ++i) {
       const ModeStep& m = pc.steps[static_cast<std::size_t>(i)];
       const double g = g0_(i), g1 = g1_(i), x0 = sd0_(i), v0 = sv0_(i);
+      const double w = omega_(i), c = damp_(i);
       double sd = m.e(0, 0) * x0 + m.e(0, 1) * v0 + m.p1(0) * g + m.p2(0) * g1;
       double sv = m.e(1, 0) * x0 + m.e(1, 1) * v0 + m.p1(1) * g + m.p2(1) * g1;
       if (d != 0.0) {
-        const double w = omega_(i), dsd = w * sv, dsv = -w * sd - damp_(i) * sv + g + g1 * pc.h;
+        const double dsd = w * sv, dsv = -w * sd - c * sv + g + g1 * pc.h;
         sd += d * dsd;
         sv += d * dsv;
       }
       wd_(i) = sd;
       wv_(i) = sv;
+      // the energies exactly from the ends (docs/theory.md): s_v = (s_d/w)' and the mode's
+      // equation give int s_d, then int g s_v by parts, and the mode's energy balance
+      // d|s|^2/2 = g s_v - c s_v^2 the damping's share
+      const double wi = inv_omega_(i);
+      const double int_sd = (g * h + 0.5 * g1 * h * h - c * (sd - x0) * wi - (sv - v0)) * wi;
+      const double input = ((g + g1 * h) * sd - g * x0 - g1 * int_sd) * wi;
+      work += input;
+      if (c > 0.0) loss += input - 0.5 * ((sd * sd + sv * sv) - (x0 * x0 + v0 * v0));
       // the piece's bounds: |e^{B tau}| <= 1 (B + B^T = diag(0, -2c) <= 0), so |s| stays below
       // |s(0)| + h max|g|; each derivative of s' = B s + (0, g0 + g1 tau) multiplies by at most
       // |B| <= w + c and adds the forcing's term (docs/theory.md)
       const double gmax = std::max(std::abs(g), std::abs(g + g1 * h));
-      const double s0 = std::hypot(x0, v0) + h * gmax, b = omega_(i) + damp_(i);
+      const double s0 = std::hypot(x0, v0) + h * gmax, b = w + c;
       const double s1 = b * s0 + gmax, s2 = b * s1 + std::abs(g1), s3 = b * s2;
-      bound_[0](i) = s0 * inv_omega_(i) + std::abs(eta_static_(i));  // |eta|
-      bound_[1](i) = s0;                                             // |eta'|  <= |s|
-      bound_[2](i) = s1;                                             // |eta''| <= |s'|
+      bound_[0](i) = s0 * wi + std::abs(eta_static_(i));  // |eta|
+      bound_[1](i) = s0;                                  // |eta'|  <= |s|
+      bound_[2](i) = s1;                                  // |eta''| <= |s'|
       bound_[3](i) = s2;
       bound_[4](i) = s3;
+      // the free part: s minus the particular solution s_p = P0 + P1 tau of the linear forcing,
+      // P1 = (g1/w, 0), P0 = (g0/w - c g1/w^3, g1/w^2); its norm never grows, and eta'' is its
+      // alone: |eta - eta_p| <= hom/w, |eta''| <= |(w, c)| hom
+      p0d_(i) = (g - c * g1 * wi * wi) * wi;
+      p0v_(i) = g1 * wi * wi;
+      hd_(i) = x0 - p0d_(i);
+      hv_(i) = v0 - p0v_(i);
+      hom_(i) = std::hypot(hd_(i), hv_(i));
+      slope_eta_(i) = g1 * wi * wi;  // eta_p' = P1_d / w
+      acc_hom_(i) = std::hypot(w, c) * hom_(i);
     }
-    // the energies by 8-point Gauss-Legendre on the exact integrands, as in a step
-    double work = 0.0, loss = 0.0;
-    for (int j = 0; j < kNodes; ++j) {
-      const auto jj = static_cast<std::size_t>(j);
-      const double tau = h * kGaussX[jj], tk = pc.h * kGaussX[jj];
-      const BaseAcceleration a{a0.x + slope.x * tau, a0.y + slope.y * tau};
-      double p = 0.0, dl = 0.0;
-      node_powers(&pc.steps[static_cast<std::size_t>((1 + j) * n_)], tk, tau - tk, a, p, dl);
-      work += kGaussW[jj] * p;
-      loss += kGaussW[jj] * dl;
-    }
-    ww_ += h * work;
-    wl_ += h * loss;
+    ww_ += mh2_ * work;
+    wl_ += mh2_ * loss;
   }
 
   /// The walk's state into x: q, q_dot, input work and damping loss (the rest is left as is).
@@ -259,51 +297,86 @@ class ContactPropagator {
 
   /// q and q_dot at tau within the last piece into x, exactly (the energies are left as is).
   void walk_dense(double tau, State& x) const {
-    for (int i = 0; i < n_; ++i)
-      mode_step(omega_(i), damp_(i), tau, scratch_[static_cast<std::size_t>(i)]);
-    eval(scratch_.data(), tau, 0.0, qo_, qdo_);
+    // at a kept point of the piece length, from its steps; elsewhere computed
+    const double k = tau * kPoints / h_, kr = std::round(k);
+    if (piece_ != nullptr && std::abs(k - kr) <= 1e-9 && kr >= 1.0 && kr < kPoints) {
+      const double tk = kr * piece_->h / kPoints;
+      eval(&piece_->steps[static_cast<std::size_t>(kr) * static_cast<std::size_t>(n_)], tk,
+           tau - tk, qo_, qdo_);
+    } else {
+      // elsewhere (the extremes' search) as the particular solution plus the free part,
+      // s = P0 + P1 tau + e^{B tau} (s(0) - P0), by the closed form of e^{B tau}
+      for (int i = 0; i < n_; ++i) {
+        const Eigen::Matrix2d e = mode_exponential(omega_(i), damp_(i), tau);
+        const double sd =
+            e(0, 0) * hd_(i) + e(0, 1) * hv_(i) + p0d_(i) + g1_(i) * inv_omega_(i) * tau;
+        const double sv = e(1, 0) * hd_(i) + e(1, 1) * hv_(i) + p0v_(i);
+        eta_(i) = sd * inv_omega_(i) + eta_static_(i);
+        etad_(i) = sv;
+      }
+      qo_.noalias() = Dyn::mv(from_modal_, eta_);
+      qdo_.noalias() = Dyn::mv(from_modal_, etad_);
+    }
     x.segment(1, n_) = qo_;
     x.segment(n_ + 2, n_) = qdo_;
   }
 
-  /// Bounds over the last piece on |f''| of the floor reaction, the uplift functions and the
-  /// moment about the c.g. projection. They are quadratic in (q, q'', a) with a linear in time:
+  /// Bounds on the excursion from their chord, over any part of length w of the last piece, of the
+  /// floor reaction, the uplift functions and the moment about the c.g. projection. They are
+  /// quadratic in (q, q'', a) with a linear in time:
   ///   F_I = a_x + psi_x.q''/(g/h),  F_J = a_y + psi_y.q''/(g/h),
   ///   R(al) = (b(al) + Gamma^T q).q''/(g/h) + (-al + psi_x.q) a_y - (1 + psi_y.q) a_x
-  /// (a_x = X''/g, a_y = 1 + Y''/g, b(al) = beta - al psi_y - psi_x), so with a'' = 0
-  ///   R'' = (b.q'''' + q.Gamma q'''' + 2 q'.Gamma q''' + q''.Gamma q'')/(g/h)
-  ///         + psi_x.q'' a_y + 2 psi_x.q' a_y' - psi_y.q'' a_x - 2 psi_y.q' a_x',
-  /// each term bounded through the modes, q^(k) = phi eta^(k), by the piece's bounds.
+  /// (a_x = X''/g, a_y = 1 + Y''/g, b(al) = beta - al psi_y - psi_x). Each term is bounded by
+  /// the less of two bounds: |f''| w^2/8 (through the bounds on eta^(k); fits the slow modes) and
+  /// twice the largest value of its free part (fits the fast ones, whose curvature is large but
+  /// whose amplitude is not); the chord of a term linear in time is the term itself.
   /// `ax`, `ay`: max |a_x|, |a_y| over the piece; `dax`, `day`: |a_x'|, |a_y'| [1/s].
-  Curvature walk_curvature(double ax, double ay, double dax, double day) const {
-    auto weigh = [&](const Vec& c, int k) {
-      return c.cwiseAbs().dot(bound_[static_cast<std::size_t>(k)]);
-    };
+  Excursion walk_excursion(double w, double ax, double ay, double dax, double day) const {
+    const double w8 = 0.125 * w * w, w4 = 0.25 * w * w;
+    double fi = 0.0, fj = 0.0, rest = 0.0;
+    for (int i = 0; i < n_; ++i) {
+      const double d2 = std::min(w8 * bound_[4](i), 2.0 * acc_hom_(i));  // eta_i''
+      dev2_(i) = d2;
+      const double px = std::abs(pxm_(i)), py = std::abs(pym_(i));
+      fi += px * d2;
+      fj += py * d2;
+      // psi_x.q a_y and psi_y.q a_x, mode by mode: the particular part times a_y is quadratic
+      const double free = 2.0 * hom_(i) * inv_omega_(i), lin = std::abs(slope_eta_(i)) * w4;
+      rest +=
+          px * std::min(w8 * (bound_[2](i) * ay + 2.0 * bound_[1](i) * day), free * ay + lin * day);
+      rest +=
+          py * std::min(w8 * (bound_[2](i) * ax + 2.0 * bound_[1](i) * dax), free * ax + lin * dax);
+    }
     const double gh = dyn_.g_over_h();
-    const double x1 = weigh(pxm_, 1), x2 = weigh(pxm_, 2), x4 = weigh(pxm_, 4);
-    const double y1 = weigh(pym_, 1), y2 = weigh(pym_, 2), y4 = weigh(pym_, 4);
+    // eta.G eta'' (G = phi^T Gamma phi), eta'' being the free part's alone
     const double n0 = bound_[0].norm(), n1 = bound_[1].norm(), n2 = bound_[2].norm(),
                  n3 = bound_[3].norm(), n4 = bound_[4].norm();
-    const double quad = gamma_norm_ * (n0 * n4 + 2.0 * n1 * n3 + n2 * n2);
-    const double rest = x2 * ay + 2.0 * x1 * day + y2 * ax + 2.0 * y1 * dax;
+    const double quad = gamma_norm_ * std::min(w8 * (n0 * n4 + 2.0 * n1 * n3 + n2 * n2),
+                                               2.0 * n0 * acc_hom_.norm());
     auto moment = [&](double al) {
       bm_ = betam_ - al * pym_ - pxm_;
-      return (weigh(bm_, 4) + quad) / gh + rest;
+      return (bm_.cwiseAbs().dot(dev2_) + quad) / gh + rest;
     };
-    Curvature c;
-    c.fi = x4 / gh;
-    c.fj = y4 / gh;
-    c.u1 = moment(-dyn_.alpha1());
-    c.u2 = moment(dyn_.alpha2());
-    c.moment = moment(0.0);
-    return c;
+    Excursion e;
+    e.fi = fi / gh;
+    e.fj = fj / gh;
+    e.u1 = moment(-dyn_.alpha1());
+    e.u2 = moment(dyn_.alpha2());
+    e.moment = moment(0.0);
+    return e;
   }
 
-  /// A bound over the last piece on |q_j''|.
-  double walk_q_curvature(int j) const { return from_modal_.row(j).cwiseAbs().dot(bound_[2]); }
+  /// A bound on the excursion of q_j from its chord over any part of length w of the last piece.
+  double walk_q_excursion(int j, double w) const {
+    const double w8 = 0.125 * w * w;
+    double e = 0.0;
+    for (int i = 0; i < n_; ++i)
+      e += std::abs(from_modal_(j, i)) * std::min(w8 * bound_[2](i), 2.0 * hom_(i) * inv_omega_(i));
+    return e;
+  }
 
  private:
-  // a piece length's steps of the modes: at its end, then at the Gauss nodes
+  // a piece length's steps of the modes: at its end, then at its kept points h k / kPoints
   struct Piece {
     double h = -1.0;
     std::vector<ModeStep> steps;
@@ -318,8 +391,8 @@ class ContactPropagator {
     Piece& p = keep && pieces_used_ < kPieces ? pieces_[static_cast<std::size_t>(pieces_used_++)]
                                               : pieces_[static_cast<std::size_t>(kPieces)];
     p.h = h;
-    for (int k = 0; k <= kNodes; ++k) {
-      const double tau = k == 0 ? h : h * kGaussX[static_cast<std::size_t>(k - 1)];
+    for (int k = 0; k < kPoints; ++k) {
+      const double tau = k == 0 ? h : h * k / kPoints;
       for (int i = 0; i < n_; ++i)
         mode_step(omega_(i), damp_(i), tau, p.steps[static_cast<std::size_t>(k * n_ + i)]);
     }
@@ -495,12 +568,19 @@ class ContactPropagator {
   double t0_ = 0.0, t1_ = 0.0;
   State x0_, x1_, xn_;
   // the walk
-  Vec wd_, wv_;                            // the modal state s = (w (eta - eta_static), eta')
-  double ww_ = 0.0, wl_ = 0.0;             // input work and damping loss [J]
-  std::array<Vec, 5> bound_;               // per mode: bounds over the piece on |eta^(k)|, k = 0..4
-  Vec betam_;                              // phi^T beta
-  mutable Vec bm_;                         // scratch: phi^T b(alpha)
-  double gamma_norm_ = 0.0;                // Frobenius norm of phi^T Gamma phi (>= its 2-norm)
+  Vec wd_, wv_;                   // the modal state s = (w (eta - eta_static), eta')
+  double ww_ = 0.0, wl_ = 0.0;    // input work and damping loss [J]
+  std::array<Vec, 5> bound_;      // per mode: bounds over the piece on |eta^(k)|, k = 0..4
+  Vec hom_;                       // per mode: |s - s_p|, the free part's norm at the start
+  Vec slope_eta_;                 // per mode: eta_p', the particular part's slope
+  Vec acc_hom_;                   // per mode: the bound |(w, c)| hom on |eta''|
+  Vec p0d_, p0v_, hd_, hv_;       // per mode: P0, and s(0) - P0 (the free part at the start)
+  mutable Vec dev2_;              // scratch: per mode, the excursion bound of eta''
+  const Piece* piece_ = nullptr;  // the last piece's kept steps
+  double rate_ = 0.0;             // [1/s] the largest |eigenvalue|
+  Vec betam_;                     // phi^T beta
+  mutable Vec bm_;                // scratch: phi^T b(alpha)
+  double gamma_norm_ = 0.0;       // Frobenius norm of phi^T Gamma phi (>= its 2-norm)
   std::array<Piece, kPieces + 1> pieces_;  // kept piece lengths, then one computed afresh
   int pieces_used_ = 0;
 };
@@ -522,16 +602,17 @@ class ContactPropagator<0, MaxN, State> {
   template <class System>
   void refresh_derivative(System&&, double) {}
   void dense(double, State&) const {}
-  struct Curvature {
+  struct Excursion {
     double fi = 0.0, fj = 0.0, u1 = 0.0, u2 = 0.0, moment = 0.0;
   };
+  static constexpr int kPoints = 8;
   double walk_cap() const { return 0.0; }
   void walk_start(const State&) {}
   void walk_piece(double, BaseAcceleration, BaseAcceleration, bool = true) {}
   void walk_state(State&) const {}
   void walk_dense(double, State&) const {}
-  Curvature walk_curvature(double, double, double, double) const { return {}; }
-  double walk_q_curvature(int) const { return 0.0; }
+  Excursion walk_excursion(double, double, double, double, double) const { return {}; }
+  double walk_q_excursion(int, double) const { return 0.0; }
   double t0() const { return 0.0; }
   double t1() const { return 0.0; }
   const State& x0() const { return x_; }

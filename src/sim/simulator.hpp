@@ -9,7 +9,9 @@
 
 #include <algorithm>
 #include <array>
+#include <boost/math/tools/minima.hpp>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <limits>
 #include <numbers>
@@ -156,14 +158,13 @@ class Simulator final : private GuardProbe {
   double scan_record(double t);
   bool can_walk(double t) const;
   bool advance_walk(double& t, State& x);
-  bool guards_clear(const GuardSample& sa, const GuardSample& sb,
-                    const typename ContactPropagator<N, MaxN, State>::Curvature& c, double h) const;
+  using Excursion = typename ContactPropagator<N, MaxN, State>::Excursion;
+  bool guards_clear(const GuardSample& sa, const GuardSample& sb, const Excursion& e) const;
   int walk_search(double tp0, double a, double b, const GuardSample& sa, const GuardSample& sb,
-                  const typename ContactPropagator<N, MaxN, State>::Curvature& c, int depth,
-                  double& a_out, double& b_out);
+                  int depth, double& a_out, double& b_out);
   void emit_walk_rows(double tp0, double tp1);
   void locate_extremes(double tp0, double h, const GuardSample& sa, const GuardSample& sb,
-                       const typename ContactPropagator<N, MaxN, State>::Curvature& c);
+                       const Excursion& e);
   bool step_guards(int samples, double t1, double& t_hit, int& slot_hit);
   void state_at(double t, State& out) const;
 
@@ -270,6 +271,7 @@ class Simulator final : private GuardProbe {
   double step_stop_ = std::numeric_limits<double>::infinity();
   std::vector<int> wanted_;                    // the walk's extremes search: the quantities sought
   std::vector<double> best_, best_at_;         // their largest values found, and where [s]
+  std::array<double, 4> walk_forcing_{};       // the piece's max |a_x|, |a_y|, |a_x'|, |a_y'|
   double still_t1_ = 0.0;                      // [s] end of the span checked last while still
   std::array<bool, kMaxGuards> zero_start_{};  // guards known to turn positive from zero
   std::array<double, 2> overturn_limit_{};     // [rad] on edge 1 (theta > 0) and edge 2
@@ -934,14 +936,15 @@ bool Simulator<N, MaxN>::can_walk(double t) const {
   return t >= ts.front() && t < ts.back();
 }
 
-// The walk: one exact update per piece (a record interval, or an equal part of it within the
-// phase cap), with the guards at its ends from evaluate(). The guards are quadratic in the modal
-// state and linear in the base acceleration, and the piece bounds their second derivative
-// (ContactPropagator::walk_curvature); with |f''| <= M on [0, h], f - (its chord) vanishes at
-// both ends, so f >= min(f(0), f(h)) - M h^2/8 throughout. Where that stays positive for every
-// guard no crossing lies in the piece; else the walk hands its record interval to the stepped
-// propagation, which samples and locates the events there. The extremes are located the same
-// way: a piece whose bound could raise one is searched (locate_extremes).
+// The walk: one exact update per piece (a record interval, or an equal part of it within
+// ContactPropagator::kWalkPhase of the fastest mode), with the guards at its ends from
+// evaluate(). The guards are quadratic in the modal state and linear in the base acceleration,
+// and the piece bounds their excursion E from the chord between its ends
+// (ContactPropagator::walk_excursion), so f >= min(f(0), f(h)) - E throughout. Where that stays
+// positive for every guard no crossing lies in the piece; else the piece is halved until the
+// bound clears or a guard is found <= 0, and the stepped propagation locates the crossing there.
+// The extremes are located the same way: a piece whose bound could raise one is searched
+// (locate_extremes).
 template <int N, int MaxN>
 bool Simulator<N, MaxN>::advance_walk(double& t, State& x) {
   const std::vector<double>& ts = motion_.times();
@@ -981,15 +984,16 @@ bool Simulator<N, MaxN>::advance_walk(double& t, State& x) {
       prop_.walk_state(xe_);
       evaluate(tp1, xe_, sb);
       // the guards' excursion between the piece's ends
-      const double ax = std::max(std::abs(a0.x), std::abs(a0.x + slope.x * h)) / g;
-      const double ay =
-          std::max(std::abs(1.0 + a0.y / g), std::abs(1.0 + (a0.y + slope.y * h) / g));
-      const auto c = prop_.walk_curvature(ax, ay, std::abs(slope.x) / g, std::abs(slope.y) / g);
-      if (!guards_clear(sa, sb, c, h)) {
+      walk_forcing_ = {std::max(std::abs(a0.x), std::abs(a0.x + slope.x * h)) / g,
+                       std::max(std::abs(1.0 + a0.y / g), std::abs(1.0 + (a0.y + slope.y * h) / g)),
+                       std::abs(slope.x) / g, std::abs(slope.y) / g};
+      const auto& f = walk_forcing_;
+      const Excursion c = prop_.walk_excursion(h, f[0], f[1], f[2], f[3]);
+      if (!guards_clear(sa, sb, c)) {
         // a crossing may lie in this piece: halve it until the bound clears every part or a
         // guard is found <= 0 at a part's end
         double ba = 0.0, bb = h;
-        const int found = walk_search(tp0, 0.0, h, sa, sb, c, 40, ba, bb);
+        const int found = walk_search(tp0, 0.0, h, sa, sb, 40, ba, bb);
         if (found != 0) {
           scan_index_ = i;
           fine_until_ = tb;
@@ -1004,7 +1008,7 @@ bool Simulator<N, MaxN>::advance_walk(double& t, State& x) {
             evaluate(t, x, s0_);
             // the extremes before the bracket, located as in a whole piece
             xe_ = x;
-            locate_extremes(tp0, ba, sa, s0_, c);
+            locate_extremes(tp0, ba, sa, s0_, prop_.walk_excursion(ba, f[0], f[1], f[2], f[3]));
           } else {
             x = xw_;
             s0_ = sa;
@@ -1033,21 +1037,20 @@ bool Simulator<N, MaxN>::advance_walk(double& t, State& x) {
   return true;
 }
 
-// the full-contact guards over a part of the walk's piece of length h with values sa, sb at its
-// ends cannot cross there: each stays above min(f(a), f(b)) - M h^2/8 > 0 (M: its |f''| bound)
+// the full-contact guards over a part of the walk's piece with values sa, sb at its ends cannot
+// cross there: each stays above min(f(a), f(b)) - E > 0 (E: its excursion bound on that part)
 template <int N, int MaxN>
-bool Simulator<N, MaxN>::guards_clear(
-    const GuardSample& sa, const GuardSample& sb,
-    const typename ContactPropagator<N, MaxN, State>::Curvature& c, double h) const {
+bool Simulator<N, MaxN>::guards_clear(const GuardSample& sa, const GuardSample& sb,
+                                      const Excursion& e) const {
   constexpr ContactMode m = ContactMode::kFullContact;
-  const double w = 0.125 * h * h, mu = opt_.friction_coefficient;
-  auto clear = [&](std::size_t j, double curv) {
-    const double lo = std::min(sa.v[j], sb.v[j]) - curv * w;
+  const double mu = opt_.friction_coefficient;
+  auto clear = [&](std::size_t j, double excursion) {
+    const double lo = std::min(sa.v[j], sb.v[j]) - excursion;
     return lo > 1e-12 * (1.0 + std::abs(sa.v[j]) + std::abs(sb.v[j]));
   };
-  return clear(kSlot<m, Guard::kUpliftEdge1>, c.u1) && clear(kSlot<m, Guard::kUpliftEdge2>, c.u2) &&
-         clear(kSlot<m, Guard::kLiftOff>, c.fj) &&
-         (!std::isfinite(mu) || clear(kSlot<m, Guard::kFrictionLimit>, mu * c.fj + c.fi));
+  return clear(kSlot<m, Guard::kUpliftEdge1>, e.u1) && clear(kSlot<m, Guard::kUpliftEdge2>, e.u2) &&
+         clear(kSlot<m, Guard::kLiftOff>, e.fj) &&
+         (!std::isfinite(mu) || clear(kSlot<m, Guard::kFrictionLimit>, mu * e.fj + e.fi));
 }
 
 // [a, b] of the walk's piece from tp0 (guards sa, sb at its ends, every one > 0 at a), halved
@@ -1055,10 +1058,10 @@ bool Simulator<N, MaxN>::guards_clear(
 // its start a_out (1), or `depth` halvings leave a part unresolved (2, a grazing guard)
 template <int N, int MaxN>
 int Simulator<N, MaxN>::walk_search(double tp0, double a, double b, const GuardSample& sa,
-                                    const GuardSample& sb,
-                                    const typename ContactPropagator<N, MaxN, State>::Curvature& c,
-                                    int depth, double& a_out, double& b_out) {
-  if (guards_clear(sa, sb, c, b - a)) return 0;
+                                    const GuardSample& sb, int depth, double& a_out,
+                                    double& b_out) {
+  const auto& f = walk_forcing_;
+  if (guards_clear(sa, sb, prop_.walk_excursion(b - a, f[0], f[1], f[2], f[3]))) return 0;
   const ModeSpec& spec = mode_spec(mode_);
   for (int j = 0; j < spec.count; ++j) {
     if (!(sb.v[static_cast<std::size_t>(j)] > 0.0)) {
@@ -1077,9 +1080,9 @@ int Simulator<N, MaxN>::walk_search(double tp0, double a, double b, const GuardS
   xr_ = xw_;
   prop_.walk_dense(mid, xr_);
   evaluate(tp0 + mid, xr_, sm);
-  const int left = walk_search(tp0, a, mid, sa, sm, c, depth - 1, a_out, b_out);
+  const int left = walk_search(tp0, a, mid, sa, sm, depth - 1, a_out, b_out);
   if (left != 0) return left;
-  return walk_search(tp0, mid, b, sm, sb, c, depth - 1, a_out, b_out);
+  return walk_search(tp0, mid, b, sm, sb, depth - 1, a_out, b_out);
 }
 
 // the rows due in the walk's piece [tp0, tp1] (state xw_ at tp0, xe_ at tp1): one at the piece's
@@ -1102,16 +1105,14 @@ void Simulator<N, MaxN>::emit_walk_rows(double tp0, double tp1) {
   }
 }
 
-// the extremes the piece [tp0, tp0 + h] could raise between its ends (by the curvature bounds
-// `c`), located: the exact solution at 8 points across the piece, then a golden-section search
-// about the largest of each such quantity; every point searched is observed, so the extremes stay
-// values the motion reaches
+// the extremes the piece [tp0, tp0 + h] could raise between its ends (by the excursion bounds
+// `e`), located: the exact solution at the piece's kept points, then Brent's search about the
+// largest of each such quantity; every point searched is observed, so the extremes stay values
+// the motion reaches
 template <int N, int MaxN>
-void Simulator<N, MaxN>::locate_extremes(
-    double tp0, double h, const GuardSample& sa, const GuardSample& sb,
-    const typename ContactPropagator<N, MaxN, State>::Curvature& c) {
+void Simulator<N, MaxN>::locate_extremes(double tp0, double h, const GuardSample& sa,
+                                         const GuardSample& sb, const Excursion& e) {
   const Extremes& ex = res_.extremes;
-  const double w = 0.125 * h * h;
   const double mg = dyn_.mass() * dyn_.g(), mgh = mg * dyn_.height();
   // which quantities might exceed their extreme within the piece: -1 none, j < n: q_j,
   // n: shear, n + 1: moment, n + 2: friction demand
@@ -1119,16 +1120,16 @@ void Simulator<N, MaxN>::locate_extremes(
   int count = 0;
   for (int j = 0; j < n_; ++j) {
     const double top =
-        std::max(std::abs(xw_(iq() + j)), std::abs(xe_(iq() + j))) + w * prop_.walk_q_curvature(j);
+        std::max(std::abs(xw_(iq() + j)), std::abs(xe_(iq() + j))) + prop_.walk_q_excursion(j, h);
     if (top > ex.max_abs_q(j)) wanted[static_cast<std::size_t>(count++)] = j;
   }
-  const double fi_top = std::max(std::abs(sa.fi), std::abs(sb.fi)) + w * c.fi;
+  const double fi_top = std::max(std::abs(sa.fi), std::abs(sb.fi)) + e.fi;
   if (mg * fi_top > ex.max_base_shear) wanted[static_cast<std::size_t>(count++)] = n_;
-  if (mgh * (std::max(std::abs(sa.moment), std::abs(sb.moment)) + w * c.moment) >
+  if (mgh * (std::max(std::abs(sa.moment), std::abs(sb.moment)) + e.moment) >
       ex.max_overturning_moment)
     wanted[static_cast<std::size_t>(count++)] = n_ + 1;
-  const double fj_lo = std::min(sa.fj, sb.fj) - w * c.fj;
-  const double fj_hi = std::max(sa.fj, sb.fj) + w * c.fj;
+  const double fj_lo = std::min(sa.fj, sb.fj) - e.fj;
+  const double fj_hi = std::max(sa.fj, sb.fj) + e.fj;
   if (fj_hi >= kPressingFraction &&
       !(fj_lo >= kPressingFraction && fi_top / fj_lo <= ex.max_friction_demand))
     wanted[static_cast<std::size_t>(count++)] = n_ + 2;
@@ -1145,7 +1146,7 @@ void Simulator<N, MaxN>::locate_extremes(
     return s.fj >= kPressingFraction ? std::abs(s.fi) / s.fj : 0.0;
   };
   xr_ = xw_;
-  constexpr int kPoints = 8;
+  constexpr int kPoints = ContactPropagator<N, MaxN, State>::kPoints;
   std::vector<double>& best = best_;
   std::vector<double>& at = best_at_;
   std::fill(best.begin(), best.end(), -1.0);
@@ -1159,29 +1160,15 @@ void Simulator<N, MaxN>::locate_extremes(
       }
     }
   }
-  // golden-section search on [at - h/8, at + h/8] for each quantity
-  constexpr double kInv = 0.6180339887498949;
+  // Brent's search on [at - h/kPoints, at + h/kPoints] for each quantity, to half the digits in
+  // time: a smooth maximum's value is then found to the last digits
   for (int q = 0; q < count; ++q) {
     const int k = wanted[static_cast<std::size_t>(q)];
-    double lo = std::max(0.0, at[static_cast<std::size_t>(q)] - h / kPoints);
-    double hi = std::min(h, at[static_cast<std::size_t>(q)] + h / kPoints);
-    double x1 = hi - kInv * (hi - lo), x2 = lo + kInv * (hi - lo);
-    double f1 = value(k, x1), f2 = value(k, x2);
-    for (int it = 0; it < 40 && hi - lo > 1e-12 * h; ++it) {
-      if (f1 < f2) {
-        lo = x1;
-        x1 = x2;
-        f1 = f2;
-        x2 = lo + kInv * (hi - lo);
-        f2 = value(k, x2);
-      } else {
-        hi = x2;
-        x2 = x1;
-        f2 = f1;
-        x1 = hi - kInv * (hi - lo);
-        f1 = value(k, x1);
-      }
-    }
+    const double lo = std::max(0.0, at[static_cast<std::size_t>(q)] - h / kPoints);
+    const double hi = std::min(h, at[static_cast<std::size_t>(q)] + h / kPoints);
+    std::uintmax_t iterations = 40;
+    boost::math::tools::brent_find_minima([&](double tau) { return -value(k, tau); }, lo, hi, 16,
+                                          iterations);
   }
 }
 

@@ -6,6 +6,7 @@
 #include <Eigen/Core>
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <random>
 #include <unsupported/Eigen/MatrixFunctions>
 #include <vector>
@@ -13,6 +14,7 @@
 #include "flexrock/core/error.hpp"
 #include "flexrock/model/builders.hpp"
 #include "flexrock/sim/simulate.hpp"
+#include "sim/contact_propagator.hpp"
 #include "support/bodies.hpp"
 
 namespace flexrock {
@@ -414,6 +416,8 @@ SimulationResult run(const Body& body, const GroundMotion& m, int path, double o
 
 void compare_full_contact(const Body& body, const SimulationResult& wk, const SimulationResult& st,
                           const SimulationResult& in);
+void compare_walk_with_steps(const Body& body, const SimulationResult& wk,
+                             const SimulationResult& st);
 
 TEST(FullContactWalk, MatchesTheSteppedPathAndTheTightIntegration) {
   // below uplift and through it; uniform records and uneven ones (more distinct intervals than
@@ -459,26 +463,161 @@ void compare_full_contact(const Body& body, const SimulationResult& wk, const Si
   // the extremes: located by the walk, sampled by the stepped path (so never above the walk's
   // beyond rounding); the integration's within its sampling's reach
   const double qs = in.extremes.max_abs_q.maxCoeff();
-  for (int i = 0; i < n; ++i) {
-    EXPECT_GE(wk.extremes.max_abs_q(i), st.extremes.max_abs_q(i) - 1e-12 * qs);
+  for (int i = 0; i < n; ++i)
     EXPECT_NEAR(wk.extremes.max_abs_q(i), in.extremes.max_abs_q(i), 1e-3 * qs);
-  }
+  compare_walk_with_steps(body, wk, st);
+  const double es = in.energy.scale;
+  EXPECT_NEAR(wk.energy.input_work, in.energy.input_work, 1e-6 * es);
+  EXPECT_NEAR(wk.energy.damping_loss, in.energy.damping_loss, 1e-6 * es);
+}
+
+// the walk against the stepped path over a full-contact phase: its located extremes never below
+// the sampled ones beyond rounding, the same rows, the same energies
+void compare_walk_with_steps(const Body& body, const SimulationResult& wk,
+                             const SimulationResult& st) {
+  const double qs = st.extremes.max_abs_q.maxCoeff();
+  for (int i = 0; i < body.modes(); ++i)
+    EXPECT_GE(wk.extremes.max_abs_q(i), st.extremes.max_abs_q(i) - 1e-12 * qs);
   const double mg = body.params().mass * g;
   EXPECT_GE(wk.extremes.max_base_shear, st.extremes.max_base_shear - 1e-12 * mg);
   EXPECT_GE(wk.extremes.max_overturning_moment,
             st.extremes.max_overturning_moment - 1e-12 * mg * body.params().height);
   EXPECT_GE(wk.extremes.max_friction_demand, st.extremes.max_friction_demand - 1e-12);
-  // the histories and the energies
   ASSERT_EQ(wk.history.size(), st.history.size());
   double worst = 0.0;
   for (std::size_t k = 0; k < wk.history.q.size(); ++k)
     worst = std::max(worst, std::abs(wk.history.q[k] - st.history.q[k]));
   EXPECT_LT(worst, 1e-9 * qs);
-  const double es = in.energy.scale;
+  const double es = st.energy.scale;
   EXPECT_NEAR(wk.energy.input_work, st.energy.input_work, 1e-9 * es);
   EXPECT_NEAR(wk.energy.damping_loss, st.energy.damping_loss, 1e-9 * es);
-  EXPECT_NEAR(wk.energy.input_work, in.energy.input_work, 1e-6 * es);
-  EXPECT_NEAR(wk.energy.damping_loss, in.energy.damping_loss, 1e-6 * es);
+}
+
+TEST(FullContactWalk, ClosedFormExponentialOfAModeIsTheTaylorStepsAndPadesOne) {
+  // the walk's dense output between kept points takes e^{B tau} in closed form; the steps take it
+  // by Taylor series and doubling, Eigen by Pade approximation and squaring. Under-, critically
+  // and over-damped modes, phases from 1e-3 to 60 rad.
+  for (const auto& [w, c] : std::vector<std::pair<double, double>>{
+           {10.0, 0.0}, {10.0, 0.4}, {10.0, 20.0}, {10.0, 50.0}, {6000.0, 240.0}}) {
+    for (double tau : {1e-4, 0.01, 0.3, 0.01 * 6000.0 / w}) {
+      detail::ModeStep step;
+      detail::mode_step(w, c, tau, step);
+      Eigen::Matrix2d b;
+      b << 0.0, w, -w, -c;
+      const Eigen::Matrix2d pade = (b * tau).exp();
+      const Eigen::Matrix2d closed = detail::mode_exponential(w, c, tau);
+      SCOPED_TRACE("w = " + std::to_string(w) + ", c = " + std::to_string(c) +
+                   ", tau = " + std::to_string(tau));
+      EXPECT_LT((closed - step.e).cwiseAbs().maxCoeff(), 1e-13);
+      EXPECT_LT((closed - pade).cwiseAbs().maxCoeff(), 1e-13);
+    }
+  }
+}
+
+TEST(FullContactWalk, ExcursionBoundsHoldAtEveryPointOfRandomPieces) {
+  // the walk's claim itself: over a piece, each full-contact function (floor reaction, uplift
+  // functions, moment) and each q_j stays within the bound of its chord between the piece's ends.
+  // Random coupled bodies (slow to stiff modes), random states and linear forcing; the functions
+  // by Dynamics at 4001 points of the exact solution.
+  using Dyn = Dynamics<Eigen::Dynamic, 16>;
+  using State = Eigen::Matrix<double, Eigen::Dynamic, 1, Eigen::ColMajor, 64, 1>;
+  std::mt19937 rng(77u);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  int tight = 0;
+  for (int trial = 0; trial < 40; ++trial) {
+    const int n = 1 + trial % 3;
+    std::vector<double> hz;
+    for (int i = 0; i < n; ++i) hz.push_back(std::pow(10.0, 0.3 + 2.4 * (0.5 + 0.5 * u(rng))));
+    std::sort(hz.begin(), hz.end());
+    BodyParameters p = test::random_coupled(hz, 500u + static_cast<unsigned>(trial), 0.02).params();
+    p.damping.kind = DampingKind::kModal;
+    p.damping.modal_ratios = VectorX::Constant(n, 0.5 * (0.5 + 0.5 * u(rng)) * 0.2);
+    const Body body(p);
+    const Dyn dyn(body);
+    const GroundMotion motion = random_record(1u, 0.1, 1.0, true);
+    detail::ContactPropagator<Eigen::Dynamic, 16, State> prop(dyn, motion, 4, 0.01, true);
+    ASSERT_TRUE(prop.available());
+    State x = State::Zero(2 * n + 11);
+    const VectorX q0 = body.static_deformation();
+    for (int i = 0; i < n; ++i) {
+      x(1 + i) = q0(i) * (1.0 + 0.5 * u(rng));
+      x(n + 2 + i) = 0.05 * u(rng) * std::abs(q0(i)) * 2.0 * std::numbers::pi *
+                     hz[static_cast<std::size_t>(i)];
+    }
+    const double h = 0.002 + 0.018 * (0.5 + 0.5 * u(rng));
+    const BaseAcceleration a0{0.3 * g * u(rng), 0.2 * g * u(rng)};
+    const BaseAcceleration slope{20.0 * g * u(rng), 10.0 * g * u(rng)};
+    prop.walk_start(x);
+    prop.walk_piece(h, a0, slope, false);
+    const double ax = std::max(std::abs(a0.x), std::abs(a0.x + slope.x * h)) / g;
+    const double ay = std::max(std::abs(1.0 + a0.y / g), std::abs(1.0 + (a0.y + slope.y * h) / g));
+    const auto e = prop.walk_excursion(h, ax, ay, std::abs(slope.x) / g, std::abs(slope.y) / g);
+    // the functions at tau: F_I, F_J, U1, U2, the moment, then q
+    auto functions = [&](double tau) {
+      State xs = x;
+      prop.walk_dense(tau, xs);
+      const Dyn::Vec q = xs.segment(1, n), qd = xs.segment(n + 2, n);
+      const BaseAcceleration a{a0.x + slope.x * tau, a0.y + slope.y * tau};
+      Dyn::Vec qdd(n);
+      dyn.full_contact_acceleration(q, qd, a, qdd);
+      const Eigen::Vector2d r = dyn.full_contact_reaction(qdd, a);
+      Eigen::Vector2d up;
+      const double moment = dyn.contact_moments(q, qdd, a, up);
+      VectorX f(5 + n);
+      f << r(0), r(1), up(0), up(1), moment, q;
+      return f;
+    };
+    const VectorX f0 = functions(0.0), f1 = functions(h);
+    VectorX bound(5 + n);
+    bound << e.fi, e.fj, e.u1, e.u2, e.moment, VectorX::Zero(n);
+    for (int j = 0; j < n; ++j) bound(5 + j) = prop.walk_q_excursion(j, h);
+    VectorX worst = VectorX::Zero(5 + n);
+    for (int k = 1; k < 4000; ++k) {
+      const double tau = h * k / 4000.0;
+      const VectorX chord = f0 + (f1 - f0) * (tau / h);
+      worst = worst.cwiseMax((functions(tau) - chord).cwiseAbs());
+    }
+    SCOPED_TRACE("trial " + std::to_string(trial));
+    for (int j = 0; j < 5 + n; ++j) {
+      EXPECT_LE(worst(j), bound(j) * (1.0 + 1e-9) + 1e-14) << "function " << j;
+      if (worst(j) > 0.05 * bound(j)) ++tight;
+    }
+  }
+  // and the bounds are not vacuous: most are within a factor 20 of the true excursion
+  EXPECT_GT(tight, 40 * 6 / 2);
+}
+
+TEST(FullContactWalk, StiffModesWalkedAWholeIntervalAtATimeMatchTheSteppedPath) {
+  // modes up to 500 Hz: 31 rad of the fastest mode's phase per 10 ms piece of the walk (20 steps
+  // of the stepped path, whose phase cap is 1.5 rad). The guards' bound then takes the fast
+  // modes by their amplitude, not their curvature; the energies come from the pieces' ends.
+  for (int n : {2, 3}) {
+    for (double amplitude : {0.02, 0.6}) {
+      const unsigned seed = 4100u + static_cast<unsigned>(n) + (amplitude > 0.1 ? 7u : 0u);
+      std::vector<double> hz{3.0, 500.0};
+      if (n == 3) hz = {1.5, 40.0, 500.0};
+      BodyParameters p = test::random_coupled(hz, seed).params();
+      p.damping.kind = DampingKind::kModal;
+      p.damping.modal_ratios = VectorX::LinSpaced(n, 0.02, 0.05);
+      const Body body(p);
+      const GroundMotion m = random_record(seed, amplitude, 3.0, true);
+      SCOPED_TRACE("n = " + std::to_string(n) + ", amplitude " + std::to_string(amplitude));
+      const SimulationResult wk = walk::run(body, m, 0, 0.0137), st = walk::run(body, m, 1, 0.0137);
+      ASSERT_EQ(wk.status, st.status);
+      EXPECT_NEAR(wk.extremes.first_uplift_time, st.extremes.first_uplift_time, 1e-12);
+      EXPECT_EQ(wk.extremes.first_uplift_edge, st.extremes.first_uplift_edge);
+      const double t_end =
+          st.extremes.first_uplift_time > 0.0 ? st.extremes.first_uplift_time - 1e-6 : -1.0;
+      const SimulationResult wkc = walk::run(body, m, 0, 0.0137, {}, t_end),
+                             stc = walk::run(body, m, 1, 0.0137, {}, t_end);
+      // below uplift, one piece per record interval against ~20 steps
+      if (amplitude < 0.1) {
+        ASSERT_EQ(st.extremes.first_uplift_time, -1.0);
+        EXPECT_LT(wkc.steps * 10, stc.steps);
+      }
+      compare_walk_with_steps(body, wkc, stc);
+    }
+  }
 }
 
 TEST(FullContactWalk, LocatedExtremesBoundEverySampleOfTheExactSolution) {

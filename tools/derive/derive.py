@@ -930,6 +930,57 @@ def walk_bound_checks(n=2):
     return out
 
 
+def walk_exact_checks():
+    """The record walk's exact pieces (docs/theory.md, "Walking the record"): the particular
+    solution of a mode under linear forcing, the closed form of e^{B tau}, the energies of a piece
+    from its ends alone, and the excursion of a quadratic from its chord."""
+    out = {}
+    w, c, g0, g1, tau, h = sp.symbols('omega c g0 g1 tau h', positive=True)
+    B = sp.Matrix([[0, w], [-w, -c]])
+    e2 = sp.Matrix([0, 1])
+    # s_p = P0 + P1 tau solves s' = B s + e2 (g0 + g1 tau), and eta_p'' = (s_p')_v ' = 0
+    P1 = sp.Matrix([g1 / w, 0])
+    P0 = sp.Matrix([g0 / w - c * g1 / w ** 3, g1 / w ** 2])
+    sp_ = P0 + P1 * tau
+    out['walk_particular'] = all(is_zero(e) for e in (sp_.diff(tau) - B * sp_ - e2 * (g0 + g1 * tau)))
+    out['walk_particular_no_acceleration'] = is_zero(sp_[1].diff(tau, 1))
+    # e^{B tau} = e^{-c tau/2} (cos k tau I + sin(k tau)/k (B + c/2 I)), k^2 = w^2 - c^2/4: E(0) = I
+    # and E' = B E (k > 0; with cosh/sinh for k^2 < 0 the same algebra holds with k -> i k)
+    k = sp.symbols('k', positive=True)
+    Bk = B.subs(w, sp.sqrt(k ** 2 + c ** 2 / 4))
+    for name, (cs, sn) in {'under': (sp.cos(k * tau), sp.sin(k * tau) / k),
+                           'over': (sp.cosh(k * tau), sp.sinh(k * tau) / k)}.items():
+        Bn = Bk if name == 'under' else B.subs(w, sp.sqrt(c ** 2 / 4 - k ** 2))
+        E = sp.exp(-c * tau / 2) * (cs * sp.eye(2) + sn * (Bn + c / 2 * sp.eye(2)))
+        out['walk_exponential_' + name] = all(sp.simplify(e) == 0 for e in (E.diff(tau) - Bn * E)) \
+            and all(sp.simplify(e) == 0 for e in (E.subs(tau, 0) - sp.eye(2)))
+    Ecrit = sp.exp(-c * tau / 2) * (sp.eye(2) + tau * (B.subs(w, c / 2) + c / 2 * sp.eye(2)))
+    out['walk_exponential_critical'] = all(sp.simplify(e) == 0 for e in
+                                           (Ecrit.diff(tau) - B.subs(w, c / 2) * Ecrit))
+    # the energies from the ends: along any solution (sd, sv) of the mode's equations, the
+    # engine's closed forms have the integrands' derivatives
+    sd, sv = sp.Function('sd')(tau), sp.Function('sv')(tau)
+    sd0, sv0 = sp.symbols('sd0 sv0')
+    g = g0 + g1 * tau
+    ode = {sd.diff(tau): w * sv, sv.diff(tau): -w * sd - c * sv + g}
+    int_sd = (g0 * tau + g1 * tau ** 2 / 2 - c * (sd - sd0) / w - (sv - sv0)) / w
+    inp = (g * sd - g0 * sd0 - g1 * int_sd) / w
+    loss = inp - sp.Rational(1, 2) * ((sd ** 2 + sv ** 2) - (sd0 ** 2 + sv0 ** 2))
+    d = lambda e: e.diff(tau).subs(ode)
+    out['walk_energy_int_sd'] = is_zero(d(int_sd) - sd)
+    out['walk_energy_input'] = is_zero(d(inp) - g * sv)
+    out['walk_energy_loss'] = is_zero(d(loss) - c * sv ** 2)
+    at0 = {sd: sd0, sv: sv0}
+    out['walk_energy_zero_at_start'] = all(is_zero(e.subs(tau, 0).subs(at0).subs(
+        {sp.Function('sd')(0): sd0, sp.Function('sv')(0): sv0})) for e in (int_sd, inp, loss))
+    # a quadratic's excursion from its chord on [0, h] is |its tau^2 coefficient| h^2/4
+    a2 = sp.symbols('a2')
+    dev = a2 * tau ** 2 - a2 * h * tau
+    out['walk_quadratic_excursion'] = is_zero(dev.subs(tau, h / 2) + a2 * h ** 2 / 4) and \
+        is_zero(dev.diff(tau).subs(tau, h / 2))
+    return out
+
+
 def symbolic_checks(nlist, verbose=False, flight_n=2):
     allres = {}
     gens = {}
@@ -2887,6 +2938,8 @@ def main():
     sres['rigid_friction'] = rres
     sres['walk_bound'] = walk_bound_checks()
     print('  symbolic record-walk bound: %s' % sres['walk_bound'], file=sys.stderr)
+    sres['walk_exact'] = walk_exact_checks()
+    print('  symbolic record-walk pieces: %s' % sres['walk_exact'], file=sys.stderr)
     print('  symbolic rigid block with friction: %s' % rres, file=sys.stderr)
     sres['rocking_series'] = derive_rocking_series()
     print('  rigid rocking by its Taylor series: %s' % sres['rocking_series'], file=sys.stderr)

@@ -146,12 +146,11 @@ struct SimulationOptions {
   // factor on that motion's rate where the switch is decided (tests: the switch changes the
   // cost, not the answer)
   double stiff_switch_scale = 1.0;
-  // with exact_full_contact: the record is walked one exact update per sample, the guards checked
-  // between samples by a bound on their excursion (docs/theory.md, "Exact propagation in full
-  // contact"); false (the default): every step is sampled at event_samples points. Off by default
-  // while the walk's search for the extremes between samples costs more than the sampled steps
-  // save (case d, n = 1: 6.2 ms against 4.2 ms)
-  bool full_contact_walk = false;
+  // with exact_full_contact, under a sampled record: the record is walked one exact update per
+  // sample interval, the guards checked between samples by a bound on their excursion and the
+  // extremes located there (docs/theory.md, "Walking the record"); false: every step of the
+  // exact propagation is sampled at event_samples points, within a phase cap of the fastest mode
+  bool full_contact_walk = true;
   // a rigid body's rocking under a sampled record, a pulse of sinusoids (GroundMotion::sinusoids)
   // or none is stepped by the Taylor series of its motion (docs/theory.md, "Rocking of a rigid body
   // by its Taylor series"); false: by DOPRI5
