@@ -126,8 +126,7 @@ class ContactPropagator {
     // the walk's modal coupling and its storage, sized once (a run allocates nothing)
     betam_ = from_modal_.transpose() * dyn.beta();
     gamma_norm_ = (from_modal_.transpose() * dyn.gamma() * from_modal_).norm();
-    for (Vec* v :
-         {&wd_, &wv_, &bm_, &hom_, &slope_eta_, &acc_hom_, &dev2_, &p0d_, &p0v_, &hd_, &hv_})
+    for (Vec* v : {&wd_, &wv_, &bm_, &hom_, &acc_hom_, &dev2_, &p0d_, &p0v_, &hd_, &hv_})
       v->setZero(n_);
     for (Vec& b : bound_) b.setZero(n_);
     for (Piece& p : pieces_) p.steps.assign(static_cast<std::size_t>(kPoints * n_), ModeStep{});
@@ -279,7 +278,6 @@ class ContactPropagator {
       hd_(i) = x0 - p0d_(i);
       hv_(i) = v0 - p0v_(i);
       hom_(i) = std::hypot(hd_(i), hv_(i));
-      slope_eta_(i) = g1 * wi * wi;  // eta_p' = P1_d / w
       acc_hom_(i) = std::hypot(w, c) * hom_(i);
     }
     ww_ += mh2_ * work;
@@ -341,7 +339,8 @@ class ContactPropagator {
       fi += px * d2;
       fj += py * d2;
       // psi_x.q a_y and psi_y.q a_x, mode by mode: the particular part times a_y is quadratic
-      const double free = 2.0 * hom_(i) * inv_omega_(i), lin = std::abs(slope_eta_(i)) * w4;
+      // (eta_p' = P1_d / w = g1/w^2 = P0_v)
+      const double free = 2.0 * hom_(i) * inv_omega_(i), lin = std::abs(p0v_(i)) * w4;
       rest +=
           px * std::min(w8 * (bound_[2](i) * ay + 2.0 * bound_[1](i) * day), free * ay + lin * day);
       rest +=
@@ -572,7 +571,6 @@ class ContactPropagator {
   double ww_ = 0.0, wl_ = 0.0;    // input work and damping loss [J]
   std::array<Vec, 5> bound_;      // per mode: bounds over the piece on |eta^(k)|, k = 0..4
   Vec hom_;                       // per mode: |s - s_p|, the free part's norm at the start
-  Vec slope_eta_;                 // per mode: eta_p', the particular part's slope
   Vec acc_hom_;                   // per mode: the bound |(w, c)| hom on |eta''|
   Vec p0d_, p0v_, hd_, hv_;       // per mode: P0, and s(0) - P0 (the free part at the start)
   mutable Vec dev2_;              // scratch: per mode, the excursion bound of eta''

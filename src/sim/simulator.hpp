@@ -159,6 +159,7 @@ class Simulator final : private GuardProbe {
   bool can_walk(double t) const;
   bool advance_walk(double& t, State& x);
   using Excursion = typename ContactPropagator<N, MaxN, State>::Excursion;
+  Excursion walk_excursion(double w) const;
   bool guards_clear(const GuardSample& sa, const GuardSample& sb, const Excursion& e) const;
   int walk_search(double tp0, double a, double b, const GuardSample& sa, const GuardSample& sb,
                   int depth, double& a_out, double& b_out);
@@ -987,8 +988,7 @@ bool Simulator<N, MaxN>::advance_walk(double& t, State& x) {
       walk_forcing_ = {std::max(std::abs(a0.x), std::abs(a0.x + slope.x * h)) / g,
                        std::max(std::abs(1.0 + a0.y / g), std::abs(1.0 + (a0.y + slope.y * h) / g)),
                        std::abs(slope.x) / g, std::abs(slope.y) / g};
-      const auto& f = walk_forcing_;
-      const Excursion c = prop_.walk_excursion(h, f[0], f[1], f[2], f[3]);
+      const Excursion c = walk_excursion(h);
       if (!guards_clear(sa, sb, c)) {
         // a crossing may lie in this piece: halve it until the bound clears every part or a
         // guard is found <= 0 at a part's end
@@ -1008,7 +1008,7 @@ bool Simulator<N, MaxN>::advance_walk(double& t, State& x) {
             evaluate(t, x, s0_);
             // the extremes before the bracket, located as in a whole piece
             xe_ = x;
-            locate_extremes(tp0, ba, sa, s0_, prop_.walk_excursion(ba, f[0], f[1], f[2], f[3]));
+            locate_extremes(tp0, ba, sa, s0_, walk_excursion(ba));
           } else {
             x = xw_;
             s0_ = sa;
@@ -1037,6 +1037,13 @@ bool Simulator<N, MaxN>::advance_walk(double& t, State& x) {
   return true;
 }
 
+// the excursion bounds over any part of length w of the walk's piece, under its forcing
+template <int N, int MaxN>
+typename Simulator<N, MaxN>::Excursion Simulator<N, MaxN>::walk_excursion(double w) const {
+  const auto& f = walk_forcing_;
+  return prop_.walk_excursion(w, f[0], f[1], f[2], f[3]);
+}
+
 // the full-contact guards over a part of the walk's piece with values sa, sb at its ends cannot
 // cross there: each stays above min(f(a), f(b)) - E > 0 (E: its excursion bound on that part)
 template <int N, int MaxN>
@@ -1060,8 +1067,7 @@ template <int N, int MaxN>
 int Simulator<N, MaxN>::walk_search(double tp0, double a, double b, const GuardSample& sa,
                                     const GuardSample& sb, int depth, double& a_out,
                                     double& b_out) {
-  const auto& f = walk_forcing_;
-  if (guards_clear(sa, sb, prop_.walk_excursion(b - a, f[0], f[1], f[2], f[3]))) return 0;
+  if (guards_clear(sa, sb, walk_excursion(b - a))) return 0;
   const ModeSpec& spec = mode_spec(mode_);
   for (int j = 0; j < spec.count; ++j) {
     if (!(sb.v[static_cast<std::size_t>(j)] > 0.0)) {
@@ -1160,8 +1166,8 @@ void Simulator<N, MaxN>::locate_extremes(double tp0, double h, const GuardSample
       }
     }
   }
-  // Brent's search on [at - h/kPoints, at + h/kPoints] for each quantity, to half the digits in
-  // time: a smooth maximum's value is then found to the last digits
+  // Brent's search on [at - h/kPoints, at + h/kPoints] for each quantity, to 16 bits of that
+  // bracket: a smooth maximum's value is then found to ~1e-10 of its curvature scale
   for (int q = 0; q < count; ++q) {
     const int k = wanted[static_cast<std::size_t>(q)];
     const double lo = std::max(0.0, at[static_cast<std::size_t>(q)] - h / kPoints);
