@@ -100,7 +100,8 @@ def test_python_finishes_a_killed_uncertain_sweep_with_the_same_bytes(cli, sourc
     if not data.exists():
         data = source_dir / "tests" / "data" / "elcentro_1940_ns.dat"
     block = source_dir / "examples" / "studies" / "slender_block.toml"
-    # 30 slow runs (a small max_step), so that the kill lands mid-way
+    # 30 slow runs (a small max_step: a friction limit far above any demand keeps the rocking
+    # series on sampled steps, which max_step caps), so that the kill lands mid-way
     manifest = tmp_path / "m.toml"
     manifest.write_text(f"""free_periods = 1
 [[body]]
@@ -114,6 +115,7 @@ units = "g"
 factors = {{ start = 0.5, stop = 3.4, step = 0.1 }}
 [solver]
 max_step = 0.0005
+friction_coefficient = 100.0
 [[uncertain]]
 parameter = "size_scale"
 distribution = "lognormal"

@@ -120,6 +120,50 @@ class RockingSeries {
     eval(t_target - t0_, x1_);
   }
 
+  /// The longest step: the event loop's cap while it samples the guards, +infinity while it bounds
+  /// them over the whole step (the series' tolerance alone then sets the step).
+  void set_max_step(double h) { ctl_.max_step = h; }
+
+  /// The floor reaction over M g along I and J and the overturning moment about the c.g.'s
+  /// projection over M g h on the last step, as series in tau: fi[k], fj[k], mo[k] for
+  /// k = 0..order() (docs/theory.md, "Guards of the series step by bounds"); gh = g/h [1/s^2].
+  /// With A = alpha theta_dot^2 - theta'' and B = alpha theta'' + theta_dot^2 over g/h:
+  /// F_I = u + A cos + B sin, F_J = v + A sin - B cos, M = alpha (v cos - u sin - B). theta''
+  /// and sin, cos are known to power order() - 2 by the step: the recurrence goes two terms
+  /// further, so that the reaction is known to the power theta is (the step's polynomial itself
+  /// is not changed).
+  void reaction_series(double gh, double* fi, double* fj, double* mo) {
+    add_term(order_);
+    add_term(order_ + 1);
+    const int p = order_ + 2;
+    const double ig = 1.0 / gh;
+    std::array<double, kMaxOrder + 4> a, b;
+    for (int k = 0; k < p; ++k) {
+      double w2 = 0.0;  // theta_dot^2's term k; theta_dot's term i is dth_[i + 1]
+      for (int i = 0; i <= k; ++i) w2 += dth_[i + 1] * dth_[k - i + 1];
+      const double dd = (k + 1.0) * (k + 2.0) * th_[k + 2];  // theta''
+      a[k] = (alpha_ * w2 - dd) * ig;
+      b[k] = (alpha_ * dd + w2) * ig;
+    }
+    const int nf = std::max(2, std::min(p, higher_));  // the forcing's terms
+    for (int k = 0; k < p; ++k) {
+      double x = 0.0, y = 0.0, vc = 0.0, us = 0.0;
+      for (int i = 0; i <= k; ++i) {
+        x += a[i] * c_[k - i] + b[i] * s_[k - i];
+        y += a[i] * s_[k - i] - b[i] * c_[k - i];
+      }
+      for (int i = 0; i <= k && i < nf; ++i) {
+        vc += v_term(i) * c_[k - i];
+        us += u_term(i) * s_[k - i];
+      }
+      fi[k] = u_term(k) + x;
+      fj[k] = v_term(k) + y;
+      mo[k] = alpha_ * (vc - us - b[k]);
+    }
+  }
+  /// The input work's series on the last step: W(t0 + tau) = sum_k w[k] tau^k, k = 0..order() - 1.
+  const double* work_coefficients() const { return w_.data(); }
+
   /// The forcing is re-read at every step: nothing to refresh.
   template <class System>
   void refresh_derivative(System&&, double) {}
@@ -145,6 +189,18 @@ class RockingSeries {
 
  private:
   static constexpr int kMinOrder = 5;
+
+  // the forcing's term k: u = Xdd/g and v = 1 + Ydd/g
+  double u_term(int k) const {
+    if (k == 0) return u0_;
+    if (k == 1) return u1_;
+    return k < higher_ ? uk_[static_cast<std::size_t>(k)] : 0.0;
+  }
+  double v_term(int k) const {
+    if (k == 0) return v0_;
+    if (k == 1) return v1_;
+    return k < higher_ ? vk_[static_cast<std::size_t>(k)] : 0.0;
+  }
 
   // u = Xdd/g and v = 1 + Ydd/g on [t, t_stop] as u0 + u1 tau, v0 + v1 tau (zero outside the
   // record); the interval is found by index, walking from the last one. A motion of sinusoids
@@ -317,8 +373,9 @@ class RockingSeries {
   double alpha_ = 0.0, k_ = 0.0, mhg_ = 0.0, g_ = 9.81;
   double u0_ = 0.0, u1_ = 0.0, v0_ = 1.0, v1_ = 0.0;
   double p0_ = 0.0, p1_ = 0.0, q0_ = 0.0, q1_ = 0.0;
-  std::array<double, kMaxOrder + 2> th_{}, s_{}, c_{}, r_{}, w_{};
-  std::array<double, kMaxOrder + 2> dth_{};  // k th_[k], formed once per term (theta_dot's)
+  // two terms beyond the step's order for the reaction's series (reaction_series)
+  std::array<double, kMaxOrder + 4> th_{}, s_{}, c_{}, r_{}, w_{};
+  std::array<double, kMaxOrder + 4> dth_{};  // k th_[k], formed once per term (theta_dot's)
   // a sinusoidal motion's series of u and v - 1, and k P, k Q from them; used from order 2 up to
   // higher_ - 1 (0: a linear forcing)
   std::array<double, kMaxOrder + 2> uk_{}, vk_{}, pk_{}, qk_{};

@@ -30,6 +30,7 @@
 #include "flexrock/sim/step_cost.hpp"
 #include "recorder.hpp"
 #include "rocking_series.hpp"
+#include "series_guards.hpp"
 
 namespace flexrock::detail {
 
@@ -155,6 +156,14 @@ class Simulator final : private GuardProbe {
   template <class Stepper, class System, class Buffer>
   bool advance_with(Stepper& integ, System&& sys, Buffer& buf, double& t, State& x);
   bool advance_still(double& t, State& x);
+  // a rigid body's rocking by its series with the guards bounded over the whole step
+  bool series_bounded() const;
+  bool advance_series(double& t, State& x);
+  void series_extremes(double t0, double tau_end, bool event);
+  // counts a step toward max_steps: false (the run stops) past them
+  bool count_step(double t);
+  // the stepper could not take a step from t: the run stops, saying why
+  bool step_collapsed(double t);
   double scan_record(double t);
   bool can_walk(double t) const;
   bool advance_walk(double& t, State& x);
@@ -260,6 +269,8 @@ class Simulator final : private GuardProbe {
   GroundMotion::Cursor rhs_cursor_, event_cursor_, break_cursor_;
   Vec q_, qd_, qdd_;
   State xr_;
+  // the series step's guards and observed quantities as polynomials in tau (advance_series)
+  StepPolynomial sp_impact_, sp_overturn_, sp_peak_, sp_fi_, sp_fj_, sp_moment_, sp_work_;
   std::array<GuardSample, kMaxSamples + 1> samples_buf_;  // guards at this step's samples
   std::array<State, kMaxSamples + 1> sample_states_;      // the states there (sized once)
   GuardSample s0_;
@@ -806,6 +817,8 @@ bool Simulator<N, MaxN>::advance(double& t, State& x) {
       return advance_with(slide_integ_, sys, slide_buf_, t, x);
     }
     case Stepping::kSeries:
+      if (series_bounded()) return advance_series(t, x);
+      series_integ_.set_max_step(ctl_.max_step);
       return advance_with(
           series_integ_, [](double, const ContactState&, ContactState&) {}, dense_buf_, t, x);
     case Stepping::kRocking:
@@ -848,28 +861,36 @@ bool Simulator<N, MaxN>::step_guards(int samples, double t1, double& t_hit, int&
   return slot_hit >= 0;
 }
 
+template <int N, int MaxN>
+bool Simulator<N, MaxN>::count_step(double t) {
+  if (++res_.steps <= opt_.max_steps) return true;
+  return stop(t,
+              "step limit reached (" + std::to_string(opt_.max_steps) + " steps; raise max_steps)");
+}
+
+template <int N, int MaxN>
+bool Simulator<N, MaxN>::step_collapsed(double t) {
+  // the step limit is relative (min_step x max(1 s, t)); while rocking the usual cause is
+  // impacts accumulating with the chatter cut-off disabled, so the message says so
+  const double h_min = ctl_.min_step * std::max(1.0, std::abs(t));
+  const std::string cause =
+      rocking() && opt_.chatter_ratio <= 0.0
+          ? "impacts accumulating while rocking with the chatter cut-off disabled "
+            "(chatter_ratio = 0); set chatter_ratio > 0"
+          : "the equations became too stiff or singular; loosen rtol/atol or check the body";
+  return stop(t, "integration step collapsed below " + short_number(h_min) + " s near t = " +
+                     short_number(t) + " s in " + to_string(mode_) + " (" + cause + ")");
+}
+
 // the step of `integ` (the integrator, or the exact propagator in full contact)
 template <int N, int MaxN>
 template <class Stepper, class System, class Buffer>
 bool Simulator<N, MaxN>::advance_with(Stepper& integ, System&& sys, Buffer& buf, double& t,
                                       State& x) {
   const double t_stop = std::min({t_end_, motion_.next_breakpoint(t, break_cursor_), step_stop_});
-  if (++res_.steps > opt_.max_steps)
-    return stop(
-        t, "step limit reached (" + std::to_string(opt_.max_steps) + " steps; raise max_steps)");
+  if (!count_step(t)) return false;
   const auto status = integ.step(sys, t_stop);
-  if (status != std::remove_cv_t<decltype(status)>::kAccepted) {
-    // the step limit is relative (min_step x max(1 s, t)); while rocking the usual cause is
-    // impacts accumulating with the chatter cut-off disabled, so the message says so
-    const double h_min = ctl_.min_step * std::max(1.0, std::abs(t));
-    const std::string cause =
-        rocking() && opt_.chatter_ratio <= 0.0
-            ? "impacts accumulating while rocking with the chatter cut-off disabled "
-              "(chatter_ratio = 0); set chatter_ratio > 0"
-            : "the equations became too stiff or singular; loosen rtol/atol or check the body";
-    return stop(t, "integration step collapsed below " + short_number(h_min) + " s near t = " +
-                       short_number(t) + " s in " + to_string(mode_) + " (" + cause + ")");
-  }
+  if (status != std::remove_cv_t<decltype(status)>::kAccepted) return step_collapsed(t);
   if (slide_inconsistent_)
     return stop(t, "no consistent slide near t = " + short_number(t) + " s in " + to_string(mode_) +
                        ": Coulomb friction with this coefficient would need the floor to push the "
@@ -920,6 +941,217 @@ bool Simulator<N, MaxN>::advance_with(Stepper& integ, System&& sys, Buffer& buf,
   return fire(slot_hit, t, x);
 }
 
+// A rigid body rocking on its series takes steps as long as the series' tolerance allows, with no
+// guard samples: every guard of the mode is a polynomial on the step (theta's and theta_dot's, or
+// the reaction's series within its truncation), so a lower bound over the step that stays positive
+// rules a crossing out, and a guard that could cross is halved with its exact values until it
+// clears or a single crossing is bracketed (series_guards.hpp; docs/theory.md, "Guards of the
+// series step by bounds"). A friction limit makes |F_I| a guard, which is not a polynomial: such a
+// run keeps the sampled steps, as does a lift-off function that does not start armed.
+template <int N, int MaxN>
+bool Simulator<N, MaxN>::series_bounded() const {
+  if (std::isfinite(opt_.friction_coefficient) || hold_tension_) return false;
+  const auto lift = static_cast<std::size_t>(guard_slot(mode_, Guard::kLiftOff));
+  return tension_ || (!zero_start_[lift] && s0_.v[lift] > 0.0);
+}
+
+template <int N, int MaxN>
+bool Simulator<N, MaxN>::advance_series(double& t, State& x) {
+  const double t_stop = std::min({t_end_, motion_.next_breakpoint(t, break_cursor_), step_stop_});
+  if (!count_step(t)) return false;
+  auto none = [](double, const ContactState&, ContactState&) {};
+  series_integ_.set_max_step(std::numeric_limits<double>::infinity());
+  if (series_integ_.step(none, t_stop) != RockingSeries<ContactState>::Status::kAccepted)
+    return step_collapsed(t);
+  const double t0 = series_integ_.t0(), t1 = series_integ_.t1(), h = t1 - t0;
+  if (opt_.progress) opt_.progress->store(t1, std::memory_order_relaxed);
+  const int e = edge();
+  const double sg = edge_sign(e);
+  // the guards' polynomials: s theta (impact), limit - s theta (overturn), s theta_dot (peak),
+  // F_J (lift-off) from the reaction's series
+  const double* th = series_integ_.theta_coefficients();
+  const double* dth = series_integ_.theta_rate_coefficients();  // k c[k]
+  const int degree = series_integ_.order();
+  sp_impact_.degree = sp_overturn_.degree = degree;
+  sp_peak_.degree = degree - 1;
+  for (int k = 0; k <= degree; ++k) {
+    const auto i = static_cast<std::size_t>(k);
+    sp_impact_.c[i] = sg * th[k];
+    sp_overturn_.c[i] = -sg * th[k];
+    if (k < degree) sp_peak_.c[i] = sg * dth[k + 1];
+  }
+  sp_overturn_.c[0] += overturn_limit_[static_cast<std::size_t>(e - 1)];
+  series_integ_.reaction_series(dyn_.g_over_h(), sp_fi_.c.data(), sp_fj_.c.data(),
+                                sp_moment_.c.data());
+  // the reaction's series is known to theta's power: its last two terms at h, doubled, stand for
+  // the rest
+  for (StepPolynomial* p : {&sp_fi_, &sp_fj_, &sp_moment_}) {
+    p->degree = degree;
+    double hk = 1.0, tail = 0.0;
+    for (int k = 0; k <= p->degree; ++k, hk *= h)
+      if (k + 1 >= p->degree) tail += std::abs(p->c[static_cast<std::size_t>(k)]) * hk;
+    p->margin = 2.0 * tail;
+  }
+  // where the floor's pressing cannot be shown to hold throughout (a lift-off may come), the
+  // step is taken again with the guards sampled, as any step of a friction-limited run
+  if (!tension_ && !(sp_fj_.c[0] - sp_fj_.excursion(h) > sp_fj_.margin) &&
+      !(bernstein_piece(sp_fj_, 0.0, h, sp_fj_.c[0]).min() > sp_fj_.margin)) {
+    --res_.steps;
+    dense_buf_ = series_integ_.x0();
+    series_integ_.start(none, ctl_, t0, dense_buf_);
+    series_integ_.set_max_step(ctl_.max_step);
+    return advance_with(series_integ_, none, dense_buf_, t, x);
+  }
+  // the guards at the step's end, exactly (the next step's start)
+  GuardSample& se = samples_buf_[1];
+  State& xe = sample_states_[1];
+  put(series_integ_.x1(), xe);
+  evaluate(t1, xe, se);
+  // the first crossing of each resetting guard
+  const ModeSpec& spec = mode_spec(mode_);
+  double t_hit = std::numeric_limits<double>::infinity();
+  int slot_hit = -1, peak_slot = -1;
+  for (int j = 0; j < spec.count; ++j) {
+    const auto k = static_cast<std::size_t>(j);
+    const Guard guard = spec.guards[k];
+    const GuardStart start = zero_start_[k]   ? GuardStart::kZero
+                             : s0_.v[k] > 0.0 ? GuardStart::kArmed
+                                              : GuardStart::kDisarmed;
+    CrossingBracket b;
+    int found = 0;
+    switch (guard) {
+      case Guard::kImpact:
+        found = polynomial_bracket(sp_impact_, 0.0, h, start, b);
+        break;
+      case Guard::kOverturn:
+        found = polynomial_bracket(sp_overturn_, 0.0, h, start, b);
+        break;
+      case Guard::kLiftOff:
+        // lift-off needs the floor to stop pressing: ruled out where the reaction's Bernstein
+        // bound keeps F_J above its truncation (it is near 1 while rocking); checked beforehand
+        continue;
+      case Guard::kPeak:
+        peak_slot = j;  // records only: after the first resetting crossing is known
+        continue;
+      default:
+        continue;  // the friction margin is the constant 1 without a friction limit
+    }
+    double when = std::numeric_limits<double>::infinity();
+    if (found < 0 && guard_spec(guard).fires_if_unresolved) when = t0;
+    if (found > 0) when = crossing(j, t0 + b.tl, t0 + b.tr, b.gl, b.gr);
+    if (when < t_hit) {
+      t_hit = when;
+      slot_hit = j;
+    }
+  }
+  const double tau_end = slot_hit >= 0 ? t_hit - t0 : h;
+  // every peak up to the first resetting crossing (a long step may hold more than one)
+  if (peak_slot >= 0) {
+    const auto k = static_cast<std::size_t>(peak_slot);
+    GuardStart start = zero_start_[k]   ? GuardStart::kZero
+                       : s0_.v[k] > 0.0 ? GuardStart::kArmed
+                                        : GuardStart::kDisarmed;
+    double a = 0.0;
+    CrossingBracket b;
+    while (a < tau_end && polynomial_bracket(sp_peak_, a, tau_end, start, b) > 0) {
+      const double tp = crossing(peak_slot, t0 + b.tl, t0 + b.tr, b.gl, b.gr);
+      if (!(tp - t0 > a) || tp > t0 + tau_end) break;
+      record(tp);
+      a = tp - t0;
+      start = GuardStart::kCrossed;
+    }
+  }
+  series_extremes(t0, tau_end, slot_hit >= 0);
+  if (slot_hit < 0) {
+    emit_rows_until(t1);
+    t = t1;
+    x.head(2 * n_ + 4) = xe.head(2 * n_ + 4);
+    s0_ = se;
+    observe(s0_, xe);
+    zero_start_.fill(false);
+    release_latches(s0_);
+    return true;
+  }
+  if (t_hit > t0) series_integ_.restep_to(none, t_hit);
+  emit_rows_until(t_hit);
+  t = t_hit;
+  put(t_hit > t0 ? series_integ_.x1() : series_integ_.x0(), x);
+  return fire(slot_hit, t, x);
+}
+
+// the extremes over [t0, t0 + tau_end] of a series step: a quantity whose bound there could
+// exceed its extreme so far (the shear, the overturning moment, F_I over F_J for the friction
+// demand, the input work for the energy scale) is located on its polynomial and observed from the
+// exact state there; theta's are the peaks'. The end of a step without an event is observed by the
+// loop; where an event ends it, the state just before the reset is one of the motion's too.
+template <int N, int MaxN>
+void Simulator<N, MaxN>::series_extremes(double t0, double tau_end, bool event) {
+  if (!(tau_end > 0.0)) return;
+  const Extremes& ex = res_.extremes;
+  const double mg = dyn_.mass() * dyn_.g(), mgh = mg * dyn_.height();
+  double seen = -1.0;  // the last point observed here: quantities largest at one point share it
+  auto at = [&](double tau) {
+    if (tau == tau_end && !event) return;  // the step's end: the loop observes it
+    if (tau == seen) return;
+    seen = tau;
+    GuardSample s;
+    state_at(t0 + tau, xr_);
+    evaluate(t0 + tau, xr_, s);
+    observe(s, xr_);
+  };
+  // bounds over [0, tau_end] by the Bernstein form (within the reaction series' truncation)
+  // (the coefficients' bound first: it settles most steps for less)
+  auto exceeds = [&](const StepPolynomial& p, double scale, double extreme) {
+    return scale * p.abs_bound(tau_end) > extreme &&
+           scale * (bernstein_piece(p, 0.0, tau_end, p.c[0]).max_abs() + p.margin) > extreme;
+  };
+  // F_I's and F_J's Bernstein forms serve the shear and the friction demand: formed once, where
+  // the coefficients' bounds do not settle either
+  BernsteinPiece bi, bj;
+  bool formed = false;
+  auto form = [&] {
+    if (formed) return;
+    bi = bernstein_piece(sp_fi_, 0.0, tau_end, sp_fi_.c[0]);
+    bj = bernstein_piece(sp_fj_, 0.0, tau_end, sp_fj_.c[0]);
+    formed = true;
+  };
+  if (mg * sp_fi_.abs_bound(tau_end) > ex.max_base_shear) {
+    form();
+    if (mg * (bi.max_abs() + sp_fi_.margin) > ex.max_base_shear)
+      at(polynomial_argmax([&](double tau) { return std::abs(sp_fi_.value(tau)); }, tau_end));
+  }
+  if (exceeds(sp_moment_, mgh, ex.max_overturning_moment))
+    at(polynomial_argmax([&](double tau) { return std::abs(sp_moment_.value(tau)); }, tau_end));
+  // F_I over F_J within the largest demand r so far: by the coefficients' bounds, else where
+  // |F_I| - r F_J <= 0 throughout by Bernstein's (linear in the coefficients)
+  const double r = ex.max_friction_demand;
+  const double fj_swing = sp_fj_.excursion(tau_end) + sp_fj_.margin;
+  const double fj_lo = sp_fj_.c[0] - fj_swing, fj_hi = sp_fj_.c[0] + fj_swing;
+  bool within = fj_hi < kPressingFraction ||
+                (fj_lo >= kPressingFraction && sp_fi_.abs_bound(tau_end) / fj_lo <= r);
+  if (!within) {
+    form();
+    double worst = -std::numeric_limits<double>::infinity();
+    for (int i = 0; i <= bi.degree; ++i) {
+      const auto k = static_cast<std::size_t>(i);
+      worst = std::max(worst, std::abs(bi.b[k]) - r * bj.b[k]);
+    }
+    within = worst + sp_fi_.margin + r * sp_fj_.margin <= 0.0;
+  }
+  if (!within)
+    at(polynomial_argmax(
+        [&](double tau) {
+          const double f = sp_fj_.value(tau);
+          return f >= kPressingFraction ? std::abs(sp_fi_.value(tau)) / f : 0.0;
+        },
+        tau_end));
+  sp_work_.degree = series_integ_.order() - 1;
+  const double* w = series_integ_.work_coefficients();
+  for (int k = 0; k <= sp_work_.degree; ++k) sp_work_.c[static_cast<std::size_t>(k)] = w[k];
+  if (exceeds(sp_work_, 1.0, rec_.energy_scale()))
+    at(polynomial_argmax([&](double tau) { return std::abs(sp_work_.value(tau)); }, tau_end));
+}
+
 // a flexible body in full contact under a sampled record, walked piece by piece from a record
 // sample (docs/theory.md, "Exact propagation in full contact"): true when the walk can start at t
 template <int N, int MaxN>
@@ -964,10 +1196,9 @@ bool Simulator<N, MaxN>::advance_walk(double& t, State& x) {
   sa = s0_;
   const double cap = prop_.walk_cap();
   for (; i + 1 < ts.size() && ts[i + 1] <= t_end_; ++i) {
-    if (++res_.steps > opt_.max_steps) {
+    if (!count_step(t)) {
       x = xw_;
-      return stop(
-          t, "step limit reached (" + std::to_string(opt_.max_steps) + " steps; raise max_steps)");
+      return false;
     }
     const double tb = ts[i + 1], span = ts[i + 1] - ts[i];
     const BaseAcceleration slope{(hx[i + 1] - hx[i]) / span,
@@ -1186,9 +1417,7 @@ void Simulator<N, MaxN>::locate_extremes(double tp0, double h, const GuardSample
 template <int N, int MaxN>
 bool Simulator<N, MaxN>::advance_still(double& t, State& x) {
   // each span checked counts as a step toward max_steps
-  if (++res_.steps > opt_.max_steps)
-    return stop(
-        t, "step limit reached (" + std::to_string(opt_.max_steps) + " steps; raise max_steps)");
+  if (!count_step(t)) return false;
   double ta = t, tb = t;
   int samples = 1;
   if (motion_.is_sampled()) {

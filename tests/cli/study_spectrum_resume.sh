@@ -17,8 +17,9 @@ width = 0.4
 height = 2.0
 mass = 1000.0
 TOML
-# 30 slow cells (a small max_step), then a long bisection (the narrowest tolerance allowed:
-# about 40 runs), so that signals arrive mid-way
+# 30 slow cells (a small max_step: a friction limit far above any demand keeps the rocking
+# series on sampled steps, which max_step caps), then a long bisection (the narrowest tolerance
+# allowed: about 40 runs), so that signals arrive mid-way
 cat >"$WORK/s.toml" <<TOML
 body = "block.toml"
 [spectrum]
@@ -28,6 +29,7 @@ free_periods = 1
 bisection_tolerance = 1e-12
 [solver]
 max_step = 0.0005
+friction_coefficient = 100.0
 TOML
 cells=30
 

@@ -358,6 +358,24 @@ TEST(Sliding, UnreachedFrictionChangesNothing) {
     }
     ++identical;
     ASSERT_EQ(a.events.size(), b.events.size());
+    if (body.modes() == 0) {
+      // a rigid body's rocking series bounds its guards over whole steps without a friction
+      // limit and samples them at max_step with one (|F_I| is no polynomial): the same motion to
+      // the integration's tolerance (rtol 1e-9 over 3 s), not to the bit
+      const double mg = body.params().mass * g;
+      for (std::size_t i = 0; i < a.events.size(); ++i) {
+        EXPECT_EQ(a.events[i].kind, b.events[i].kind);
+        EXPECT_NEAR(a.events[i].time, b.events[i].time, 1e-8);
+        EXPECT_NEAR(a.events[i].theta_dot_after, b.events[i].theta_dot_after, 1e-8);
+      }
+      ASSERT_EQ(a.history.size(), b.history.size());
+      for (std::size_t i = 0; i < a.history.size(); ++i) {
+        EXPECT_NEAR(a.history.theta[i], b.history.theta[i], 1e-8);
+        EXPECT_NEAR(a.history.reaction_x[i], b.history.reaction_x[i], 1e-8 * mg);
+      }
+      EXPECT_EQ(a.history.offset, b.history.offset);
+      continue;
+    }
     for (std::size_t i = 0; i < a.events.size(); ++i) {
       EXPECT_EQ(a.events[i].kind, b.events[i].kind);
       EXPECT_EQ(a.events[i].time, b.events[i].time);

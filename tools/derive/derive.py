@@ -2795,6 +2795,23 @@ def rocking_work_recurrence(a, b, thc, sc, cc, order):
     return [sum(((j + 1) * thc[j + 1] * rr[kk - j] for j in range(kk + 1)), 0) / (kk + 1) for kk in range(order)]
 
 
+def rocking_reaction_recurrence(us, vs, al, gh, thc, sc, cc, order):
+    """the reaction's terms F_I, F_J (over M g) and the overturning moment (over M g h) to power
+    order - 1 as src/sim/rocking_series.hpp (reaction_series) forms them from the forcing's terms
+    us, vs, theta's terms thc and the recurrence's sin and cos terms sc, cc"""
+    us, vs = list(us) + [0] * order, list(vs) + [0] * order
+    A, B = [], []
+    for k in range(order):
+        w2 = sum(((i + 1) * thc[i + 1] * (k - i + 1) * thc[k - i + 1] for i in range(k + 1)), 0)
+        dd = (k + 1) * (k + 2) * thc[k + 2]
+        A.append((al * w2 - dd) / gh)
+        B.append((al * dd + w2) / gh)
+    fi = [us[k] + sum((A[i] * cc[k - i] + B[i] * sc[k - i] for i in range(k + 1)), 0) for k in range(order)]
+    fj = [vs[k] + sum((A[i] * sc[k - i] - B[i] * cc[k - i] for i in range(k + 1)), 0) for k in range(order)]
+    mo = [al * (sum((vs[i] * cc[k - i] - us[i] * sc[k - i] for i in range(k + 1)), 0) - B[k]) for k in range(order)]
+    return fi, fj, mo
+
+
 def sinusoid_series(A, w, sc, cc, order):
     """the Taylor coefficients of A sin(w tau + c) at tau = 0 as src/sim/rocking_series.hpp forms
     them: A w^k / k! times sin c, cos c, -sin c, -cos c in turn (sc = sin c, cc = cos c)"""
@@ -2824,6 +2841,19 @@ def derive_rocking_series(order=5):
     series_power = M * h * g * sp.diff(th, tau) * ((u + al * (v - 1)) * sp.cos(th)
                                                    + ((v - 1) - al * u) * sp.sin(th))
     res['series_power'] = is_zero(sp.expand(power - series_power))
+    # the floor reaction over M g (floor axes) and the overturning moment about the c.g.'s
+    # projection over M g h that the series step bounds (docs/theory.md, "Guards of the series step
+    # by bounds"), against theory 5 at n = 0: with A = (alpha thd^2 - thdd)/(g/h) and
+    # B = (alpha thdd + thd^2)/(g/h), F_I = u + A c + B s, F_J = v + A s - B c and
+    # M = alpha (v c - u s - B), the moment alpha h times the body-frame J component
+    thdd_ = sp.Symbol('thdd', real=True)
+    Fb = conv_F_body(P, al, [], thd, [], thdd_, [], S, C, u, v, g)
+    Fi, Fj = body_to_inertial(Fb, S, C)
+    A_ = (al * thd ** 2 - thdd_) / (g / h)
+    B_ = (al * thdd_ + thd ** 2) / (g / h)
+    res['series_reaction_forms'] = (is_zero(Fi / (M * g) - (u + A_ * C + B_ * S))
+                                    and is_zero(Fj / (M * g) - (v + A_ * S - B_ * C))
+                                    and is_zero(al * Fb[1] / (M * g) - al * (v * C - u * S - B_)))
     # the recurrence: the polynomial's residual in the equation, and sin, cos, the work, vanish to
     # the powers the series claims; the parameters as exact rationals (symbols make the series
     # expansion slow), the initial state symbolic
@@ -2855,6 +2885,23 @@ def derive_rocking_series(order=5):
                                                      + ((vv - 1) - al * uu) * sp.sin(poly))
     wser = sp.series(wres, tau, 0, order).removeO()
     res['series_work'] = all(is_zero(wser.coeff(tau, i)) for i in range(order))
+    # the reaction's terms as src/sim/rocking_series.hpp forms them (Cauchy products of the
+    # recurrence's sin, cos, theta_dot^2 and theta'') against sympy's series of the closed forms
+    # above on theta's polynomial, to the power the series knows them (order - 1)
+    fi, fj, mo = rocking_reaction_recurrence([u0, u1], [v0, v1], al, g / h, thc, sc, cc, order)
+    dpoly2 = sp.diff(poly, tau, 2)
+    A_t = (al * dpoly ** 2 - dpoly2) / (g / h)
+    B_t = (al * dpoly2 + dpoly ** 2) / (g / h)
+    # (sympy's own series of sin and cos of the polynomial, sin_ser and cos_ser above; the rest are
+    # polynomials in tau), sin theta0 and cos theta0 as S and C so that is_zero knows S^2 + C^2 = 1
+    closed = [uu + A_t * cos_ser + B_t * sin_ser, vv + A_t * sin_ser - B_t * cos_ser,
+              al * (vv * cos_ser - uu * sin_ser - B_t)]
+    trig = {sp.sin(th0): S, sp.cos(th0): C}
+    ok = True
+    for terms, expr in zip((fi, fj, mo), closed):
+        ser_ = sp.expand(expr)
+        ok = ok and all(is_zero((ser_.coeff(tau, i) - terms[i]).subs(trig)) for i in range(order))
+    res['series_reaction'] = ok
     # a pulse of sinusoids, one per component (u = A sin(w tau + c) / g, v = 1 + B sin(w2 tau +
     # c2) / g): the sinusoid's coefficients against sympy's series, then the recurrence and the
     # work with those series for P and Q. The residuals are formed on coefficient lists, exact

@@ -93,10 +93,12 @@ struct InitialState {
 };
 
 struct SimulationOptions {
-  double t_end = -1.0;     // [s] end time; < 0: the end of the motion
-  double rtol = 1e-9;      // relative tolerance of the integrator
-  double atol = 1e-11;     // absolute tolerance (rad, -, rad/s, 1/s)
-  double max_step = 0.01;  // [s] cap on the step; events are sought within each step
+  double t_end = -1.0;  // [s] end time; < 0: the end of the motion
+  double rtol = 1e-9;   // relative tolerance of the integrator
+  double atol = 1e-11;  // absolute tolerance (rad, -, rad/s, 1/s)
+  // [s] cap on the step where events are sought by samples within each step (not on a rigid
+  // body's rocking by its series, whose events are bounded over the whole step)
+  double max_step = 0.01;
   int event_samples = 4;   // points per step where event functions are checked
   double output_dt = 0.0;  // [s] time-history spacing; 0: no time history
   OverturnCriterion overturn = OverturnCriterion::kHalfPi;
