@@ -155,6 +155,9 @@ class Simulator final : private GuardProbe {
   // `buf`: scratch for the stepper's dense output (a vector of the stepper's state)
   template <class Stepper, class System, class Buffer>
   bool advance_with(Stepper& integ, System&& sys, Buffer& buf, double& t, State& x);
+  template <class Stepper, class System>
+  bool end_step(Stepper& integ, System&& sys, int slot_hit, double t_hit, const GuardSample& s_end,
+                double& t, State& x);
   bool advance_still(double& t, State& x);
   // a rigid body's rocking by its series with the guards bounded over the whole step
   bool series_bounded() const;
@@ -920,34 +923,44 @@ bool Simulator<N, MaxN>::advance_with(Stepper& integ, System&& sys, Buffer& buf,
     if (smp[kk].t >= t_hit) break;
     observe(smp[kk], sample_states_[kk]);
   }
-  if (!hit) {
-    // an analytic motion may jump at a breakpoint: start the next step from its right limit
-    if (t1 == t_stop && t1 < t_end_ && !motion_.is_sampled()) {
-      integ.refresh_derivative(sys, std::nextafter(t1, t_end_));
-    }
-    emit_rows_until(t1);
-    t = t1;
+  // an analytic motion may jump at a breakpoint: start the next step from its right limit
+  if (!hit && t1 == t_stop && t1 < t_end_ && !motion_.is_sampled())
+    integ.refresh_derivative(sys, std::nextafter(t1, t_end_));
+  return end_step(integ, sys, slot_hit, t_hit, smp[static_cast<std::size_t>(samples_)], t, x);
+}
+
+// a step's end: with no event (slot_hit < 0) the state moves to the step's end, whose guards are
+// s_end; else the step is cut at the event, which fires
+template <int N, int MaxN>
+template <class Stepper, class System>
+bool Simulator<N, MaxN>::end_step(Stepper& integ, System&& sys, int slot_hit, double t_hit,
+                                  const GuardSample& s_end, double& t, State& x) {
+  if (slot_hit < 0) {
+    emit_rows_until(integ.t1());
+    t = integ.t1();
     put(integ.x1(), x);
-    s0_ = smp[static_cast<std::size_t>(samples_)];
+    s0_ = s_end;
     zero_start_.fill(false);
     release_latches(s0_);
     return true;
   }
   // land exactly on the event and act on it
-  if (t_hit > t0) integ.restep_to(sys, t_hit);
+  const bool inside = t_hit > integ.t0();
+  if (inside) integ.restep_to(sys, t_hit);
   emit_rows_until(t_hit);
   t = t_hit;
-  put(t_hit > t0 ? integ.x1() : integ.x0(), x);
+  put(inside ? integ.x1() : integ.x0(), x);
   return fire(slot_hit, t, x);
 }
 
 // A rigid body rocking on its series takes steps as long as the series' tolerance allows, with no
 // guard samples: every guard of the mode is a polynomial on the step (theta's and theta_dot's, or
-// the reaction's series within its truncation), so a lower bound over the step that stays positive
-// rules a crossing out, and a guard that could cross is halved with its exact values until it
-// clears or a single crossing is bracketed (series_guards.hpp; docs/theory.md, "Guards of the
-// series step by bounds"). A friction limit makes |F_I| a guard, which is not a polynomial: such a
-// run keeps the sampled steps, as does a lift-off function that does not start armed.
+// the reaction's series within its truncation), so a bound over the step rules a crossing out, and
+// a guard that could cross is halved in its Bernstein form until a single crossing is bracketed
+// (series_guards.hpp; docs/theory.md, "Guards of the series step by bounds"). A friction limit
+// makes |F_I| a guard, which is not a polynomial: such a run keeps the sampled steps, as does a
+// lift-off function that does not start armed (and a step whose lift-off the bound cannot rule out
+// is taken again with samples).
 template <int N, int MaxN>
 bool Simulator<N, MaxN>::series_bounded() const {
   if (std::isfinite(opt_.friction_coefficient) || hold_tension_) return false;
@@ -1062,21 +1075,8 @@ bool Simulator<N, MaxN>::advance_series(double& t, State& x) {
     }
   }
   series_extremes(t0, tau_end, slot_hit >= 0);
-  if (slot_hit < 0) {
-    emit_rows_until(t1);
-    t = t1;
-    x.head(2 * n_ + 4) = xe.head(2 * n_ + 4);
-    s0_ = se;
-    observe(s0_, xe);
-    zero_start_.fill(false);
-    release_latches(s0_);
-    return true;
-  }
-  if (t_hit > t0) series_integ_.restep_to(none, t_hit);
-  emit_rows_until(t_hit);
-  t = t_hit;
-  put(t_hit > t0 ? series_integ_.x1() : series_integ_.x0(), x);
-  return fire(slot_hit, t, x);
+  if (slot_hit < 0) observe(se, xe);
+  return end_step(series_integ_, none, slot_hit, t_hit, se, t, x);
 }
 
 // the extremes over [t0, t0 + tau_end] of a series step: a quantity whose bound there could
