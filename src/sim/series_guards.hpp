@@ -12,6 +12,13 @@
 
 namespace flexrock::detail {
 
+/// c[0..degree] of p(tau) become those of p(a + sigma) in sigma: Taylor's shift, Horner's scheme
+/// repeated (O(degree^2))
+inline void taylor_shift(double* c, int degree, double a) {
+  for (int i = 0; i < degree; ++i)
+    for (int j = degree - 1; j >= i; --j) c[j] += a * c[j + 1];
+}
+
 /// A guard (or an observed quantity) on a step [0, h] known by its Taylor coefficients c[0..degree]
 /// in tau: the guard itself when `margin` is 0 (theta and theta_dot are the step's polynomials),
 /// else within `margin` of it (the reaction's series, truncated where the step's series is).
@@ -37,7 +44,7 @@ struct StepPolynomial {
   /// |g| <= this on [0, b]
   double abs_bound(double b) const { return std::abs(c[0]) + excursion(b) + margin; }
   /// the same polynomial with its first m coefficients dropped: g / tau^m where they vanish
-  StepPolynomial shifted(int m) const {
+  StepPolynomial over_power(int m) const {
     StepPolynomial r;
     r.degree = degree - m;
     r.margin = margin;
@@ -45,13 +52,10 @@ struct StepPolynomial {
       r.c[static_cast<std::size_t>(k)] = c[static_cast<std::size_t>(k + m)];
     return r;
   }
-  /// the same polynomial about a: q(sigma) = g(a + sigma), by Taylor's shift (Horner's scheme
-  /// repeated)
+  /// the same polynomial about a: q(sigma) = g(a + sigma)
   StepPolynomial about(double a) const {
     StepPolynomial q = *this;
-    for (int i = 0; i < degree; ++i)
-      for (int j = degree - 1; j >= i; --j)
-        q.c[static_cast<std::size_t>(j)] += a * q.c[static_cast<std::size_t>(j + 1)];
+    taylor_shift(q.c.data(), degree, a);
     return q;
   }
 };
@@ -140,11 +144,7 @@ inline BernsteinPiece bernstein_piece(const StepPolynomial& p, double lo, double
   out.hi = hi;
   auto& c = out.b;
   for (int k = 0; k <= d; ++k) c[static_cast<std::size_t>(k)] = p.c[static_cast<std::size_t>(k)];
-  if (lo != 0.0) {
-    for (int i = 0; i < d; ++i)
-      for (int j = d - 1; j >= i; --j)
-        c[static_cast<std::size_t>(j)] += lo * c[static_cast<std::size_t>(j + 1)];
-  }
+  if (lo != 0.0) taylor_shift(c.data(), d, lo);
   const double w = hi - lo;
   const auto& inv_binom = inverse_binomials()[static_cast<std::size_t>(d)];
   double wk = 1.0;  // w^k
@@ -194,8 +194,7 @@ inline int polynomial_bracket(const StepPolynomial& g, double a, double b, Guard
   const double w = b - a;
   // the first crossing in (lo, w] of f, f(lo) = f_lo > 0, whose roots for sigma > 0 are g's
   auto search = [&](const StepPolynomial& f, double lo, double f_lo, CrossingBracket& o) {
-    if (!bernstein_bracket(bernstein_piece(f, lo, w, f_lo), kBracketDepth, o)) return false;
-    return true;
+    return bernstein_bracket(bernstein_piece(f, lo, w, f_lo), kBracketDepth, o);
   };
   // the bracket on q's axis back on g's, with g's values at its ends
   auto on_g = [&](CrossingBracket& o) {
@@ -218,7 +217,7 @@ inline int polynomial_bracket(const StepPolynomial& g, double a, double b, Guard
     int m = 1;
     while (m <= p->degree && p->c[static_cast<std::size_t>(m)] == 0.0) ++m;
     if (m > p->degree) return start == GuardStart::kZero ? -1 : 0;  // identically zero
-    r = p->shifted(m);
+    r = p->over_power(m);
     f = &r;
     // r keeps the sign it starts with, by the coefficients' bound: no crossing, or none resolved
     if (std::abs(r.c[0]) > r.excursion(w))

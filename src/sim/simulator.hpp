@@ -1020,6 +1020,12 @@ bool Simulator<N, MaxN>::advance_series(double& t, State& x) {
   State& xe = sample_states_[1];
   put(series_integ_.x1(), xe);
   evaluate(t1, xe, se);
+  // how guard k stands at the step's start
+  auto start_of = [&](std::size_t k) {
+    return zero_start_[k]   ? GuardStart::kZero
+           : s0_.v[k] > 0.0 ? GuardStart::kArmed
+                            : GuardStart::kDisarmed;
+  };
   // the first crossing of each resetting guard
   const ModeSpec& spec = mode_spec(mode_);
   double t_hit = std::numeric_limits<double>::infinity();
@@ -1027,9 +1033,7 @@ bool Simulator<N, MaxN>::advance_series(double& t, State& x) {
   for (int j = 0; j < spec.count; ++j) {
     const auto k = static_cast<std::size_t>(j);
     const Guard guard = spec.guards[k];
-    const GuardStart start = zero_start_[k]   ? GuardStart::kZero
-                             : s0_.v[k] > 0.0 ? GuardStart::kArmed
-                                              : GuardStart::kDisarmed;
+    const GuardStart start = start_of(k);
     CrossingBracket b;
     int found = 0;
     switch (guard) {
@@ -1060,10 +1064,7 @@ bool Simulator<N, MaxN>::advance_series(double& t, State& x) {
   const double tau_end = slot_hit >= 0 ? t_hit - t0 : h;
   // every peak up to the first resetting crossing (a long step may hold more than one)
   if (peak_slot >= 0) {
-    const auto k = static_cast<std::size_t>(peak_slot);
-    GuardStart start = zero_start_[k]   ? GuardStart::kZero
-                       : s0_.v[k] > 0.0 ? GuardStart::kArmed
-                                        : GuardStart::kDisarmed;
+    GuardStart start = start_of(static_cast<std::size_t>(peak_slot));
     double a = 0.0;
     CrossingBracket b;
     while (a < tau_end && polynomial_bracket(sp_peak_, a, tau_end, start, b) > 0) {
