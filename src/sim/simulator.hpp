@@ -162,7 +162,12 @@ class Simulator final : private GuardProbe {
   // a rigid body's rocking by its series with the guards bounded over the whole step
   bool series_bounded() const;
   bool advance_series(double& t, State& x);
-  void series_extremes(double t0, double tau_end, bool event);
+  // the series' reaction polynomials sp_fi_, sp_fj_, sp_moment_ on a step of length h
+  void reaction_polynomials(double h);
+  // `reaction`: whether reaction_polynomials ran on this step (it runs here where needed)
+  // `range`: the reaction's enclosure over the whole step
+  void series_extremes(double t0, double tau_end, bool event, const ReactionRange& range,
+                       bool& reaction);
   // counts a step toward max_steps: false (the run stops) past them
   bool count_step(double t);
   // the stepper could not take a step from t: the run stops, saying why
@@ -980,8 +985,8 @@ bool Simulator<N, MaxN>::advance_series(double& t, State& x) {
   if (opt_.progress) opt_.progress->store(t1, std::memory_order_relaxed);
   const int e = edge();
   const double sg = edge_sign(e);
-  // the guards' polynomials: s theta (impact), limit - s theta (overturn), s theta_dot (peak),
-  // F_J (lift-off) from the reaction's series
+  // the guards' polynomials: s theta (impact), limit - s theta (overturn), s theta_dot (peak);
+  // lift-off's, F_J, below
   const double* th = series_integ_.theta_coefficients();
   const double* dth = series_integ_.theta_rate_coefficients();  // k c[k]
   const int degree = series_integ_.order();
@@ -994,26 +999,22 @@ bool Simulator<N, MaxN>::advance_series(double& t, State& x) {
     if (k < degree) sp_peak_.c[i] = sg * dth[k + 1];
   }
   sp_overturn_.c[0] += overturn_limit_[static_cast<std::size_t>(e - 1)];
-  series_integ_.reaction_series(dyn_.g_over_h(), sp_fi_.c.data(), sp_fj_.c.data(),
-                                sp_moment_.c.data());
-  // the reaction's series is known to theta's power: its last two terms at h, doubled, stand for
-  // the rest
-  for (StepPolynomial* p : {&sp_fi_, &sp_fj_, &sp_moment_}) {
-    p->degree = degree;
-    double hk = 1.0, tail = 0.0;
-    for (int k = 0; k <= p->degree; ++k, hk *= h)
-      if (k + 1 >= p->degree) tail += std::abs(p->c[static_cast<std::size_t>(k)]) * hk;
-    p->margin = 2.0 * tail;
-  }
   // where the floor's pressing cannot be shown to hold throughout (a lift-off may come), the
-  // step is taken again with the guards sampled, as any step of a friction-limited run
-  if (!tension_ && !(sp_fj_.c[0] - sp_fj_.excursion(h) > sp_fj_.margin) &&
-      !(bernstein_piece(sp_fj_, 0.0, h, sp_fj_.c[0]).min() > sp_fj_.margin)) {
-    --res_.steps;
-    dense_buf_ = series_integ_.x0();
-    series_integ_.start(none, ctl_, t0, dense_buf_);
-    series_integ_.set_max_step(ctl_.max_step);
-    return advance_with(series_integ_, none, dense_buf_, t, x);
+  // step is taken again with the guards sampled, as any step of a friction-limited run: the
+  // reaction's enclosure settles most steps; its series (O(order^2)) only the rest
+  bool reaction = false;  // the reaction's series formed on this step (reaction_polynomials)
+  const ReactionRange range = series_integ_.reaction_range(dyn_.g_over_h(), h);
+  if (!tension_ && !(range.fj_lo > 0.0)) {
+    reaction_polynomials(h);
+    reaction = true;
+    if (!(sp_fj_.c[0] - sp_fj_.excursion(h) > sp_fj_.margin) &&
+        !(bernstein_piece(sp_fj_, 0.0, h, sp_fj_.c[0]).min() > sp_fj_.margin)) {
+      --res_.steps;
+      dense_buf_ = series_integ_.x0();
+      series_integ_.start(none, ctl_, t0, dense_buf_);
+      series_integ_.set_max_step(ctl_.max_step);
+      return advance_with(series_integ_, none, dense_buf_, t, x);
+    }
   }
   // the guards at the step's end, exactly (the next step's start)
   GuardSample& se = samples_buf_[1];
@@ -1075,7 +1076,7 @@ bool Simulator<N, MaxN>::advance_series(double& t, State& x) {
       start = GuardStart::kCrossed;
     }
   }
-  series_extremes(t0, tau_end, slot_hit >= 0);
+  series_extremes(t0, tau_end, slot_hit >= 0, range, reaction);
   if (slot_hit < 0) observe(se, xe);
   return end_step(series_integ_, none, slot_hit, t_hit, se, t, x);
 }
@@ -1085,8 +1086,25 @@ bool Simulator<N, MaxN>::advance_series(double& t, State& x) {
 // demand, the input work for the energy scale) is located on its polynomial and observed from the
 // exact state there; theta's are the peaks'. The end of a step without an event is observed by the
 // loop; where an event ends it, the state just before the reset is one of the motion's too.
+// the floor reaction's and the overturning moment's series on a series step of length h
 template <int N, int MaxN>
-void Simulator<N, MaxN>::series_extremes(double t0, double tau_end, bool event) {
+void Simulator<N, MaxN>::reaction_polynomials(double h) {
+  series_integ_.reaction_series(dyn_.g_over_h(), sp_fi_.c.data(), sp_fj_.c.data(),
+                                sp_moment_.c.data());
+  // the reaction's series is known to theta's power: its last two terms at h, doubled, stand for
+  // the rest
+  for (StepPolynomial* p : {&sp_fi_, &sp_fj_, &sp_moment_}) {
+    p->degree = series_integ_.order();
+    double hk = 1.0, tail = 0.0;
+    for (int k = 0; k <= p->degree; ++k, hk *= h)
+      if (k + 1 >= p->degree) tail += std::abs(p->c[static_cast<std::size_t>(k)]) * hk;
+    p->margin = 2.0 * tail;
+  }
+}
+
+template <int N, int MaxN>
+void Simulator<N, MaxN>::series_extremes(double t0, double tau_end, bool event,
+                                         const ReactionRange& range, bool& reaction) {
   if (!(tau_end > 0.0)) return;
   const Extremes& ex = res_.extremes;
   const double mg = dyn_.mass() * dyn_.g(), mgh = mg * dyn_.height();
@@ -1106,46 +1124,58 @@ void Simulator<N, MaxN>::series_extremes(double t0, double tau_end, bool event) 
     return scale * p.abs_bound(tau_end) > extreme &&
            scale * (bernstein_piece(p, 0.0, tau_end, p.c[0]).max_abs() + p.margin) > extreme;
   };
-  // F_I's and F_J's Bernstein forms serve the shear and the friction demand: formed once, where
-  // the coefficients' bounds do not settle either
-  BernsteinPiece bi, bj;
-  bool formed = false;
-  auto form = [&] {
-    if (formed) return;
-    bi = bernstein_piece(sp_fi_, 0.0, tau_end, sp_fi_.c[0]);
-    bj = bernstein_piece(sp_fj_, 0.0, tau_end, sp_fj_.c[0]);
-    formed = true;
-  };
-  if (mg * sp_fi_.abs_bound(tau_end) > ex.max_base_shear) {
-    form();
-    if (mg * (bi.max_abs() + sp_fi_.margin) > ex.max_base_shear)
-      at(polynomial_argmax([&](double tau) { return std::abs(sp_fi_.value(tau)); }, tau_end));
-  }
-  if (exceeds(sp_moment_, mgh, ex.max_overturning_moment))
-    at(polynomial_argmax([&](double tau) { return std::abs(sp_moment_.value(tau)); }, tau_end));
-  // F_I over F_J within the largest demand r so far: by the coefficients' bounds, else where
-  // |F_I| - r F_J <= 0 throughout by Bernstein's (linear in the coefficients)
   const double r = ex.max_friction_demand;
-  const double fj_swing = sp_fj_.excursion(tau_end) + sp_fj_.margin;
-  const double fj_lo = sp_fj_.c[0] - fj_swing, fj_hi = sp_fj_.c[0] + fj_swing;
-  bool within = fj_hi < kPressingFraction ||
-                (fj_lo >= kPressingFraction && sp_fi_.abs_bound(tau_end) / fj_lo <= r);
-  if (!within) {
-    form();
-    double worst = -std::numeric_limits<double>::infinity();
-    for (int i = 0; i <= bi.degree; ++i) {
-      const auto k = static_cast<std::size_t>(i);
-      worst = std::max(worst, std::abs(bi.b[k]) - r * bj.b[k]);
+  // the reaction's enclosure over the step first (O(order)): where it keeps the shear, the moment
+  // and the friction demand within their extremes so far, as on most steps, its series is not
+  // needed
+  const double fi_abs = std::max(std::abs(range.fi_lo), std::abs(range.fi_hi));
+  if (mg * fi_abs > ex.max_base_shear || mgh * range.moment_abs > ex.max_overturning_moment ||
+      !(range.fj_hi < kPressingFraction ||
+        (range.fj_lo >= kPressingFraction && fi_abs / range.fj_lo <= r))) {
+    if (!reaction) {
+      reaction_polynomials(series_integ_.t1() - series_integ_.t0());
+      reaction = true;
     }
-    within = worst + sp_fi_.margin + r * sp_fj_.margin <= 0.0;
+    // F_I's and F_J's Bernstein forms serve the shear and the friction demand: formed once, where
+    // the coefficients' bounds do not settle either
+    BernsteinPiece bi, bj;
+    bool formed = false;
+    auto form = [&] {
+      if (formed) return;
+      bi = bernstein_piece(sp_fi_, 0.0, tau_end, sp_fi_.c[0]);
+      bj = bernstein_piece(sp_fj_, 0.0, tau_end, sp_fj_.c[0]);
+      formed = true;
+    };
+    if (mg * sp_fi_.abs_bound(tau_end) > ex.max_base_shear) {
+      form();
+      if (mg * (bi.max_abs() + sp_fi_.margin) > ex.max_base_shear)
+        at(polynomial_argmax([&](double tau) { return std::abs(sp_fi_.value(tau)); }, tau_end));
+    }
+    if (exceeds(sp_moment_, mgh, ex.max_overturning_moment))
+      at(polynomial_argmax([&](double tau) { return std::abs(sp_moment_.value(tau)); }, tau_end));
+    // F_I over F_J within the largest demand r so far: by the coefficients' bounds, else where
+    // |F_I| - r F_J <= 0 throughout by Bernstein's (linear in the coefficients)
+    const double fj_swing = sp_fj_.excursion(tau_end) + sp_fj_.margin;
+    const double fj_lo = sp_fj_.c[0] - fj_swing, fj_hi = sp_fj_.c[0] + fj_swing;
+    bool within = fj_hi < kPressingFraction ||
+                  (fj_lo >= kPressingFraction && sp_fi_.abs_bound(tau_end) / fj_lo <= r);
+    if (!within) {
+      form();
+      double worst = -std::numeric_limits<double>::infinity();
+      for (int i = 0; i <= bi.degree; ++i) {
+        const auto k = static_cast<std::size_t>(i);
+        worst = std::max(worst, std::abs(bi.b[k]) - r * bj.b[k]);
+      }
+      within = worst + sp_fi_.margin + r * sp_fj_.margin <= 0.0;
+    }
+    if (!within)
+      at(polynomial_argmax(
+          [&](double tau) {
+            const double f = sp_fj_.value(tau);
+            return f >= kPressingFraction ? std::abs(sp_fi_.value(tau)) / f : 0.0;
+          },
+          tau_end));
   }
-  if (!within)
-    at(polynomial_argmax(
-        [&](double tau) {
-          const double f = sp_fj_.value(tau);
-          return f >= kPressingFraction ? std::abs(sp_fi_.value(tau)) / f : 0.0;
-        },
-        tau_end));
   sp_work_.degree = series_integ_.order() - 1;
   const double* w = series_integ_.work_coefficients();
   for (int k = 0; k <= sp_work_.degree; ++k) sp_work_.c[static_cast<std::size_t>(k)] = w[k];

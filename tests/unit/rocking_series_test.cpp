@@ -301,6 +301,88 @@ TEST(RockingSeries, OneStepUnderSinusoidsMatchesAnIndependentIntegration) {
   expect_dense_matches(series, rhs, ctl, t0, t1, x0);
 }
 
+// the reaction's enclosure over a step (reaction_range, which spares the event loop the reaction's
+// series on most steps) holds the reaction and the moment that the closed forms give on the step's
+// dense states, theta'' from the equation written out here; and it is not wider than the step's
+// own motion explains
+TEST(RockingSeries, ReactionRangeEnclosesTheReactionAlongTheStep) {
+  using State = Eigen::Vector4d;
+  const double h = 1.3, mass = 800.0, zeta2 = 0.4;
+  auto ax = [](double t) { return 3.1 * std::sin(9.0 * t + 0.3); };
+  auto ay = [](double t) { return -1.9 * std::sin(14.0 * t + 2.0); };
+  const GroundMotion pulse = GroundMotion::analytic(
+                                 [&](double t) {
+                                   return BaseAcceleration{ax(t), ay(t)};
+                                 },
+                                 2.0)
+                                 .with_sinusoids({SinusoidPiece{0.0, 2.0, 3.1, 9.0, 0.3, false},
+                                                  SinusoidPiece{0.0, 2.0, -1.9, 14.0, 2.0, true}});
+  const GroundMotion record =
+      GroundMotion::sampled({0.0, 0.1, 0.14, 0.2}, {0.0, 3.1, -4.7, 0.0}, {0.0, -1.9, 2.3, 0.0});
+  int checked = 0;
+  for (const GroundMotion* motion : {&pulse, &record}) {
+    for (double alpha : {-0.25, 0.3}) {
+      for (double theta_dot : {-0.3, 0.0, 0.8}) {
+        const double m = 1 + zeta2 + alpha * alpha, k = g / h / m, gh = g / h;
+        auto none = [](double, const State&, State&) {};
+        const State x0(0.05, theta_dot, 0.0, 0.0);
+        detail::RockingSeries<State> series(*motion);
+        series.set_pivot(alpha, k, mass * h * g, g);
+        series.start(none, tight_control(), 0.1, x0);
+        ASSERT_EQ(series.step(none, motion == &record ? 0.14 : 0.4),
+                  detail::RockingSeries<State>::Status::kAccepted);
+        const double t0 = series.t0(), t1 = series.t1();
+        const detail::ReactionRange r = series.reaction_range(gh, t1 - t0);
+        double fi_lo = 1e300, fi_hi = -1e300, fj_lo = 1e300, fj_hi = -1e300, mo = 0.0;
+        struct {
+          double fi, fj, moment;
+        } r0{};
+        State x;
+        for (int i = 0; i <= 400; ++i) {
+          const double t = t0 + (t1 - t0) * i / 400;
+          series.dense(t, x);
+          const BaseAcceleration a = motion->at(t);
+          const double u = a.x / g, v = 1 + a.y / g, s = std::sin(x(0)), c = std::cos(x(0));
+          const double dd = k * ((alpha * v + u) * c + (v - alpha * u) * s);
+          const double A = (alpha * x(1) * x(1) - dd) / gh, B = (alpha * dd + x(1) * x(1)) / gh;
+          const double fi = u + A * c + B * s, fj = v + A * s - B * c;
+          const double moment = alpha * (v * c - u * s - B);
+          if (i == 0) r0 = {fi, fj, moment};
+          fi_lo = std::min(fi_lo, fi);
+          fi_hi = std::max(fi_hi, fi);
+          fj_lo = std::min(fj_lo, fj);
+          fj_hi = std::max(fj_hi, fj);
+          mo = std::max(mo, std::abs(moment));
+        }
+        const double eps = 1e-9;
+        EXPECT_LE(r.fi_lo, fi_lo + eps);
+        EXPECT_GE(r.fi_hi, fi_hi - eps);
+        EXPECT_LE(r.fj_lo, fj_lo + eps);
+        EXPECT_GE(r.fj_hi, fj_hi - eps);
+        EXPECT_GE(r.moment_abs, mo - eps);
+        // and it closes on the reaction where the step starts as the step shrinks (the forms'
+        // values there), and under a record's linear forcing is no wider than a few times the
+        // quantity's own swing on the step (the interval arithmetic's dependency); a sinusoid's
+        // range by its Taylor terms' sum may overshoot more
+        const detail::ReactionRange at0 = series.reaction_range(gh, 1e-9);
+        const double f0i = r0.fi, f0j = r0.fj;
+        EXPECT_NEAR(at0.fi_lo, f0i, 1e-7);
+        EXPECT_NEAR(at0.fi_hi, f0i, 1e-7);
+        EXPECT_NEAR(at0.fj_lo, f0j, 1e-7);
+        EXPECT_NEAR(at0.fj_hi, f0j, 1e-7);
+        EXPECT_NEAR(at0.moment_abs, std::abs(r0.moment), 1e-7);
+        if (motion == &record) {
+          EXPECT_LE(r.fi_hi - r.fi_lo, 4.0 * (fi_hi - fi_lo) + 0.05);
+          EXPECT_LE(r.fj_hi - r.fj_lo, 4.0 * (fj_hi - fj_lo) + 0.05);
+          EXPECT_LE(r.moment_abs, 2.0 * mo + 0.05);
+        }
+        ++checked;
+      }
+    }
+  }
+  EXPECT_EQ(checked, 12);
+}
+
 // the impact and peak guards' crossings are found on the series polynomial: against the known
 // roots of a cubic, on both sides of its extremes, and the first time where the polynomial (as
 // Horner's rule evaluates it) is <= 0

@@ -2854,6 +2854,22 @@ def derive_rocking_series(order=5):
     res['series_reaction_forms'] = (is_zero(Fi / (M * g) - (u + A_ * C + B_ * S))
                                     and is_zero(Fj / (M * g) - (v + A_ * S - B_ * C))
                                     and is_zero(al * Fb[1] / (M * g) - al * (v * C - u * S - B_)))
+    # the same with theta'' = k (a1 u + b1 v) put in (the equation above), a1 = C - alpha S,
+    # b1 = alpha C + S, k/(g/h) = 1/m, as RockingSeries::reaction_range encloses them by interval
+    # arithmetic over a step: u, v and thd^2 each once per form
+    gh_ = g / h
+    m_ = 1 + z2 + al ** 2
+    a1, b1 = C - al * S, al * C + S
+    thdd_eq = k * (a1 * u + b1 * v)
+    on_eq = {thdd_: thdd_eq}
+    res['series_reaction_enclosure_forms'] = (
+        is_zero(thdd_eq - k * ((al * v + u) * C + (v - al * u) * S))
+        and is_zero((u + A_ * C + B_ * S).subs(on_eq)
+                    - (u * (1 - a1 ** 2 / m_) - v * a1 * b1 / m_ + thd ** 2 * b1 / gh_))
+        and is_zero((v + A_ * S - B_ * C).subs(on_eq)
+                    - (v * (1 - b1 ** 2 / m_) - u * a1 * b1 / m_ - thd ** 2 * a1 / gh_))
+        and is_zero((al * (v * C - u * S - B_)).subs(on_eq)
+                    - al * (u * (-S - al * a1 / m_) + v * (C - al * b1 / m_) - thd ** 2 / gh_)))
     # the recurrence: the polynomial's residual in the equation, and sin, cos, the work, vanish to
     # the powers the series claims; the parameters as exact rationals (symbols make the series
     # expansion slow), the initial state symbolic
