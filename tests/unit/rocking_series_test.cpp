@@ -52,6 +52,23 @@ GroundMotion random_record(unsigned seed, double amplitude, double duration, dou
   return GroundMotion::sampled(t, ax, ay);
 }
 
+// the one-step tests' motions: a record whose interval [0.1, 0.14] has both components, and two
+// sinusoids (one per component) on [0, 2] s
+GroundMotion one_record_interval() {
+  return GroundMotion::sampled({0.0, 0.1, 0.14, 0.2}, {0.0, 3.1, -4.7, 0.0}, {0.0, -1.9, 2.3, 0.0});
+}
+double pulse_x(double t) { return 3.1 * std::sin(9.0 * t + 0.3); }
+double pulse_y(double t) { return -1.9 * std::sin(14.0 * t + 2.0); }
+GroundMotion two_sinusoids() {
+  return GroundMotion::analytic(
+             [](double t) {
+               return BaseAcceleration{pulse_x(t), pulse_y(t)};
+             },
+             2.0)
+      .with_sinusoids({SinusoidPiece{0.0, 2.0, 3.1, 9.0, 0.3, false},
+                       SinusoidPiece{0.0, 2.0, -1.9, 14.0, 2.0, true}});
+}
+
 // free rocking of a symmetric rigid block: the time to fall from a peak th0 to theta = 0 by
 // quadrature of the energy integral (as in the validation tests and bench/peers/compare.py)
 double fall_time(double alpha, double m, double h, double th0) {
@@ -199,8 +216,7 @@ TEST(RockingSeries, OneStepMatchesAnIndependentIntegration) {
   const double alpha = -0.25, zeta2 = 0.4, h = 1.3, mass = 800.0;
   const double m = 1 + zeta2 + alpha * alpha, k = g / h / m;
   // one record interval [0.1, 0.14] of both components
-  const GroundMotion motion =
-      GroundMotion::sampled({0.0, 0.1, 0.14, 0.2}, {0.0, 3.1, -4.7, 0.0}, {0.0, -1.9, 2.3, 0.0});
+  const GroundMotion motion = one_record_interval();
   const double t0 = 0.1, t1 = 0.14;
   auto rhs = [&](double t, const State& x, State& dx) {
     const BaseAcceleration a = motion.at(t);
@@ -272,15 +288,9 @@ TEST(RockingSeries, OneStepUnderSinusoidsMatchesAnIndependentIntegration) {
   using State = Eigen::Vector4d;
   const double alpha = 0.3, zeta2 = 0.4, h = 1.3, mass = 800.0;
   const double m = 1 + zeta2 + alpha * alpha, k = g / h / m;
-  auto ax = [](double t) { return 3.1 * std::sin(9.0 * t + 0.3); };
-  auto ay = [](double t) { return -1.9 * std::sin(14.0 * t + 2.0); };
-  const GroundMotion motion = GroundMotion::analytic(
-                                  [&](double t) {
-                                    return BaseAcceleration{ax(t), ay(t)};
-                                  },
-                                  2.0)
-                                  .with_sinusoids({SinusoidPiece{0.0, 2.0, 3.1, 9.0, 0.3, false},
-                                                   SinusoidPiece{0.0, 2.0, -1.9, 14.0, 2.0, true}});
+  auto ax = pulse_x;
+  auto ay = pulse_y;
+  const GroundMotion motion = two_sinusoids();
   auto rhs = [&](double t, const State& x, State& dx) {
     const double u = ax(t) / g, v = 1 + ay(t) / g, s = std::sin(x(0)), c = std::cos(x(0));
     dx(0) = x(1);
@@ -308,17 +318,8 @@ TEST(RockingSeries, OneStepUnderSinusoidsMatchesAnIndependentIntegration) {
 TEST(RockingSeries, ReactionRangeEnclosesTheReactionAlongTheStep) {
   using State = Eigen::Vector4d;
   const double h = 1.3, mass = 800.0, zeta2 = 0.4;
-  auto ax = [](double t) { return 3.1 * std::sin(9.0 * t + 0.3); };
-  auto ay = [](double t) { return -1.9 * std::sin(14.0 * t + 2.0); };
-  const GroundMotion pulse = GroundMotion::analytic(
-                                 [&](double t) {
-                                   return BaseAcceleration{ax(t), ay(t)};
-                                 },
-                                 2.0)
-                                 .with_sinusoids({SinusoidPiece{0.0, 2.0, 3.1, 9.0, 0.3, false},
-                                                  SinusoidPiece{0.0, 2.0, -1.9, 14.0, 2.0, true}});
-  const GroundMotion record =
-      GroundMotion::sampled({0.0, 0.1, 0.14, 0.2}, {0.0, 3.1, -4.7, 0.0}, {0.0, -1.9, 2.3, 0.0});
+  const GroundMotion pulse = two_sinusoids();
+  const GroundMotion record = one_record_interval();
   int checked = 0;
   for (const GroundMotion* motion : {&pulse, &record}) {
     for (double alpha : {-0.25, 0.3}) {
