@@ -31,7 +31,6 @@ struct Span {
   friend Span operator*(double s, Span a) {
     return s >= 0.0 ? Span{s * a.lo, s * a.hi} : Span{s * a.hi, s * a.lo};
   }
-  friend Span operator*(Span a, double s) { return s * a; }
   friend Span square(Span a) {
     const double least = a.lo > 0.0 ? a.lo : a.hi < 0.0 ? -a.hi : 0.0;
     const double most = std::max(-a.lo, a.hi);

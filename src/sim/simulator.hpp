@@ -1081,11 +1081,6 @@ bool Simulator<N, MaxN>::advance_series(double& t, State& x) {
   return end_step(series_integ_, none, slot_hit, t_hit, se, t, x);
 }
 
-// the extremes over [t0, t0 + tau_end] of a series step: a quantity whose bound there could
-// exceed its extreme so far (the shear, the overturning moment, F_I over F_J for the friction
-// demand, the input work for the energy scale) is located on its polynomial and observed from the
-// exact state there; theta's are the peaks'. The end of a step without an event is observed by the
-// loop; where an event ends it, the state just before the reset is one of the motion's too.
 // the floor reaction's and the overturning moment's series on a series step of length h
 template <int N, int MaxN>
 void Simulator<N, MaxN>::reaction_polynomials(double h) {
@@ -1102,6 +1097,11 @@ void Simulator<N, MaxN>::reaction_polynomials(double h) {
   }
 }
 
+// the extremes over [t0, t0 + tau_end] of a series step: a quantity whose bound there could
+// exceed its extreme so far (the shear, the overturning moment, F_I over F_J for the friction
+// demand, the input work for the energy scale) is located on its polynomial and observed from the
+// exact state there; theta's are the peaks'. The end of a step without an event is observed by the
+// loop; where an event ends it, the state just before the reset is one of the motion's too.
 template <int N, int MaxN>
 void Simulator<N, MaxN>::series_extremes(double t0, double tau_end, bool event,
                                          const ReactionRange& range, bool& reaction) {

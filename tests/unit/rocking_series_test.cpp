@@ -366,11 +366,10 @@ TEST(RockingSeries, ReactionRangeEnclosesTheReactionAlongTheStep) {
         // quantity's own swing on the step (the interval arithmetic's dependency); a sinusoid's
         // range by its Taylor terms' sum may overshoot more
         const detail::ReactionRange at0 = series.reaction_range(gh, 1e-9);
-        const double f0i = r0.fi, f0j = r0.fj;
-        EXPECT_NEAR(at0.fi_lo, f0i, 1e-7);
-        EXPECT_NEAR(at0.fi_hi, f0i, 1e-7);
-        EXPECT_NEAR(at0.fj_lo, f0j, 1e-7);
-        EXPECT_NEAR(at0.fj_hi, f0j, 1e-7);
+        EXPECT_NEAR(at0.fi_lo, r0.fi, 1e-7);
+        EXPECT_NEAR(at0.fi_hi, r0.fi, 1e-7);
+        EXPECT_NEAR(at0.fj_lo, r0.fj, 1e-7);
+        EXPECT_NEAR(at0.fj_hi, r0.fj, 1e-7);
         EXPECT_NEAR(at0.moment_abs, std::abs(r0.moment), 1e-7);
         if (motion == &record) {
           EXPECT_LE(r.fi_hi - r.fi_lo, 4.0 * (fi_hi - fi_lo) + 0.05);
