@@ -302,21 +302,19 @@ class ContactPropagator {
       eval(&piece_->steps[static_cast<std::size_t>(kr) * static_cast<std::size_t>(n_)], tk,
            tau - tk, qo_, qdo_);
     } else {
-      // elsewhere (the extremes' search) as the particular solution plus the free part,
-      // s = P0 + P1 tau + e^{B tau} (s(0) - P0), by the closed form of e^{B tau}
-      for (int i = 0; i < n_; ++i) {
-        const Eigen::Matrix2d e = mode_exponential(omega_(i), damp_(i), tau);
-        const double sd =
-            e(0, 0) * hd_(i) + e(0, 1) * hv_(i) + p0d_(i) + g1_(i) * inv_omega_(i) * tau;
-        const double sv = e(1, 0) * hd_(i) + e(1, 1) * hv_(i) + p0v_(i);
-        eta_(i) = sd * inv_omega_(i) + eta_static_(i);
-        etad_(i) = sv;
-      }
+      modal_at(tau);
       qo_.noalias() = Dyn::mv(from_modal_, eta_);
       qdo_.noalias() = Dyn::mv(from_modal_, etad_);
     }
     x.segment(1, n_) = qo_;
     x.segment(n_ + 2, n_) = qdo_;
+  }
+
+  /// q_j alone at tau within the last piece, exactly: what the search for q_j's extreme needs
+  /// of walk_dense, without the other components' products and the velocities.
+  double walk_q(double tau, int j) const {
+    modal_at(tau);
+    return from_modal_.row(j).dot(eta_);
   }
 
   /// Bounds on the excursion from their chord, over any part of length w of the last piece, of the
@@ -375,6 +373,19 @@ class ContactPropagator {
   }
 
  private:
+  // the modal state (eta_, etad_) at tau within the last piece, as the particular solution plus
+  // the free part, s = P0 + P1 tau + e^{B tau} (s(0) - P0), by the closed form of e^{B tau}
+  void modal_at(double tau) const {
+    for (int i = 0; i < n_; ++i) {
+      const Eigen::Matrix2d e = mode_exponential(omega_(i), damp_(i), tau);
+      const double sd =
+          e(0, 0) * hd_(i) + e(0, 1) * hv_(i) + p0d_(i) + g1_(i) * inv_omega_(i) * tau;
+      const double sv = e(1, 0) * hd_(i) + e(1, 1) * hv_(i) + p0v_(i);
+      eta_(i) = sd * inv_omega_(i) + eta_static_(i);
+      etad_(i) = sv;
+    }
+  }
+
   // a piece length's steps of the modes: at its end, then at its kept points h k / kPoints
   struct Piece {
     double h = -1.0;
@@ -609,6 +620,7 @@ class ContactPropagator<0, MaxN, State> {
   void walk_piece(double, BaseAcceleration, BaseAcceleration, bool = true) {}
   void walk_state(State&) const {}
   void walk_dense(double, State&) const {}
+  double walk_q(double, int) const { return 0.0; }
   Excursion walk_excursion(double, double, double, double, double) const { return {}; }
   double walk_q_excursion(int, double) const { return 0.0; }
   double t0() const { return 0.0; }

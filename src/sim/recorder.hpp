@@ -36,6 +36,10 @@ class Recorder {
 
   /// Folds one instant into the extremes (inline: the loop calls it at every sample).
   void observe(const Observation& o);
+  /// Folds a value |q_j| that a search for its extreme found at some instant.
+  void observe_deformation(int j, double abs_q) {
+    res_.extremes.max_abs_q(j) = std::max(res_.extremes.max_abs_q(j), abs_q);
+  }
   /// Appends one history row.
   void row(const Observation& o, BaseAcceleration base, double kinetic, double potential,
            double resultant, double impact_loss);

@@ -1375,8 +1375,8 @@ void Simulator<N, MaxN>::emit_walk_rows(double tp0, double tp1) {
 
 // the extremes the piece [tp0, tp0 + h] could raise between its ends (by the excursion bounds
 // `e`), located: the exact solution at the piece's kept points, then Brent's search about the
-// largest of each such quantity; every point searched is observed, so the extremes stay values
-// the motion reaches
+// largest of each such quantity; every point searched is observed (by a deformation's search,
+// its own value), so the extremes stay values the motion reaches
 template <int N, int MaxN>
 void Simulator<N, MaxN>::locate_extremes(double tp0, double h, const GuardSample& sa,
                                          const GuardSample& sb, const Excursion& e) {
@@ -1402,12 +1402,18 @@ void Simulator<N, MaxN>::locate_extremes(double tp0, double h, const GuardSample
       !(fj_lo >= kPressingFraction && fi_top / fj_lo <= ex.max_friction_demand))
     wanted[static_cast<std::size_t>(count++)] = n_ + 2;
   if (count == 0) return;
-  // the quantity `k` at tau in the piece (observed on the way)
+  // the state at tau in the piece, and the guards where a reaction's extreme is sought (they
+  // come after the deformations in `wanted`), observed on the way
+  const bool guards = wanted[static_cast<std::size_t>(count - 1)] >= n_;
   GuardSample s;
-  auto value = [&](int k, double tau) {
+  auto visit = [&](double tau) {
     prop_.walk_dense(tau, xr_);
+    if (!guards) return;
     evaluate(tp0 + tau, xr_, s);
     observe(s, xr_);
+  };
+  // the quantity `k` of the point visited last
+  auto quantity = [&](int k) {
     if (k < n_) return std::abs(xr_(iq() + k));
     if (k == n_) return std::abs(s.fi);
     if (k == n_ + 1) return std::abs(s.moment);
@@ -1420,8 +1426,9 @@ void Simulator<N, MaxN>::locate_extremes(double tp0, double h, const GuardSample
   std::fill(best.begin(), best.end(), -1.0);
   for (int p = 1; p < kPoints; ++p) {
     const double tau = h * p / kPoints;
+    visit(tau);
     for (int q = 0; q < count; ++q) {
-      const double v = value(wanted[static_cast<std::size_t>(q)], tau);
+      const double v = quantity(wanted[static_cast<std::size_t>(q)]);
       if (v > best[static_cast<std::size_t>(q)]) {
         best[static_cast<std::size_t>(q)] = v;
         at[static_cast<std::size_t>(q)] = tau;
@@ -1429,14 +1436,26 @@ void Simulator<N, MaxN>::locate_extremes(double tp0, double h, const GuardSample
     }
   }
   // Brent's search on [at - h/kPoints, at + h/kPoints] for each quantity, to 16 bits of that
-  // bracket: a smooth maximum's value is then found to ~1e-10 of its curvature scale
+  // bracket: a smooth maximum's value is then found to ~1e-10 of its curvature scale. A
+  // deformation q_j needs only its own value (ContactPropagator::walk_q), not the guards
   for (int q = 0; q < count; ++q) {
     const int k = wanted[static_cast<std::size_t>(q)];
     const double lo = std::max(0.0, at[static_cast<std::size_t>(q)] - h / kPoints);
     const double hi = std::min(h, at[static_cast<std::size_t>(q)] + h / kPoints);
     std::uintmax_t iterations = 40;
-    boost::math::tools::brent_find_minima([&](double tau) { return -value(k, tau); }, lo, hi, 16,
-                                          iterations);
+    if (k < n_) {
+      rec_.observe_deformation(k, best[static_cast<std::size_t>(q)]);
+      const auto found = boost::math::tools::brent_find_minima(
+          [&](double tau) { return -std::abs(prop_.walk_q(tau, k)); }, lo, hi, 16, iterations);
+      rec_.observe_deformation(k, -found.second);
+    } else {
+      boost::math::tools::brent_find_minima(
+          [&](double tau) {
+            visit(tau);
+            return -quantity(k);
+          },
+          lo, hi, 16, iterations);
+    }
   }
 }
 
