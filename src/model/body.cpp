@@ -147,12 +147,13 @@ Body::Body(BodyParameters params) : p_(std::move(params)) {
 
   // pinned-base modes: K phi = omega^2 mu phi, phi mass-normalised
   omega_.resize(n_);
-  MatrixX phi(n_, n_);
+  phi_.resize(n_, n_);
   if (n_ > 0) {
     Eigen::GeneralizedSelfAdjointEigenSolver<MatrixX> ges(stiffness_, p_.mu);
     omega_ = ges.eigenvalues().cwiseSqrt();
-    phi = ges.eigenvectors();
+    phi_ = ges.eigenvectors();
   }
+  const MatrixX& phi = phi_;
 
   // material damping
   damping_ = MatrixX::Zero(n_, n_);
@@ -261,6 +262,42 @@ Body::Body(BodyParameters params) : p_(std::move(params)) {
                                            " below 90 degrees; the body is too flexible");
     (edge == 1 ? theta_c1_ : theta_c2_) = found;
   }
+}
+
+Body Body::in_modal_coordinates() const {
+  Body m(*this);
+  if (n_ == 0) return m;
+  // q = Phi eta in the energies (docs/theory.md, "Modal coordinates"): Phi^T mu Phi = I and
+  // Phi^T K Phi = diag(omega^2) by the eigenproblem, so those are set exactly; the rest is the
+  // congruence, gamma' kept antisymmetric to the last bit
+  const MatrixX& f = phi_;
+  const double gh = p_.gravity / p_.height;
+  BodyParameters& p = m.p_;
+  p.mu = MatrixX::Identity(n_, n_);
+  p.kappa = (omega_.cwiseAbs2() / gh).asDiagonal();
+  const MatrixX g = f.transpose() * p_.gamma * f;
+  p.gamma = 0.5 * (g - g.transpose());
+  p.psi_x = f.transpose() * p_.psi_x;
+  // the static sag mapped, eta_s = Phi^T mu r, with psi_y' = -kappa' eta_s: the given body's
+  // refined equilibrium exactly. Phi^T psi_y differs from it by the eigensolver's rounding,
+  // cond(K) ulp, which would put a soft mode beside a stiff one at rest 1e-8 of its sag away
+  // from where the given data hold it, and swing it about there
+  const VectorX eta_s = f.transpose() * (p_.mu * q_static_);
+  p.psi_y = -p.kappa.diagonal().cwiseProduct(eta_s);
+  p.delta = f.transpose() * p_.delta;
+  p.beta = f.transpose() * p_.beta;
+  // Phi^T C Phi is diag(2 zeta omega) for Rayleigh and modal damping alike
+  p.damping = p_.damping.kind == DampingKind::kNone
+                  ? Damping{}
+                  : Damping{DampingKind::kModal, 0.0, 0.0, ratios_};
+  m.mu_inv_ = p.mu;
+  m.stiffness_ = gh * p.kappa;
+  m.damping_ = (2.0 * ratios_.cwiseProduct(omega_)).asDiagonal();
+  const MatrixX mu_cg = p.mu - p.psi_x * p.psi_x.transpose() - p.psi_y * p.psi_y.transpose();
+  m.mu_cg_inv_ = mu_cg.llt().solve(MatrixX::Identity(n_, n_));
+  m.q_static_ = eta_s;
+  m.phi_ = p.mu;
+  return m;
 }
 
 VectorX solve_refined(const MatrixX& a, const VectorX& b) {

@@ -99,6 +99,7 @@ class ContactPropagator {
     if (!decompose_contact_matrix(dyn.mu(), dyn.stiffness(), dyn.damping(), modes)) return;
     from_modal_ = modes.from_modal;
     to_modal_ = modes.to_modal;
+    user_from_modal_ = from_modal_;
     omega_ = modes.omega;
     damp_ = modes.damping;
     h_cap_ = kMaxPhase / modes.rate;
@@ -310,11 +311,16 @@ class ContactPropagator {
     x.segment(n_ + 2, n_) = qdo_;
   }
 
-  /// q_j alone at tau within the last piece, exactly: what the search for q_j's extreme needs
+  /// The deformation as the run reports it, u = T q (the body's coordinates, where the state's
+  /// are its modal ones): walk_q and walk_q_excursion are of u.
+  void output_basis(const Mat& t) {
+    if (available()) user_from_modal_ = t * from_modal_;
+  }
+  /// u_j alone at tau within the last piece, exactly: what the search for u_j's extreme needs
   /// of walk_dense, without the other components' products and the velocities.
   double walk_q(double tau, int j) const {
     modal_at(tau);
-    return from_modal_.row(j).dot(eta_);
+    return user_from_modal_.row(j).dot(eta_);
   }
 
   /// Bounds on the excursion from their chord, over any part of length w of the last piece, of the
@@ -363,12 +369,13 @@ class ContactPropagator {
     return e;
   }
 
-  /// A bound on the excursion of q_j from its chord over any part of length w of the last piece.
+  /// A bound on the excursion of u_j from its chord over any part of length w of the last piece.
   double walk_q_excursion(int j, double w) const {
     const double w8 = 0.125 * w * w;
     double e = 0.0;
     for (int i = 0; i < n_; ++i)
-      e += std::abs(from_modal_(j, i)) * std::min(w8 * bound_[2](i), 2.0 * hom_(i) * inv_omega_(i));
+      e += std::abs(user_from_modal_(j, i)) *
+           std::min(w8 * bound_[2](i), 2.0 * hom_(i) * inv_omega_(i));
     return e;
   }
 
@@ -561,6 +568,7 @@ class ContactPropagator {
   double h_cap_ = 0.0;
   bool available_ = false;
   Mat from_modal_, to_modal_;                  // phi and phi^T mu
+  Mat user_from_modal_;                        // T phi (output_basis)
   Vec omega_, damp_, gxm_, gym_, eta_static_;  // per mode: w, c, forcing per X'' and per g
   Vec inv_omega_, pxm_, pym_;                  // 1/w, Phi^T psi_x, Phi^T psi_y
   double mh_ = 0.0, mh2_ = 0.0;                // M h [kg m], M h^2 [kg m^2]
@@ -621,6 +629,8 @@ class ContactPropagator<0, MaxN, State> {
   void walk_state(State&) const {}
   void walk_dense(double, State&) const {}
   double walk_q(double, int) const { return 0.0; }
+  template <class Mat>
+  void output_basis(const Mat&) {}
   Excursion walk_excursion(double, double, double, double, double) const { return {}; }
   double walk_q_excursion(int, double) const { return 0.0; }
   double t0() const { return 0.0; }

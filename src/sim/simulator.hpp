@@ -62,6 +62,7 @@ class Simulator final : private GuardProbe {
   static constexpr int MaxSL = MaxN == Eigen::Dynamic ? Eigen::Dynamic : 2 * MaxN + 7;
   using Dyn = Dynamics<N, MaxN>;
   using Vec = typename Dyn::Vec;
+  using Mat = typename Dyn::Mat;
   // theta, q[n], theta_dot, q_dot[n], input work, damping loss, then the flight coordinates x_c,
   // y_c, xc_dot, yc_dot of the c.g. relative to the base (in flight only), then the slip d, d_dot
   // of the base and the friction work (theory §18; d and d_dot meaningful while sliding)
@@ -239,7 +240,12 @@ class Simulator final : private GuardProbe {
   void emit_row(double t, const State& x);
   void finish(double t, const State& x);
 
-  const Body& body_;
+  // the body in its pinned-base modal coordinates q, which the state carries; the deformation
+  // it reports is the given body's, u = to_user_ q (docs/theory.md, "Modal coordinates")
+  const Body body_;
+  Mat to_user_, from_user_;  // Phi and Phi^-1 = Phi^T mu
+  mutable Vec qu_, qdu_;     // u and u_dot of the last observation
+  Vec ue_;                   // scratch: u at a walk's piece's end
   Dyn dyn_;
   const GroundMotion& motion_;
   SimulationOptions opt_;
@@ -325,8 +331,10 @@ class Simulator final : private GuardProbe {
 template <int N, int MaxN>
 Simulator<N, MaxN>::Simulator(const Body& body, const GroundMotion& motion,
                               const SimulationOptions& opt)
-    : body_(body),
-      dyn_(body),
+    : body_(body.in_modal_coordinates()),
+      to_user_(body.pinned_base_modes()),
+      from_user_(body.pinned_base_modes().transpose() * body.params().mu),
+      dyn_(body_),
       motion_(motion),
       opt_(opt),
       n_(body.modes()),
@@ -334,6 +342,10 @@ Simulator<N, MaxN>::Simulator(const Body& body, const GroundMotion& motion,
       series_integ_(motion),
       prop_(dyn_, motion, samples_, opt.max_step, opt.exact_full_contact),
       rec_(res_, body.params().mass, body.g(), body.params().height, body.modes()) {
+  prop_.output_basis(to_user_);
+  qu_.resize(n_);
+  qdu_.resize(n_);
+  ue_.resize(n_);
   q_.resize(n_);
   qd_.resize(n_);
   qdd_.resize(n_);
@@ -376,8 +388,9 @@ SimulationResult Simulator<N, MaxN>::run(const InitialState& init) {
   x.setZero();
   x(0) = init.theta;
   x(ithd()) = init.theta_dot;
-  x.segment(iq(), n_) = init.q.size() == n_ ? init.q : VectorX(body_.static_deformation());
-  if (init.q_dot.size() == n_) x.segment(iqd(), n_) = init.q_dot;
+  x.segment(iq(), n_) =
+      init.q.size() == n_ ? Vec(from_user_ * init.q) : Vec(body_.static_deformation());
+  if (init.q_dot.size() == n_) x.segment(iqd(), n_) = from_user_ * init.q_dot;
   if (init.theta > 0.0 || (init.theta == 0.0 && init.theta_dot > 0.0)) {
     mode_ = ContactMode::kRockingEdge1;
   } else if (init.theta < 0.0 || init.theta_dot < 0.0) {
@@ -1386,9 +1399,10 @@ void Simulator<N, MaxN>::locate_extremes(double tp0, double h, const GuardSample
   // n: shear, n + 1: moment, n + 2: friction demand
   std::vector<int>& wanted = wanted_;
   int count = 0;
+  qu_.noalias() = Dyn::mv(to_user_, xw_.segment(iq(), n_));
+  ue_.noalias() = Dyn::mv(to_user_, xe_.segment(iq(), n_));
   for (int j = 0; j < n_; ++j) {
-    const double top =
-        std::max(std::abs(xw_(iq() + j)), std::abs(xe_(iq() + j))) + prop_.walk_q_excursion(j, h);
+    const double top = std::max(std::abs(qu_(j)), std::abs(ue_(j))) + prop_.walk_q_excursion(j, h);
     if (top > ex.max_abs_q(j)) wanted[static_cast<std::size_t>(count++)] = j;
   }
   const double fi_top = std::max(std::abs(sa.fi), std::abs(sb.fi)) + e.fi;
@@ -1414,7 +1428,9 @@ void Simulator<N, MaxN>::locate_extremes(double tp0, double h, const GuardSample
   };
   // the quantity `k` of the point visited last
   auto quantity = [&](int k) {
-    if (k < n_) return std::abs(xr_(iq() + k));
+    if (k < n_) {
+      if constexpr (N != 0) return std::abs(to_user_.row(k).dot(xr_.segment(iq(), n_)));
+    }
     if (k == n_) return std::abs(s.fi);
     if (k == n_ + 1) return std::abs(s.moment);
     return s.fj >= kPressingFraction ? std::abs(s.fi) / s.fj : 0.0;
@@ -1743,9 +1759,12 @@ bool Simulator<N, MaxN>::lift_off(double t, State& x) {
   // modelled here; the floor is let pull (flagged) until it presses again (theory "Lift-off")
   const BaseAcceleration a = motion_.at(t, event_cursor_);
   const int pivot = mode_spec(mode_).pivot;
+  // (a sliding pivot's friction vanishes with F_J: no such case, theory "Lift-off from a sliding
+  // mode"; there the corner's free acceleration is zero to rounding and its sign says nothing)
   const bool dives =
-      (pivot != 2 && dyn_.free_corner_acceleration(1, sn, cs, q_, x(ithd()), qd_, a) < 0.0) ||
-      (pivot != 1 && dyn_.free_corner_acceleration(2, sn, cs, q_, x(ithd()), qd_, a) < 0.0);
+      !sliding() &&
+      ((pivot != 2 && dyn_.free_corner_acceleration(1, sn, cs, q_, x(ithd()), qd_, a) < 0.0) ||
+       (pivot != 1 && dyn_.free_corner_acceleration(2, sn, cs, q_, x(ithd()), qd_, a) < 0.0));
   if (dives) {
     tension_ = true;
     res_.pivot_tension = true;
@@ -2259,8 +2278,12 @@ inline Observation Simulator<N, MaxN>::observation(double t, const State& x, con
   o.mode = mode_;
   o.theta = x(0);
   o.theta_dot = x(ithd());
-  o.q = x.data() + iq();
-  o.q_dot = x.data() + iqd();
+  if (n_ > 0) {
+    qu_.noalias() = Dyn::mv(to_user_, x.segment(iq(), n_));
+    qdu_.noalias() = Dyn::mv(to_user_, x.segment(iqd(), n_));
+  }
+  o.q = qu_.data();
+  o.q_dot = qdu_.data();
   o.fi = s.fi;
   o.fj = s.fj;
   o.moment = s.moment;
@@ -2328,8 +2351,8 @@ void Simulator<N, MaxN>::finish(double t, const State& x) {
   res_.final_phase = mode_;
   res_.final_theta = x(0);
   res_.final_theta_dot = x(ithd());
-  res_.final_q = x.segment(iq(), n_);
-  res_.final_q_dot = x.segment(iqd(), n_);
+  res_.final_q = to_user_ * x.segment(iq(), n_);
+  res_.final_q_dot = to_user_ * x.segment(iqd(), n_);
   res_.final_offset = offset_of(x);
   EnergyBalance& e = res_.energy;
   const double kin = kinetic_energy(x);

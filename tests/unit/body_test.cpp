@@ -10,6 +10,7 @@
 #include <limits>
 
 #include "flexrock/core/error.hpp"
+#include "flexrock/model/dynamics.hpp"
 #include "support/bodies.hpp"
 
 namespace flexrock {
@@ -164,6 +165,95 @@ TEST(BodyDerived, FlexibleTippingAngleSatisfiesStaticEquilibrium) {
     // tan(theta) = (psi_x.q - alpha)/(1 + psi_y.q)   (paper, above eq. 5)
     EXPECT_NEAR(std::tan(th), (p.psi_x.dot(q) - a) / (1 + p.psi_y.dot(q)), 1e-12);
   }
+}
+
+// The body in its pinned-base modal coordinates (docs/theory.md, "Modal coordinates") is the
+// congruence of the given one by Phi, with mu = I and kappa, C diagonal to the last bit, and its
+// equations (the modal fast path of Dynamics) give the given body's accelerations, reaction and
+// energies (the general path) at q = Phi eta
+template <int N>
+void expect_modal_coordinates_map_the_motion(const BodyParameters& p) {
+  const Body b(p);
+  const Body m = b.in_modal_coordinates();
+  const int n = b.modes();
+  const MatrixX& phi = b.pinned_base_modes();
+  const MatrixX id = MatrixX::Identity(n, n);
+  EXPECT_LT((phi.transpose() * p.mu * phi - id).norm(), 1e-12);
+  EXPECT_EQ(m.params().mu, id);
+  EXPECT_EQ(m.pinned_base_modes(), id);
+  auto off_diagonal = [](const MatrixX& a) {
+    return (a - MatrixX(a.diagonal().asDiagonal())).norm();
+  };
+  EXPECT_EQ(off_diagonal(m.params().kappa), 0.0);
+  EXPECT_EQ(off_diagonal(m.damping_matrix()), 0.0);
+  auto near = [](const auto& got, const auto& want) {
+    EXPECT_LT((got - want).norm(), 1e-11 * (1.0 + want.norm())) << got << "\nvs\n" << want;
+  };
+  near(m.params().kappa, MatrixX(phi.transpose() * p.kappa * phi));
+  near(m.params().gamma, MatrixX(phi.transpose() * p.gamma * phi));
+  EXPECT_EQ(m.params().gamma + m.params().gamma.transpose(), MatrixX::Zero(n, n));
+  near(m.damping_matrix(), MatrixX(phi.transpose() * b.damping_matrix() * phi));
+  near(m.params().psi_x, VectorX(phi.transpose() * p.psi_x));
+  near(m.params().psi_y, VectorX(phi.transpose() * p.psi_y));
+  near(m.params().delta, VectorX(phi.transpose() * p.delta));
+  near(m.params().beta, VectorX(phi.transpose() * p.beta));
+  near(VectorX(phi * m.static_deformation()), b.static_deformation());
+  near(m.natural_frequencies(), b.natural_frequencies());
+  near(m.damping_ratios(), b.damping_ratios());
+  EXPECT_EQ(m.tipping_angle(1), b.tipping_angle(1));
+  EXPECT_EQ(m.rocking_frequency(), b.rocking_frequency());
+
+  using Dyn = Dynamics<N>;
+  const Dyn dq(b), de(m);
+  typename Dyn::Vec eta(n), etad(n), q(n), qd(n), qdd(n), etadd(n);
+  for (int i = 0; i < n; ++i) {
+    eta(i) = 0.01 * std::sin(1.0 + i) + m.static_deformation()(i);
+    etad(i) = 0.3 * std::cos(2.0 + 3.0 * i);
+  }
+  q = phi * eta;
+  qd = phi * etad;
+  const BaseAcceleration base{2.1, -1.3};
+  for (int edge : {1, 2}) {
+    const double theta = edge == 1 ? 0.07 : -0.05, thd = edge == 1 ? -0.4 : 0.3;
+    double thdd_q = 0.0, thdd_e = 0.0;
+    dq.rocking_acceleration(edge, theta, q, thd, qd, base, thdd_q, qdd);
+    de.rocking_acceleration(edge, theta, eta, thd, etad, base, thdd_e, etadd);
+    EXPECT_NEAR(thdd_e, thdd_q, 1e-11 * (1.0 + std::abs(thdd_q)));
+    near(VectorX(phi * etadd), VectorX(qdd));
+    near(de.rocking_reaction(edge, theta, eta, thd, etad, thdd_e, etadd, base),
+         dq.rocking_reaction(edge, theta, q, thd, qd, thdd_q, qdd, base));
+    const double a = dq.alpha(edge);
+    EXPECT_NEAR(de.kinetic_energy(a, eta, thd, etad), dq.kinetic_energy(a, q, thd, qd),
+                1e-11 * dq.kinetic_energy(a, q, thd, qd));
+    EXPECT_NEAR(de.potential_energy(a, theta, eta), dq.potential_energy(a, theta, q),
+                1e-11 * b.params().mass * b.g() * b.params().height);
+    // an impact onto the other edge: the same velocities after it
+    const Eigen::Vector2d v_corner{0.2, -0.15};
+    double thp_q = 0.0, thp_e = 0.0;
+    typename Dyn::Vec qdp(n), etadp(n);
+    dq.corner_impact(3 - edge, q, thd, qd, v_corner, thp_q, qdp);
+    de.corner_impact(3 - edge, eta, thd, etad, v_corner, thp_e, etadp);
+    EXPECT_NEAR(thp_e, thp_q, 1e-11 * (1.0 + std::abs(thp_q)));
+    near(VectorX(phi * etadp), VectorX(qdp));
+  }
+  dq.full_contact_acceleration(q, qd, base, qdd);
+  de.full_contact_acceleration(eta, etad, base, etadd);
+  near(VectorX(phi * etadd), VectorX(qdd));
+  EXPECT_NEAR(de.damping_power(etad), dq.damping_power(qd), 1e-11 * (1.0 + dq.damping_power(qd)));
+}
+
+TEST(BodyDerived, ModalCoordinatesMapTheMotion) {
+  auto p = test::random_lumped_body(3, 11);
+  p.damping.kind = DampingKind::kRayleigh;
+  p.damping.rayleigh_mass = 0.3;
+  p.damping.rayleigh_stiffness = 0.002;
+  expect_modal_coordinates_map_the_motion<3>(p);
+  expect_modal_coordinates_map_the_motion<Eigen::Dynamic>(p);
+  // full modal mass and stiffness, modal damping, five modes (Eigen's product kernel path)
+  auto c = test::random_coupled({0.7, 2.0, 5.5, 13.0, 31.0}, 4).params();
+  c.damping.kind = DampingKind::kModal;
+  c.damping.modal_ratios = VectorX::Constant(5, 0.03);
+  expect_modal_coordinates_map_the_motion<5>(c);
 }
 
 }  // namespace

@@ -217,8 +217,10 @@ TEST(ExactFullContact, CoupledWidelySpreadModesMatchTightIntegration) {
 // The history q, q_dot of a body in full contact under a sampled record, from its engine
 // initial state (the static sag, at rest), by a different method in long double: the first-order
 // system x' = A x + b0 + b1 s on each sample interval, stepped by Van Loan's exponential of
-// [A b1 b0; 0 0 1; 0 0 0] (Eigen's matrix exponential), with the engine's K, C and g/h (double)
-// as the data. Its rounding is ~cond(K) 1e-19: 1e-11 at cond(K) = 1e8.
+// [A b1 b0; 0 0 1; 0 0 0] (Eigen's matrix exponential), with K = (g/h) kappa formed in long double
+// and the engine's C and g/h (double) as the data. Its rounding is ~cond(K) 1e-19: 1e-11 at
+// cond(K) = 1e8. (K rounded to double would be other data at that level: its soft mode's
+// equilibrium lies cond(K) ulp, 1e-8 of the sag, from the static sag that kappa gives.)
 struct Reference {
   std::vector<double> q, q_dot;  // at the history times, row-major like History
 };
@@ -232,7 +234,7 @@ Reference long_double_reference(const Body& body, const GroundMotion& m,
   const Ld gh = body.g_over_h(), gl = body.g();
   MatL a = MatL::Zero(size, size);
   a.block(0, n, n, n).setIdentity();
-  a.block(n, 0, n, n) = -mu_inv * body.stiffness().cast<Ld>();
+  a.block(n, 0, n, n) = -mu_inv * (gh * body.params().kappa.cast<Ld>());
   a.block(n, n, n, n) = -mu_inv * body.damping_matrix().cast<Ld>();
   a(2 * n, 2 * n + 1) = 1;  // s' = 1: the time within the interval
   const VecL px = body.params().psi_x.cast<Ld>(), py = body.params().psi_y.cast<Ld>();
@@ -276,8 +278,9 @@ TEST(ExactFullContact, ASoftModesLargeSagBesideAStiffModeMatchesALongDoubleRefer
   // eigensolver put the exact path's equilibrium there, so that the body at rest swung at
   // 0.1 Hz by 1e-8 of its sag (4e-5 of its whole motion, 1e-5 of max|q_dot| for the soak's
   // case 4093), as did a start from an unrefined static solve. Both paths must now follow the
-  // long-double solution of the same data to 1e-9 of max|q| and 1e-9 of omega_max max|q|, and
-  // agree with each other as closely.
+  // long-double solution of the same data (kappa and psi; the engine's modal coordinates rest at
+  // the refined sag of kappa) to 1e-9 of max|q| and 1e-9 of omega_max max|q|, and agree with
+  // each other as closely.
   int bodies = 0;
   for (int n : {2, 3, 4}) {
     for (unsigned seed = 5000u; seed < 5003u; ++seed) {

@@ -930,6 +930,64 @@ def walk_bound_checks(n=2):
     return out
 
 
+def modal_coordinate_checks(n=2):
+    """The pinned-base modal coordinates (docs/theory.md, "Modal coordinates"): with q = Phi eta
+    for any invertible Phi, the energies, the generalized forces and the floor reaction keep their
+    forms in eta with the parameters mu' = Phi^T mu Phi, kappa' = Phi^T kappa Phi, gamma' =
+    Phi^T gamma Phi, psi' = Phi^T psi, delta' = Phi^T delta, beta' = Phi^T beta, so the equations
+    of motion (and every guard and impact map built on them) hold in eta; and the damping that the
+    engine sets diagonal there is Phi^T C Phi for both damping forms."""
+    out = {}
+    sym = lambda name: sp.Symbol(name)
+    mu = sp.Matrix(n, n, lambda i, j: sym('m%d%d' % (min(i, j), max(i, j))))
+    kappa = sp.Matrix(n, n, lambda i, j: sym('k%d%d' % (min(i, j), max(i, j))))
+    gamma = sp.Matrix(n, n, lambda i, j: 0 if i == j else (1 if i < j else -1) * sym('g%d%d' % (min(i, j), max(i, j))))
+    vec = lambda name: sp.Matrix([sym('%s%d' % (name, i)) for i in range(n)])
+    P = dict(n=n, M=sym('M'), h=sym('h'), zeta2=sym('zeta2'), mu=mu.tolist(), kappa=kappa.tolist(),
+             gamma=gamma.tolist(), psi_x=list(vec('px')), psi_y=list(vec('py')), delta=list(vec('dl')),
+             beta=list(vec('bt')))
+    Phi = sp.Matrix(n, n, lambda i, j: sym('f%d%d' % (i, j)))
+    Pm = dict(P)
+    Pm.update(mu=(Phi.T * mu * Phi).tolist(), kappa=(Phi.T * kappa * Phi).tolist(),
+              gamma=(Phi.T * gamma * Phi).tolist())
+    for k in ('psi_x', 'psi_y', 'delta', 'beta'):
+        Pm[k] = list(Phi.T * sp.Matrix(P[k]))
+    eta, etad, etadd = vec('e'), vec('ed'), vec('edd')
+    q, qd, qdd = list(Phi * eta), list(Phi * etad), list(Phi * etadd)
+    alpha, thd, thdd, ax, ay, g = sp.symbols('alpha thd thdd ax ay g')
+    s, c = S, C
+    out['modal_gamma_antisymmetric'] = all(is_zero(e) for e in (sp.Matrix(Pm['gamma']) + sp.Matrix(Pm['gamma']).T))
+    out['modal_kinetic'] = is_zero(conv_Trel(P, alpha, q, thd, qd) - conv_Trel(Pm, alpha, list(eta), thd, list(etad)))
+    out['modal_potential'] = is_zero(conv_V(P, alpha, q, s, c, g) - conv_V(Pm, alpha, list(eta), s, c, g))
+    # generalized forces: the theta row equal, the q rows mapped by Phi^T; the mass matrix by
+    # diag(1, Phi): A' = D^T A D, f' = D^T f, so A' nu' = f' is A nu = f for nu = D nu'
+    f = conv_f(P, alpha, q, thd, qd, s, c, ax, ay, g)
+    fm = conv_f(Pm, alpha, list(eta), thd, list(etad), s, c, ax, ay, g)
+    D = sp.diag(1, Phi)
+    out['modal_forces'] = all(is_zero(e) for e in (D.T * sp.Matrix(f) - sp.Matrix(fm)))
+    A = sp.Matrix(conv_A(P, alpha, q))
+    Am = sp.Matrix(conv_A(Pm, alpha, list(eta)))
+    out['modal_mass_matrix'] = all(is_zero(e) for e in (D.T * A * D - Am))
+    F = conv_F_body(P, alpha, q, thd, qd, thdd, qdd, s, c, ax, ay, g)
+    Fm = conv_F_body(Pm, alpha, list(eta), thd, list(etad), thdd, list(etadd), s, c, ax, ay, g)
+    out['modal_reaction'] = all(is_zero(a - b) for a, b in zip(F, Fm))
+    # the damping: Phi^T C Phi with Phi^T mu Phi = I and Phi^T K Phi = Omega^2 (a numeric
+    # generalized eigenproblem, exact rationals): Rayleigh a mu + b K gives a + b omega^2 =
+    # 2 zeta omega for zeta = a/(2 omega) + b omega/2; modal mu Phi diag(2 zeta omega) Phi^T mu
+    # gives diag(2 zeta omega)
+    a_r, b_r, w = sp.symbols('a b omega', positive=True)
+    zeta = a_r / (2 * w) + b_r * w / 2
+    out['modal_rayleigh_ratio'] = is_zero(2 * zeta * w - (a_r + b_r * w ** 2))
+    Ph = sp.Matrix([[1, 1], [1, -1]]) / sp.sqrt(2)  # orthonormal for mu = I
+    Mu = sp.Matrix([[2, 0], [0, 3]])
+    Ph = sp.diag(1 / sp.sqrt(2), 1 / sp.sqrt(3)) * Ph  # then Ph^T Mu Ph = I
+    cdiag = sp.diag(sym('c0'), sym('c1'))
+    Cm = Mu * Ph * cdiag * Ph.T * Mu
+    out['modal_damping_diagonal'] = all(sp.simplify(e) == 0 for e in (Ph.T * Mu * Ph - sp.eye(2))) and \
+        all(sp.simplify(e) == 0 for e in (Ph.T * Cm * Ph - cdiag))
+    return out
+
+
 def walk_exact_checks():
     """The record walk's exact pieces (docs/theory.md, "Walking the record"): the particular
     solution of a mode under linear forcing, the closed form of e^{B tau}, the energies of a piece
@@ -3004,6 +3062,8 @@ def main():
     sres['walk_exact'] = walk_exact_checks()
     print('  symbolic record-walk pieces: %s' % sres['walk_exact'], file=sys.stderr)
     print('  symbolic rigid block with friction: %s' % rres, file=sys.stderr)
+    sres['modal_coordinates'] = modal_coordinate_checks()
+    print('  symbolic modal coordinates: %s' % sres['modal_coordinates'], file=sys.stderr)
     sres['rocking_series'] = derive_rocking_series()
     print('  rigid rocking by its Taylor series: %s' % sres['rocking_series'], file=sys.stderr)
     failed = [(n, k) for n, r in sres.items() for k, v in r.items()

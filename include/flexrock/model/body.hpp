@@ -68,6 +68,13 @@ class Body {
   const VectorX& natural_frequencies() const { return omega_; }    // pinned-base [rad/s], ascending
   const VectorX& damping_ratios() const { return ratios_; }        // of the pinned-base modes [-]
   const VectorX& static_deformation() const { return q_static_; }  // q under gravity at rest
+  /// The pinned-base mode shapes Phi as columns, ascending frequency, Phi^T mu Phi = I.
+  const MatrixX& pinned_base_modes() const { return phi_; }
+  /// The same body with the pinned-base modal coordinates eta as its deformation, q = Phi eta
+  /// (docs/theory.md, "Modal coordinates"): mu = I, kappa and the damping diagonal, the other
+  /// parameters by the congruence (gamma' = Phi^T gamma Phi, psi' = Phi^T psi, ...). Its motions
+  /// are this body's, mapped by Phi.
+  Body in_modal_coordinates() const;
   double rocking_frequency() const { return p_rock_; }  // p = sqrt(g h_pivot / r^2) [rad/s]
   /// Static overturning angle about edge 1 (theta > 0) and edge 2 (returned positive): the tilt
   /// at which the deformed c.g. under gravity stands above the pivot (paper, eq. 5 and above).
@@ -76,7 +83,7 @@ class Body {
  private:
   BodyParameters p_;
   int n_ = 0;
-  MatrixX mu_inv_, mu_cg_inv_, stiffness_, damping_;
+  MatrixX mu_inv_, mu_cg_inv_, stiffness_, damping_, phi_;
   VectorX omega_, ratios_, q_static_;
   double p_rock_ = 0.0, theta_c1_ = 0.0, theta_c2_ = 0.0;
 };

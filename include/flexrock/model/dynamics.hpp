@@ -63,6 +63,20 @@ class Dynamics {
     } else {
       sag_residual_ = sag_;
     }
+    // in the pinned-base modal coordinates (Body::in_modal_coordinates) mu = I and K, C are
+    // diagonal: the equations then need no product with mu, mu^-1, K or C, and with gamma = 0
+    // (modes along the centre line) none at all, so their cost is linear in n
+    auto diagonal = [](const Mat& a) {
+      for (Eigen::Index j = 0; j < a.cols(); ++j)
+        for (Eigen::Index i = 0; i < a.rows(); ++i)
+          if (i != j && a(i, j) != 0.0) return false;
+      return true;
+    };
+    modal_ = n_ > 0 && diagonal(mu_) && (mu_.diagonal().array() == 1.0).all() &&
+             diagonal(stiffness_) && diagonal(damping_);
+    uncoupled_ = n_ == 0 || (gamma_.array() == 0.0).all();
+    stiffness_diag_ = stiffness_.diagonal();
+    damping_diag_ = damping_.diagonal();
   }
 
   /// A matrix-vector product: unrolled in place for fixed sizes above 4, where Eigen would call
@@ -94,11 +108,12 @@ class Dynamics {
   /// Rotational inertia about the pivot, over M h^2: m = 1 + zeta^2 + alpha^2 +
   /// 2 (delta - alpha psi_x + psi_y).q + q^T mu q.
   double inertia(double a, const Vec& q) const {
-    return 1.0 + zeta2_ + a * a + 2.0 * (delta_ - a * psi_x_ + psi_y_).dot(q) + q.dot(mv(mu_, q));
+    return 1.0 + zeta2_ + a * a + 2.0 * (delta_ - a * psi_x_ + psi_y_).dot(q) + mu_form(q, q);
   }
   /// Coupling of theta_dot and q_dot in the kinetic energy: b_j = beta_j + gamma_ij q_i -
   /// alpha psi_yj - psi_xj.
   Vec coupling(double a, const Vec& q) const {
+    if (uncoupled_) return beta_ - a * psi_y_ - psi_x_;
     return beta_ + mv(gamma_.transpose(), q) - a * psi_y_ - psi_x_;
   }
 
@@ -118,6 +133,21 @@ class Dynamics {
     // effective gravity over g in body axes: G = f(Xdd/g, 1 + Ydd/g, theta)
     const double gx = ax * c + ay * s, gy = ay * c - ax * s;
     const double wx = -a + psi_x_.dot(q), wy = 1.0 + psi_y_.dot(q);
+    if (modal_) {
+      // the same in modal coordinates: mu = mu^-1 = I, K and C diagonal
+      const Vec d = delta_ - a * psi_x_ + psi_y_;
+      const Vec cv = d + q;
+      const Vec b = coupling(a, q);
+      const double m = 1.0 + zeta2_ + a * a + (cv + d).dot(q);
+      const double f_theta = -2.0 * cv.dot(q_dot) * theta_dot - gh_ * (wx * gy - wy * gx);
+      Vec f_q = (theta_dot * theta_dot) * cv - stiffness_diag_.cwiseProduct(q) -
+                gh_ * (psi_x_ * gx + psi_y_ * gy);
+      if (!uncoupled_) f_q.noalias() -= (2.0 * theta_dot) * mv(gamma_.transpose(), q_dot);
+      if (damped_) f_q -= damping_diag_.cwiseProduct(q_dot);
+      theta_ddot = (f_theta - b.dot(f_q)) / (m - b.squaredNorm());
+      q_ddot = f_q - b * theta_ddot;
+      return;
+    }
     const Vec cv = delta_ - a * psi_x_ + psi_y_ + mv(mu_, q);  // half the gradient of m in q
     const Vec b = coupling(a, q);
     const double m = 1.0 + zeta2_ + a * a + (cv + delta_ - a * psi_x_ + psi_y_).dot(q);
@@ -138,6 +168,11 @@ class Dynamics {
     const double ax = base.x / g_, ay = 1.0 + base.y / g_;
     // K q and the static load cancel at rest before mu^-1 applies: a product mu^-1 K formed once
     // would round at cond(K) ulp of the sag, where a soft mode beside a stiff one then swings
+    if (modal_) {
+      q_ddot = -stiffness_diag_.cwiseProduct(q) - gh_ * (psi_x_ * ax + psi_y_ * ay);
+      if (damped_) q_ddot -= damping_diag_.cwiseProduct(q_dot);
+      return;
+    }
     Vec f = -mv(stiffness_, q) - gh_ * (psi_x_ * ax + psi_y_ * ay);
     if (damped_) f.noalias() -= mv(damping_, q_dot);
     q_ddot = mv(mu_inv_, f);
@@ -209,7 +244,7 @@ class Dynamics {
   double kinetic_energy(double a, const Vec& q, double theta_dot, const Vec& q_dot) const {
     return 0.5 * mass_ * h_ * h_ *
            (inertia(a, q) * theta_dot * theta_dot + 2.0 * theta_dot * coupling(a, q).dot(q_dot) +
-            q_dot.dot(mv(mu_, q_dot)));
+            mu_form(q_dot, q_dot));
   }
   /// Gravity and strain energy [J]: V = M g h (J.w + 1/2 q^T kappa q), evaluated as
   /// M g h (sin(theta) w_x + cos(theta) + (cos(theta) - 1) psi_y.q + sag_terms(q)).
@@ -235,7 +270,9 @@ class Dynamics {
   }
   /// Power dissipated by material damping [W]: M h^2 q_dot^T C q_dot.
   double damping_power(const Vec& q_dot) const {
-    return damped_ ? mass_ * h_ * h_ * q_dot.dot(mv(damping_, q_dot)) : 0.0;
+    if (!damped_) return 0.0;
+    if (modal_) return mass_ * h_ * h_ * q_dot.dot(damping_diag_.cwiseProduct(q_dot));
+    return mass_ * h_ * h_ * q_dot.dot(mv(damping_, q_dot));
   }
 
   /// Linear velocity of the c.g. relative to the base [m/s], body axes at theta = 0 (= inertial).
@@ -387,6 +424,11 @@ class Dynamics {
       x = r_theta / m;
       return;
     }
+    if (modal_) {
+      x = (r_theta - b.dot(r_q)) / (m - b.squaredNorm());
+      y = r_q - b * x;
+      return;
+    }
     const Vec z = mu_inv_ * b;
     const Vec u = mu_inv_ * r_q;
     x = (r_theta - b.dot(u)) / (m - b.dot(z));
@@ -399,6 +441,9 @@ class Dynamics {
   const Mat& gamma() const { return gamma_; }  // its change with q: b = beta + Gamma^T q - ...
 
  private:
+  /// u^T mu v, without the product where mu = I
+  double mu_form(const Vec& u, const Vec& v) const { return modal_ ? u.dot(v) : u.dot(mv(mu_, v)); }
+
   /// psi_y.q + 1/2 q^T kappa q, written about the static sag r (kappa r = -psi_y to rounding):
   /// 1/2 d^T kappa d + rho.d + c with d = q - r. Summed directly, the two terms cancel: a
   /// 0.1 Hz mode beside a 1 kHz one sags tens of times h, |q| |kappa| |q| reaches 1e7 and the
@@ -417,6 +462,9 @@ class Dynamics {
   bool damped_;
   Vec sag_, sag_residual_;   // the static sag r and kappa r + psi_y (sag_terms)
   double sag_energy_ = 0.0;  // psi_y.r + 1/2 r^T kappa r [-]
+  bool modal_ = false;       // mu = I, K and C diagonal (modal coordinates)
+  bool uncoupled_ = true;    // gamma = 0
+  Vec stiffness_diag_, damping_diag_;
 };
 
 }  // namespace flexrock
