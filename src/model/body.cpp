@@ -296,7 +296,7 @@ Body Body::in_modal_coordinates() const {
   const MatrixX mu_cg = p.mu - p.psi_x * p.psi_x.transpose() - p.psi_y * p.psi_y.transpose();
   m.mu_cg_inv_ = mu_cg.llt().solve(MatrixX::Identity(n_, n_));
   m.q_static_ = eta_s;
-  m.phi_ = p.mu;
+  m.phi_ = MatrixX::Identity(n_, n_);
   return m;
 }
 

@@ -245,7 +245,7 @@ class Simulator final : private GuardProbe {
   const Body body_;
   Mat to_user_, from_user_;  // Phi and Phi^-1 = Phi^T mu
   mutable Vec qu_, qdu_;     // u and u_dot of the last observation
-  Vec ue_;                   // scratch: u at a walk's piece's end
+  Vec ua_, ub_;              // scratch: u at a walk's piece's start and end
   Dyn dyn_;
   const GroundMotion& motion_;
   SimulationOptions opt_;
@@ -345,7 +345,8 @@ Simulator<N, MaxN>::Simulator(const Body& body, const GroundMotion& motion,
   prop_.output_basis(to_user_);
   qu_.resize(n_);
   qdu_.resize(n_);
-  ue_.resize(n_);
+  ua_.resize(n_);
+  ub_.resize(n_);
   q_.resize(n_);
   qd_.resize(n_);
   qdd_.resize(n_);
@@ -1399,10 +1400,10 @@ void Simulator<N, MaxN>::locate_extremes(double tp0, double h, const GuardSample
   // n: shear, n + 1: moment, n + 2: friction demand
   std::vector<int>& wanted = wanted_;
   int count = 0;
-  qu_.noalias() = Dyn::mv(to_user_, xw_.segment(iq(), n_));
-  ue_.noalias() = Dyn::mv(to_user_, xe_.segment(iq(), n_));
+  ua_.noalias() = Dyn::mv(to_user_, xw_.segment(iq(), n_));
+  ub_.noalias() = Dyn::mv(to_user_, xe_.segment(iq(), n_));
   for (int j = 0; j < n_; ++j) {
-    const double top = std::max(std::abs(qu_(j)), std::abs(ue_(j))) + prop_.walk_q_excursion(j, h);
+    const double top = std::max(std::abs(ua_(j)), std::abs(ub_(j))) + prop_.walk_q_excursion(j, h);
     if (top > ex.max_abs_q(j)) wanted[static_cast<std::size_t>(count++)] = j;
   }
   const double fi_top = std::max(std::abs(sa.fi), std::abs(sb.fi)) + e.fi;
