@@ -376,20 +376,28 @@ class RockingSeries {
 
   // the longest step at which each of those terms alone is within its tolerance, with a margin
   double radius(int p, double tol_th, double tol_om) const {
-    double r = std::numeric_limits<double>::infinity();
-    auto cap = [&r](double tol, double c, int k) {
-      if (c > 0.0) r = std::min(r, std::exp(std::log(tol / c) / k));
+    // the least of the four (tol / c)^(1/k), compared by their logarithms: one exp, not four
+    double e = std::numeric_limits<double>::infinity();
+    auto cap = [&e](double tol, double c, int k) {
+      if (c > 0.0) e = std::min(e, std::log(tol / c) / k);
     };
     const double a = std::abs(th_[p]), b = std::abs(th_[p + 1]);
     cap(tol_th, a, p);
     cap(tol_th, b, p + 1);
     cap(tol_om, p * a, p - 1);
     cap(tol_om, (p + 1) * b, p);
-    return kSafe * r;
+    return kSafe * std::exp(e);
   }
 
   // the input work's series: W' = M h g theta' ((u + alpha (v - 1)) cos + ((v - 1) - alpha u) sin)
   void work_series(int p) {
+    w_[0] = x0_(2);
+    if (u0_ == 0.0 && u1_ == 0.0 && v0_ == 1.0 && v1_ == 0.0 && higher_ == 0) {
+      // the floor at rest (free rocking after a record or a pulse): no power, no work; the sums
+      // below would give these zeros at O(p^2)
+      std::fill_n(w_.begin() + 1, p, 0.0);
+      return;
+    }
     const double a0 = mhg_ * (u0_ + alpha_ * (v0_ - 1.0)), a1 = mhg_ * (u1_ + alpha_ * v1_);
     const double b0 = mhg_ * ((v0_ - 1.0) - alpha_ * u0_), b1 = mhg_ * (v1_ - alpha_ * u1_);
     // a sinusoid's terms of order 2 and up, once per step: M h g (u_i + alpha v_i) and
@@ -410,7 +418,6 @@ class RockingSeries {
         r_[k] += ak[m] * c_[l] + bk[m] * s_[l];
       }
     }
-    w_[0] = x0_(2);
     for (int k = 0; k < p; ++k) {
       double sum = 0.0;
       for (int j = 0; j <= k; ++j) sum += dth_[j + 1] * r_[k - j];
