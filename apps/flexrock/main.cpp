@@ -437,7 +437,8 @@ int cmd_params(const std::string& file) {
     }
   }
   const StepCost cost = estimate_step_cost(body, opt);
-  fmt::print("explicit step cost while rocking (Dopri5 at rtol = {:g}):\n", opt.rtol);
+  fmt::print("explicit step cost while rocking ({} at rtol = {:g}):\n",
+             cost.method == ExplicitMethod::kDop853 ? "DOP853" : "Dopri5", opt.rtol);
   fmt::print(
       "  stiffest motion {:.6g} rad/s ({:.6g} Hz), h omega ~ {:.3g}: about {:.4g} steps per "
       "simulated second, at least {:.4g} for stability ({:.4g} per 1/p = {:.4g} s)\n",

@@ -9,6 +9,7 @@
 #include <numbers>
 
 #include "flexrock/core/format.hpp"
+#include "flexrock/integrate/dop853.hpp"
 #include "flexrock/integrate/dopri5.hpp"
 #include "flexrock/model/dynamics.hpp"
 
@@ -68,21 +69,27 @@ StepCost estimate_step_cost(const Body& body, const SimulationOptions& options) 
   c.rocking_time_scale = 1.0 / body.rocking_frequency();
   c.rocking_omega = std::max(rocking_omega(body, dyn, 1), rocking_omega(body, dyn, 2));
   c.full_contact_omega = body.modes() > 0 ? body.natural_frequencies().cwiseAbs().maxCoeff() : 0.0;
-  c.h_omega =
-      std::min(std::pow(options.rtol / kDopri5ErrorConstant, 0.2), kDopri5ImaginaryStability);
-  c.rocking_min_steps_per_second = c.rocking_omega / kDopri5ImaginaryStability;
+  c.method = options.high_order_rocking ? ExplicitMethod::kDop853 : ExplicitMethod::kDopri5;
+  const bool eighth = c.method == ExplicitMethod::kDop853;
+  const double stable = eighth ? kDop853ImaginaryStability : kDopri5ImaginaryStability;
+  c.h_omega = eighth ? std::min(std::pow(options.rtol / kDop853ErrorConstant, 0.125), stable)
+                     : std::min(std::pow(options.rtol / kDopri5ErrorConstant, 0.2), stable);
+  c.rocking_min_steps_per_second = c.rocking_omega / stable;
   c.rocking_steps_per_second = std::max(c.rocking_omega / c.h_omega, 1.0 / options.max_step);
   return c;
 }
 
-double rocking_stable_step(const Body& body, int edge) {
+double rocking_stable_step(const Body& body, int edge, ExplicitMethod method) {
   const Dynamics<Eigen::Dynamic, Eigen::Dynamic> dyn(body);
   double h = std::numeric_limits<double>::infinity();
   // an undamped mode's eigenvalues come out of the differences with a real part of either sign
   // at rounding level: taken on the imaginary axis. The rocking motion's growing eigenvalue (real,
   // about +p) bounds no step.
-  for (const std::complex<double>& mu : rocking_eigenvalues(body, dyn, edge))
-    h = std::min(h, dopri5_stable_step({std::min(mu.real(), 0.0), mu.imag()}));
+  for (const std::complex<double>& mu : rocking_eigenvalues(body, dyn, edge)) {
+    const std::complex<double> m{std::min(mu.real(), 0.0), mu.imag()};
+    h = std::min(h,
+                 method == ExplicitMethod::kDop853 ? dop853_stable_step(m) : dopri5_stable_step(m));
+  }
   return h;
 }
 
@@ -91,14 +98,14 @@ std::string step_cost_warning(const StepCost& c, double duration, long max_steps
   const bool over = duration > 0.0 && rate * duration > static_cast<double>(max_steps);
   const bool slow = rate > kSlowStepsPerSecond;
   if (!over && !slow) return "";
-  std::string w = "stiff rocking: while rocking, the stiffest motion (" +
-                  format_number(c.rocking_omega, 3) + " rad/s, " + hz(c.rocking_omega) +
-                  ") sets the explicit integrator's step (Dopri5, h omega ~ " +
-                  format_number(c.h_omega, 2) + "): about " + format_number(rate, 3) +
-                  " steps per simulated second, at least " +
-                  format_number(c.rocking_min_steps_per_second, 3) + " for stability (" +
-                  format_number(rate * c.rocking_time_scale, 3) +
-                  " per rocking time scale 1/p = " + format_number(c.rocking_time_scale, 3) + " s)";
+  std::string w =
+      "stiff rocking: while rocking, the stiffest motion (" + format_number(c.rocking_omega, 3) +
+      " rad/s, " + hz(c.rocking_omega) + ") sets the explicit integrator's step (" +
+      (c.method == ExplicitMethod::kDop853 ? "DOP853" : "Dopri5") + ", h omega ~ " +
+      format_number(c.h_omega, 2) + "): about " + format_number(rate, 3) +
+      " steps per simulated second, at least " + format_number(c.rocking_min_steps_per_second, 3) +
+      " for stability (" + format_number(rate * c.rocking_time_scale, 3) +
+      " per rocking time scale 1/p = " + format_number(c.rocking_time_scale, 3) + " s)";
   if (over) {
     w += "; rocking through the " + format_number(duration, 4) + " s would take about " +
          format_number(rate * duration, 3) +

@@ -1,12 +1,14 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// DOPRI5 while accuracy sets the step, the Rosenbrock method while stability would: a stepper that
-// switches between the two at step boundaries, as LSODA switches between its methods. Generic over
-// an Eigen vector state (fixed, bounded or dynamic size); knows nothing of bodies or contacts.
+// An explicit method (DOPRI5 or DOP853) while accuracy sets the step, the Rosenbrock method while
+// stability would: a stepper that switches between the two at step boundaries, as LSODA switches
+// between its methods. Generic over an Eigen vector state (fixed, bounded or dynamic size); knows
+// nothing of bodies or contacts.
 #pragma once
 
 #include <algorithm>
 #include <limits>
 
+#include "flexrock/integrate/dop853.hpp"
 #include "flexrock/integrate/dopri5.hpp"
 #include "flexrock/integrate/rosenbrock4.hpp"
 
@@ -19,9 +21,16 @@ enum class StiffMethod {
   kImplicit = 2,  // the Rosenbrock method only
 };
 
-// The caller gives the explicit method's stability bound h_stable [s]: the longest step DOPRI5
-// takes stably on the system's fastest motion, whatever accuracy allows (3.3 / lambda for a
-// decaying motion of rate lambda; about 1 / omega for an undamped oscillation). DOPRI5 steps that
+/// The explicit method of a StiffSwitching stepper.
+enum class ExplicitMethod {
+  kDopri5,  // Dormand-Prince 5(4), 6 evaluations a step, dense output of order 4
+  kDop853,  // Dormand-Prince 8(5,3), 14 evaluations a step with its dense output of order 7
+};
+
+// The caller gives the explicit method's stability bound h_stable [s]: the longest step it takes
+// stably on the system's fastest motion, whatever accuracy allows (DOPRI5: 3.3 / lambda for a
+// decaying motion of rate lambda, about 1 / omega for an undamped oscillation; DOP853: about
+// 6 / lambda; dopri5_stable_step, dop853_stable_step). Explicit steps that
 // keep near it say stability holds the step: the Rosenbrock method, L-stable, takes the steps
 // accuracy allows. Rosenbrock steps that become short enough that DOPRI5, stable up to h_stable
 // and cheaper a step by the ratio of their right-hand-side evaluations, would do the same work
@@ -36,11 +45,13 @@ class StiffSwitching {
                           StiffMethod method = StiffMethod::kAuto)
       : h_stable_(h_stable), method_(method), stiff_(method == StiffMethod::kImplicit) {}
 
-  /// Sets the stability bound and the method for the next start(): kExplicit and kImplicit fix
-  /// the method; kAuto keeps the one in use.
-  void configure(double h_stable, StiffMethod method) {
+  /// Sets the stability bound (of `explicit_method`), the method and the explicit method for the
+  /// next start(): kExplicit and kImplicit fix the method; kAuto keeps the one in use.
+  void configure(double h_stable, StiffMethod method,
+                 ExplicitMethod explicit_method = ExplicitMethod::kDopri5) {
     h_stable_ = h_stable;
     method_ = method;
+    eighth_ = explicit_method == ExplicitMethod::kDop853;
     if (method != StiffMethod::kAuto) stiff_ = method == StiffMethod::kImplicit;
   }
 
@@ -49,14 +60,14 @@ class StiffSwitching {
   void start(System&& sys, const StepControl& ctl, double t, const State& x, double h = 0.0) {
     ctl_ = ctl;
     // a Rosenbrock step: a Jacobian by differences of the controlled components, six stages, an
-    // LU; a DOPRI5 step: six stages
+    // LU; a DOPRI5 step: six stages; a DOP853 step: fourteen
     const double m = ctl.controlled < 0 ? static_cast<double>(x.size()) : ctl.controlled;
-    cost_ratio_ = (m + 7.0) / 6.0;
+    cost_ratio_ = (m + 7.0) / (eighth_ ? 14.0 : 6.0);
     count_ = 0;
     if (stiff_) {
       ros_.start(sys, ctl, t, x, h);
     } else {
-      dop_.start(sys, ctl, t, x, h);
+      start_explicit(sys, t, x, h);
     }
   }
 
@@ -65,8 +76,9 @@ class StiffSwitching {
   template <class System>
   Status step(System&& sys, double t_stop) {
     if (method_ == StiffMethod::kAuto) switch_if_due(sys);
-    const bool ok = stiff_ ? ros_.step(sys, t_stop) == Rosenbrock4<State>::Status::kAccepted
-                           : dop_.step(sys, t_stop) == Dopri5<State>::Status::kAccepted;
+    const bool ok = stiff_    ? ros_.step(sys, t_stop) == Rosenbrock4<State>::Status::kAccepted
+                    : eighth_ ? dop8_.step(sys, t_stop) == Dop853<State>::Status::kAccepted
+                              : dop_.step(sys, t_stop) == Dopri5<State>::Status::kAccepted;
     if (!ok) return Status::kStepCollapsed;
     const double h = t1() - t0();
     const bool full = h < t_stop - t0() || t1() < t_stop;  // not a step cut short by t_stop
@@ -88,6 +100,8 @@ class StiffSwitching {
   void restep_to(System&& sys, double t) {
     if (stiff_) {
       ros_.restep_to(sys, t);
+    } else if (eighth_) {
+      dop8_.restep_to(sys, t);
     } else {
       dop_.restep_to(sys, t);
     }
@@ -97,6 +111,8 @@ class StiffSwitching {
   void refresh_derivative(System&& sys, double t_eval) {
     if (stiff_) {
       ros_.refresh_derivative(sys, t_eval);
+    } else if (eighth_) {
+      dop8_.refresh_derivative(sys, t_eval);
     } else {
       dop_.refresh_derivative(sys, t_eval);
     }
@@ -105,17 +121,27 @@ class StiffSwitching {
   void dense(double t, State& out) const {
     if (stiff_) {
       ros_.dense(t, out);
+    } else if (eighth_) {
+      dop8_.dense(t, out);
     } else {
       dop_.dense(t, out);
     }
   }
-  double t0() const { return stiff_ ? ros_.t0() : dop_.t0(); }
-  double t1() const { return stiff_ ? ros_.t1() : dop_.t1(); }
-  const State& x0() const { return stiff_ ? ros_.x0() : dop_.x0(); }
-  const State& x1() const { return stiff_ ? ros_.x1() : dop_.x1(); }
-  double suggested_step() const { return stiff_ ? ros_.suggested_step() : dop_.suggested_step(); }
-  long rhs_evaluations() const { return ros_.rhs_evaluations() + dop_.rhs_evaluations(); }
-  long rejected_steps() const { return ros_.rejected_steps() + dop_.rejected_steps(); }
+  double t0() const { return stiff_ ? ros_.t0() : eighth_ ? dop8_.t0() : dop_.t0(); }
+  double t1() const { return stiff_ ? ros_.t1() : eighth_ ? dop8_.t1() : dop_.t1(); }
+  const State& x0() const { return stiff_ ? ros_.x0() : eighth_ ? dop8_.x0() : dop_.x0(); }
+  const State& x1() const { return stiff_ ? ros_.x1() : eighth_ ? dop8_.x1() : dop_.x1(); }
+  double suggested_step() const {
+    return stiff_    ? ros_.suggested_step()
+           : eighth_ ? dop8_.suggested_step()
+                     : dop_.suggested_step();
+  }
+  long rhs_evaluations() const {
+    return ros_.rhs_evaluations() + dop_.rhs_evaluations() + dop8_.rhs_evaluations();
+  }
+  long rejected_steps() const {
+    return ros_.rejected_steps() + dop_.rejected_steps() + dop8_.rejected_steps();
+  }
   long switches() const { return switches_; }
   bool stiff() const { return stiff_; }  // the Rosenbrock method is in use
 
@@ -134,17 +160,28 @@ class StiffSwitching {
     if (stiff_) {
       ros_.start(sys, ctl_, t, x_, 2.0 * h);
     } else {
-      dop_.start(sys, ctl_, t, x_, std::min(h, h_stable_));
+      start_explicit(sys, t, x_, std::min(h, h_stable_));
     }
   }
 
-  double h_stable_;  // [s] DOPRI5's stability bound on the system's fastest motion
+  template <class System>
+  void start_explicit(System& sys, double t, const State& x, double h) {
+    if (eighth_) {
+      dop8_.start(sys, ctl_, t, x, h);
+    } else {
+      dop_.start(sys, ctl_, t, x, h);
+    }
+  }
+
+  double h_stable_;  // [s] the explicit method's stability bound on the system's fastest motion
   StiffMethod method_;
-  double cost_ratio_ = 2.0;  // a Rosenbrock step's cost over a DOPRI5 step's
+  double cost_ratio_ = 2.0;  // a Rosenbrock step's cost over an explicit step's
   int dwell_ = 8;            // explicit steps at the stability bound before the switch
   long dwell_steps_ = 0;     // steps since the last switch
   StepControl ctl_;
   Dopri5<State> dop_;
+  Dop853<State> dop8_;
+  bool eighth_ = false;  // the explicit method is DOP853
   Rosenbrock4<State> ros_;
   State x_;
   bool stiff_;

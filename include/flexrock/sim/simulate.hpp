@@ -157,6 +157,10 @@ struct SimulationOptions {
   // or none is stepped by the Taylor series of its motion (docs/theory.md, "Rocking of a rigid body
   // by its Taylor series"); false: by DOPRI5
   bool series_rocking = true;
+  // a flexible body's rocking, while its step is set by accuracy, is stepped by DOP853 (8th order,
+  // dense output of order 7: about a quarter of DOPRI5's steps at the engine's tolerances;
+  // docs/theory.md, "Stiff rocking"); false: by DOPRI5
+  bool high_order_rocking = true;
 };
 
 /// Something that happened, in time order. Fields not meaningful for a kind are zero.

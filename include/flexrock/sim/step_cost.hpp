@@ -1,12 +1,14 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // What the explicit integrator will cost a body, known before any run: the stiffest motion while
-// rocking against Dopri5's stability bound and its error constant. A slender body with a stiff
+// rocking against the explicit method's (DOP853's, or Dopri5's) stability bound and error
+// constant. A slender body with a stiff
 // mode rocks with a coupled frequency far above its pinned-base ones, and an explicit method
 // must resolve it on every step (docs/theory.md, "Stiff rocking").
 #pragma once
 
 #include <string>
 
+#include "flexrock/integrate/stiff_switching.hpp"  // ExplicitMethod
 #include "flexrock/model/body.hpp"
 #include "flexrock/sim/simulate.hpp"
 
@@ -19,9 +21,19 @@ inline constexpr double kDopri5ImaginaryStability = 0.997;
 /// (the difference of its 5th- and 4th-order stability polynomials): the step control keeps it
 /// near rtol |y|, so h omega ~ (rtol / kDopri5ErrorConstant)^(1/5) (0.066 at rtol = 1e-9).
 inline constexpr double kDopri5ErrorConstant = 97.0 / 120000.0;
+/// |h omega| up to which DOP853 is stable on an undamped oscillation (dop853_stable_step({0, 1})).
+inline constexpr double kDop853ImaginaryStability = 5.96;
+/// DOP853's error norm on y' = i omega y: its 5th-order estimate is a (h omega)^6 and its 3rd-order
+/// one b (h omega)^4 to leading order (a = -1.350e-5, b = 4.202e-3 from its table), and Hairer's
+/// norm e5^2 / sqrt(e5^2 + 0.01 e3^2) is then 10 a^2 / b (h omega)^8: h omega ~ (rtol /
+/// kDop853ErrorConstant)^(1/8) (0.47 at rtol = 1e-9). tests/unit/step_cost_test.cpp forms a and b
+/// from the table.
+inline constexpr double kDop853ErrorConstant = 4.337e-7;
 
 /// Estimated step cost of the explicit integrator for a body.
 struct StepCost {
+  // the rocking's explicit method (SimulationOptions::high_order_rocking)
+  ExplicitMethod method = ExplicitMethod::kDop853;
   double rocking_time_scale = 0.0;  // [s] 1/p, p the rocking frequency
   // [rad/s] largest |eigenvalue| of the rocking equations linearized at theta = 0 (at rest, the
   // static deformation), over both edges: the stiffest motion while rocking
@@ -34,16 +46,18 @@ struct StepCost {
   double rocking_steps_per_second = 0.0;
 };
 
-/// The step cost of `body` at `options` (rtol, max_step); cheap: one eigenproblem per edge.
+/// The step cost of `body` at `options` (rtol, max_step, high_order_rocking); cheap: one
+/// eigenproblem per edge.
 StepCost estimate_step_cost(const Body& body, const SimulationOptions& options = {});
 
-/// DOPRI5's stability bound [s] while `body` rocks on `edge` (1 or 2): the longest step with
-/// h lambda in its stability region for every eigenvalue lambda of the rocking equations
+/// The explicit method's stability bound [s] while `body` rocks on `edge` (1 or 2): the longest
+/// step with h lambda in its stability region for every eigenvalue lambda of the rocking equations
 /// linearized at theta = 0 (at rest, the static deformation, no base motion); dopri5_stable_step
-/// of each. The structure's stiffness and damping set the fast eigenvalues, and the tilt and the
-/// deformation change them only through gravity and geometry, by O(g/h) and O(q): the bound holds
-/// along the motion (docs/theory.md, "Stiff rocking").
-double rocking_stable_step(const Body& body, int edge);
+/// (or dop853_stable_step) of each. The structure's stiffness and damping set the fast eigenvalues,
+/// and the tilt and the deformation change them only through gravity and geometry, by O(g/h) and
+/// O(q): the bound holds along the motion (docs/theory.md, "Stiff rocking").
+double rocking_stable_step(const Body& body, int edge,
+                           ExplicitMethod method = ExplicitMethod::kDopri5);
 
 /// Steps per simulated second above which a run is called very slow (seconds of computing per
 /// simulated second at ~1-10 us a step).
