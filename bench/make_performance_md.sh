@@ -2,7 +2,7 @@
 # SPDX-License-Identifier: BSD-3-Clause
 # Regenerates docs/performance.md: builds the benchmarks, runs Google Benchmark (JSON) and the
 # peer comparison (with the rigid rocking's former DOPRI5 step beside its Taylor series), the
-# study timings (a 256 x 256 spectrum unless GRID is set), and writes the tables, the commands, the
+# flexible body's rocking step (DOP853 beside the former DOPRI5), the study timings (a 256 x 256 spectrum unless GRID is set), and writes the tables, the commands, the
 # machine and the date.
 # Usage: bench/make_performance_md.sh [--quick]
 #   BUILD_DIR (default build/bench, the bench preset) is configured if needed.
@@ -34,6 +34,10 @@ load_before=$(cut -d' ' -f1-3 /proc/loadavg)
 mkdir -p docs/img
 $py bench/peers/compare.py --run-case "$build/bench/flexrock_run_case" --out "$perf/peers.json" \
   --plot docs/img/work_precision.png --old-step "${quick[@]}"
+# the flexible body's rocking step, DOP853 against DOPRI5 (flexrock only: no peer runs case (d))
+$py bench/peers/compare.py --run-case "$build/bench/flexrock_run_case" \
+  --out "$perf/flexible_steps.json" --plot docs/img/flexible_step.png --old-step --flexrock-only \
+  --cases d1,d8 "${quick[@]}"
 load_after=$(cut -d' ' -f1-3 /proc/loadavg)
 
 studies=""
@@ -44,5 +48,5 @@ fi
 
 $py bench/peers/write_performance_md.py --bench "$perf/bench.json" --peers "$perf/peers.json" \
   --load "$load_before / $load_after" --command "bench/make_performance_md.sh ${quick[*]}" \
-  --studies "$studies" --out docs/performance.md
-echo "wrote docs/performance.md and docs/img/work_precision.png"
+  --studies "$studies" --flexible-steps "$perf/flexible_steps.json" --out docs/performance.md
+echo "wrote docs/performance.md, docs/img/work_precision.png and docs/img/flexible_step.png"
