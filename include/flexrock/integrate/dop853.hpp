@@ -165,22 +165,7 @@ inline double dop853_stable_step(std::complex<double> mu) {
   };
   // scan |h mu| up to 8 (the region ends before) by 0.05 for the first exit, then bisect it (a
   // run takes this for each rocking eigenvalue of each edge)
-  constexpr int kScan = 160;
-  constexpr double kMost = 8.0;
-  double lo = 0.0, hi = kMost;
-  for (int i = 1; i <= kScan; ++i) {
-    const double hr = kMost * i / kScan;
-    if (!stable(hr)) {
-      hi = hr;
-      break;
-    }
-    lo = hr;
-  }
-  for (int i = 0; i < 50; ++i) {
-    const double mid = 0.5 * (lo + hi);
-    (stable(mid) ? lo : hi) = mid;
-  }
-  return lo / r;
+  return detail::stability_exit(stable, 8.0, 160) / r;
 }
 
 template <class State>
@@ -193,6 +178,7 @@ class Dop853 {
   void start(System&& sys, const StepControl& ctl, double t, const State& x, double h = 0.0) {
     ctl_ = ctl;
     for (State& k : k_) k.setZero(x.size());
+    for (State& r : r_) r.setZero(x.size());  // the dense output's: sized once, not on a step
     for (State* v : {&x0_, &xn_, &xs_, &k1s_}) v->setZero(x.size());
     t0_ = t1_ = t;
     hd_ = 0.0;
@@ -284,45 +270,44 @@ class Dop853 {
     using namespace dop853;
     const State& x = x1_;
     const auto& k = k_;
-    auto row = [&](int s) { return kA[s]; };
-    const double* a = row(1);
+    const double* a = kA[1];
     xs_ = x + h * (a[0] * k[0]);
     sys(t + kC[1] * h, xs_, k_[1]);
-    a = row(2);
+    a = kA[2];
     xs_ = x + h * (a[0] * k[0] + a[1] * k[1]);
     sys(t + kC[2] * h, xs_, k_[2]);
-    a = row(3);
+    a = kA[3];
     xs_ = x + h * (a[0] * k[0] + a[2] * k[2]);
     sys(t + kC[3] * h, xs_, k_[3]);
-    a = row(4);
+    a = kA[4];
     xs_ = x + h * (a[0] * k[0] + a[2] * k[2] + a[3] * k[3]);
     sys(t + kC[4] * h, xs_, k_[4]);
-    a = row(5);
+    a = kA[5];
     xs_ = x + h * (a[0] * k[0] + a[3] * k[3] + a[4] * k[4]);
     sys(t + kC[5] * h, xs_, k_[5]);
-    a = row(6);
+    a = kA[6];
     xs_ = x + h * (a[0] * k[0] + a[3] * k[3] + a[4] * k[4] + a[5] * k[5]);
     sys(t + kC[6] * h, xs_, k_[6]);
-    a = row(7);
+    a = kA[7];
     xs_ = x + h * (a[0] * k[0] + a[3] * k[3] + a[4] * k[4] + a[5] * k[5] + a[6] * k[6]);
     sys(t + kC[7] * h, xs_, k_[7]);
-    a = row(8);
+    a = kA[8];
     xs_ =
         x + h * (a[0] * k[0] + a[3] * k[3] + a[4] * k[4] + a[5] * k[5] + a[6] * k[6] + a[7] * k[7]);
     sys(t + kC[8] * h, xs_, k_[8]);
-    a = row(9);
+    a = kA[9];
     xs_ = x + h * (a[0] * k[0] + a[3] * k[3] + a[4] * k[4] + a[5] * k[5] + a[6] * k[6] +
                    a[7] * k[7] + a[8] * k[8]);
     sys(t + kC[9] * h, xs_, k_[9]);
-    a = row(10);
+    a = kA[10];
     xs_ = x + h * (a[0] * k[0] + a[3] * k[3] + a[4] * k[4] + a[5] * k[5] + a[6] * k[6] +
                    a[7] * k[7] + a[8] * k[8] + a[9] * k[9]);
     sys(t + kC[10] * h, xs_, k_[10]);
-    a = row(11);
+    a = kA[11];
     xs_ = x + h * (a[0] * k[0] + a[3] * k[3] + a[4] * k[4] + a[5] * k[5] + a[6] * k[6] +
                    a[7] * k[7] + a[8] * k[8] + a[9] * k[9] + a[10] * k[10]);
     sys(t + kC[11] * h, xs_, k_[11]);
-    a = row(12);  // the 8th-order result: b = a_13,j
+    a = kA[12];  // the 8th-order result: b = a_13,j
     xn_ = x + h * (a[0] * k[0] + a[5] * k[5] + a[6] * k[6] + a[7] * k[7] + a[8] * k[8] +
                    a[9] * k[9] + a[10] * k[10] + a[11] * k[11]);
     sys(t + h, xn_, k_[12]);
@@ -389,35 +374,7 @@ class Dop853 {
 
   template <class System>
   double initial_step(System&& sys, double t, const State& x) {
-    // Hairer's starting step for order 8 (as Dopri5's, with the order's exponent)
-    const int n = ctl_.controlled < 0 ? static_cast<int>(x.size()) : ctl_.controlled;
-    if (n == 0) return std::min(ctl_.max_step, 1.0);
-    const State& f0 = k_[12];
-    double d0 = 0.0, d1 = 0.0;
-    for (int i = 0; i < n; ++i) {
-      const double sc = ctl_.atol + ctl_.rtol * std::abs(x(i));
-      d0 += (x(i) / sc) * (x(i) / sc);
-      d1 += (f0(i) / sc) * (f0(i) / sc);
-    }
-    d0 = std::sqrt(d0 / n);
-    d1 = std::sqrt(d1 / n);
-    double h0 = (d0 < 1e-5 || d1 < 1e-5) ? 1e-6 : 0.01 * d0 / d1;
-    h0 = std::min(h0, ctl_.max_step);
-    xs_ = x + h0 * f0;
-    sys(t + h0, xs_, k_[1]);
-    ++rhs_evals_;
-    double d2 = 0.0;
-    for (int i = 0; i < n; ++i) {
-      const double sc = ctl_.atol + ctl_.rtol * std::abs(x(i));
-      const double r = (k_[1](i) - f0(i)) / sc;
-      d2 += r * r;
-    }
-    d2 = std::sqrt(d2 / n) / h0;
-    const double dm = std::max(d1, d2);
-    const double h1 = dm <= 1e-15 ? std::max(1e-6, h0 * 1e-3) : std::pow(0.01 / dm, 1.0 / 8.0);
-    const double h_floor =
-        std::min(10.0 * ctl_.min_step * std::max(1.0, std::abs(t)), ctl_.max_step);
-    return std::max(std::min({100.0 * h0, h1, ctl_.max_step}), h_floor);
+    return detail::hairer_initial_step(sys, ctl_, t, x, k_[12], xs_, k_[1], 8.0, rhs_evals_);
   }
 
   StepControl ctl_;

@@ -24,6 +24,69 @@ struct StepControl {
   double min_step = 1e-13;  // relative to max(1, |t|): below it the step has collapsed
 };
 
+namespace detail {
+
+/// The first exit of |h mu| from an explicit method's stability region along mu's ray: `stable`
+/// tells whether |h mu| = hr lies inside; scanned up to `most` (past the region's end) in `scan`
+/// steps, then bisected. Returns the last |h mu| known inside.
+template <class Stable>
+double stability_exit(Stable&& stable, double most, int scan) {
+  double lo = 0.0, hi = most;
+  for (int i = 1; i <= scan; ++i) {
+    const double hr = most * i / scan;
+    if (!stable(hr)) {
+      hi = hr;
+      break;
+    }
+    lo = hr;
+  }
+  for (int i = 0; i < 50; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (stable(mid) ? lo : hi) = mid;
+  }
+  return lo;
+}
+
+/// Hairer's starting step for a method of order `order`: balances the first and second derivative
+/// estimates at (t, x), f0 = f(t, x); evaluates f once more (into f1, with xs as scratch), counted
+/// in `evaluations`.
+template <class System, class State>
+double hairer_initial_step(System&& sys, const StepControl& ctl, double t, const State& x,
+                           const State& f0, State& xs, State& f1, double order, long& evaluations) {
+  const int n = ctl.controlled < 0 ? static_cast<int>(x.size()) : ctl.controlled;
+  if (n == 0) return std::min(ctl.max_step, 1.0);
+  double d0 = 0.0, d1 = 0.0;
+  for (int i = 0; i < n; ++i) {
+    const double sc = ctl.atol + ctl.rtol * std::abs(x(i));
+    d0 += (x(i) / sc) * (x(i) / sc);
+    d1 += (f0(i) / sc) * (f0(i) / sc);
+  }
+  d0 = std::sqrt(d0 / n);
+  d1 = std::sqrt(d1 / n);
+  double h0 = (d0 < 1e-5 || d1 < 1e-5) ? 1e-6 : 0.01 * d0 / d1;
+  h0 = std::min(h0, ctl.max_step);
+  xs = x + h0 * f0;
+  sys(t + h0, xs, f1);
+  ++evaluations;
+  double d2 = 0.0;
+  for (int i = 0; i < n; ++i) {
+    const double sc = ctl.atol + ctl.rtol * std::abs(x(i));
+    const double r = (f1(i) - f0(i)) / sc;
+    d2 += r * r;
+  }
+  d2 = std::sqrt(d2 / n) / h0;
+  const double dm = std::max(d1, d2);
+  const double h1 = dm <= 1e-15 ? std::max(1e-6, h0 * 1e-3) : std::pow(0.01 / dm, 1.0 / order);
+  // a state tiny next to its derivative (a block released from 1e-15 rad: theta far below
+  // atol, theta_ddot of order g/R) gives h0 ~ 1e-18 s, below the step that counts as
+  // collapsed: start no lower than ten times that step; the error control shrinks a start
+  // that is too long, and only then is a collapse real
+  const double h_floor = std::min(10.0 * ctl.min_step * std::max(1.0, std::abs(t)), ctl.max_step);
+  return std::max(std::min({100.0 * h0, h1, ctl.max_step}), h_floor);
+}
+
+}  // namespace detail
+
 /// The longest step h [s] with h mu inside DOPRI5's stability region for every h' in (0, h]:
 /// |R(z)| <= 1 for R(z) = 1 + z + z^2/2 + z^3/6 + z^4/24 + z^5/120 + z^6/600, its stability
 /// polynomial (Hairer & Wanner II, IV.2). On the negative real axis it is 3.31 / |mu|; on the
@@ -41,21 +104,7 @@ inline double dopri5_stable_step(std::complex<double> mu) {
     return std::abs(p) <= 1.0 + 1e-12;
   };
   // scan |h mu| up to 3.5 (the region ends before) for the first exit, then bisect it
-  constexpr int kScan = 350;
-  double lo = 0.0, hi = 3.5;
-  for (int i = 1; i <= kScan; ++i) {
-    const double hr = 3.5 * i / kScan;
-    if (!stable(hr)) {
-      hi = hr;
-      break;
-    }
-    lo = hr;
-  }
-  for (int i = 0; i < 50; ++i) {
-    const double mid = 0.5 * (lo + hi);
-    (stable(mid) ? lo : hi) = mid;
-  }
-  return lo / r;
+  return detail::stability_exit(stable, 3.5, 350) / r;
 }
 
 template <class State>
@@ -231,38 +280,7 @@ class Dopri5 {
 
   template <class System>
   double initial_step(System&& sys, double t, const State& x) {
-    // Hairer's starting step: balance the first and second derivative estimates
-    const int n = ctl_.controlled < 0 ? static_cast<int>(x.size()) : ctl_.controlled;
-    if (n == 0) return std::min(ctl_.max_step, 1.0);
-    double d0 = 0.0, d1 = 0.0;
-    for (int i = 0; i < n; ++i) {
-      const double sc = ctl_.atol + ctl_.rtol * std::abs(x(i));
-      d0 += (x(i) / sc) * (x(i) / sc);
-      d1 += (k7_(i) / sc) * (k7_(i) / sc);
-    }
-    d0 = std::sqrt(d0 / n);
-    d1 = std::sqrt(d1 / n);
-    double h0 = (d0 < 1e-5 || d1 < 1e-5) ? 1e-6 : 0.01 * d0 / d1;
-    h0 = std::min(h0, ctl_.max_step);
-    xs_ = x + h0 * k7_;
-    sys(t + h0, xs_, k2_);
-    ++rhs_evals_;
-    double d2 = 0.0;
-    for (int i = 0; i < n; ++i) {
-      const double sc = ctl_.atol + ctl_.rtol * std::abs(x(i));
-      const double r = (k2_(i) - k7_(i)) / sc;
-      d2 += r * r;
-    }
-    d2 = std::sqrt(d2 / n) / h0;
-    const double dm = std::max(d1, d2);
-    const double h1 = dm <= 1e-15 ? std::max(1e-6, h0 * 1e-3) : std::pow(0.01 / dm, 0.2);
-    // a state tiny next to its derivative (a block released from 1e-15 rad: theta far below
-    // atol, theta_ddot of order g/R) gives h0 ~ 1e-18 s, below the step that counts as
-    // collapsed: start no lower than ten times that step; the error control shrinks a start
-    // that is too long, and only then is a collapse real
-    const double h_floor =
-        std::min(10.0 * ctl_.min_step * std::max(1.0, std::abs(t)), ctl_.max_step);
-    return std::max(std::min({100.0 * h0, h1, ctl_.max_step}), h_floor);
+    return detail::hairer_initial_step(sys, ctl_, t, x, k7_, xs_, k2_, 5.0, rhs_evals_);
   }
 
   StepControl ctl_;
