@@ -1,12 +1,14 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Runs one benchmark case at a given tolerance, repeatedly, and prints the median CPU time per
 // run with the quantities the peer comparison judges accuracy by (bench/peers/compare.py).
-//   flexrock_run_case <a|b2|b6|c|d1|d4|d8> <rtol> <repetitions> [dopri5|stepped]
+//   flexrock_run_case <a|b2|b6|c|d1|d4|d8> <rtol> <repetitions> [dopri5|stepped|series]
 // `dopri5` steps the rocking by DOPRI5: a rigid body's instead of its Taylor series (series_rocking
 // = false), a flexible body's instead of DOP853 (high_order_rocking = false), for the
 // work-precision comparison of the two; `stepped` takes a flexible body's full
 // contact by sampled steps of the exact propagation instead of the record walk
-// (full_contact_walk = false), to compare the two side by side.
+// (full_contact_walk = false), to compare the two side by side; `series` steps a rigid body's free
+// rocking on a floor at rest by its Taylor series instead of the closed form
+// (closed_form_free_rocking = false).
 #include <algorithm>
 #include <cstdio>
 #include <ctime>
@@ -29,10 +31,11 @@ int main(int argc, char** argv) {
   using namespace flexrock;
   using namespace flexrock::bench;
   const std::string variant = argc == 5 ? argv[4] : "";
-  if (argc != 4 && !(argc == 5 && (variant == "dopri5" || variant == "stepped"))) {
+  if (argc != 4 &&
+      !(argc == 5 && (variant == "dopri5" || variant == "stepped" || variant == "series"))) {
     std::fprintf(stderr,
                  "usage: flexrock_run_case <a|b2|b6|c|d1|d4|d8> <rtol> <repetitions> "
-                 "[dopri5|stepped]\n");
+                 "[dopri5|stepped|series]\n");
     return 2;
   }
   const std::string name = argv[1];
@@ -50,6 +53,7 @@ int main(int argc, char** argv) {
     c.opt.high_order_rocking = false;
   }
   if (variant == "stepped") c.opt.full_contact_walk = false;
+  if (variant == "series") c.opt.closed_form_free_rocking = false;
   std::vector<double> times;
   SimulationResult r;
   for (int i = 0; i < reps; ++i) {

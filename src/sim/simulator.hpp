@@ -28,6 +28,7 @@
 #include "flexrock/model/dynamics.hpp"
 #include "flexrock/sim/simulate.hpp"
 #include "flexrock/sim/step_cost.hpp"
+#include "free_rocking_arc.hpp"
 #include "recorder.hpp"
 #include "rocking_series.hpp"
 #include "series_guards.hpp"
@@ -163,6 +164,12 @@ class Simulator final : private GuardProbe {
   // a rigid body's rocking by its series with the guards bounded over the whole step
   bool series_bounded() const;
   bool advance_series(double& t, State& x);
+  // a rigid body rocking freely on a floor at rest, by its closed form (arc_): true where it
+  // applies at (t, x) and the arc has started
+  bool start_arc(double t, const ContactState& x);
+  bool advance_arc(double& t, State& x);
+  // the shear's, the moment's and the friction demand's extremes over the arc's last step
+  void arc_extremes(double t0, double t1);
   // the series' reaction polynomials sp_fi_, sp_fj_, sp_moment_ on a step of length h
   void reaction_polynomials(double h);
   // `reaction`: whether reaction_polynomials ran on this step (it runs here where needed)
@@ -257,6 +264,7 @@ class Simulator final : private GuardProbe {
   StiffSwitching<ContactState> integ_;
   std::array<double, 2> rocking_h_stable_{-1.0, -1.0};  // [s] per edge, once known (< 0: not yet)
   RockingSeries<ContactState> series_integ_;  // a rigid body's rocking under a record or none
+  FreeRockingArc<ContactState> arc_;          // the same on a floor at rest, in closed form
   Dopri5<FlightState> flight_integ_;
   Dopri5<SlideState> slide_integ_;
   mutable SlideState slide_buf_;
@@ -273,6 +281,7 @@ class Simulator final : private GuardProbe {
     kStill,    // a rigid body in full contact: the state is x_still_, nothing integrates
     kExact,    // a flexible body in full contact under a record or none: prop_
     kSeries,   // a rigid body rocking under a record or none: series_integ_
+    kArc,      // a rigid body rocking freely on a floor at rest: arc_, in closed form
     kRocking,  // any other sticking contact mode (rocking, or full contact under pulses): integ_
     kFlight,   // flight_integ_
     kSlide,    // a sliding mode: slide_integ_
@@ -708,9 +717,12 @@ bool Simulator<N, MaxN>::enter_mode(double t, State& x) {
       series_integ_.set_pivot(a, dyn_.g_over_h() / dyn_.inertia(a, q_),
                               dyn_.mass() * dyn_.height() * dyn_.g(), dyn_.g());
       dense_buf_ = x.head(2 * n_ + 4);
+      if (start_arc(t, dense_buf_)) break;
       series_integ_.start([](double, const ContactState&, ContactState&) {}, ctl_, t, dense_buf_);
       break;
     }
+    case Stepping::kArc:
+      break;  // chosen above, from kSeries
     case Stepping::kRocking:
       dense_buf_ = x.head(2 * n_ + 4);
       configure_rocking_integrator();
@@ -794,6 +806,8 @@ double Simulator<N, MaxN>::stepped_until() const {
       return slide_integ_.t1();
     case Stepping::kSeries:
       return series_integ_.t1();
+    case Stepping::kArc:
+      return arc_.t1();
     case Stepping::kRocking:
       break;
   }
@@ -842,6 +856,8 @@ bool Simulator<N, MaxN>::advance(double& t, State& x) {
       auto sys = [this](double tt, const SlideState& xx, SlideState& dd) { slide_rhs(tt, xx, dd); };
       return advance_with(slide_integ_, sys, slide_buf_, t, x);
     }
+    case Stepping::kArc:
+      return advance_arc(t, x);
     case Stepping::kSeries:
       if (series_bounded()) return advance_series(t, x);
       series_integ_.set_max_step(ctl_.max_step);
@@ -1096,7 +1112,125 @@ bool Simulator<N, MaxN>::advance_series(double& t, State& x) {
   }
   series_extremes(t0, tau_end, slot_hit >= 0, range, reaction);
   if (slot_hit < 0) observe(se, xe);
-  return end_step(series_integ_, none, slot_hit, t_hit, se, t, x);
+  if (!end_step(series_integ_, none, slot_hit, t_hit, se, t, x)) return false;
+  // the floor has come to rest (a record's or a pulse's end): the rest of the arc in closed form
+  if (slot_hit < 0 && stepping_ == Stepping::kSeries && t >= quiet_from_) {
+    dense_buf_ = x.head(2 * n_ + 4);
+    start_arc(t, dense_buf_);
+  }
+  return true;
+}
+
+// The closed form takes a rigid body's rocking (docs/theory.md, "Free rocking in closed form")
+// where the floor is at rest from t on, no friction limit can make it slide, and the arc stays
+// within what the rocking mode assumes: below the upright energy (no overturn), the floor pressing
+// with at least kPressingFraction of the weight throughout (no lift-off; F_J is a quadratic in
+// cos(phi) on the arc). Elsewhere the series steps it, as it does near those limits.
+template <int N, int MaxN>
+bool Simulator<N, MaxN>::start_arc(double t, const ContactState& x) {
+  if (n_ != 0 || !opt_.closed_form_free_rocking || t < quiet_from_ ||
+      std::isfinite(opt_.friction_coefficient) || hold_tension_)
+    return false;
+  const int e = edge();
+  const double a = dyn_.alpha(e), m = dyn_.inertia(a, q_);
+  if (!arc_.start(t, x, a, dyn_.g_over_h() / m, edge_sign(e))) return false;
+  // F_J = 1 - (1 - 3 C^2 + 2 cm C)/kappa over C = cos(phi) in [cos(alpha_t), cm], kappa = m/c^2
+  const double c2 = 1.0 + a * a, kappa = m / c2, cm = arc_.energy_cosine();
+  const double c_lo = 1.0 / std::sqrt(c2);
+  auto fj = [&](double c) { return 1.0 - (1.0 - 3.0 * c * c + 2.0 * cm * c) / kappa; };
+  double fj_min = std::min(fj(c_lo), fj(cm));
+  if (cm / 3.0 > c_lo && cm / 3.0 < cm) fj_min = std::min(fj_min, fj(cm / 3.0));
+  if (!(fj_min >= kPressingFraction)) return false;
+  stepping_ = Stepping::kArc;
+  return true;
+}
+
+// One step of the closed form: to the impact, or to the run's end. The peak inside is recorded;
+// the extremes are the step's ends' and its interior critical points' (arc_extremes).
+template <int N, int MaxN>
+bool Simulator<N, MaxN>::advance_arc(double& t, State& x) {
+  const double t_stop = std::min({t_end_, motion_.next_breakpoint(t, break_cursor_), step_stop_});
+  if (!count_step(t)) return false;
+  arc_.step(t_stop);
+  const double t0 = arc_.t0(), t1 = arc_.t1();
+  if (opt_.progress) opt_.progress->store(t1, std::memory_order_relaxed);
+  const double tp = arc_.peak_time();
+  if (tp > t0 && tp <= t1 && guard_slot(mode_, Guard::kPeak) >= 0) record(tp);
+  // the step's end, before the reset where the impact ends it (a point of the motion too)
+  GuardSample& se = samples_buf_[1];
+  State& xe = sample_states_[1];
+  put(arc_.x1(), xe);
+  evaluate(t1, xe, se);
+  observe(se, xe);
+  arc_extremes(t0, t1);
+  const bool impact = t1 == arc_.impact_time();
+  auto none = [](double, const ContactState&, ContactState&) {};
+  return end_step(arc_, none, impact ? guard_slot(mode_, Guard::kImpact) : -1, t1, se, t, x);
+}
+
+// On the arc the reaction depends on phi = alpha_t - |theta| alone (theta_dot^2 by the energy):
+// F_I = sin(phi) (3 cos(phi) - 2 cm)/kappa, F_J = 1 - (1 - 3 cos^2 + 2 cm cos)/kappa and the
+// moment alpha (cos(theta) - lambda (beta sin(phi) + 2 (cm - cos(phi)))), kappa = m/c^2,
+// lambda = c/m, c^2 = 1 + alpha^2 (tools/derive/derive.py, derive_free_rocking_arc). The step
+// spans phi over [lo, hi] (lo = phi_m where the peak is inside); its ends are observed, and
+// within it F_I's and the moment's one critical point each, where the value there could raise the
+// extreme. The friction demand |F_I|/F_J is bounded by max |F_I| over min F_J and searched in phi
+// only where that bound could raise it.
+template <int N, int MaxN>
+void Simulator<N, MaxN>::arc_extremes(double t0, double t1) {
+  if (!(t1 > t0)) return;
+  const Extremes& ex = res_.extremes;
+  const int e = edge();
+  const double sg = edge_sign(e);
+  const double a = dyn_.alpha(e), beta = std::abs(a), m = dyn_.inertia(a, q_);
+  const double c = std::sqrt(1.0 + beta * beta), kappa = m / (c * c), lambda = c / m;
+  const double cm = arc_.energy_cosine(), at = arc_.alpha_t();
+  const double ph0 = at - sg * arc_.x0()(0), ph1 = at - sg * arc_.x1()(0);
+  const double tp = arc_.peak_time();
+  const double lo = tp > t0 && tp < t1 ? at - arc_.peak_tilt() : std::min(ph0, ph1);
+  const double hi = std::max(ph0, ph1);
+  const double mg = dyn_.mass() * dyn_.g(), mgh = mg * dyn_.height();
+  auto fi = [&](double ph) { return std::sin(ph) * (3.0 * std::cos(ph) - 2.0 * cm) / kappa; };
+  auto fj = [&](double ph) {
+    const double cp = std::cos(ph);
+    return 1.0 - (1.0 - 3.0 * cp * cp + 2.0 * cm * cp) / kappa;
+  };
+  auto moment = [&](double ph) {
+    return beta * ((std::cos(ph) + beta * std::sin(ph)) / c -
+                   lambda * (beta * std::sin(ph) + 2.0 * (cm - std::cos(ph))));
+  };
+  auto at_phi = [&](double ph) {
+    const double tt = arc_.time_of(ph);
+    GuardSample s;
+    state_at(tt, xr_);
+    evaluate(tt, xr_, s);
+    observe(s, xr_);
+  };
+  auto inside = [&](double ph) { return ph > lo && ph < hi; };
+  // F_I: d/dphi sin (3 cos - 2 cm) = 6 cos^2 - 2 cm cos - 3, one root in (0, pi/2)
+  const double ph_fi = std::acos((cm + std::sqrt(cm * cm + 18.0)) / 6.0);
+  double fi_max = std::max(std::abs(fi(lo)), std::abs(fi(hi)));
+  if (inside(ph_fi)) {
+    fi_max = std::max(fi_max, std::abs(fi(ph_fi)));
+    if (mg * std::abs(fi(ph_fi)) > ex.max_base_shear) at_phi(ph_fi);
+  }
+  // the moment: its derivative cos (beta/c - lambda beta) - sin (1/c + 2 lambda) vanishes once
+  const double ph_mo = std::atan2(beta * (1.0 / c - lambda), 1.0 / c + 2.0 * lambda);
+  if (inside(ph_mo) && mgh * std::abs(moment(ph_mo)) > ex.max_overturning_moment) at_phi(ph_mo);
+  // the friction demand: F_J is a quadratic in cos(phi), least at the ends or at cos = cm/3
+  double fj_min = std::min(fj(lo), fj(hi));
+  const double ph_fj = std::acos(std::min(1.0, cm / 3.0));
+  if (inside(ph_fj)) fj_min = std::min(fj_min, fj(ph_fj));
+  const double r = ex.max_friction_demand;
+  if (fj_min >= kPressingFraction && fi_max / fj_min <= r) return;
+  const double ph_r = lo + polynomial_argmax(
+                               [&](double d) {
+                                 const double f = fj(lo + d);
+                                 return f >= kPressingFraction ? std::abs(fi(lo + d)) / f : 0.0;
+                               },
+                               hi - lo);
+  const double fr = fj(ph_r);
+  if (fr >= kPressingFraction && std::abs(fi(ph_r)) / fr > r) at_phi(ph_r);
 }
 
 // the floor reaction's and the overturning moment's series on a series step of length h
@@ -1592,6 +1726,10 @@ void Simulator<N, MaxN>::state_at(double t, State& out) const {
       return;
     case Stepping::kSeries:
       series_integ_.dense(t, dense_buf_);
+      put(dense_buf_, out);
+      return;
+    case Stepping::kArc:
+      arc_.dense(t, dense_buf_);
       put(dense_buf_, out);
       return;
     case Stepping::kRocking:

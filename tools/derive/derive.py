@@ -3044,6 +3044,102 @@ def derive_rocking_series(order=5):
     return res
 
 
+def derive_free_rocking_arc():
+    """a rigid body rocking freely on a floor at rest, in closed form (docs/theory.md, "Free
+    rocking in closed form"): the series' equation with u = 0, v = 1 as phi'' = P^2 sin(phi), phi =
+    alpha_t - |theta|; the floor reaction and the moment as functions of phi on an arc of energy cm;
+    their critical points; Jacobi's solution sin(phi/2) = s/dn(P (t - t_peak), k) against the energy
+    integral, and its times against an independent integration (mpmath's Taylor ODE solver)."""
+    be, c, kk, G, mt, sg, cm, Sp, Cp, P2 = sp.symbols('beta c k G mt sg cm Sp Cp P2', real=True)
+    res = {}
+
+    def red(expr):
+        # exact reduction with c^2 = 1 + beta^2, Sp^2 + Cp^2 = 1, sg^2 = 1
+        num, den = sp.fraction(sp.together(sp.expand(expr)))
+        num = sp.expand(num)
+        for sym, rel_ in ((c, c ** 2 - 1 - be ** 2), (Sp, Sp ** 2 + Cp ** 2 - 1), (sg, sg ** 2 - 1)):
+            num = sp.rem(num, rel_, sym)
+        return sp.expand(num) == 0
+
+    al = -sg * be                        # the pivot's alpha: restoring towards theta = 0
+    cth = (Cp + be * Sp) / c             # cos(theta), theta = sg (alpha_t - phi), tan alpha_t = beta
+    sth = sg * (be * Cp - Sp) / c        # sin(theta)
+    k = G / mt                           # the series' k = (g/h)/m, mt = 1 + zeta^2 + beta^2
+    # theta'' = k (alpha cos + sin) (u = 0, v = 1) is phi'' = -sg theta'' = P^2 sin(phi), P^2 = k c
+    res['arc_equation'] = red(-sg * k * (al * cth + sth) - k * c * Sp)
+    # on an arc of energy phi'^2/2 + P^2 cos(phi) = P^2 cm: theta_dot^2 and theta''
+    thd2 = 2 * k * c * (cm - Cp)
+    thdd = -sg * k * c * Sp
+    A_ = (al * thd2 - thdd) / G
+    B_ = (al * thdd + thd2) / G
+    kap = mt / c ** 2                    # I_O / (M R^2)
+    lam = c / mt
+    Fi = A_ * cth + B_ * sth
+    Fj = 1 + A_ * sth - B_ * cth
+    Mo = al * (cth - B_)
+    res['arc_reaction'] = (red(Fi - sg * Sp * (3 * Cp - 2 * cm) / kap)
+                           and red(Fj - (1 - (1 - 3 * Cp ** 2 + 2 * cm * Cp) / kap))
+                           and red(Mo + sg * be * ((Cp + be * Sp) / c - lam * (be * Sp + 2 * cm - 2 * Cp))))
+    # critical points in phi: F_I's factor sin(phi) (3 cos(phi) - 2 cm) has derivative
+    # 6 cos^2 - 2 cm cos - 3, zero at cos = (cm + sqrt(cm^2 + 18))/6; the moment's bracket has
+    # derivative cos (beta/c - lambda beta) - sin (1/c + 2 lambda)
+    ph = sp.Symbol('phi', real=True)
+    f = sp.sin(ph) * (3 * sp.cos(ph) - 2 * cm)
+    df = sp.expand(sp.expand_trig(sp.diff(f, ph))).subs(sp.sin(ph) ** 2, 1 - sp.cos(ph) ** 2)
+    x = sp.Symbol('x')
+    root = (cm + sp.sqrt(cm ** 2 + 18)) / 6
+    res['arc_shear_critical'] = (sp.expand(df - (6 * sp.cos(ph) ** 2 - 2 * cm * sp.cos(ph) - 3)) == 0
+                                 and sp.simplify((6 * x ** 2 - 2 * cm * x - 3).subs(x, root)) == 0)
+    m_ = (sp.cos(ph) + be * sp.sin(ph)) / c - lam * (be * sp.sin(ph) + 2 * cm - 2 * sp.cos(ph))
+    res['arc_moment_critical'] = sp.simplify(
+        sp.diff(m_, ph) - (sp.cos(ph) * (be / c - lam * be) - sp.sin(ph) * (1 / c + 2 * lam))) == 0
+    # Jacobi's solution: sin(phi/2) = s/dn(v), cos(phi/2) = k cn/dn, phi' = 2 P s k sn/dn, v = P (t -
+    # t_peak), k^2 = 1 - s^2; sn' = cn dn, dn' = -k^2 sn cn. The two halves' squares sum to 1, the
+    # derivative of s/dn is cos(phi/2) phi'/2, and phi'^2 = 2 P^2 (cm - cos(phi)) with
+    # cm = 1 - 2 s^2, cos(phi) = 1 - 2 s^2/dn^2
+    sn, cn, dn, s, P = sp.symbols('sn cn dn s P', positive=True)
+    km = sp.sqrt(1 - s ** 2)
+    on = {cn ** 2: 1 - sn ** 2, dn ** 2: 1 - km ** 2 * sn ** 2}
+
+    def zero_jac(e):
+        num = sp.expand(sp.fraction(sp.together(sp.expand(e)))[0])
+        num = sp.rem(num, cn ** 2 - 1 + sn ** 2, cn)
+        num = sp.rem(sp.expand(num), dn ** 2 - 1 + km ** 2 * sn ** 2, dn)
+        return sp.simplify(num) == 0
+
+    dphi = 2 * P * s * km * sn / dn
+    res['arc_jacobi'] = (zero_jac((s / dn) ** 2 + (km * cn / dn) ** 2 - 1)
+                         and zero_jac(-s * (-km ** 2 * sn * cn) * P / dn ** 2 - (km * cn / dn) * dphi / 2)
+                         and zero_jac(dphi ** 2 - 2 * P ** 2 * ((1 - 2 * s ** 2) - (1 - 2 * s ** 2 / dn ** 2))))
+    # the times, numerically: from (phi0, phi0') the peak comes after v0/P, sn(v0) = |phi0'|/(2 P k
+    # sin(phi0/2)), and the impact (phi = alpha_t) v_I/P after the peak, sn(v_I)^2 = (sin(theta0/2)
+    # sin(alpha_t - theta0/2) + phi0'^2/(4 P^2))/(k^2 sin^2(alpha_t/2)); against mpmath's ODE solver
+    worst = mp.mpf(0)
+    for (alt, Pn, th0, om0) in ((0.2, 2.7, 0.05, 0.3), (0.6, 1.9, 0.3, -0.2), (0.1, 4.0, 0.0, 0.35),
+                                (0.35, 3.1, 0.34, 0.0)):
+        alt, Pn, th0, om0 = mp.mpf(alt), mp.mpf(Pn), mp.mpf(th0), mp.mpf(om0)
+        ph0 = alt - th0
+        s2 = mp.sin(ph0 / 2) ** 2 - om0 ** 2 / (4 * Pn ** 2)
+        sv, kv = mp.sqrt(s2), mp.sqrt(1 - s2)
+        v0 = mp.ellipf(mp.asin(abs(om0) / (2 * Pn * kv * mp.sin(ph0 / 2))), kv ** 2)
+        t_peak = (v0 if om0 > 0 else -v0) / Pn
+        snI = mp.sqrt((mp.sin(th0 / 2) * mp.sin(alt - th0 / 2) + om0 ** 2 / (4 * Pn ** 2))
+                      / (kv ** 2 * mp.sin(alt / 2) ** 2))
+        t_imp = t_peak + mp.ellipf(mp.asin(snI), kv ** 2) / Pn
+        sol = mp.odefun(lambda t, y: [y[1], Pn ** 2 * mp.sin(y[0])], 0, [ph0, -om0])
+        worst = max(worst, abs(sol(t_imp)[0] - alt))
+        for frac in (0.25, 0.5, 0.9):
+            t = frac * t_imp
+            closed = 2 * mp.asin(sv / mp.ellipfun('dn', Pn * (t - t_peak), kv ** 2))
+            dclosed = 2 * Pn * sv * kv * mp.ellipfun('sn', Pn * (t - t_peak), kv ** 2) / \
+                mp.ellipfun('dn', Pn * (t - t_peak), kv ** 2)
+            y = sol(t)
+            worst = max(worst, abs(y[0] - closed), abs(y[1] - dclosed) / Pn)
+    res['arc_times_against_integration'] = bool(worst < mp.mpf(10) ** -12)
+    res['arc_times_worst'] = float(worst)
+    return res
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument('--out')
@@ -3066,6 +3162,8 @@ def main():
     print('  symbolic modal coordinates: %s' % sres['modal_coordinates'], file=sys.stderr)
     sres['rocking_series'] = derive_rocking_series()
     print('  rigid rocking by its Taylor series: %s' % sres['rocking_series'], file=sys.stderr)
+    sres['free_rocking_arc'] = derive_free_rocking_arc()
+    print('  free rocking in closed form: %s' % sres['free_rocking_arc'], file=sys.stderr)
     failed = [(n, k) for n, r in sres.items() for k, v in r.items()
               if (isinstance(v, bool) and not v) or (isinstance(v, list) and v)]
     print('symbolic checks (n=0..%d): %s  [%.1f s]' % (args.symbolic_n, 'ALL PASS' if not failed else

@@ -161,6 +161,10 @@ struct SimulationOptions {
   // dense output of order 7: about a quarter of DOPRI5's steps at the engine's tolerances;
   // docs/theory.md, "Stiff rocking"); false: by DOPRI5
   bool high_order_rocking = true;
+  // a rigid body rocking freely on a floor at rest (after a record or a pulse, or with none) is
+  // advanced by the closed form of its arcs, one step from one impact to the next (docs/theory.md,
+  // "Free rocking in closed form"); false: by the Taylor series as under the record
+  bool closed_form_free_rocking = true;
 };
 
 /// Something that happened, in time order. Fields not meaningful for a kind are zero.

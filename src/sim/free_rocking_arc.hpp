@@ -1,0 +1,151 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// A rigid body rocking freely on a floor at rest, in closed form (docs/theory.md, "Free rocking
+// in closed form"). With phi = alpha_t - |theta| the equation is phi'' = P^2 sin(phi), an inverted
+// pendulum: below the upright energy its arc from the floor to the peak and back is
+// sin(phi/2) = s / dn(P (t - t_peak), k), k^2 = 1 - s^2, s = sin(phi_m/2) at the peak, and the
+// times of the peak and of the impact are incomplete elliptic integrals of the first kind. One
+// step covers the arc up to the impact (or the run's end) exactly; the dense output is Jacobi's
+// functions. Same interface as Dopri5 for the event loop (t0, t1, x0, x1, restep_to, dense).
+// Boost.Math supplies F(phi, k) and sn, cn, dn. Internal header.
+#pragma once
+
+#include <algorithm>
+#include <boost/math/special_functions/ellint_1.hpp>
+#include <boost/math/special_functions/jacobi_elliptic.hpp>
+#include <cmath>
+#include <limits>
+
+namespace flexrock::detail {
+
+template <class State>
+class FreeRockingArc {
+  // in double throughout (Boost.Math promotes to long double by default)
+  using Policy = boost::math::policies::policy<boost::math::policies::promote_double<false>>;
+
+ public:
+  /// Smallest s^2 = sin^2(phi_m/2) the arc takes: nearer the upright energy the closed form's
+  /// modulus is 1 to rounding, and the series steps the motion as before (it then decides whether
+  /// the body goes over).
+  static constexpr double kMinS2 = 1e-12;
+
+  /// Starts an arc at (t, x) on the pivot of the series' equation theta'' = k (alpha cos theta +
+  /// sin theta) (RockingSeries::set_pivot; k = (g/h)/m), the body on its edge of sign sg (theta
+  /// sg >= 0). False where the arc does not apply: the state is not strictly on the edge (theta = 0
+  /// moving down, the impact is the loop's), or its energy reaches the upright one.
+  bool start(double t, const State& x, double alpha, double k, double sg) {
+    const double beta = std::abs(alpha);
+    if (!(alpha * sg < 0.0) || !(k > 0.0)) return false;
+    const double th = sg * x(0), om = sg * x(1);  // vartheta >= 0 and its rate
+    if (th < 0.0 || (th == 0.0 && !(om > 0.0))) return false;
+    alpha_t_ = std::atan(beta);
+    if (!(th < alpha_t_)) return false;  // past the tipping angle gravity overturns it
+    sg_ = sg;
+    p_ = std::sqrt(k * std::hypot(1.0, beta));  // P^2 = k sqrt(1 + beta^2)
+    const double w = om / (2.0 * p_);           // phi0'/(2 P) up to its sign
+    sa_ = std::sin(0.5 * alpha_t_);
+    const double sh0 = th == 0.0 ? sa_ : std::sin(0.5 * (alpha_t_ - th));
+    s2_ = sh0 * sh0 - w * w;  // sin^2(phi_m/2) by the energy, without cos's cancellation
+    if (!(s2_ > kMinS2)) return false;
+    s_ = std::sqrt(s2_);
+    k_ = std::sqrt(1.0 - s2_);
+    cm_ = 1.0 - 2.0 * s2_;  // cos(phi_m)
+    // the impact, phi = alpha_t: sn^2 = (sin^2(alpha_t/2) - s^2)/(k^2 sin^2(alpha_t/2)), the
+    // difference of squares as sin(theta0/2) sin(alpha_t - theta0/2) + w^2 (no cancellation)
+    gap_ = th == 0.0 ? w * w : std::sin(0.5 * th) * std::sin(alpha_t_ - 0.5 * th) + w * w;
+    const double v_impact = ellint(std::sqrt(gap_) / (k_ * sa_));
+    // from the start to the peak: sn(v0) = |phi0'|/(2 P k sin(phi0/2)), the impact's by symmetry
+    // where the arc starts on the floor; past the peak when falling
+    const double v0 = th == 0.0 ? v_impact : ellint(std::abs(w) / (k_ * sh0));
+    t_peak_ = om > 0.0 ? t + v0 / p_ : t - v0 / p_;
+    t_impact_ = t_peak_ + v_impact / p_;
+    // the impact's rate by the energy: vartheta'^2 = om^2 + 2 P^2 (cos phi0 - cos alpha_t)
+    impact_rate_ = -2.0 * p_ * std::sqrt(gap_);
+    half_m_ = std::asin(s_);  // phi_m/2
+    x0_ = x1_ = x;
+    t0_ = t1_ = t;
+    return true;
+  }
+
+  /// The next step: to t_stop or the impact, whichever comes first.
+  void step(double t_stop) {
+    t0_ = t1_;
+    x0_ = x1_;
+    t1_ = std::min(t_stop, t_impact_);
+    at(t1_, x1_);
+  }
+
+  /// Ends the last step at t_target (within it).
+  template <class System>
+  void restep_to(System&&, double t_target) {
+    t1_ = t_target;
+    at(t1_, x1_);
+  }
+
+  void dense(double t, State& out) const {
+    out = x0_;
+    at(t, out);
+  }
+
+  double t0() const { return t0_; }
+  double t1() const { return t1_; }
+  const State& x0() const { return x0_; }
+  const State& x1() const { return x1_; }
+  double peak_time() const { return t_peak_; }
+  double impact_time() const { return t_impact_; }
+  /// The peak's |theta|, alpha_t - phi_m = 2 (A - B), A = alpha_t/2, B = phi_m/2, from
+  /// sin(A - B) = (sin^2 A - sin^2 B)/sin(A + B): relative to the tilt, however small.
+  double peak_tilt() const {
+    return 2.0 * std::asin(std::min(1.0, gap_ / std::sin(0.5 * alpha_t_ + half_m_)));
+  }
+  double alpha_t() const { return alpha_t_; }
+  /// cos(phi_m): the arc's energy, phi'^2/2 + P^2 cos(phi) = P^2 cm.
+  double energy_cosine() const { return cm_; }
+  /// phi at t on the arc.
+  double phi(double t) const {
+    double cn = 0.0, dn = 1.0;
+    boost::math::jacobi_elliptic(k_, p_ * (t - t_peak_), &cn, &dn, Policy());
+    return 2.0 * std::asin(std::min(1.0, s_ / dn));
+  }
+  /// The time on the arc within [t0, t1] where phi takes the value ph (phi_m <= ph <= alpha_t):
+  /// two such times (rising and falling) give the same reaction, as it holds theta_dot^2 only.
+  double time_of(double ph) const {
+    const double sh = std::sin(0.5 * ph);
+    const double sn2 = (sh - s_) * (sh + s_) / (k_ * k_ * sh * sh);
+    const double v = ellint(std::sqrt(std::max(0.0, sn2))) / p_;
+    const double rising = t_peak_ - v;
+    return rising >= t0_ && rising <= t1_ ? rising : std::clamp(t_peak_ + v, t0_, t1_);
+  }
+
+ private:
+  // F(asin(sn), k), sn clamped to [0, 1] against rounding
+  double ellint(double sn) const {
+    return boost::math::ellint_1(k_, std::asin(std::clamp(sn, 0.0, 1.0)), Policy());
+  }
+
+  void at(double t, State& out) const {
+    if (t == t_impact_) {  // the impact exactly: theta = 0, the rate by the energy
+      out(0) = 0.0;
+      out(1) = sg_ * impact_rate_;
+      return;
+    }
+    double cn = 0.0, dn = 1.0;
+    const double sn = boost::math::jacobi_elliptic(k_, p_ * (t - t_peak_), &cn, &dn, Policy());
+    // vartheta = 2 (A - Phi), Phi = phi/2, sin(Phi) = s/dn: sin(A - Phi) = (sin^2 A - s^2/dn^2)/
+    // sin(A + Phi), and sin^2 A dn^2 - s^2 = gap - sin^2 A k^2 sn^2 keeps it relative to the arc
+    const double half = std::asin(std::min(1.0, s_ / dn));
+    const double d =
+        (gap_ - sa_ * sa_ * k_ * k_ * sn * sn) / (dn * dn * std::sin(0.5 * alpha_t_ + half));
+    out(0) = sg_ * 2.0 * std::asin(std::clamp(d, 0.0, 1.0));
+    out(1) = -sg_ * 2.0 * p_ * s_ * k_ * sn / dn;  // vartheta' = -phi' = -2 P s k sn/dn
+  }
+
+  double sg_ = 1.0, alpha_t_ = 0.0, p_ = 0.0, s2_ = 0.0, s_ = 0.0, k_ = 0.0, cm_ = 0.0;
+  double sa_ = 0.0;      // sin(alpha_t/2)
+  double gap_ = 0.0;     // sin^2(alpha_t/2) - s^2, formed without cancellation
+  double half_m_ = 0.0;  // phi_m/2
+  double t_peak_ = 0.0, t_impact_ = 0.0, impact_rate_ = 0.0;
+  double t0_ = 0.0, t1_ = 0.0;
+  State x0_, x1_;
+};
+
+}  // namespace flexrock::detail

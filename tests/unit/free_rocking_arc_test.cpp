@@ -1,0 +1,179 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// A rigid body's free rocking on a floor at rest in closed form (closed_form_free_rocking, the
+// default) against the Taylor series that steps it otherwise (= false): bodies slender and squat,
+// symmetric and not, started on either edge and after pulses, compared event by event, in their
+// extremes and in their time history; the peaks against the energy the impact law leaves; mirror
+// symmetry.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "flexrock/excitation/pulses.hpp"
+#include "flexrock/sim/simulate.hpp"
+
+namespace flexrock {
+namespace {
+
+constexpr double g = kStandardGravity;
+
+SimulationResult run(const Body& body, const GroundMotion& motion, const InitialState& init,
+                     bool closed_form, double output_dt = 0.0) {
+  SimulationOptions opt;
+  opt.t_end = motion.duration();
+  opt.rtol = 1e-13;
+  opt.atol = 1e-15;
+  opt.output_dt = output_dt;
+  opt.closed_form_free_rocking = closed_form;
+  return simulate(body, motion, init, opt);
+}
+
+double rel(double a, double b) {
+  return std::abs(a - b) / std::max({std::abs(a), std::abs(b), 1e-300});
+}
+
+// every event, extreme and history sample of the closed form against the series; the run rocks
+// freely to its end (no overturn). Adds the steps of each to `steps_arc` and `steps_series`.
+void expect_same_motion(const Body& body, const GroundMotion& motion, const InitialState& init,
+                        const std::string& where, long& steps_arc, long& steps_series) {
+  const auto a = run(body, motion, init, true, 0.01);
+  const auto s = run(body, motion, init, false, 0.01);
+  ASSERT_EQ(a.status, Status::kCompleted) << where;
+  ASSERT_EQ(s.status, Status::kCompleted) << where;
+  EXPECT_GE(a.extremes.impacts, 10) << where;
+  // one step per arc: never more than the series takes
+  EXPECT_LE(a.steps, s.steps) << where;
+  steps_arc += a.steps;
+  steps_series += s.steps;
+  ASSERT_EQ(a.events.size(), s.events.size()) << where;
+  for (std::size_t k = 0; k < a.events.size(); ++k) {
+    const Event &ea = a.events[k], &es = s.events[k];
+    ASSERT_EQ(ea.kind, es.kind) << where << " event " << k;
+    EXPECT_EQ(ea.edge, es.edge) << where << " event " << k;
+    EXPECT_NEAR(ea.time, es.time, 1e-10 * std::max(1.0, es.time)) << where << " event " << k;
+    EXPECT_NEAR(ea.theta, es.theta, 1e-11) << where << " event " << k;
+    EXPECT_NEAR(ea.theta_dot_before, es.theta_dot_before, 1e-9) << where << " event " << k;
+    EXPECT_NEAR(ea.theta_dot_after, es.theta_dot_after, 1e-9) << where << " event " << k;
+  }
+  const Extremes &xa = a.extremes, &xs = s.extremes;
+  EXPECT_EQ(xa.impacts, xs.impacts) << where;
+  EXPECT_LT(rel(xa.max_theta_edge1, xs.max_theta_edge1), 1e-10) << where;
+  EXPECT_LT(rel(xa.max_theta_edge2, xs.max_theta_edge2), 1e-10) << where;
+  EXPECT_LT(rel(xa.max_uplift, xs.max_uplift), 1e-10) << where;
+  EXPECT_LT(rel(xa.max_impulse, xs.max_impulse), 1e-9) << where;
+  // the series locates these on its polynomial to 1e-6 of a step (a curvature's 1e-12)
+  EXPECT_LT(rel(xa.max_base_shear, xs.max_base_shear), 1e-9) << where;
+  EXPECT_LT(rel(xa.max_overturning_moment, xs.max_overturning_moment), 1e-9) << where;
+  EXPECT_LT(rel(xa.max_friction_demand, xs.max_friction_demand), 1e-9) << where;
+  EXPECT_LT(rel(a.energy.impact_loss, s.energy.impact_loss), 1e-9) << where;
+  EXPECT_LT(std::abs(a.energy.residual), 1e-9 * a.energy.scale) << where;
+  ASSERT_EQ(a.history.time.size(), s.history.time.size()) << where;
+  for (std::size_t k = 0; k < a.history.time.size(); ++k) {
+    ASSERT_EQ(a.history.phase[k], s.history.phase[k]) << where << " row " << k;
+    EXPECT_NEAR(a.history.theta[k], s.history.theta[k], 1e-10) << where << " row " << k;
+    EXPECT_NEAR(a.history.theta_dot[k], s.history.theta_dot[k], 1e-9) << where << " row " << k;
+    EXPECT_NEAR(a.history.reaction_x[k], s.history.reaction_x[k], 1e-9 * body.params().mass * g)
+        << where << " row " << k;
+  }
+}
+
+TEST(FreeRockingArc, AgreesWithTheSeriesFromRest) {
+  struct Case {
+    const char* name;
+    BodyParameters body;
+    double theta, theta_dot;
+  };
+  const std::vector<Case> cases{
+      {"slender block, edge 1", BodyParameters::rectangular_block(1000, 0.2, 1.0), 0.15, 0.0},
+      {"slender block, edge 2 rising", BodyParameters::rectangular_block(1000, 0.2, 1.0), -0.05,
+       -0.15},
+      {"squat block", BodyParameters::rectangular_block(500, 0.6, 1.0), 0.3, 0.0},
+      {"asymmetric body, falling", BodyParameters::rigid(2000, 1.5, 0.3, 0.5, 0.4), 0.12, -0.2},
+      {"from the floor", BodyParameters::rigid(800, 1.2, 0.25, 0.25, 0.2), 0.0, 0.3},
+  };
+  long steps_arc = 0, steps_series = 0;
+  for (const auto& c : cases) {
+    InitialState init;
+    init.theta = c.theta;
+    init.theta_dot = c.theta_dot;
+    expect_same_motion(Body(c.body), GroundMotion::none(12.0), init, c.name, steps_arc,
+                       steps_series);
+  }
+  // the closed form took the free rocking (the series takes several steps on a long arc)
+  EXPECT_LT(steps_arc, steps_series);
+}
+
+TEST(FreeRockingArc, AgreesWithTheSeriesAfterPulses) {
+  const Body body(BodyParameters::rectangular_block(1000, 0.2, 1.0));
+  const double p = body.rocking_frequency();
+  long steps_arc = 0, steps_series = 0;
+  // amplitudes and frequencies that rock without overturning (the block's uplift is at 0.2 g)
+  for (const auto& [a, f] : {std::pair{0.25, 3.0}, std::pair{0.4, 5.0}}) {
+    expect_same_motion(body, one_sine_pulse(a * g, f * p, 10.0), InitialState{},
+                       "one-sine " + std::to_string(a) + " g", steps_arc, steps_series);
+  }
+  for (const auto& [a, f] : {std::pair{0.3, 3.0}, std::pair{0.6, 5.0}}) {
+    expect_same_motion(body, cycloidal_pulse_b(a * g, f * p, 10.0), InitialState{},
+                       "cycloidal " + std::to_string(a) + " g", steps_arc, steps_series);
+  }
+  EXPECT_LT(steps_arc, steps_series);
+}
+
+// Between impacts the energy is kept, and at each the law scales theta_dot by the event's ratio
+// r: the next peak follows from the last, cos(a - th') - cos(a) = r^2 (cos(a - th) - cos(a))
+// (docs/theory.md, §11), independently of how the arcs were propagated
+TEST(FreeRockingArc, PeaksFollowTheEnergyTheImpactsLeave) {
+  const double b = 0.25, h = 1.1;
+  const Body body(BodyParameters::rectangular_block(1000, b, h));
+  const double at = std::atan(b / h);
+  InitialState init;
+  init.theta = 0.7 * at;
+  SimulationOptions opt;
+  opt.t_end = 15.0;
+  const auto r = simulate(body, GroundMotion::none(opt.t_end), init, opt);
+  double peak = init.theta;
+  int checked = 0;
+  for (std::size_t k = 0; k + 1 < r.events.size() && checked < 20; ++k) {
+    const Event& e = r.events[k];
+    if (e.kind != EventKind::kImpact) continue;
+    const Event& next = r.events[k + 1];
+    if (next.kind != EventKind::kPeak) break;
+    const double ratio = e.theta_dot_after / e.theta_dot_before;
+    const double expected =
+        at -
+        std::acos(std::cos(at) + ratio * ratio * (std::cos(at - std::abs(peak)) - std::cos(at)));
+    EXPECT_NEAR(std::abs(next.theta), expected, 1e-9 * at) << "peak after impact at " << e.time;
+    peak = next.theta;
+    ++checked;
+  }
+  EXPECT_GE(checked, 10);
+}
+
+TEST(FreeRockingArc, MirroredStartMirrorsTheMotion) {
+  const Body body(BodyParameters::rectangular_block(1000, 0.3, 1.2));
+  InitialState up, down;
+  up.theta = 0.12;
+  up.theta_dot = 0.2;
+  down.theta = -0.12;
+  down.theta_dot = -0.2;
+  SimulationOptions opt;
+  opt.t_end = 10.0;
+  const auto a = simulate(body, GroundMotion::none(opt.t_end), up, opt);
+  const auto b = simulate(body, GroundMotion::none(opt.t_end), down, opt);
+  ASSERT_EQ(a.events.size(), b.events.size());
+  ASSERT_GT(a.events.size(), 10u);
+  for (std::size_t k = 0; k < a.events.size(); ++k) {
+    EXPECT_EQ(a.events[k].kind, b.events[k].kind) << k;
+    EXPECT_EQ(a.events[k].time, b.events[k].time) << k;
+    EXPECT_EQ(a.events[k].theta, -b.events[k].theta) << k;
+  }
+  EXPECT_EQ(a.extremes.max_theta_edge1, b.extremes.max_theta_edge2);
+  EXPECT_EQ(a.extremes.max_base_shear, b.extremes.max_base_shear);
+}
+
+}  // namespace
+}  // namespace flexrock
