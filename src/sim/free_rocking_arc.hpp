@@ -6,11 +6,11 @@
 // times of the peak and of the impact are incomplete elliptic integrals of the first kind. One
 // step covers the arc up to the impact (or the run's end) exactly; the dense output is Jacobi's
 // functions. Same interface as Dopri5 for the event loop (t0, t1, x0, x1, restep_to, dense).
-// Boost.Math supplies F(phi, k) and sn, cn, dn. Internal header.
+// Boost.Math supplies Carlson's R_F (for F(phi, k)) and sn, cn, dn. Internal header.
 #pragma once
 
 #include <algorithm>
-#include <boost/math/special_functions/ellint_1.hpp>
+#include <boost/math/special_functions/ellint_rf.hpp>
 #include <boost/math/special_functions/jacobi_elliptic.hpp>
 #include <cmath>
 #include <limits>
@@ -27,22 +27,39 @@ class FreeRockingArc {
   /// modulus is 1 to rounding, and the series steps the motion as before (it then decides whether
   /// the body goes over).
   static constexpr double kMinS2 = 1e-12;
+  /// Below this s^2 the dense output refines Jacobi's functions by Newton's method on F.
+  static constexpr double kNearUpright = 1e-4;
 
-  /// Starts an arc at (t, x) on the pivot of the series' equation theta'' = k (alpha cos theta +
-  /// sin theta) (RockingSeries::set_pivot; k = (g/h)/m), the body on its edge of sign sg (theta
-  /// sg >= 0). False where the arc does not apply: the state is not strictly on the edge (theta = 0
-  /// moving down, the impact is the loop's), or its energy reaches the upright one.
-  bool start(double t, const State& x, double alpha, double k, double sg) {
-    const double beta = std::abs(alpha);
-    if (!(alpha * sg < 0.0) || !(k > 0.0)) return false;
+  /// The pivot of the series' equation theta'' = k (alpha cos theta + sin theta), k = gh/m
+  /// (RockingSeries::set_pivot; gh = g/h, m = 1 + zeta^2 + alpha^2), and its constants: kept while
+  /// the pivot is the same (the two edges of a rigid body alternate at every impact).
+  void set_pivot(double alpha, double m, double gh) {
+    if (alpha == alpha_ && m == m_ && gh == gh_) return;
+    alpha_ = alpha;
+    m_ = m;
+    gh_ = gh;
+    beta_ = std::abs(alpha);
+    c_ = std::sqrt(1.0 + beta_ * beta_);
+    alpha_t_ = std::atan(beta_);
+    sa_ = std::sin(0.5 * alpha_t_);
+    ca_ = std::cos(0.5 * alpha_t_);
+    p_ = std::sqrt(gh / m * c_);  // P^2 = k sqrt(1 + beta^2)
+    kappa_ = m / (c_ * c_);
+    lambda_ = c_ / m;
+    phi_moment_ = std::atan2(beta_ * (1.0 / c_ - lambda_), 1.0 / c_ + 2.0 * lambda_);
+  }
+
+  /// Starts an arc at (t, x) on the pivot (set_pivot), the body on its edge of sign sg (theta sg
+  /// >= 0). False where the arc does not apply: the state is not strictly on the edge (theta = 0
+  /// moving down, the impact is the loop's), past the tipping angle, or its energy reaches the
+  /// upright one.
+  bool start(double t, const State& x, double sg) {
+    if (!(alpha_ * sg < 0.0) || !(p_ > 0.0)) return false;
     const double th = sg * x(0), om = sg * x(1);  // vartheta >= 0 and its rate
     if (th < 0.0 || (th == 0.0 && !(om > 0.0))) return false;
-    alpha_t_ = std::atan(beta);
     if (!(th < alpha_t_)) return false;  // past the tipping angle gravity overturns it
     sg_ = sg;
-    p_ = std::sqrt(k * std::hypot(1.0, beta));  // P^2 = k sqrt(1 + beta^2)
-    const double w = om / (2.0 * p_);           // phi0'/(2 P) up to its sign
-    sa_ = std::sin(0.5 * alpha_t_);
+    const double w = om / (2.0 * p_);  // phi0'/(2 P) up to its sign
     const double sh0 = th == 0.0 ? sa_ : std::sin(0.5 * (alpha_t_ - th));
     s2_ = sh0 * sh0 - w * w;  // sin^2(phi_m/2) by the energy, without cos's cancellation
     if (!(s2_ > kMinS2)) return false;
@@ -52,10 +69,10 @@ class FreeRockingArc {
     // the impact, phi = alpha_t: sn^2 = (sin^2(alpha_t/2) - s^2)/(k^2 sin^2(alpha_t/2)), the
     // difference of squares as sin(theta0/2) sin(alpha_t - theta0/2) + w^2 (no cancellation)
     gap_ = th == 0.0 ? w * w : std::sin(0.5 * th) * std::sin(alpha_t_ - 0.5 * th) + w * w;
-    const double v_impact = ellint(std::sqrt(gap_) / (k_ * sa_));
+    const double v_impact = ellint(sa_, ca_, gap_);
     // from the start to the peak: sn(v0) = |phi0'|/(2 P k sin(phi0/2)), the impact's by symmetry
     // where the arc starts on the floor; past the peak when falling
-    const double v0 = th == 0.0 ? v_impact : ellint(std::abs(w) / (k_ * sh0));
+    const double v0 = th == 0.0 ? v_impact : ellint(sh0, std::cos(0.5 * (alpha_t_ - th)), w * w);
     t_peak_ = om > 0.0 ? t + v0 / p_ : t - v0 / p_;
     t_impact_ = t_peak_ + v_impact / p_;
     // the impact's rate by the energy: vartheta'^2 = om^2 + 2 P^2 (cos phi0 - cos alpha_t)
@@ -98,8 +115,17 @@ class FreeRockingArc {
     return 2.0 * std::asin(std::min(1.0, gap_ / std::sin(0.5 * alpha_t_ + half_m_)));
   }
   double alpha_t() const { return alpha_t_; }
+  /// The pivot's constants (set_pivot): beta = |alpha|, c = sqrt(1 + beta^2), kappa = m/c^2 =
+  /// I_O/(M R^2), lambda = c/m, and phi where the moment's bracket is stationary.
+  double beta() const { return beta_; }
+  double c() const { return c_; }
+  double kappa() const { return kappa_; }
+  double lambda() const { return lambda_; }
+  double phi_moment() const { return phi_moment_; }
   /// cos(phi_m): the arc's energy, phi'^2/2 + P^2 cos(phi) = P^2 cm.
   double energy_cosine() const { return cm_; }
+  /// sin(phi_m) = 2 sin(phi_m/2) cos(phi_m/2).
+  double sin_phi_m() const { return 2.0 * s_ * k_; }
   /// phi at t on the arc.
   double phi(double t) const {
     double cn = 0.0, dn = 1.0;
@@ -109,17 +135,23 @@ class FreeRockingArc {
   /// The time on the arc within [t0, t1] where phi takes the value ph (phi_m <= ph <= alpha_t):
   /// two such times (rising and falling) give the same reaction, as it holds theta_dot^2 only.
   double time_of(double ph) const {
-    const double sh = std::sin(0.5 * ph);
-    const double sn2 = (sh - s_) * (sh + s_) / (k_ * k_ * sh * sh);
-    const double v = ellint(std::sqrt(std::max(0.0, sn2))) / p_;
+    const double v = ellint(std::sin(0.5 * ph), std::cos(0.5 * ph),
+                            (std::sin(0.5 * ph) - s_) * (std::sin(0.5 * ph) + s_)) /
+                     p_;
     const double rising = t_peak_ - v;
     return rising >= t0_ && rising <= t1_ ? rising : std::clamp(t_peak_ + v, t0_, t1_);
   }
 
  private:
-  // F(asin(sn), k), sn clamped to [0, 1] against rounding
-  double ellint(double sn) const {
-    return boost::math::ellint_1(k_, std::asin(std::clamp(sn, 0.0, 1.0)), Policy());
+  // P |t - t_peak| where phi = 2 asin(S), C = cos(phi/2), d = S^2 - s^2 (formed by the caller
+  // without cancellation): F(asin(sn), k) with sn^2 = d/(k^2 S^2), as Carlson's
+  // sn R_F(1 - sn^2, 1 - k^2 sn^2, 1), whose arguments are s^2 C^2/(k^2 S^2) and s^2/S^2 exactly:
+  // near the floor and near the peak neither loses digits to 1 - x (Boost's ellint_1 would form
+  // the angle and 1 - sn^2)
+  double ellint(double S, double C, double d) const {
+    const double sn = std::min(1.0, std::sqrt(std::max(0.0, d)) / (k_ * S));
+    return sn *
+           boost::math::ellint_rf(s2_ * C * C / (k_ * k_ * S * S), s2_ / (S * S), 1.0, Policy());
   }
 
   void at(double t, State& out) const {
@@ -130,6 +162,28 @@ class FreeRockingArc {
     }
     double cn = 0.0, dn = 1.0;
     const double sn = boost::math::jacobi_elliptic(k_, p_ * (t - t_peak_), &cn, &dn, Policy());
+    if (s2_ < kNearUpright) {
+      // k near 1 (an arc from near upright): Jacobi's functions lose digits there (5e-10 of dn
+      // at s^2 = 2.5e-9, measured against mpmath), so S = sin(phi/2) = s/dn takes Newton steps
+      // on P |t - t_p| = F(S) (Carlson's form, to rounding), dS/dF = C sqrt(S^2 - s^2)
+      const double v = p_ * std::abs(t - t_peak_);
+      double S = std::min(1.0, s_ / dn);
+      for (int i = 0; i < 2; ++i) {
+        const double d = (S - s_) * (S + s_), C = std::sqrt((1.0 - S) * (1.0 + S));
+        if (!(d > 0.0)) break;
+        S += (v - ellint(S, C, d)) * C * std::sqrt(d);
+        S = std::clamp(S, s_, 1.0);
+      }
+      // vartheta = 2 (A - Phi), sin(A - Phi) = (sin A - S)(sin A + S)/sin(A + Phi); |phi'| =
+      // 2 P sqrt(S^2 - s^2), falling after the peak
+      const double half = std::asin(S);
+      out(0) =
+          sg_ * 2.0 *
+          std::asin(std::clamp((sa_ - S) * (sa_ + S) / std::sin(0.5 * alpha_t_ + half), 0.0, 1.0));
+      const double rate = 2.0 * p_ * std::sqrt(std::max(0.0, (S - s_) * (S + s_)));
+      out(1) = t > t_peak_ ? -sg_ * rate : sg_ * rate;
+      return;
+    }
     // vartheta = 2 (A - Phi), Phi = phi/2, sin(Phi) = s/dn: sin(A - Phi) = (sin^2 A - s^2/dn^2)/
     // sin(A + Phi), and sin^2 A dn^2 - s^2 = gap - sin^2 A k^2 sn^2 keeps it relative to the arc
     const double half = std::asin(std::min(1.0, s_ / dn));
@@ -139,8 +193,13 @@ class FreeRockingArc {
     out(1) = -sg_ * 2.0 * p_ * s_ * k_ * sn / dn;  // vartheta' = -phi' = -2 P s k sn/dn
   }
 
-  double sg_ = 1.0, alpha_t_ = 0.0, p_ = 0.0, s2_ = 0.0, s_ = 0.0, k_ = 0.0, cm_ = 0.0;
-  double sa_ = 0.0;      // sin(alpha_t/2)
+  // the pivot (set_pivot)
+  double alpha_ = 0.0, m_ = 0.0, gh_ = 0.0;
+  double beta_ = 0.0, c_ = 1.0, alpha_t_ = 0.0, p_ = 0.0, kappa_ = 1.0, lambda_ = 0.0;
+  double phi_moment_ = 0.0;
+  double sa_ = 0.0, ca_ = 1.0;  // sin(alpha_t/2), cos(alpha_t/2)
+  // the arc
+  double sg_ = 1.0, s2_ = 0.0, s_ = 0.0, k_ = 0.0, cm_ = 0.0;
   double gap_ = 0.0;     // sin^2(alpha_t/2) - s^2, formed without cancellation
   double half_m_ = 0.0;  // phi_m/2
   double t_peak_ = 0.0, t_impact_ = 0.0, impact_rate_ = 0.0;

@@ -529,7 +529,8 @@ void Simulator<N, MaxN>::slide_rhs(double t, const SlideState& x, SlideState& dx
 
 template <int N, int MaxN>
 void Simulator<N, MaxN>::evaluate(double t, const State& x, GuardSample& s) {
-  const BaseAcceleration a = motion_.at(t, event_cursor_);
+  // after the motion's end (GroundMotion::quiet_from) the floor is at rest
+  const BaseAcceleration a = t > quiet_from_ ? BaseAcceleration{} : motion_.at(t, event_cursor_);
   unpack(x);
   s.t = t;
   // each value goes to its guard's slot in the mode's list, which the table fixes at compile time
@@ -1132,11 +1133,12 @@ bool Simulator<N, MaxN>::start_arc(double t, const ContactState& x) {
       std::isfinite(opt_.friction_coefficient) || hold_tension_)
     return false;
   const int e = edge();
-  const double a = dyn_.alpha(e), m = dyn_.inertia(a, q_);
-  if (!arc_.start(t, x, a, dyn_.g_over_h() / m, edge_sign(e))) return false;
+  const double a = dyn_.alpha(e);
+  arc_.set_pivot(a, dyn_.inertia(a, q_), dyn_.g_over_h());
+  if (!arc_.start(t, x, edge_sign(e))) return false;
   // F_J = 1 - (1 - 3 C^2 + 2 cm C)/kappa over C = cos(phi) in [cos(alpha_t), cm], kappa = m/c^2
-  const double c2 = 1.0 + a * a, kappa = m / c2, cm = arc_.energy_cosine();
-  const double c_lo = 1.0 / std::sqrt(c2);
+  const double kappa = arc_.kappa(), cm = arc_.energy_cosine();
+  const double c_lo = 1.0 / arc_.c();
   auto fj = [&](double c) { return 1.0 - (1.0 - 3.0 * c * c + 2.0 * cm * c) / kappa; };
   double fj_min = std::min(fj(c_lo), fj(cm));
   if (cm / 3.0 > c_lo && cm / 3.0 < cm) fj_min = std::min(fj_min, fj(cm / 3.0));
@@ -1180,24 +1182,27 @@ template <int N, int MaxN>
 void Simulator<N, MaxN>::arc_extremes(double t0, double t1) {
   if (!(t1 > t0)) return;
   const Extremes& ex = res_.extremes;
-  const int e = edge();
-  const double sg = edge_sign(e);
-  const double a = dyn_.alpha(e), beta = std::abs(a), m = dyn_.inertia(a, q_);
-  const double c = std::sqrt(1.0 + beta * beta), kappa = m / (c * c), lambda = c / m;
+  const double sg = edge_sign(edge());
+  const double beta = arc_.beta(), c = arc_.c(), kappa = arc_.kappa(), lambda = arc_.lambda();
   const double cm = arc_.energy_cosine(), at = arc_.alpha_t();
   const double ph0 = at - sg * arc_.x0()(0), ph1 = at - sg * arc_.x1()(0);
   const double tp = arc_.peak_time();
-  const double lo = tp > t0 && tp < t1 ? at - arc_.peak_tilt() : std::min(ph0, ph1);
+  const bool peak = tp > t0 && tp < t1;
+  const double lo = peak ? at - arc_.peak_tilt() : std::min(ph0, ph1);
   const double hi = std::max(ph0, ph1);
   const double mg = dyn_.mass() * dyn_.g(), mgh = mg * dyn_.height();
-  auto fi = [&](double ph) { return std::sin(ph) * (3.0 * std::cos(ph) - 2.0 * cm) / kappa; };
-  auto fj = [&](double ph) {
-    const double cp = std::cos(ph);
-    return 1.0 - (1.0 - 3.0 * cp * cp + 2.0 * cm * cp) / kappa;
+  // the quantities from sin(phi) and cos(phi): at the peak and on the floor these are known
+  // (sin(phi_m) = 2 s k, cos(phi_m) = cm; beta/c and 1/c), elsewhere one sincos
+  struct Trig {
+    double s, c;
   };
-  auto moment = [&](double ph) {
-    return beta * ((std::cos(ph) + beta * std::sin(ph)) / c -
-                   lambda * (beta * std::sin(ph) + 2.0 * (cm - std::cos(ph))));
+  auto trig = [](double ph) { return Trig{std::sin(ph), std::cos(ph)}; };
+  const Trig tlo = peak ? Trig{arc_.sin_phi_m(), cm} : trig(lo);
+  const Trig thi = hi == at ? Trig{beta / c, 1.0 / c} : trig(hi);
+  auto fi = [&](Trig t) { return t.s * (3.0 * t.c - 2.0 * cm) / kappa; };
+  auto fj = [&](double cp) { return 1.0 - (1.0 - 3.0 * cp * cp + 2.0 * cm * cp) / kappa; };
+  auto moment = [&](Trig t) {
+    return beta * ((t.c + beta * t.s) / c - lambda * (beta * t.s + 2.0 * (cm - t.c)));
   };
   auto at_phi = [&](double ph) {
     const double tt = arc_.time_of(ph);
@@ -1206,31 +1211,32 @@ void Simulator<N, MaxN>::arc_extremes(double t0, double t1) {
     evaluate(tt, xr_, s);
     observe(s, xr_);
   };
-  auto inside = [&](double ph) { return ph > lo && ph < hi; };
+  // phi within (lo, hi), by its cosine: cos falls on (0, pi/2)
+  auto inside = [&](double cp) { return cp < tlo.c && cp > thi.c; };
   // F_I: d/dphi sin (3 cos - 2 cm) = 6 cos^2 - 2 cm cos - 3, one root in (0, pi/2)
-  const double ph_fi = std::acos((cm + std::sqrt(cm * cm + 18.0)) / 6.0);
-  double fi_max = std::max(std::abs(fi(lo)), std::abs(fi(hi)));
-  if (inside(ph_fi)) {
-    fi_max = std::max(fi_max, std::abs(fi(ph_fi)));
-    if (mg * std::abs(fi(ph_fi)) > ex.max_base_shear) at_phi(ph_fi);
+  double fi_max = std::max(std::abs(fi(tlo)), std::abs(fi(thi)));
+  const double c_fi = (cm + std::sqrt(cm * cm + 18.0)) / 6.0;
+  if (inside(c_fi)) {
+    const Trig t{std::sqrt(1.0 - c_fi * c_fi), c_fi};
+    fi_max = std::max(fi_max, std::abs(fi(t)));
+    if (mg * std::abs(fi(t)) > ex.max_base_shear) at_phi(std::acos(c_fi));
   }
   // the moment: its derivative cos (beta/c - lambda beta) - sin (1/c + 2 lambda) vanishes once
-  const double ph_mo = std::atan2(beta * (1.0 / c - lambda), 1.0 / c + 2.0 * lambda);
-  if (inside(ph_mo) && mgh * std::abs(moment(ph_mo)) > ex.max_overturning_moment) at_phi(ph_mo);
+  const double ph_mo = arc_.phi_moment();
+  if (ph_mo > lo && ph_mo < hi && mgh * std::abs(moment(trig(ph_mo))) > ex.max_overturning_moment)
+    at_phi(ph_mo);
   // the friction demand: F_J is a quadratic in cos(phi), least at the ends or at cos = cm/3
-  double fj_min = std::min(fj(lo), fj(hi));
-  const double ph_fj = std::acos(std::min(1.0, cm / 3.0));
-  if (inside(ph_fj)) fj_min = std::min(fj_min, fj(ph_fj));
+  double fj_min = std::min(fj(tlo.c), fj(thi.c));
+  if (inside(cm / 3.0)) fj_min = std::min(fj_min, fj(cm / 3.0));
   const double r = ex.max_friction_demand;
   if (fj_min >= kPressingFraction && fi_max / fj_min <= r) return;
-  const double ph_r = lo + polynomial_argmax(
-                               [&](double d) {
-                                 const double f = fj(lo + d);
-                                 return f >= kPressingFraction ? std::abs(fi(lo + d)) / f : 0.0;
-                               },
-                               hi - lo);
-  const double fr = fj(ph_r);
-  if (fr >= kPressingFraction && std::abs(fi(ph_r)) / fr > r) at_phi(ph_r);
+  auto demand = [&](double ph) {
+    const Trig t = trig(ph);
+    const double f = fj(t.c);
+    return f >= kPressingFraction ? std::abs(fi(t)) / f : 0.0;
+  };
+  const double ph_r = lo + polynomial_argmax([&](double d) { return demand(lo + d); }, hi - lo);
+  if (demand(ph_r) > r) at_phi(ph_r);
 }
 
 // the floor reaction's and the overturning moment's series on a series step of length h

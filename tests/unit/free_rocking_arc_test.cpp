@@ -94,6 +94,9 @@ TEST(FreeRockingArc, AgreesWithTheSeriesFromRest) {
       {"squat block", BodyParameters::rectangular_block(500, 0.6, 1.0), 0.3, 0.0},
       {"asymmetric body, falling", BodyParameters::rigid(2000, 1.5, 0.3, 0.5, 0.4), 0.12, -0.2},
       {"from the floor", BodyParameters::rigid(800, 1.2, 0.25, 0.25, 0.2), 0.0, 0.3},
+      // 1e-4 rad short of its tipping angle: s^2 = sin^2(phi_m/2) is 2.5e-9, K(k) large
+      {"near upright", BodyParameters::rectangular_block(1000, 0.2, 1.0), std::atan(0.2) - 1e-4,
+       0.0},
   };
   long steps_arc = 0, steps_series = 0;
   for (const auto& c : cases) {
