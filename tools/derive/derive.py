@@ -3111,6 +3111,13 @@ def derive_free_rocking_arc():
     res['arc_jacobi'] = (zero_jac((s / dn) ** 2 + (km * cn / dn) ** 2 - 1)
                          and zero_jac(-s * (-km ** 2 * sn * cn) * P / dn ** 2 - (km * cn / dn) * dphi / 2)
                          and zero_jac(dphi ** 2 - 2 * P ** 2 * ((1 - 2 * s ** 2) - (1 - 2 * s ** 2 / dn ** 2))))
+    # Carlson's form F(asin(sn), k) = sn R_F(1 - sn^2, 1 - k^2 sn^2, 1) with sn^2 = (S^2 - s^2)/(k^2
+    # S^2), S = sin(phi/2): its arguments are s^2 C^2/(k^2 S^2) and s^2/S^2 (C^2 = 1 - S^2), as
+    # src/sim/free_rocking_arc.hpp forms them
+    S_ = sp.Symbol('S', positive=True)
+    sn2 = (S_ ** 2 - s ** 2) / (km ** 2 * S_ ** 2)
+    res['arc_carlson_arguments'] = (sp.simplify(1 - sn2 - s ** 2 * (1 - S_ ** 2) / (km ** 2 * S_ ** 2)) == 0
+                                    and sp.simplify(1 - km ** 2 * sn2 - s ** 2 / S_ ** 2) == 0)
     # the times, numerically: from (phi0, phi0') the peak comes after v0/P, sn(v0) = |phi0'|/(2 P k
     # sin(phi0/2)), and the impact (phi = alpha_t) v_I/P after the peak, sn(v_I)^2 = (sin(theta0/2)
     # sin(alpha_t - theta0/2) + phi0'^2/(4 P^2))/(k^2 sin^2(alpha_t/2)); against mpmath's ODE solver
