@@ -160,6 +160,11 @@ class FreeRockingArc {
       out(1) = sg_ * impact_rate_;
       return;
     }
+    if (t == t_peak_) {  // the peak exactly (the loop records it)
+      out(0) = sg_ * peak_tilt();
+      out(1) = 0.0;
+      return;
+    }
     double cn = 0.0, dn = 1.0;
     const double sn = boost::math::jacobi_elliptic(k_, p_ * (t - t_peak_), &cn, &dn, Policy());
     if (s2_ < kNearUpright) {

@@ -318,6 +318,15 @@ std::string non_finite_output(const SimulationResult& r) {
   // events, and naming each field of each cost more than the run's rocking steps)
   for (std::size_t i = 0; i < r.events.size(); ++i) {
     const Event& ev = r.events[i];
+    // x - x is 0 for a finite x and NaN for an infinite or NaN one: one sum settles an event
+    // whose fields are all finite, as nearly all are, before any field is looked at by name
+    if (std::isfinite((ev.time - ev.time) + (ev.theta - ev.theta) +
+                      (ev.theta_dot_before - ev.theta_dot_before) +
+                      (ev.theta_dot_after - ev.theta_dot_after) +
+                      (ev.energy_loss - ev.energy_loss) + (ev.impulse_x - ev.impulse_x) +
+                      (ev.impulse_y - ev.impulse_y) + (ev.offset - ev.offset)) &&
+        (std::isfinite(ev.friction_demand) || ev.friction_demand > 0.0))
+      continue;
     // an infinite friction demand (no vertical impulse) is a result, not an overflow
     const struct {
       double v;
