@@ -77,7 +77,9 @@ class FreeRockingArc {
     t_impact_ = t_peak_ + v_impact / p_;
     // the impact's rate by the energy: vartheta'^2 = om^2 + 2 P^2 (cos phi0 - cos alpha_t)
     impact_rate_ = -2.0 * p_ * std::sqrt(gap_);
-    half_m_ = std::asin(s_);  // phi_m/2
+    // the peak's |theta|, alpha_t - phi_m = 2 (A - B), A = alpha_t/2, B = phi_m/2, from
+    // sin(A - B) = (sin^2 A - sin^2 B)/sin(A + B): relative to the tilt, however small
+    peak_tilt_ = 2.0 * std::asin(std::min(1.0, gap_ / std::sin(0.5 * alpha_t_ + std::asin(s_))));
     x0_ = x1_ = x;
     t0_ = t1_ = t;
     return true;
@@ -109,19 +111,33 @@ class FreeRockingArc {
   const State& x1() const { return x1_; }
   double peak_time() const { return t_peak_; }
   double impact_time() const { return t_impact_; }
-  /// The peak's |theta|, alpha_t - phi_m = 2 (A - B), A = alpha_t/2, B = phi_m/2, from
-  /// sin(A - B) = (sin^2 A - sin^2 B)/sin(A + B): relative to the tilt, however small.
-  double peak_tilt() const {
-    return 2.0 * std::asin(std::min(1.0, gap_ / std::sin(0.5 * alpha_t_ + half_m_)));
-  }
+  /// The peak's |theta|, alpha_t - phi_m.
+  double peak_tilt() const { return peak_tilt_; }
   double alpha_t() const { return alpha_t_; }
-  /// The pivot's constants (set_pivot): beta = |alpha|, c = sqrt(1 + beta^2), kappa = m/c^2 =
-  /// I_O/(M R^2), lambda = c/m, and phi where the moment's bracket is stationary.
+  /// The pivot's constants (set_pivot): beta = |alpha|, c = sqrt(1 + beta^2), and phi where the
+  /// moment's bracket is stationary.
   double beta() const { return beta_; }
   double c() const { return c_; }
-  double kappa() const { return kappa_; }
-  double lambda() const { return lambda_; }
   double phi_moment() const { return phi_moment_; }
+
+  /// The reaction on the arc, a function of phi alone (theta_dot^2 by the energy; derive.py,
+  /// derive_free_rocking_arc), from sin(phi) and cos(phi): |F_I| over M g, F_J over M g and
+  /// |moment| about the c.g.'s projection over M g h, with kappa = m/c^2 = I_O/(M R^2) and
+  /// lambda = c/m.
+  double shear(double sp, double cp) const {
+    return std::abs(sp * (3.0 * cp - 2.0 * cm_) / kappa_);
+  }
+  double press(double cp) const { return 1.0 - (1.0 - 3.0 * cp * cp + 2.0 * cm_ * cp) / kappa_; }
+  double moment(double sp, double cp) const {
+    return beta_ * std::abs((cp + beta_ * sp) / c_ - lambda_ * (beta_ * sp + 2.0 * (cm_ - cp)));
+  }
+  /// The least F_J over cos(phi) in [c_lo, c_hi]: a quadratic in cos(phi), least at an end or at
+  /// its vertex cm/3.
+  double least_press(double c_lo, double c_hi) const {
+    double least = std::min(press(c_lo), press(c_hi));
+    if (cm_ / 3.0 > c_lo && cm_ / 3.0 < c_hi) least = std::min(least, press(cm_ / 3.0));
+    return least;
+  }
   /// cos(phi_m): the arc's energy, phi'^2/2 + P^2 cos(phi) = P^2 cm.
   double energy_cosine() const { return cm_; }
   /// sin(phi_m) = 2 sin(phi_m/2) cos(phi_m/2).
@@ -204,9 +220,8 @@ class FreeRockingArc {
   double phi_moment_ = 0.0;
   double sa_ = 0.0, ca_ = 1.0;  // sin(alpha_t/2), cos(alpha_t/2)
   // the arc
-  double sg_ = 1.0, s2_ = 0.0, s_ = 0.0, k_ = 0.0, cm_ = 0.0;
-  double gap_ = 0.0;     // sin^2(alpha_t/2) - s^2, formed without cancellation
-  double half_m_ = 0.0;  // phi_m/2
+  double sg_ = 1.0, s2_ = 0.0, s_ = 0.0, k_ = 0.0, cm_ = 0.0, peak_tilt_ = 0.0;
+  double gap_ = 0.0;  // sin^2(alpha_t/2) - s^2, formed without cancellation
   double t_peak_ = 0.0, t_impact_ = 0.0, impact_rate_ = 0.0;
   double t0_ = 0.0, t1_ = 0.0;
   State x0_, x1_;

@@ -243,6 +243,13 @@ class Simulator final : private GuardProbe {
   double potential_energy(const State& x);
   double offset_of(const State& x);
   void observe(const GuardSample& s, const State& x) { rec_.observe(observation(s.t, x, s)); }
+  // the state at t within the last step, evaluated and observed (an extreme located there)
+  void observe_at(double t) {
+    GuardSample s;
+    state_at(t, xr_);
+    evaluate(t, xr_, s);
+    observe(s, xr_);
+  }
   void emit_rows_until(double t_cut);
   void emit_row(double t, const State& x);
   void finish(double t, const State& x);
@@ -1114,8 +1121,9 @@ bool Simulator<N, MaxN>::advance_series(double& t, State& x) {
   series_extremes(t0, tau_end, slot_hit >= 0, range, reaction);
   if (slot_hit < 0) observe(se, xe);
   if (!end_step(series_integ_, none, slot_hit, t_hit, se, t, x)) return false;
-  // the floor has come to rest (a record's or a pulse's end): the rest of the arc in closed form
-  if (slot_hit < 0 && stepping_ == Stepping::kSeries && t >= quiet_from_) {
+  // where the floor has come to rest (a record's or a pulse's end, start_arc), the rest of the arc
+  // in closed form
+  if (slot_hit < 0) {
     dense_buf_ = x.head(2 * n_ + 4);
     start_arc(t, dense_buf_);
   }
@@ -1136,13 +1144,8 @@ bool Simulator<N, MaxN>::start_arc(double t, const ContactState& x) {
   const double a = dyn_.alpha(e);
   arc_.set_pivot(a, dyn_.inertia(a, q_), dyn_.g_over_h());
   if (!arc_.start(t, x, edge_sign(e))) return false;
-  // F_J = 1 - (1 - 3 C^2 + 2 cm C)/kappa over C = cos(phi) in [cos(alpha_t), cm], kappa = m/c^2
-  const double kappa = arc_.kappa(), cm = arc_.energy_cosine();
-  const double c_lo = 1.0 / arc_.c();
-  auto fj = [&](double c) { return 1.0 - (1.0 - 3.0 * c * c + 2.0 * cm * c) / kappa; };
-  double fj_min = std::min(fj(c_lo), fj(cm));
-  if (cm / 3.0 > c_lo && cm / 3.0 < cm) fj_min = std::min(fj_min, fj(cm / 3.0));
-  if (!(fj_min >= kPressingFraction)) return false;
+  // F_J over the whole arc, cos(phi) from cos(alpha_t) = 1/c to cos(phi_m) = cm
+  if (!(arc_.least_press(1.0 / arc_.c(), arc_.energy_cosine()) >= kPressingFraction)) return false;
   stepping_ = Stepping::kArc;
   return true;
 }
@@ -1183,7 +1186,7 @@ void Simulator<N, MaxN>::arc_extremes(double t0, double t1) {
   if (!(t1 > t0)) return;
   const Extremes& ex = res_.extremes;
   const double sg = edge_sign(edge());
-  const double beta = arc_.beta(), c = arc_.c(), kappa = arc_.kappa(), lambda = arc_.lambda();
+  const double beta = arc_.beta(), c = arc_.c();
   const double cm = arc_.energy_cosine(), at = arc_.alpha_t();
   const double ph0 = at - sg * arc_.x0()(0), ph1 = at - sg * arc_.x1()(0);
   const double tp = arc_.peak_time();
@@ -1191,7 +1194,7 @@ void Simulator<N, MaxN>::arc_extremes(double t0, double t1) {
   const double lo = peak ? at - arc_.peak_tilt() : std::min(ph0, ph1);
   const double hi = std::max(ph0, ph1);
   const double mg = dyn_.mass() * dyn_.g(), mgh = mg * dyn_.height();
-  // the quantities from sin(phi) and cos(phi): at the peak and on the floor these are known
+  // sin(phi) and cos(phi) at the ends: at the peak and on the floor these are known
   // (sin(phi_m) = 2 s k, cos(phi_m) = cm; beta/c and 1/c), elsewhere one sincos
   struct Trig {
     double s, c;
@@ -1199,41 +1202,31 @@ void Simulator<N, MaxN>::arc_extremes(double t0, double t1) {
   auto trig = [](double ph) { return Trig{std::sin(ph), std::cos(ph)}; };
   const Trig tlo = peak ? Trig{arc_.sin_phi_m(), cm} : trig(lo);
   const Trig thi = hi == at ? Trig{beta / c, 1.0 / c} : trig(hi);
-  auto fi = [&](Trig t) { return t.s * (3.0 * t.c - 2.0 * cm) / kappa; };
-  auto fj = [&](double cp) { return 1.0 - (1.0 - 3.0 * cp * cp + 2.0 * cm * cp) / kappa; };
-  auto moment = [&](Trig t) {
-    return beta * ((t.c + beta * t.s) / c - lambda * (beta * t.s + 2.0 * (cm - t.c)));
-  };
-  auto at_phi = [&](double ph) {
-    const double tt = arc_.time_of(ph);
-    GuardSample s;
-    state_at(tt, xr_);
-    evaluate(tt, xr_, s);
-    observe(s, xr_);
-  };
+  auto at_phi = [&](double ph) { observe_at(arc_.time_of(ph)); };
   // phi within (lo, hi), by its cosine: cos falls on (0, pi/2)
   auto inside = [&](double cp) { return cp < tlo.c && cp > thi.c; };
   // F_I: d/dphi sin (3 cos - 2 cm) = 6 cos^2 - 2 cm cos - 3, one root in (0, pi/2)
-  double fi_max = std::max(std::abs(fi(tlo)), std::abs(fi(thi)));
+  double fi_max = std::max(arc_.shear(tlo.s, tlo.c), arc_.shear(thi.s, thi.c));
   const double c_fi = (cm + std::sqrt(cm * cm + 18.0)) / 6.0;
   if (inside(c_fi)) {
-    const Trig t{std::sqrt(1.0 - c_fi * c_fi), c_fi};
-    fi_max = std::max(fi_max, std::abs(fi(t)));
-    if (mg * std::abs(fi(t)) > ex.max_base_shear) at_phi(std::acos(c_fi));
+    const double fi = arc_.shear(std::sqrt(1.0 - c_fi * c_fi), c_fi);
+    fi_max = std::max(fi_max, fi);
+    if (mg * fi > ex.max_base_shear) at_phi(std::acos(c_fi));
   }
   // the moment: its derivative cos (beta/c - lambda beta) - sin (1/c + 2 lambda) vanishes once
   const double ph_mo = arc_.phi_moment();
-  if (ph_mo > lo && ph_mo < hi && mgh * std::abs(moment(trig(ph_mo))) > ex.max_overturning_moment)
-    at_phi(ph_mo);
-  // the friction demand: F_J is a quadratic in cos(phi), least at the ends or at cos = cm/3
-  double fj_min = std::min(fj(tlo.c), fj(thi.c));
-  if (inside(cm / 3.0)) fj_min = std::min(fj_min, fj(cm / 3.0));
+  if (ph_mo > lo && ph_mo < hi) {
+    const Trig t = trig(ph_mo);
+    if (mgh * arc_.moment(t.s, t.c) > ex.max_overturning_moment) at_phi(ph_mo);
+  }
+  // the friction demand
+  const double fj_min = arc_.least_press(thi.c, tlo.c);
   const double r = ex.max_friction_demand;
   if (fj_min >= kPressingFraction && fi_max / fj_min <= r) return;
   auto demand = [&](double ph) {
     const Trig t = trig(ph);
-    const double f = fj(t.c);
-    return f >= kPressingFraction ? std::abs(fi(t)) / f : 0.0;
+    const double f = arc_.press(t.c);
+    return f >= kPressingFraction ? arc_.shear(t.s, t.c) / f : 0.0;
   };
   const double ph_r = lo + polynomial_argmax([&](double d) { return demand(lo + d); }, hi - lo);
   if (demand(ph_r) > r) at_phi(ph_r);
@@ -1271,10 +1264,7 @@ void Simulator<N, MaxN>::series_extremes(double t0, double tau_end, bool event,
     if (tau == tau_end && !event) return;  // the step's end: the loop observes it
     if (tau == seen) return;
     seen = tau;
-    GuardSample s;
-    state_at(t0 + tau, xr_);
-    evaluate(t0 + tau, xr_, s);
-    observe(s, xr_);
+    observe_at(t0 + tau);
   };
   // bounds over [0, tau_end] by the Bernstein form (within the reaction series' truncation)
   // (the coefficients' bound first: it settles most steps for less)
