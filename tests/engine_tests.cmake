@@ -35,6 +35,7 @@ target_include_directories(flexrock_contact_propagation_tests PRIVATE ${PROJECT_
 # the rigid body's rocking series: also one step of the internal stepper (src/sim)
 flexrock_add_test(flexrock_rocking_series_tests SOURCES unit/rocking_series_test.cpp LABEL unit)
 flexrock_add_test(flexrock_free_rocking_arc_tests SOURCES unit/free_rocking_arc_test.cpp LABEL unit)
+target_include_directories(flexrock_free_rocking_arc_tests PRIVATE ${PROJECT_SOURCE_DIR}/src)
 target_include_directories(flexrock_rocking_series_tests PRIVATE ${PROJECT_SOURCE_DIR}/src)
 flexrock_add_test(flexrock_series_guards_tests SOURCES unit/series_guards_test.cpp LABEL unit)
 target_include_directories(flexrock_series_guards_tests PRIVATE ${PROJECT_SOURCE_DIR}/src)

@@ -31,11 +31,13 @@ class FreeRockingArc {
   static constexpr double kNearUpright = 1e-4;
 
   /// The pivot of the series' equation theta'' = k (alpha cos theta + sin theta), k = gh/m
-  /// (RockingSeries::set_pivot; gh = g/h, m = 1 + zeta^2 + alpha^2), and its constants: kept while
-  /// the pivot is the same (the two edges of a rigid body alternate at every impact).
+  /// (RockingSeries::set_pivot; gh = g/h, m = 1 + zeta^2 + alpha^2), and its constants. These
+  /// depend on |alpha| alone, so they are kept while |alpha|, m and gh stay: the two edges of a
+  /// symmetric body, which alternate at every impact, share them (an atan, an atan2, a sincos and
+  /// a sin an impact otherwise).
   void set_pivot(double alpha, double m, double gh) {
-    if (alpha == alpha_ && m == m_ && gh == gh_) return;
     alpha_ = alpha;
+    if (std::abs(alpha) == beta_ && m == m_ && gh == gh_) return;
     m_ = m;
     gh_ = gh;
     beta_ = std::abs(alpha);
@@ -79,7 +81,8 @@ class FreeRockingArc {
     impact_rate_ = -2.0 * p_ * std::sqrt(gap_);
     // the peak's |theta|, alpha_t - phi_m = 2 (A - B), A = alpha_t/2, B = phi_m/2, from
     // sin(A - B) = (sin^2 A - sin^2 B)/sin(A + B): relative to the tilt, however small
-    peak_tilt_ = 2.0 * std::asin(std::min(1.0, gap_ / std::sin(0.5 * alpha_t_ + std::asin(s_))));
+    // (sin(A + B) = sin A cos B + cos A sin B, cos B = k)
+    peak_tilt_ = 2.0 * std::asin(std::min(1.0, gap_ / (sa_ * k_ + ca_ * s_)));
     x0_ = x1_ = x;
     t0_ = t1_ = t;
     return true;
@@ -121,16 +124,20 @@ class FreeRockingArc {
   double phi_moment() const { return phi_moment_; }
 
   /// The reaction on the arc, a function of phi alone (theta_dot^2 by the energy; derive.py,
-  /// derive_free_rocking_arc), from sin(phi) and cos(phi): |F_I| over M g, F_J over M g and
-  /// |moment| about the c.g.'s projection over M g h, with kappa = m/c^2 = I_O/(M R^2) and
-  /// lambda = c/m.
-  double shear(double sp, double cp) const {
-    return std::abs(sp * (3.0 * cp - 2.0 * cm_) / kappa_);
-  }
+  /// derive_free_rocking_arc, arc_reaction), from sin(phi) and cos(phi): F_I over M g, F_J over
+  /// M g and the moment about the c.g.'s projection over M g h, signed as the rocking equations
+  /// give them on the edge of sign sg, with kappa = m/c^2 = I_O/(M R^2) and lambda = c/m; shear
+  /// and moment are their sizes.
+  double fi(double sp, double cp) const { return sg_ * sp * (3.0 * cp - 2.0 * cm_) / kappa_; }
   double press(double cp) const { return 1.0 - (1.0 - 3.0 * cp * cp + 2.0 * cm_ * cp) / kappa_; }
-  double moment(double sp, double cp) const {
-    return beta_ * std::abs((cp + beta_ * sp) / c_ - lambda_ * (beta_ * sp + 2.0 * (cm_ - cp)));
+  double signed_moment(double sp, double cp) const {
+    return -sg_ * beta_ * ((cp + beta_ * sp) / c_ - lambda_ * (beta_ * sp + 2.0 * (cm_ - cp)));
   }
+  double shear(double sp, double cp) const { return std::abs(fi(sp, cp)); }
+  double moment(double sp, double cp) const { return std::abs(signed_moment(sp, cp)); }
+  /// sin(phi) and cos(phi) on the floor (phi = alpha_t): beta/c and 1/c.
+  double floor_sin() const { return beta_ / c_; }
+  double floor_cos() const { return 1.0 / c_; }
   /// The least F_J over cos(phi) in [c_lo, c_hi]: a quadratic in cos(phi), least at an end or at
   /// its vertex cm/3.
   double least_press(double c_lo, double c_hi) const {
@@ -170,6 +177,12 @@ class FreeRockingArc {
            boost::math::ellint_rf(s2_ * C * C / (k_ * k_ * S * S), s2_ / (S * S), 1.0, Policy());
   }
 
+  // sin(A + Phi), A = alpha_t/2, from S = sin(Phi) (Phi in [0, pi/2]): sin A cos Phi + cos A S
+  double sin_a_plus(double S) const {
+    S = std::min(1.0, S);
+    return sa_ * std::sqrt((1.0 - S) * (1.0 + S)) + ca_ * S;
+  }
+
   void at(double t, State& out) const {
     if (t == t_impact_) {  // the impact exactly: theta = 0, the rate by the energy
       out(0) = 0.0;
@@ -197,26 +210,21 @@ class FreeRockingArc {
       }
       // vartheta = 2 (A - Phi), sin(A - Phi) = (sin A - S)(sin A + S)/sin(A + Phi); |phi'| =
       // 2 P sqrt(S^2 - s^2), falling after the peak
-      const double half = std::asin(S);
-      out(0) =
-          sg_ * 2.0 *
-          std::asin(std::clamp((sa_ - S) * (sa_ + S) / std::sin(0.5 * alpha_t_ + half), 0.0, 1.0));
+      out(0) = sg_ * 2.0 * std::asin(std::clamp((sa_ - S) * (sa_ + S) / sin_a_plus(S), 0.0, 1.0));
       const double rate = 2.0 * p_ * std::sqrt(std::max(0.0, (S - s_) * (S + s_)));
       out(1) = t > t_peak_ ? -sg_ * rate : sg_ * rate;
       return;
     }
     // vartheta = 2 (A - Phi), Phi = phi/2, sin(Phi) = s/dn: sin(A - Phi) = (sin^2 A - s^2/dn^2)/
     // sin(A + Phi), and sin^2 A dn^2 - s^2 = gap - sin^2 A k^2 sn^2 keeps it relative to the arc
-    const double half = std::asin(std::min(1.0, s_ / dn));
-    const double d =
-        (gap_ - sa_ * sa_ * k_ * k_ * sn * sn) / (dn * dn * std::sin(0.5 * alpha_t_ + half));
+    const double d = (gap_ - sa_ * sa_ * k_ * k_ * sn * sn) / (dn * dn * sin_a_plus(s_ / dn));
     out(0) = sg_ * 2.0 * std::asin(std::clamp(d, 0.0, 1.0));
     out(1) = -sg_ * 2.0 * p_ * s_ * k_ * sn / dn;  // vartheta' = -phi' = -2 P s k sn/dn
   }
 
   // the pivot (set_pivot)
   double alpha_ = 0.0, m_ = 0.0, gh_ = 0.0;
-  double beta_ = 0.0, c_ = 1.0, alpha_t_ = 0.0, p_ = 0.0, kappa_ = 1.0, lambda_ = 0.0;
+  double beta_ = -1.0, c_ = 1.0, alpha_t_ = 0.0, p_ = 0.0, kappa_ = 1.0, lambda_ = 0.0;
   double phi_moment_ = 0.0;
   double sa_ = 0.0, ca_ = 1.0;  // sin(alpha_t/2), cos(alpha_t/2)
   // the arc

@@ -147,6 +147,11 @@ class Simulator final : private GuardProbe {
                             double& theta_ddot, Eigen::Vector2d& reaction);
   // ---- guard functions of the current mode, in its slot order, with the floor reaction
   void evaluate(double t, const State& x, GuardSample& s);
+  // the rocking modes' guard values from the state and the sample's F_J
+  void rocking_guards(int e, const State& x, GuardSample& s) const;
+  // evaluate() on the closed-form arc where sin(phi), cos(phi) are known (the peak, the floor):
+  // the reaction as the arc's function of phi, with no sincos of theta
+  void arc_sample(double t, const State& x, double sp, double cp, GuardSample& s) const;
   double guard_value(int slot, double t) override;
   double crossing(int slot, double tl, double tr, double gl, double gr) override;
 
@@ -218,7 +223,8 @@ class Simulator final : private GuardProbe {
   // rigid_body would have added energy at t: the paper's law takes the impact, said in an event
   void law_fallback(double t, int e);
   bool stop(double t, std::string why);
-  void record(double t);  // a peak
+  void record(double t);                                     // a peak
+  void record_sample(const GuardSample& s, const State& x);  // a peak evaluated at s.t
   void count_impact(const Event& ev, double impulse_y, double loss, bool chatter);
   // after a step with no event: a pressing floor ends the pivot-tension hold
   void release_latches(const GuardSample& s) {
@@ -560,11 +566,7 @@ void Simulator<N, MaxN>::evaluate(double t, const State& x, GuardSample& s) {
     }
     case ContactMode::kRockingEdge1:
     case ContactMode::kRockingEdge2: {
-      constexpr ContactMode m = ContactMode::kRockingEdge1;  // both edges list the same guards
-      static_assert(mode_spec(ContactMode::kRockingEdge1).guards ==
-                    mode_spec(ContactMode::kRockingEdge2).guards);
       const int e = edge();
-      const double sg = edge_sign(e);
       double thdd = 0.0;
       const double sn = std::sin(x(0)), cs = std::cos(x(0));
       dyn_.rocking_acceleration_sc(e, sn, cs, q_, x(ithd()), qd_, a, thdd, qdd_);
@@ -574,11 +576,7 @@ void Simulator<N, MaxN>::evaluate(double t, const State& x, GuardSample& s) {
       s.fj = r(1);
       // reaction at the pivot, moment about the c.g. projection: alpha h F_j(body)
       s.moment = dyn_.alpha(e) * (-r(0) * sn + r(1) * cs);
-      v[kSlot<m, Guard::kImpact>] = sg * x(0);
-      v[kSlot<m, Guard::kOverturn>] = overturn_limit_[static_cast<std::size_t>(e - 1)] - sg * x(0);
-      v[kSlot<m, Guard::kLiftOff>] = s.fj;
-      v[kSlot<m, Guard::kFrictionLimit>] = std::isfinite(mu) ? mu * s.fj - std::abs(s.fi) : 1.0;
-      v[kSlot<m, Guard::kPeak>] = sg * x(ithd());
+      rocking_guards(e, x, s);
       break;
     }
     case ContactMode::kSlidingPlus:
@@ -636,6 +634,30 @@ void Simulator<N, MaxN>::evaluate(double t, const State& x, GuardSample& s) {
       break;
     }
   }
+}
+
+template <int N, int MaxN>
+void Simulator<N, MaxN>::rocking_guards(int e, const State& x, GuardSample& s) const {
+  constexpr ContactMode m = ContactMode::kRockingEdge1;  // both edges list the same guards
+  static_assert(mode_spec(ContactMode::kRockingEdge1).guards ==
+                mode_spec(ContactMode::kRockingEdge2).guards);
+  const double sg = edge_sign(e), mu = opt_.friction_coefficient;
+  auto& v = s.v;
+  v[kSlot<m, Guard::kImpact>] = sg * x(0);
+  v[kSlot<m, Guard::kOverturn>] = overturn_limit_[static_cast<std::size_t>(e - 1)] - sg * x(0);
+  v[kSlot<m, Guard::kLiftOff>] = s.fj;
+  v[kSlot<m, Guard::kFrictionLimit>] = std::isfinite(mu) ? mu * s.fj - std::abs(s.fi) : 1.0;
+  v[kSlot<m, Guard::kPeak>] = sg * x(ithd());
+}
+
+template <int N, int MaxN>
+void Simulator<N, MaxN>::arc_sample(double t, const State& x, double sp, double cp,
+                                    GuardSample& s) const {
+  s.t = t;
+  s.fi = arc_.fi(sp, cp);
+  s.fj = arc_.press(cp);
+  s.moment = arc_.signed_moment(sp, cp);
+  rocking_guards(edge(), x, s);
 }
 
 template <int N, int MaxN>
@@ -739,7 +761,11 @@ bool Simulator<N, MaxN>::enter_mode(double t, State& x) {
           ctl_, t, dense_buf_);
       break;
   }
-  evaluate(t, x, s0_);
+  // an arc from the floor (after an impact) knows its reaction there
+  if (stepping_ == Stepping::kArc && x(0) == 0.0)
+    arc_sample(t, x, arc_.floor_sin(), arc_.floor_cos(), s0_);
+  else
+    evaluate(t, x, s0_);
   observe(s0_, x);
   const ModeSpec& spec = mode_spec(mode_);
   for (int j = 0; j < spec.count; ++j) {
@@ -1160,15 +1186,23 @@ bool Simulator<N, MaxN>::advance_arc(double& t, State& x) {
   const double t0 = arc_.t0(), t1 = arc_.t1();
   if (opt_.progress) opt_.progress->store(t1, std::memory_order_relaxed);
   const double tp = arc_.peak_time();
-  if (tp > t0 && tp <= t1 && guard_slot(mode_, Guard::kPeak) >= 0) record(tp);
+  if (tp > t0 && tp <= t1 && guard_slot(mode_, Guard::kPeak) >= 0) {
+    GuardSample s;
+    state_at(tp, xr_);
+    arc_sample(tp, xr_, arc_.sin_phi_m(), arc_.energy_cosine(), s);
+    record_sample(s, xr_);
+  }
   // the step's end, before the reset where the impact ends it (a point of the motion too)
   GuardSample& se = samples_buf_[1];
   State& xe = sample_states_[1];
   put(arc_.x1(), xe);
-  evaluate(t1, xe, se);
+  const bool impact = t1 == arc_.impact_time();
+  if (impact)
+    arc_sample(t1, xe, arc_.floor_sin(), arc_.floor_cos(), se);
+  else
+    evaluate(t1, xe, se);
   observe(se, xe);
   arc_extremes(t0, t1);
-  const bool impact = t1 == arc_.impact_time();
   auto none = [](double, const ContactState&, ContactState&) {};
   return end_step(arc_, none, impact ? guard_slot(mode_, Guard::kImpact) : -1, t1, se, t, x);
 }
@@ -1807,8 +1841,10 @@ void Simulator<N, MaxN>::count_impact(const Event& impact, double impulse_y, dou
                                       bool chatter) {
   // the force a contact of the assumed duration would carry: a half-sine pulse of this impulse
   Event ev = impact;
-  ev.force_estimate =
-      0.5 * std::numbers::pi * std::hypot(ev.impulse_x, ev.impulse_y) / opt_.impact_duration;
+  // (the impulse's size by sqrt, not hypot: no impulse comes near the range where x^2 overflows)
+  ev.force_estimate = 0.5 * std::numbers::pi *
+                      std::sqrt(ev.impulse_x * ev.impulse_x + ev.impulse_y * ev.impulse_y) /
+                      opt_.impact_duration;
   rec_.event(ev);
   Extremes& ex = res_.extremes;
   ex.max_impact_force = std::max(ex.max_impact_force, ev.force_estimate);
@@ -2365,13 +2401,17 @@ void Simulator<N, MaxN>::record(double t) {
   state_at(t, xr_);
   GuardSample s;
   evaluate(t, xr_, s);
+  record_sample(s, xr_);
+}
+
+template <int N, int MaxN>
+void Simulator<N, MaxN>::record_sample(const GuardSample& s, const State& x) {
   // the only recording guard is the peak (the friction limit resets: the base slides)
-  Event e = make_event(t, EventKind::kPeak, edge());
-  e.theta = xr_(0);
-  e.offset = offset_of(xr_);
+  Event e = make_event(s.t, EventKind::kPeak, edge());
+  e.theta = x(0);
+  e.offset = offset_of(x);
   rec_.event(e);
-  Observation o = observation(t, xr_, s);
-  rec_.observe(o);
+  observe(s, x);
 }
 
 // ---- outputs

@@ -4,6 +4,8 @@
 // symmetric and not, started on either edge and after pulses, compared event by event, in their
 // extremes and in their time history; the peaks against the energy the impact law leaves; mirror
 // symmetry.
+#include "sim/free_rocking_arc.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -14,6 +16,7 @@
 #include <vector>
 
 #include "flexrock/excitation/pulses.hpp"
+#include "flexrock/model/dynamics.hpp"
 #include "flexrock/sim/simulate.hpp"
 
 namespace flexrock {
@@ -78,6 +81,56 @@ void expect_same_motion(const Body& body, const GroundMotion& motion, const Init
     EXPECT_NEAR(a.history.theta_dot[k], s.history.theta_dot[k], 1e-9) << where << " row " << k;
     EXPECT_NEAR(a.history.reaction_x[k], s.history.reaction_x[k], 1e-9 * body.params().mass * g)
         << where << " row " << k;
+  }
+}
+
+// The arc's reaction as a function of phi (signed F_I, F_J, the signed moment about the c.g.'s
+// projection), which the loop takes at the peak and on the floor without a sincos of theta,
+// against the rocking equations' reaction from (theta, theta_dot) (Dynamics), on either edge of a
+// symmetric and of an asymmetric body, along the arc and at its peak and impact
+TEST(FreeRockingArc, ReactionOnTheArcIsTheRockingEquations) {
+  using Arc = detail::FreeRockingArc<Eigen::Vector4d>;
+  const Eigen::Matrix<double, 0, 1> none;
+  for (const BodyParameters& p : {BodyParameters::rectangular_block(1000, 0.2, 1.0),
+                                  BodyParameters::rigid(2000, 1.5, 0.3, 0.5, 0.4)}) {
+    const Body body(p);
+    const Dynamics<0, 0> dyn(body);
+    for (int e : {1, 2}) {
+      const double sg = edge_sign(e), a = dyn.alpha(e);
+      Arc arc;
+      arc.set_pivot(a, dyn.inertia(a, none), dyn.g_over_h());
+      Eigen::Vector4d x0 = Eigen::Vector4d::Zero();
+      x0(0) = sg * 0.4 * arc.alpha_t();
+      x0(1) = sg * 0.1;
+      ASSERT_TRUE(arc.start(0.0, x0, sg)) << "edge " << e;
+      const double alpha_t = arc.alpha_t();
+      // the reaction and moment over M g (h) from the rocking equations at (theta, theta_dot)
+      auto expect_same = [&](const Eigen::Vector4d& x, double sp, double cp, const char* where) {
+        double thdd = 0.0;
+        Eigen::Matrix<double, 0, 1> qdd;
+        dyn.rocking_acceleration(e, x(0), none, x(1), none, BaseAcceleration{}, thdd, qdd);
+        const Eigen::Vector2d r =
+            dyn.rocking_reaction(e, x(0), none, x(1), none, thdd, qdd, BaseAcceleration{});
+        const double moment = a * (-r(0) * std::sin(x(0)) + r(1) * std::cos(x(0)));
+        EXPECT_NEAR(arc.fi(sp, cp), r(0), 1e-12) << where << ", edge " << e;
+        EXPECT_NEAR(arc.press(cp), r(1), 1e-12) << where << ", edge " << e;
+        EXPECT_NEAR(arc.signed_moment(sp, cp), moment, 1e-12) << where << ", edge " << e;
+      };
+      Eigen::Vector4d x = x0;
+      for (int i = 0; i <= 8; ++i) {
+        const double t = arc.impact_time() * i / 8.0;
+        arc.dense(t, x);
+        const double phi = alpha_t - sg * x(0);
+        expect_same(x, std::sin(phi), std::cos(phi), "along the arc");
+      }
+      // the peak and the impact, with the sin(phi) and cos(phi) the loop takes there
+      arc.dense(arc.peak_time(), x);
+      EXPECT_EQ(x(1), 0.0);
+      expect_same(x, arc.sin_phi_m(), arc.energy_cosine(), "at the peak");
+      arc.dense(arc.impact_time(), x);
+      EXPECT_EQ(x(0), 0.0);
+      expect_same(x, arc.floor_sin(), arc.floor_cos(), "at the impact");
+    }
   }
 }
 
