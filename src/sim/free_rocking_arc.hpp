@@ -46,9 +46,12 @@ class FreeRockingArc {
     sa_ = std::sin(0.5 * alpha_t_);
     ca_ = std::cos(0.5 * alpha_t_);
     p_ = std::sqrt(gh / m * c_);  // P^2 = k sqrt(1 + beta^2)
-    kappa_ = m / (c_ * c_);
+    // the reaction's constants as the factors it takes (a product where a quotient would wait on
+    // a division, three of them an impact's samples): 1/kappa = c^2/m, cos(alpha_t) = 1/c
+    inv_kappa_ = c_ * c_ / m;
+    inv_c_ = 1.0 / c_;
     lambda_ = c_ / m;
-    phi_moment_ = std::atan2(beta_ * (1.0 / c_ - lambda_), 1.0 / c_ + 2.0 * lambda_);
+    phi_moment_ = std::atan2(beta_ * (inv_c_ - lambda_), inv_c_ + 2.0 * lambda_);
   }
 
   /// Starts an arc at (t, x) on the pivot (set_pivot), the body on its edge of sign sg (theta sg
@@ -117,10 +120,7 @@ class FreeRockingArc {
   /// The peak's |theta|, alpha_t - phi_m.
   double peak_tilt() const { return peak_tilt_; }
   double alpha_t() const { return alpha_t_; }
-  /// The pivot's constants (set_pivot): beta = |alpha|, c = sqrt(1 + beta^2), and phi where the
-  /// moment's bracket is stationary.
-  double beta() const { return beta_; }
-  double c() const { return c_; }
+  /// phi where the moment's bracket is stationary (set_pivot).
   double phi_moment() const { return phi_moment_; }
 
   /// The reaction on the arc, a function of phi alone (theta_dot^2 by the energy; derive.py,
@@ -128,16 +128,18 @@ class FreeRockingArc {
   /// M g and the moment about the c.g.'s projection over M g h, signed as the rocking equations
   /// give them on the edge of sign sg, with kappa = m/c^2 = I_O/(M R^2) and lambda = c/m; shear
   /// and moment are their sizes.
-  double fi(double sp, double cp) const { return sg_ * sp * (3.0 * cp - 2.0 * cm_) / kappa_; }
-  double press(double cp) const { return 1.0 - (1.0 - 3.0 * cp * cp + 2.0 * cm_ * cp) / kappa_; }
+  double fi(double sp, double cp) const { return sg_ * sp * (3.0 * cp - 2.0 * cm_) * inv_kappa_; }
+  double press(double cp) const {
+    return 1.0 - (1.0 - 3.0 * cp * cp + 2.0 * cm_ * cp) * inv_kappa_;
+  }
   double signed_moment(double sp, double cp) const {
-    return -sg_ * beta_ * ((cp + beta_ * sp) / c_ - lambda_ * (beta_ * sp + 2.0 * (cm_ - cp)));
+    return -sg_ * beta_ * ((cp + beta_ * sp) * inv_c_ - lambda_ * (beta_ * sp + 2.0 * (cm_ - cp)));
   }
   double shear(double sp, double cp) const { return std::abs(fi(sp, cp)); }
   double moment(double sp, double cp) const { return std::abs(signed_moment(sp, cp)); }
   /// sin(phi) and cos(phi) on the floor (phi = alpha_t): beta/c and 1/c.
-  double floor_sin() const { return beta_ / c_; }
-  double floor_cos() const { return 1.0 / c_; }
+  double floor_sin() const { return beta_ * inv_c_; }
+  double floor_cos() const { return inv_c_; }
   /// The least F_J over cos(phi) in [c_lo, c_hi]: a quadratic in cos(phi), least at an end or at
   /// its vertex cm/3.
   double least_press(double c_lo, double c_hi) const {
@@ -224,7 +226,8 @@ class FreeRockingArc {
 
   // the pivot (set_pivot)
   double alpha_ = 0.0, m_ = 0.0, gh_ = 0.0;
-  double beta_ = -1.0, c_ = 1.0, alpha_t_ = 0.0, p_ = 0.0, kappa_ = 1.0, lambda_ = 0.0;
+  double beta_ = -1.0, c_ = 1.0, alpha_t_ = 0.0, p_ = 0.0, inv_kappa_ = 1.0, lambda_ = 0.0;
+  double inv_c_ = 1.0;
   double phi_moment_ = 0.0;
   double sa_ = 0.0, ca_ = 1.0;  // sin(alpha_t/2), cos(alpha_t/2)
   // the arc

@@ -742,12 +742,12 @@ bool Simulator<N, MaxN>::enter_mode(double t, State& x) {
           t, slide_buf_);
       break;
     case Stepping::kSeries: {
+      dense_buf_ = x.head(2 * n_ + 4);
+      if (start_arc(t, dense_buf_)) break;  // the arc needs no series
       const int e = edge();
       const double a = dyn_.alpha(e);
       series_integ_.set_pivot(a, dyn_.g_over_h() / dyn_.inertia(a, q_),
                               dyn_.mass() * dyn_.height() * dyn_.g(), dyn_.g());
-      dense_buf_ = x.head(2 * n_ + 4);
-      if (start_arc(t, dense_buf_)) break;
       series_integ_.start([](double, const ContactState&, ContactState&) {}, ctl_, t, dense_buf_);
       break;
     }
@@ -1171,7 +1171,8 @@ bool Simulator<N, MaxN>::start_arc(double t, const ContactState& x) {
   arc_.set_pivot(a, dyn_.inertia(a, q_), dyn_.g_over_h());
   if (!arc_.start(t, x, edge_sign(e))) return false;
   // F_J over the whole arc, cos(phi) from cos(alpha_t) = 1/c to cos(phi_m) = cm
-  if (!(arc_.least_press(1.0 / arc_.c(), arc_.energy_cosine()) >= kPressingFraction)) return false;
+  if (!(arc_.least_press(arc_.floor_cos(), arc_.energy_cosine()) >= kPressingFraction))
+    return false;
   stepping_ = Stepping::kArc;
   return true;
 }
@@ -1220,7 +1221,6 @@ void Simulator<N, MaxN>::arc_extremes(double t0, double t1) {
   if (!(t1 > t0)) return;
   const Extremes& ex = res_.extremes;
   const double sg = edge_sign(edge());
-  const double beta = arc_.beta(), c = arc_.c();
   const double cm = arc_.energy_cosine(), at = arc_.alpha_t();
   const double ph0 = at - sg * arc_.x0()(0), ph1 = at - sg * arc_.x1()(0);
   const double tp = arc_.peak_time();
@@ -1235,7 +1235,7 @@ void Simulator<N, MaxN>::arc_extremes(double t0, double t1) {
   };
   auto trig = [](double ph) { return Trig{std::sin(ph), std::cos(ph)}; };
   const Trig tlo = peak ? Trig{arc_.sin_phi_m(), cm} : trig(lo);
-  const Trig thi = hi == at ? Trig{beta / c, 1.0 / c} : trig(hi);
+  const Trig thi = hi == at ? Trig{arc_.floor_sin(), arc_.floor_cos()} : trig(hi);
   auto at_phi = [&](double ph) { observe_at(arc_.time_of(ph)); };
   // phi within (lo, hi), by its cosine: cos falls on (0, pi/2)
   auto inside = [&](double cp) { return cp < tlo.c && cp > thi.c; };
