@@ -46,6 +46,7 @@ class FreeRockingArc {
     sa_ = std::sin(0.5 * alpha_t_);
     ca_ = std::cos(0.5 * alpha_t_);
     p_ = std::sqrt(gh / m * c_);  // P^2 = k sqrt(1 + beta^2)
+    inv_p_ = 1.0 / p_;
     // the reaction's constants as the factors it takes (a product where a quotient would wait on
     // a division, three of them an impact's samples): 1/kappa = c^2/m, cos(alpha_t) = 1/c
     inv_kappa_ = c_ * c_ / m;
@@ -64,12 +65,13 @@ class FreeRockingArc {
     if (th < 0.0 || (th == 0.0 && !(om > 0.0))) return false;
     if (!(th < alpha_t_)) return false;  // past the tipping angle gravity overturns it
     sg_ = sg;
-    const double w = om / (2.0 * p_);  // phi0'/(2 P) up to its sign
+    const double w = 0.5 * om * inv_p_;  // phi0'/(2 P) up to its sign
     const double sh0 = th == 0.0 ? sa_ : std::sin(0.5 * (alpha_t_ - th));
     s2_ = sh0 * sh0 - w * w;  // sin^2(phi_m/2) by the energy, without cos's cancellation
     if (!(s2_ > kMinS2)) return false;
     s_ = std::sqrt(s2_);
     k_ = std::sqrt(1.0 - s2_);
+    inv_k_ = 1.0 / k_;
     cm_ = 1.0 - 2.0 * s2_;  // cos(phi_m)
     // the impact, phi = alpha_t: sn^2 = (sin^2(alpha_t/2) - s^2)/(k^2 sin^2(alpha_t/2)), the
     // difference of squares as sin(theta0/2) sin(alpha_t - theta0/2) + w^2 (no cancellation)
@@ -78,8 +80,8 @@ class FreeRockingArc {
     // from the start to the peak: sn(v0) = |phi0'|/(2 P k sin(phi0/2)), the impact's by symmetry
     // where the arc starts on the floor; past the peak when falling
     const double v0 = th == 0.0 ? v_impact : ellint(sh0, std::cos(0.5 * (alpha_t_ - th)), w * w);
-    t_peak_ = om > 0.0 ? t + v0 / p_ : t - v0 / p_;
-    t_impact_ = t_peak_ + v_impact / p_;
+    t_peak_ = om > 0.0 ? t + v0 * inv_p_ : t - v0 * inv_p_;
+    t_impact_ = t_peak_ + v_impact * inv_p_;
     // the impact's rate by the energy: vartheta'^2 = om^2 + 2 P^2 (cos phi0 - cos alpha_t)
     impact_rate_ = -2.0 * p_ * std::sqrt(gap_);
     // the peak's |theta|, alpha_t - phi_m = 2 (A - B), A = alpha_t/2, B = phi_m/2, from
@@ -172,11 +174,11 @@ class FreeRockingArc {
   // without cancellation): F(asin(sn), k) with sn^2 = d/(k^2 S^2), as Carlson's
   // sn R_F(1 - sn^2, 1 - k^2 sn^2, 1), whose arguments are s^2 C^2/(k^2 S^2) and s^2/S^2 exactly:
   // near the floor and near the peak neither loses digits to 1 - x (Boost's ellint_1 would form
-  // the angle and 1 - sn^2)
+  // the angle and 1 - sn^2); one division, 1/S (1/k is the arc's)
   double ellint(double S, double C, double d) const {
-    const double sn = std::min(1.0, std::sqrt(std::max(0.0, d)) / (k_ * S));
-    return sn *
-           boost::math::ellint_rf(s2_ * C * C / (k_ * k_ * S * S), s2_ / (S * S), 1.0, Policy());
+    const double inv_s = 1.0 / S, y = s2_ * inv_s * inv_s;
+    const double sn = std::min(1.0, std::sqrt(std::max(0.0, d)) * inv_s * inv_k_);
+    return sn * boost::math::ellint_rf(y * C * C * inv_k_ * inv_k_, y, 1.0, Policy());
   }
 
   // sin(A + Phi), A = alpha_t/2, from S = sin(Phi) (Phi in [0, pi/2]): sin A cos Phi + cos A S
@@ -226,12 +228,13 @@ class FreeRockingArc {
 
   // the pivot (set_pivot)
   double alpha_ = 0.0, m_ = 0.0, gh_ = 0.0;
+  // (beta_ < 0: no pivot yet)
   double beta_ = -1.0, c_ = 1.0, alpha_t_ = 0.0, p_ = 0.0, inv_kappa_ = 1.0, lambda_ = 0.0;
-  double inv_c_ = 1.0;
+  double inv_c_ = 1.0, inv_p_ = 0.0;
   double phi_moment_ = 0.0;
   double sa_ = 0.0, ca_ = 1.0;  // sin(alpha_t/2), cos(alpha_t/2)
   // the arc
-  double sg_ = 1.0, s2_ = 0.0, s_ = 0.0, k_ = 0.0, cm_ = 0.0, peak_tilt_ = 0.0;
+  double sg_ = 1.0, s2_ = 0.0, s_ = 0.0, k_ = 0.0, inv_k_ = 0.0, cm_ = 0.0, peak_tilt_ = 0.0;
   double gap_ = 0.0;  // sin^2(alpha_t/2) - s^2, formed without cancellation
   double t_peak_ = 0.0, t_impact_ = 0.0, impact_rate_ = 0.0;
   double t0_ = 0.0, t1_ = 0.0;
