@@ -130,6 +130,7 @@ class ContactPropagator {
     for (Vec* v : {&wd_, &wv_, &bm_, &hom_, &acc_hom_, &dev2_, &p0d_, &p0v_, &hd_, &hv_})
       v->setZero(n_);
     for (Vec& b : bound_) b.setZero(n_);
+    for (Vec& j : jet_) j.setZero(n_);
     for (Piece& p : pieces_) p.steps.assign(static_cast<std::size_t>(kPoints * n_), ModeStep{});
     available_ = true;
   }
@@ -316,12 +317,46 @@ class ContactPropagator {
   void output_basis(const Mat& t) {
     if (available()) user_from_modal_ = t * from_modal_;
   }
-  /// u_j alone at tau within the last piece, exactly: what the search for u_j's extreme needs
-  /// of walk_dense, without the other components' products and the velocities.
-  double walk_q(double tau, int j) const {
-    modal_at(tau);
-    return user_from_modal_.row(j).dot(eta_);
+  /// u_j and its first two time derivatives at tau within the last piece, exactly: what the
+  /// search for u_j's extreme needs of walk_dense, without the other components. The modes'
+  /// equation s' = B s + (0, g0 + g1 tau) gives eta' = s_v and eta'' = -w s_d - c s_v + g0 + g1
+  /// tau.
+  std::array<double, 3> walk_q_jet(double tau, int j) const {
+    std::array<double, 3> u{0.0, 0.0, 0.0};
+    for (int i = 0; i < n_; ++i) {
+      double sd = 0.0, sv = 0.0;
+      mode_at(i, tau, sd, sv);
+      const double r = user_from_modal_(j, i);
+      u[0] += r * (sd * inv_omega_(i) + eta_static_(i));
+      u[1] += r * sv;
+      u[2] += r * (-omega_(i) * sd - damp_(i) * sv + g0_(i) + g1_(i) * tau);
+    }
+    return u;
   }
+
+  /// q (the state's coordinates) and its first four time derivatives at tau within the last
+  /// piece, exactly, into d[0..4]: eta' = s_v, eta'' = -w s_d - c s_v + g0 + g1 tau, and
+  /// differentiating the modes' equation, eta''' = -w^2 eta' - c eta'' + g1 and
+  /// eta'''' = -w^2 eta'' - c eta'''. The base acceleration there is walk_base(tau).
+  void walk_q_derivatives(double tau, std::array<Vec, 5>& d) const {
+    for (int i = 0; i < n_; ++i) {
+      double sd = 0.0, sv = 0.0;
+      mode_at(i, tau, sd, sv);
+      const double w = omega_(i), c = damp_(i), w2 = w * w;
+      const double e2 = -w * sd - c * sv + g0_(i) + g1_(i) * tau, e3 = -w2 * sv - c * e2 + g1_(i);
+      jet_[0](i) = sd * inv_omega_(i) + eta_static_(i);
+      jet_[1](i) = sv;
+      jet_[2](i) = e2;
+      jet_[3](i) = e3;
+      jet_[4](i) = -w2 * e2 - c * e3;
+    }
+    for (std::size_t k = 0; k < 5; ++k) d[k].noalias() = Dyn::mv(from_modal_, jet_[k]);
+  }
+  /// The base acceleration at tau within the last piece [m/s^2], and its rate [m/s^3].
+  BaseAcceleration walk_base(double tau) const {
+    return {a0_.x + slope_.x * tau, a0_.y + slope_.y * tau};
+  }
+  BaseAcceleration walk_slope() const { return slope_; }
 
   /// Bounds on the excursion from their chord, over any part of length w of the last piece, of the
   /// floor reaction, the uplift functions and the moment about the c.g. projection. They are
@@ -384,13 +419,17 @@ class ContactPropagator {
   // the free part, s = P0 + P1 tau + e^{B tau} (s(0) - P0), by the closed form of e^{B tau}
   void modal_at(double tau) const {
     for (int i = 0; i < n_; ++i) {
-      const Eigen::Matrix2d e = mode_exponential(omega_(i), damp_(i), tau);
-      const double sd =
-          e(0, 0) * hd_(i) + e(0, 1) * hv_(i) + p0d_(i) + g1_(i) * inv_omega_(i) * tau;
-      const double sv = e(1, 0) * hd_(i) + e(1, 1) * hv_(i) + p0v_(i);
+      double sd = 0.0, sv = 0.0;
+      mode_at(i, tau, sd, sv);
       eta_(i) = sd * inv_omega_(i) + eta_static_(i);
       etad_(i) = sv;
     }
+  }
+  // mode i's s = (s_d, s_v) at tau within the last piece
+  void mode_at(int i, double tau, double& sd, double& sv) const {
+    const Eigen::Matrix2d e = mode_exponential(omega_(i), damp_(i), tau);
+    sd = e(0, 0) * hd_(i) + e(0, 1) * hv_(i) + p0d_(i) + g1_(i) * inv_omega_(i) * tau;
+    sv = e(1, 0) * hd_(i) + e(1, 1) * hv_(i) + p0v_(i);
   }
 
   // a piece length's steps of the modes: at its end, then at its kept points h k / kPoints
@@ -586,18 +625,19 @@ class ContactPropagator {
   double t0_ = 0.0, t1_ = 0.0;
   State x0_, x1_, xn_;
   // the walk
-  Vec wd_, wv_;                   // the modal state s = (w (eta - eta_static), eta')
-  double ww_ = 0.0, wl_ = 0.0;    // input work and damping loss [J]
-  std::array<Vec, 5> bound_;      // per mode: bounds over the piece on |eta^(k)|, k = 0..4
-  Vec hom_;                       // per mode: |s - s_p|, the free part's norm at the start
-  Vec acc_hom_;                   // per mode: the bound |(w, c)| hom on |eta''|
-  Vec p0d_, p0v_, hd_, hv_;       // per mode: P0, and s(0) - P0 (the free part at the start)
-  mutable Vec dev2_;              // scratch: per mode, the excursion bound of eta''
-  const Piece* piece_ = nullptr;  // the last piece's kept steps
-  double rate_ = 0.0;             // [1/s] the largest |eigenvalue|
-  Vec betam_;                     // phi^T beta
-  mutable Vec bm_;                // scratch: phi^T b(alpha)
-  double gamma_norm_ = 0.0;       // Frobenius norm of phi^T Gamma phi (>= its 2-norm)
+  Vec wd_, wv_;                     // the modal state s = (w (eta - eta_static), eta')
+  double ww_ = 0.0, wl_ = 0.0;      // input work and damping loss [J]
+  std::array<Vec, 5> bound_;        // per mode: bounds over the piece on |eta^(k)|, k = 0..4
+  Vec hom_;                         // per mode: |s - s_p|, the free part's norm at the start
+  Vec acc_hom_;                     // per mode: the bound |(w, c)| hom on |eta''|
+  Vec p0d_, p0v_, hd_, hv_;         // per mode: P0, and s(0) - P0 (the free part at the start)
+  mutable Vec dev2_;                // scratch: per mode, the excursion bound of eta''
+  mutable std::array<Vec, 5> jet_;  // scratch: eta and its first four derivatives
+  const Piece* piece_ = nullptr;    // the last piece's kept steps
+  double rate_ = 0.0;               // [1/s] the largest |eigenvalue|
+  Vec betam_;                       // phi^T beta
+  mutable Vec bm_;                  // scratch: phi^T b(alpha)
+  double gamma_norm_ = 0.0;         // Frobenius norm of phi^T Gamma phi (>= its 2-norm)
   std::array<Piece, kPieces + 1> pieces_;  // kept piece lengths, then one computed afresh
   int pieces_used_ = 0;
 };
@@ -628,7 +668,11 @@ class ContactPropagator<0, MaxN, State> {
   void walk_piece(double, BaseAcceleration, BaseAcceleration, bool = true) {}
   void walk_state(State&) const {}
   void walk_dense(double, State&) const {}
-  double walk_q(double, int) const { return 0.0; }
+  std::array<double, 3> walk_q_jet(double, int) const { return {}; }
+  template <class Vec>
+  void walk_q_derivatives(double, std::array<Vec, 5>&) const {}
+  BaseAcceleration walk_base(double) const { return {}; }
+  BaseAcceleration walk_slope() const { return {}; }
   template <class Mat>
   void output_basis(const Mat&) {}
   Excursion walk_excursion(double, double, double, double, double) const { return {}; }

@@ -5,6 +5,7 @@
 
 #include <Eigen/Core>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numbers>
 #include <random>
@@ -640,6 +641,133 @@ TEST(FullContactWalk, LocatedExtremesBoundEverySampleOfTheExactSolution) {
       EXPECT_GE(wk.extremes.max_abs_q(i), rows - 1e-13 * qs);
       const double w = body.natural_frequencies().maxCoeff();
       EXPECT_LE(wk.extremes.max_abs_q(i) - rows, 0.5 * std::pow(w * 1e-4, 2) * qs);
+    }
+    // and so are the base shear, the moment about the c.g. projection and the friction demand:
+    // above every row, and within what the rows' spacing can miss of the largest (the forcing
+    // is linear between the record's samples, so these have kinks there: a first-order miss)
+    const History& hs = wk.history;
+    double shear = 0.0, moment = 0.0, demand = 0.0;
+    for (std::size_t k = 0; k < hs.size(); ++k) {
+      shear = std::max(shear, std::abs(hs.reaction_x[k]));
+      moment = std::max(moment, std::abs(hs.resultant[k] * hs.reaction_y[k]));
+      demand = std::max(demand, hs.friction_demand[k]);
+    }
+    const Extremes& ex = wk.extremes;
+    EXPECT_GE(ex.max_base_shear, shear * (1.0 - 1e-13));
+    EXPECT_GE(ex.max_overturning_moment, moment * (1.0 - 1e-13));
+    EXPECT_GE(ex.max_friction_demand, demand * (1.0 - 1e-13));
+    EXPECT_LE(ex.max_base_shear, shear * (1.0 + 1e-3));
+    EXPECT_LE(ex.max_overturning_moment, moment * (1.0 + 1e-3));
+    EXPECT_LE(ex.max_friction_demand, demand * (1.0 + 1e-3));
+  }
+}
+
+TEST(FullContactWalk, DerivativesOfQAreTheExactSolutionsRates) {
+  // q', q'', q''' and q'''' at a point of a piece (ContactPropagator::walk_q_derivatives, from
+  // the modes' equation) against central differences of the exact q, q' and q'' there; q and q'
+  // themselves against the piece's dense output
+  using Dyn = Dynamics<Eigen::Dynamic, 16>;
+  using State = Eigen::Matrix<double, Eigen::Dynamic, 1, Eigen::ColMajor, 64, 1>;
+  for (int n : {1, 3}) {
+    const Body body = damped_body(n, 1200u + static_cast<unsigned>(n), n == 1 ? 1 : 2);
+    const Dyn dyn(body);
+    const GroundMotion motion = random_record(1210u + static_cast<unsigned>(n), 0.1, 1.0, true);
+    detail::ContactPropagator<Eigen::Dynamic, 16, State> prop(dyn, motion, 4, 0.01, true);
+    ASSERT_TRUE(prop.available());
+    State x = State::Zero(2 * n + 11);
+    const VectorX q0 = body.static_deformation();
+    for (int i = 0; i < n; ++i) {
+      x(1 + i) = 1.3 * q0(i);
+      x(n + 2 + i) = 0.4 * std::abs(q0(i)) * body.natural_frequencies()(0);
+    }
+    const double h = 0.02;
+    prop.walk_start(x);
+    prop.walk_piece(h, {0.2 * g, -0.1 * g}, {5.0 * g, 3.0 * g}, false);
+    std::array<Dyn::Vec, 5> d, dm, dp;
+    for (auto* a : {&d, &dm, &dp})
+      for (Dyn::Vec& v : *a) v.setZero(n);
+    const double tau = 0.37 * h, e = 1e-5 * h;
+    prop.walk_q_derivatives(tau, d);
+    prop.walk_q_derivatives(tau - e, dm);
+    prop.walk_q_derivatives(tau + e, dp);
+    State xs = x;
+    prop.walk_dense(tau, xs);
+    for (int i = 0; i < n; ++i) {
+      SCOPED_TRACE("n " + std::to_string(n) + " i " + std::to_string(i));
+      EXPECT_NEAR(d[0](i), xs(1 + i), 1e-12 * std::abs(xs(1 + i)));
+      EXPECT_NEAR(d[1](i), xs(n + 2 + i), 1e-12 * d[1].cwiseAbs().maxCoeff());
+      for (std::size_t k = 1; k < 5; ++k) {
+        const double fd = (dp[k - 1](i) - dm[k - 1](i)) / (2.0 * e);
+        EXPECT_NEAR(d[k](i), fd, 1e-6 * d[k].cwiseAbs().maxCoeff()) << "derivative " << k;
+      }
+    }
+  }
+}
+
+TEST(FullContactWalk, ReactionRatesAreTheRatesOfTheReactionAlongTheMotion) {
+  // Dynamics::full_contact_reaction_rates along the exact motion of a piece: its values are
+  // full_contact_reaction and contact_moments at (q, q'' of the equations of motion), its first
+  // derivatives their central differences, its second derivatives those of its first. Coupled
+  // bodies (Gamma != 0 from two modes on), so every term of the moment's rates counts
+  using Dyn = Dynamics<Eigen::Dynamic, 16>;
+  using State = Eigen::Matrix<double, Eigen::Dynamic, 1, Eigen::ColMajor, 64, 1>;
+  for (int n : {1, 2, 3}) {
+    std::vector<double> hz{2.0, 9.0, 31.0};
+    hz.resize(static_cast<std::size_t>(n));
+    BodyParameters p = test::random_coupled(hz, 1300u + static_cast<unsigned>(n), 0.02).params();
+    p.damping.kind = DampingKind::kModal;
+    p.damping.modal_ratios = VectorX::Constant(n, 0.05);
+    const Body body(p);
+    const Dyn dyn(body);
+    if (n > 1) {
+      ASSERT_GT(dyn.gamma().norm(), 0.0);
+    }
+    const GroundMotion motion = random_record(1310u + static_cast<unsigned>(n), 0.1, 1.0, true);
+    detail::ContactPropagator<Eigen::Dynamic, 16, State> prop(dyn, motion, 4, 0.01, true);
+    ASSERT_TRUE(prop.available());
+    State x = State::Zero(2 * n + 11);
+    const VectorX q0 = body.static_deformation();
+    for (int i = 0; i < n; ++i) {
+      x(1 + i) = (1.5 - 0.4 * i) * q0(i);
+      x(n + 2 + i) = 3.0 * std::abs(q0(i)) * body.natural_frequencies()(0);
+    }
+    const double h = 0.02;
+    const BaseAcceleration a0{0.3 * g, -0.2 * g}, rate{8.0 * g, 5.0 * g};
+    prop.walk_start(x);
+    prop.walk_piece(h, a0, rate, false);
+    std::array<Dyn::Vec, 5> d;
+    for (Dyn::Vec& v : d) v.setZero(n);
+    auto rates = [&](double tau) {
+      prop.walk_q_derivatives(tau, d);
+      return dyn.full_contact_reaction_rates(d, prop.walk_base(tau), rate);
+    };
+    // F_I, F_J, R(0) at tau from the state, as evaluate() forms them
+    auto direct = [&](double tau) {
+      State xs = x;
+      prop.walk_dense(tau, xs);
+      const Dyn::Vec q = xs.segment(1, n), qd = xs.segment(n + 2, n);
+      const BaseAcceleration a{a0.x + rate.x * tau, a0.y + rate.y * tau};
+      Dyn::Vec qdd(n);
+      dyn.full_contact_acceleration(q, qd, a, qdd);
+      const Eigen::Vector2d r = dyn.full_contact_reaction(qdd, a);
+      Eigen::Vector2d up;
+      return Eigen::Vector3d(r(0), r(1), dyn.contact_moments(q, qdd, a, up));
+    };
+    for (double f : {0.13, 0.5, 0.91}) {
+      const double tau = f * h, e = 1e-5 * h;
+      const auto r = rates(tau), rm = rates(tau - e), rp = rates(tau + e);
+      const Eigen::Vector3d v = direct(tau), fd = (direct(tau + e) - direct(tau - e)) / (2.0 * e);
+      const std::array<std::array<double, 3>, 3> jet{r.fi, r.fj, r.moment},
+          jm{rm.fi, rm.fj, rm.moment}, jp{rp.fi, rp.fj, rp.moment};
+      for (int k = 0; k < 3; ++k) {
+        SCOPED_TRACE("n " + std::to_string(n) + " tau/h " + std::to_string(f) + " quantity " +
+                     std::to_string(k));
+        const auto kk = static_cast<std::size_t>(k);
+        const double fd2 = (jp[kk][1] - jm[kk][1]) / (2.0 * e);
+        EXPECT_NEAR(jet[kk][0], v(k), 1e-12 * (1.0 + std::abs(v(k))));
+        EXPECT_NEAR(jet[kk][1], fd(k), 1e-6 * (std::abs(fd(k)) + std::abs(jet[kk][0]) / h));
+        EXPECT_NEAR(jet[kk][2], fd2, 1e-6 * (std::abs(fd2) + std::abs(jet[kk][1]) / h));
+      }
     }
   }
 }

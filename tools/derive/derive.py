@@ -921,6 +921,21 @@ def walk_bound_checks(n=2):
     out['walk_moment_curvature'] = is_zero(sp.expand(d(sp.Matrix([R]), 2)[0] - R2))
     FI = ax + (px.T * d(q, 2))[0] / gh
     out['walk_reaction_curvature'] = is_zero(sp.expand(d(sp.Matrix([FI]), 2)[0] - (px.T * d(q, 4))[0] / gh))
+    # the first derivatives that the search for the extremes uses (Dynamics::full_contact_reaction_rates)
+    R1 = (b.T * d(q, 3) + d(q, 1).T * Gam * d(q, 2))[0] / gh + (px.T * d(q, 1))[0] * ay \
+        + (-al + (px.T * q)[0]) * ay1 - (py.T * d(q, 1))[0] * ax - (1 + (py.T * q)[0]) * ax1
+    out['walk_moment_rate'] = is_zero(sp.expand(d(sp.Matrix([R]), 1)[0] - R1))
+    out['walk_reaction_rate'] = is_zero(sp.expand(d(sp.Matrix([FI]), 1)[0] - ax1 - (px.T * d(q, 3))[0] / gh))
+    # and a mode's eta''' and eta'''' from its equation s' = B s + (0, g0 + g1 t), s = (s_d, s_v):
+    # eta' = s_v, eta'' = -w s_d - c s_v + g0 + g1 t (ContactPropagator::walk_q_derivatives)
+    g0, g1 = sp.symbols('g0 g1')
+    sd, sv = sp.Function('sd')(t), sp.Function('sv')(t)
+    flow = {sd.diff(t): w * sv, sv.diff(t): -w * sd - c * sv + g0 + g1 * t}
+    e2 = -w * sd - c * sv + g0 + g1 * t
+    e3 = e2.diff(t).subs(flow)
+    e4 = e3.diff(t).subs(flow)
+    out['walk_mode_rates'] = is_zero(sp.expand(e3 - (-w ** 2 * sv - c * e2 + g1))) and \
+        is_zero(sp.expand(e4 - (-w ** 2 * e2 - c * (-w ** 2 * sv - c * e2 + g1))))
     h, M, tau = sp.symbols('h M tau', positive=True)
     env = M * tau * (h - tau) / 2
     # env'' = -M: env -/+ e is concave where |e''| <= M and vanishes at both ends, so it is >= 0

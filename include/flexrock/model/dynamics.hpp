@@ -7,6 +7,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <array>
 #include <cmath>
 
 #include "flexrock/excitation/ground_motion.hpp"
@@ -232,6 +233,40 @@ class Dynamics {
     const double slope = psi_y_.dot(q_ddot) / gh_ + ay;  // -dR/da
     uplift = {r0 + alpha1_ * slope, alpha2_ * slope - r0};
     return r0;
+  }
+
+  /// The full-contact reaction F_I, F_J (over M g) and the moment R(0) about the c.g. projection
+  /// (over M g h), each with its first two time derivatives, along a motion whose q and first four
+  /// derivatives are d[0..4] and whose base acceleration is base + rate t: full_contact_reaction
+  /// and contact_moments differentiated, c(q) = coupling(0, q) being affine in q (c' = Gamma^T q'):
+  ///   F_I' = a_x' + psi_x.q'''/(g/h),  F_I'' = psi_x.q''''/(g/h)  (F_J alike, with psi_y, a_y),
+  ///   R' = (c'.q'' + c.q''')/(g/h) + psi_x.q' a_y + psi_x.q a_y' - psi_y.q' a_x - (1 + psi_y.q)
+  ///   a_x', R'' = (c''.q'' + 2 c'.q''' + c.q'''')/(g/h) + psi_x.q'' a_y + 2 psi_x.q' a_y'
+  ///         - psi_y.q'' a_x - 2 psi_y.q' a_x'.
+  struct ReactionRates {
+    std::array<double, 3> fi, fj, moment;
+  };
+  ReactionRates full_contact_reaction_rates(const std::array<Vec, 5>& d, BaseAcceleration base,
+                                            BaseAcceleration rate) const {
+    const double ax = base.x / g_, ay = 1.0 + base.y / g_, dax = rate.x / g_, day = rate.y / g_;
+    const double x0 = psi_x_.dot(d[0]), x1 = psi_x_.dot(d[1]), x2 = psi_x_.dot(d[2]);
+    const double y0 = psi_y_.dot(d[0]), y1 = psi_y_.dot(d[1]), y2 = psi_y_.dot(d[2]);
+    ReactionRates r;
+    r.fi = {ax + x2 / gh_, dax + psi_x_.dot(d[3]) / gh_, psi_x_.dot(d[4]) / gh_};
+    r.fj = {ay + y2 / gh_, day + psi_y_.dot(d[3]) / gh_, psi_y_.dot(d[4]) / gh_};
+    const Vec c = coupling(0.0, d[0]);
+    double c1q2 = 0.0, c1q3 = 0.0, c2q2 = 0.0;  // c'.q'', c'.q''', c''.q''
+    if (!uncoupled_) {
+      const Vec g2 = mv(gamma_, d[2]);  // Gamma q'': c'.q'' = q'.Gamma q'', c''.q'' = q''.Gamma q''
+      c1q2 = d[1].dot(g2);
+      c2q2 = d[2].dot(g2);
+      c1q3 = d[1].dot(mv(gamma_, d[3]));
+    }
+    r.moment = {c.dot(d[2]) / gh_ + x0 * ay - (1.0 + y0) * ax,
+                (c1q2 + c.dot(d[3])) / gh_ + x1 * ay + x0 * day - y1 * ax - (1.0 + y0) * dax,
+                (c2q2 + 2.0 * c1q3 + c.dot(d[4])) / gh_ + x2 * ay + 2.0 * x1 * day - y2 * ax -
+                    2.0 * y1 * dax};
+    return r;
   }
 
   /// Location of the resultant in full contact over h, from the c.g. projection (paper eq. 4).
