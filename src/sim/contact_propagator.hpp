@@ -265,7 +265,9 @@ class ContactPropagator {
       // |s(0)| + h max|g|; each derivative of s' = B s + (0, g0 + g1 tau) multiplies by at most
       // |B| <= w + c and adds the forcing's term (docs/theory.md)
       const double gmax = std::max(std::abs(g), std::abs(g + g1 * h));
-      const double s0 = std::hypot(x0, v0) + h * gmax, b = w + c;
+      // |s| by sqrt, not hypot: modal states are far from hypot's overflow range, and hypot's
+      // care costs 50 instructions a call, three a mode and piece
+      const double s0 = std::sqrt(x0 * x0 + v0 * v0) + h * gmax, b = w + c;
       const double s1 = b * s0 + gmax, s2 = b * s1 + std::abs(g1), s3 = b * s2;
       bound_[0](i) = s0 * wi + std::abs(eta_static_(i));  // |eta|
       bound_[1](i) = s0;                                  // |eta'|  <= |s|
@@ -279,8 +281,8 @@ class ContactPropagator {
       p0v_(i) = g1 * wi * wi;
       hd_(i) = x0 - p0d_(i);
       hv_(i) = v0 - p0v_(i);
-      hom_(i) = std::hypot(hd_(i), hv_(i));
-      acc_hom_(i) = std::hypot(w, c) * hom_(i);
+      hom_(i) = std::sqrt(hd_(i) * hd_(i) + hv_(i) * hv_(i));
+      acc_hom_(i) = std::sqrt(w * w + c * c) * hom_(i);
     }
     ww_ += mh2_ * work;
     wl_ += mh2_ * loss;
@@ -323,9 +325,10 @@ class ContactPropagator {
   /// tau.
   std::array<double, 3> walk_q_jet(double tau, int j) const {
     std::array<double, 3> u{0.0, 0.0, 0.0};
+    const int kept = kept_index(tau);
     for (int i = 0; i < n_; ++i) {
       double sd = 0.0, sv = 0.0;
-      mode_at(i, tau, sd, sv);
+      mode_at(i, tau, kept, sd, sv);
       const double r = user_from_modal_(j, i);
       u[0] += r * (sd * inv_omega_(i) + eta_static_(i));
       u[1] += r * sv;
@@ -339,9 +342,10 @@ class ContactPropagator {
   /// differentiating the modes' equation, eta''' = -w^2 eta' - c eta'' + g1 and
   /// eta'''' = -w^2 eta'' - c eta'''. The base acceleration there is walk_base(tau).
   void walk_q_derivatives(double tau, std::array<Vec, 5>& d) const {
+    const int kept = kept_index(tau);
     for (int i = 0; i < n_; ++i) {
       double sd = 0.0, sv = 0.0;
-      mode_at(i, tau, sd, sv);
+      mode_at(i, tau, kept, sd, sv);
       const double w = omega_(i), c = damp_(i), w2 = w * w;
       const double e2 = -w * sd - c * sv + g0_(i) + g1_(i) * tau, e3 = -w2 * sv - c * e2 + g1_(i);
       jet_[0](i) = sd * inv_omega_(i) + eta_static_(i);
@@ -420,16 +424,53 @@ class ContactPropagator {
   void modal_at(double tau) const {
     for (int i = 0; i < n_; ++i) {
       double sd = 0.0, sv = 0.0;
-      mode_at(i, tau, sd, sv);
+      mode_at(i, tau, -1, sd, sv);
       eta_(i) = sd * inv_omega_(i) + eta_static_(i);
       etad_(i) = sv;
     }
   }
   // mode i's s = (s_d, s_v) at tau within the last piece
-  void mode_at(int i, double tau, double& sd, double& sv) const {
-    const Eigen::Matrix2d e = mode_exponential(omega_(i), damp_(i), tau);
-    sd = e(0, 0) * hd_(i) + e(0, 1) * hv_(i) + p0d_(i) + g1_(i) * inv_omega_(i) * tau;
-    sv = e(1, 0) * hd_(i) + e(1, 1) * hv_(i) + p0v_(i);
+  // `kept`: where tau lies (kept_index); at the piece's start, end or kept points s comes from
+  // what the piece already holds, s(tk + d) = s(tk) + d s'(tk) for the rounding d of tau
+  void mode_at(int i, double tau, int kept, double& sd, double& sv) const {
+    if (kept < 0) {
+      const Eigen::Matrix2d e = mode_exponential(omega_(i), damp_(i), tau);
+      sd = e(0, 0) * hd_(i) + e(0, 1) * hv_(i) + p0d_(i) + g1_(i) * inv_omega_(i) * tau;
+      sv = e(1, 0) * hd_(i) + e(1, 1) * hv_(i) + p0v_(i);
+      return;
+    }
+    double tk = 0.0;
+    if (kept == 0) {
+      sd = sd0_(i);
+      sv = sv0_(i);
+    } else if (kept == kPoints) {
+      tk = h_;
+      sd = wd_(i);
+      sv = wv_(i);
+    } else {
+      tk = kept * piece_->h / kPoints;
+      const ModeStep& m =
+          piece_->steps[static_cast<std::size_t>(kept) * static_cast<std::size_t>(n_) +
+                        static_cast<std::size_t>(i)];
+      const double g = g0_(i), g1 = g1_(i), x0 = sd0_(i), v0 = sv0_(i);
+      sd = m.e(0, 0) * x0 + m.e(0, 1) * v0 + m.p1(0) * g + m.p2(0) * g1;
+      sv = m.e(1, 0) * x0 + m.e(1, 1) * v0 + m.p1(1) * g + m.p2(1) * g1;
+    }
+    const double d = tau - tk;
+    if (d != 0.0) {
+      const double w = omega_(i), dsd = w * sv;
+      const double dsv = -w * sd - damp_(i) * sv + g0_(i) + g1_(i) * tk;
+      sd += d * dsd;
+      sv += d * dsv;
+    }
+  }
+  // where tau lies in the last piece, for mode_at: its start (0), a kept point (1 to kPoints - 1),
+  // its end (kPoints), within rounding; elsewhere -1
+  int kept_index(double tau) const {
+    if (piece_ == nullptr || !(h_ > 0.0)) return -1;
+    const double k = tau * kPoints / h_, kr = std::round(k);
+    if (!(std::abs(k - kr) <= 1e-9) || kr < 0.0 || kr > kPoints) return -1;
+    return static_cast<int>(kr);
   }
 
   // a piece length's steps of the modes: at its end, then at its kept points h k / kPoints

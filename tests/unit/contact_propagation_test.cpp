@@ -686,19 +686,24 @@ TEST(FullContactWalk, DerivativesOfQAreTheExactSolutionsRates) {
     std::array<Dyn::Vec, 5> d, dm, dp;
     for (auto* a : {&d, &dm, &dp})
       for (Dyn::Vec& v : *a) v.setZero(n);
-    const double tau = 0.37 * h, e = 1e-5 * h;
-    prop.walk_q_derivatives(tau, d);
-    prop.walk_q_derivatives(tau - e, dm);
-    prop.walk_q_derivatives(tau + e, dp);
-    State xs = x;
-    prop.walk_dense(tau, xs);
-    for (int i = 0; i < n; ++i) {
-      SCOPED_TRACE("n " + std::to_string(n) + " i " + std::to_string(i));
-      EXPECT_NEAR(d[0](i), xs(1 + i), 1e-12 * std::abs(xs(1 + i)));
-      EXPECT_NEAR(d[1](i), xs(n + 2 + i), 1e-12 * d[1].cwiseAbs().maxCoeff());
-      for (std::size_t k = 1; k < 5; ++k) {
-        const double fd = (dp[k - 1](i) - dm[k - 1](i)) / (2.0 * e);
-        EXPECT_NEAR(d[k](i), fd, 1e-6 * d[k].cwiseAbs().maxCoeff()) << "derivative " << k;
+    // inside the piece; at a kept point, its start and its end, where the piece's own steps
+    // and end state give s (the neighbours at +-e are computed)
+    for (const double tau : {0.37 * h, 3.0 * h / 8.0, 0.0, h}) {
+      const double e = 1e-5 * h;
+      prop.walk_q_derivatives(tau, d);
+      prop.walk_q_derivatives(tau - e, dm);
+      prop.walk_q_derivatives(tau + e, dp);
+      State xs = x;
+      prop.walk_dense(tau, xs);
+      for (int i = 0; i < n; ++i) {
+        SCOPED_TRACE("n " + std::to_string(n) + " tau/h " + std::to_string(tau / h) + " i " +
+                     std::to_string(i));
+        EXPECT_NEAR(d[0](i), xs(1 + i), 1e-12 * std::abs(xs(1 + i)));
+        EXPECT_NEAR(d[1](i), xs(n + 2 + i), 1e-12 * d[1].cwiseAbs().maxCoeff());
+        for (std::size_t k = 1; k < 5; ++k) {
+          const double fd = (dp[k - 1](i) - dm[k - 1](i)) / (2.0 * e);
+          EXPECT_NEAR(d[k](i), fd, 1e-6 * d[k].cwiseAbs().maxCoeff()) << "derivative " << k;
+        }
       }
     }
   }
