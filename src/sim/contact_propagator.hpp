@@ -241,16 +241,11 @@ class ContactPropagator {
     const double d = h - pc.h;
     double work = 0.0, loss = 0.0;
     for (int i = 0; i < n_; ++i) {
-      const ModeStep& m = pc.steps[static_cast<std::size_t>(i)];
       const double g = g0_(i), g1 = g1_(i), x0 = sd0_(i), v0 = sv0_(i);
       const double w = omega_(i), c = damp_(i);
-      double sd = m.e(0, 0) * x0 + m.e(0, 1) * v0 + m.p1(0) * g + m.p2(0) * g1;
-      double sv = m.e(1, 0) * x0 + m.e(1, 1) * v0 + m.p1(1) * g + m.p2(1) * g1;
-      if (d != 0.0) {
-        const double dsd = w * sv, dsv = -w * sd - c * sv + g + g1 * pc.h;
-        sd += d * dsd;
-        sv += d * dsv;
-      }
+      double sd = 0.0, sv = 0.0;
+      from_start(pc.steps[static_cast<std::size_t>(i)], i, sd, sv);
+      nudge(i, pc.h, d, sd, sv);
       wd_(i) = sd;
       wv_(i) = sv;
       // the energies exactly from the ends (docs/theory.md): s_v = (s_d/w)' and the mode's
@@ -449,20 +444,26 @@ class ContactPropagator {
       sv = wv_(i);
     } else {
       tk = kept * piece_->h / kPoints;
-      const ModeStep& m =
-          piece_->steps[static_cast<std::size_t>(kept) * static_cast<std::size_t>(n_) +
-                        static_cast<std::size_t>(i)];
-      const double g = g0_(i), g1 = g1_(i), x0 = sd0_(i), v0 = sv0_(i);
-      sd = m.e(0, 0) * x0 + m.e(0, 1) * v0 + m.p1(0) * g + m.p2(0) * g1;
-      sv = m.e(1, 0) * x0 + m.e(1, 1) * v0 + m.p1(1) * g + m.p2(1) * g1;
+      from_start(piece_->steps[static_cast<std::size_t>(kept) * static_cast<std::size_t>(n_) +
+                               static_cast<std::size_t>(i)],
+                 i, sd, sv);
     }
-    const double d = tau - tk;
-    if (d != 0.0) {
-      const double w = omega_(i), dsd = w * sv;
-      const double dsv = -w * sd - damp_(i) * sv + g0_(i) + g1_(i) * tk;
-      sd += d * dsd;
-      sv += d * dsv;
-    }
+    nudge(i, tk, tau - tk, sd, sv);
+  }
+  // mode i's s at the end of its step m from the start of the current step or piece (sd0_, sv0_)
+  // under the forcing g0 + g1 tau
+  void from_start(const ModeStep& m, int i, double& sd, double& sv) const {
+    const double g = g0_(i), g1 = g1_(i), x0 = sd0_(i), v0 = sv0_(i);
+    sd = m.e(0, 0) * x0 + m.e(0, 1) * v0 + m.p1(0) * g + m.p2(0) * g1;
+    sv = m.e(1, 0) * x0 + m.e(1, 1) * v0 + m.p1(1) * g + m.p2(1) * g1;
+  }
+  // mode i's s at tk + d from s at tk: s + d s'(tk), s' = B s + (0, g0 + g1 tk), for a time off
+  // a kept one by rounding (the error O((|lambda| d)^2) is ~1e-20)
+  void nudge(int i, double tk, double d, double& sd, double& sv) const {
+    if (d == 0.0) return;
+    const double w = omega_(i), dsd = w * sv, dsv = -w * sd - damp_(i) * sv + g0_(i) + g1_(i) * tk;
+    sd += d * dsd;
+    sv += d * dsv;
   }
   // where tau lies in the last piece, for mode_at: its start (0), a kept point (1 to kPoints - 1),
   // its end (kPoints), within rounding; elsewhere -1
@@ -549,15 +550,9 @@ class ContactPropagator {
 
   void eval(const ModeStep* ms, double tau_k, double d, Vec& q, Vec& qd) const {
     for (int i = 0; i < n_; ++i) {
-      const ModeStep& m = ms[i];
-      const double g = g0_(i), g1 = g1_(i);
-      double sd = m.e(0, 0) * sd0_(i) + m.e(0, 1) * sv0_(i) + m.p1(0) * g + m.p2(0) * g1;
-      double sv = m.e(1, 0) * sd0_(i) + m.e(1, 1) * sv0_(i) + m.p1(1) * g + m.p2(1) * g1;
-      if (d != 0.0) {
-        const double w = omega_(i), dsd = w * sv, dsv = -w * sd - damp_(i) * sv + g + g1 * tau_k;
-        sd += d * dsd;
-        sv += d * dsv;
-      }
+      double sd = 0.0, sv = 0.0;
+      from_start(ms[i], i, sd, sv);
+      nudge(i, tau_k, d, sd, sv);
       eta_(i) = sd * inv_omega_(i) + eta_static_(i);
       etad_(i) = sv;
     }

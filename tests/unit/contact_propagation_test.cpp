@@ -418,6 +418,30 @@ SimulationResult run(const Body& body, const GroundMotion& m, int path, double o
 
 }  // namespace walk
 
+// The floor's reaction at tau within the propagator's last walk piece (from the state x, under the
+// base acceleration a0 + slope tau), formed as evaluate() forms it: q from the exact dense state,
+// q'' from the equations of motion, then F_I, F_J, the uplift functions and R(0)
+struct PieceReaction {
+  VectorX q;
+  Eigen::Vector2d r, uplift;
+  double moment = 0.0;
+};
+template <class Dyn, class Prop, class State>
+PieceReaction reaction_at(const Dyn& dyn, const Prop& prop, const State& x, int n,
+                          BaseAcceleration a0, BaseAcceleration slope, double tau) {
+  State xs = x;
+  prop.walk_dense(tau, xs);
+  const typename Dyn::Vec q = xs.segment(1, n), qd = xs.segment(n + 2, n);
+  const BaseAcceleration a{a0.x + slope.x * tau, a0.y + slope.y * tau};
+  typename Dyn::Vec qdd(n);
+  dyn.full_contact_acceleration(q, qd, a, qdd);
+  PieceReaction out;
+  out.q = q;
+  out.r = dyn.full_contact_reaction(qdd, a);
+  out.moment = dyn.contact_moments(q, qdd, a, out.uplift);
+  return out;
+}
+
 void compare_full_contact(const Body& body, const SimulationResult& wk, const SimulationResult& st,
                           const SimulationResult& in);
 void compare_walk_with_steps(const Body& body, const SimulationResult& wk,
@@ -558,17 +582,9 @@ TEST(FullContactWalk, ExcursionBoundsHoldAtEveryPointOfRandomPieces) {
     const auto e = prop.walk_excursion(h, ax, ay, std::abs(slope.x) / g, std::abs(slope.y) / g);
     // the functions at tau: F_I, F_J, U1, U2, the moment, then q
     auto functions = [&](double tau) {
-      State xs = x;
-      prop.walk_dense(tau, xs);
-      const Dyn::Vec q = xs.segment(1, n), qd = xs.segment(n + 2, n);
-      const BaseAcceleration a{a0.x + slope.x * tau, a0.y + slope.y * tau};
-      Dyn::Vec qdd(n);
-      dyn.full_contact_acceleration(q, qd, a, qdd);
-      const Eigen::Vector2d r = dyn.full_contact_reaction(qdd, a);
-      Eigen::Vector2d up;
-      const double moment = dyn.contact_moments(q, qdd, a, up);
+      const PieceReaction pr = reaction_at(dyn, prop, x, n, a0, slope, tau);
       VectorX f(5 + n);
-      f << r(0), r(1), up(0), up(1), moment, q;
+      f << pr.r(0), pr.r(1), pr.uplift(0), pr.uplift(1), pr.moment, pr.q;
       return f;
     };
     const VectorX f0 = functions(0.0), f1 = functions(h);
@@ -748,15 +764,8 @@ TEST(FullContactWalk, ReactionRatesAreTheRatesOfTheReactionAlongTheMotion) {
     };
     // F_I, F_J, R(0) at tau from the state, as evaluate() forms them
     auto direct = [&](double tau) {
-      State xs = x;
-      prop.walk_dense(tau, xs);
-      const Dyn::Vec q = xs.segment(1, n), qd = xs.segment(n + 2, n);
-      const BaseAcceleration a{a0.x + rate.x * tau, a0.y + rate.y * tau};
-      Dyn::Vec qdd(n);
-      dyn.full_contact_acceleration(q, qd, a, qdd);
-      const Eigen::Vector2d r = dyn.full_contact_reaction(qdd, a);
-      Eigen::Vector2d up;
-      return Eigen::Vector3d(r(0), r(1), dyn.contact_moments(q, qdd, a, up));
+      const PieceReaction pr = reaction_at(dyn, prop, x, n, a0, rate, tau);
+      return Eigen::Vector3d(pr.r(0), pr.r(1), pr.moment);
     };
     for (double f : {0.13, 0.5, 0.91}) {
       const double tau = f * h, e = 1e-5 * h;
