@@ -1656,8 +1656,8 @@ void Simulator<N, MaxN>::locate_extremes(double tp0, double h, const GuardSample
 // |f| rises to it where it is larger there (a piece's end); else it rose and fell back in
 // between, where Brent's search finds that maximum. Newton's method stops when a step is within
 // 16 bits of [lo, hi], Brent's tolerance, so |f| there is within |f''| (2^-16 (hi - lo))^2 / 2 of
-// the maximum: about five jets where Brent's search took a dozen values. Returns where |f| is
-// largest of the points tried.
+// the maximum: about three jets where Brent's search took a dozen values. Returns where it
+// ended: the maximum found, or the end |f| rises to.
 template <int N, int MaxN>
 template <class Jet>
 double Simulator<N, MaxN>::largest_near(Jet&& jet, double tau, double lo, double hi) {
