@@ -526,7 +526,6 @@ class ContactPropagator {
     return &cache_[static_cast<std::size_t>(k) * static_cast<std::size_t>(n_)];
   }
 
-  // q, q_dot at tau in the current step, from the modes' steps `ms` at tau_k = tau - d
   // the input and damping powers [W] at tau in the current step (base acceleration a), from the
   // modes' steps `ms` at tau_k = tau - d, without going back to q
   void node_powers(const ModeStep* ms, double tau_k, double d, BaseAcceleration a, double& p,
@@ -548,6 +547,7 @@ class ContactPropagator {
     dl = mh2_ * dd;
   }
 
+  // q, q_dot at tau in the current step, from the modes' steps `ms` at tau_k = tau - d
   void eval(const ModeStep* ms, double tau_k, double d, Vec& q, Vec& qd) const {
     for (int i = 0; i < n_; ++i) {
       double sd = 0.0, sv = 0.0;
