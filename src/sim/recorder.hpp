@@ -16,7 +16,7 @@ struct Observation {
   ContactMode mode = ContactMode::kFullContact;
   double theta = 0.0, theta_dot = 0.0;          // [rad], [rad/s]
   const double* q = nullptr;                    // [-] n values
-  const double* q_dot = nullptr;                // [1/s] n values
+  const double* q_dot = nullptr;                // [1/s] n values (history rows only)
   double fi = 0.0, fj = 0.0;                    // floor reaction over M g (0 in flight)
   double moment = 0.0;                          // about the c.g. projection, over M g h
   double offset = 0.0;                          // [m] horizontal offset of the base centre

@@ -267,7 +267,7 @@ class Simulator final : private GuardProbe {
   // it reports is the given body's, u = to_user_ q (docs/theory.md, "Modal coordinates")
   const Body body_;
   Mat to_user_, from_user_;  // Phi and Phi^-1 = Phi^T mu
-  mutable Vec qu_, qdu_;     // u and u_dot of the last observation
+  mutable Vec qu_, qdu_;     // u of the last observation, u_dot of the last history row
   Vec ua_, ub_;              // scratch: u at a walk's piece's start and end
   std::array<Vec, 5> qjet_;  // scratch: q and its first four derivatives in a walk's piece
   Dyn dyn_;
@@ -2521,12 +2521,9 @@ inline Observation Simulator<N, MaxN>::observation(double t, const State& x, con
   o.mode = mode_;
   o.theta = x(0);
   o.theta_dot = x(ithd());
-  if (n_ > 0) {
-    qu_.noalias() = Dyn::mv(to_user_, x.segment(iq(), n_));
-    qdu_.noalias() = Dyn::mv(to_user_, x.segment(iqd(), n_));
-  }
+  // u only: the extremes need no u_dot, which emit_row adds for a history row
+  if (n_ > 0) qu_.noalias() = Dyn::mv(to_user_, x.segment(iq(), n_));
   o.q = qu_.data();
-  o.q_dot = qdu_.data();
   o.fi = s.fi;
   o.fj = s.fj;
   o.moment = s.moment;
@@ -2569,7 +2566,9 @@ void Simulator<N, MaxN>::emit_row(double t, const State& x) {
   GuardSample s;
   evaluate(t, x, s);
   const BaseAcceleration a = motion_.at(t, event_cursor_);
-  const Observation o = observation(t, x, s);
+  Observation o = observation(t, x, s);
+  if (n_ > 0) qdu_.noalias() = Dyn::mv(to_user_, x.segment(iqd(), n_));
+  o.q_dot = qdu_.data();
   // the resultant's distance from the c.g. projection [m]: at the pivot while rocking
   double resultant = 0.0;
   if (rocking()) {
