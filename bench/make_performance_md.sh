@@ -13,6 +13,13 @@ build=${BUILD_DIR:-build/bench}
 quick=()
 [ "${1:-}" = "--quick" ] && quick=(--quick)
 py=/usr/bin/python3
+# the peers' rows need scipy and Siconos: without them the document would be written with those
+# rows missing (compare.py runs on without a peer), so stop before measuring anything
+if ! $py -c "import scipy, siconos" 2>/dev/null; then
+  echo "make_performance_md.sh: $py cannot import scipy and siconos, whose rows" \
+    "docs/performance.md keeps; install them with scripts/install-deps.sh --bench" >&2
+  exit 1
+fi
 
 if [ ! -f "$build/CMakeCache.txt" ]; then
   if [ "$build" = build/bench ]; then
