@@ -342,19 +342,22 @@ class RockingSeries {
     }
   }
 
+  // the sine and cosine terms of order j > 0
+  void sincos_term(int j) {
+    double s = 0.0, c = 0.0;
+    for (int i = 1; i <= j; ++i) {
+      const double it = dth_[i];
+      s += it * c_[j - i];
+      c -= it * s_[j - i];
+    }
+    const double inv = 1.0 / j;
+    s_[j] = s * inv;
+    c_[j] = c * inv;
+  }
+
   // the sine and cosine terms of order j, then theta's term of order j + 2
   void add_term(int j) {
-    if (j > 0) {
-      double s = 0.0, c = 0.0;
-      for (int i = 1; i <= j; ++i) {
-        const double it = dth_[i];
-        s += it * c_[j - i];
-        c -= it * s_[j - i];
-      }
-      const double inv = 1.0 / j;
-      s_[j] = s * inv;
-      c_[j] = c * inv;
-    }
+    if (j > 0) sincos_term(j);
     double a = p0_ * c_[j] + q0_ * s_[j];
     if (j > 0) a += p1_ * c_[j - 1] + q1_ * s_[j - 1];
     for (int i = 2; i <= j && i < higher_; ++i) {
@@ -389,15 +392,19 @@ class RockingSeries {
     return kSafe * std::exp(e);
   }
 
-  // the input work's series: W' = M h g theta' ((u + alpha (v - 1)) cos + ((v - 1) - alpha u) sin)
+  // the input work's series: W' = M h g theta' (a cos + b sin), a = u + alpha (v - 1) and
+  // b = (v - 1) - alpha u (times M h g). With theta' cos = sin' and theta' sin = -cos', W' =
+  // a sin' - b cos', whose term k - 1 gives W_k = sum_{i<k} (k - i) (a_i s_{k-i} - b_i c_{k-i}) /
+  // k: O(p) under a record (a and b linear), where the product of theta' with the bracket's series
+  // was O(p^2). It needs sin and cos to power p, one term past the step's.
   void work_series(int p) {
     w_[0] = x0_(2);
     if (u0_ == 0.0 && u1_ == 0.0 && v0_ == 1.0 && v1_ == 0.0 && higher_ == 0) {
-      // the floor at rest (free rocking after a record or a pulse): no power, no work; the sums
-      // below would give these zeros at O(p^2)
+      // the floor at rest (free rocking after a record or a pulse): no power, no work
       std::fill_n(w_.begin() + 1, p, 0.0);
       return;
     }
+    sincos_term(p);
     const double a0 = mhg_ * (u0_ + alpha_ * (v0_ - 1.0)), a1 = mhg_ * (u1_ + alpha_ * v1_);
     const double b0 = mhg_ * ((v0_ - 1.0) - alpha_ * u0_), b1 = mhg_ * (v1_ - alpha_ * u1_);
     // a sinusoid's terms of order 2 and up, once per step: M h g (u_i + alpha v_i) and
@@ -409,19 +416,15 @@ class RockingSeries {
       ak[m] = mhg_ * (uk_[m] + alpha_ * vk_[m]);
       bk[m] = mhg_ * (vk_[m] - alpha_ * uk_[m]);
     }
-    // r_k, k = 0..p-1: the bracket's series (sine and cosine are known to p - 1)
-    for (int k = 0; k < p; ++k) {
-      r_[k] = a0 * c_[k] + b0 * s_[k];
-      if (k > 0) r_[k] += a1 * c_[k - 1] + b1 * s_[k - 1];
-      for (int i = 2; i <= k && i < top; ++i) {
+    double kd = 0.0;  // k - 1, then k
+    for (int k = 1; k <= p; ++k) {
+      double sum = kd * (a1 * s_[k - 1] - b1 * c_[k - 1]);
+      kd += 1.0;
+      for (int i = 2; i < k && i < top; ++i) {
         const auto m = static_cast<std::size_t>(i), l = static_cast<std::size_t>(k - i);
-        r_[k] += ak[m] * c_[l] + bk[m] * s_[l];
+        sum += (k - i) * (ak[m] * s_[l] - bk[m] * c_[l]);
       }
-    }
-    for (int k = 0; k < p; ++k) {
-      double sum = 0.0;
-      for (int j = 0; j <= k; ++j) sum += dth_[j + 1] * r_[k - j];
-      w_[k + 1] = sum / (k + 1);
+      w_[k] = (a0 * s_[k] - b0 * c_[k]) + sum / kd;
     }
   }
 
@@ -447,7 +450,7 @@ class RockingSeries {
   double u0_ = 0.0, u1_ = 0.0, v0_ = 1.0, v1_ = 0.0;
   double p0_ = 0.0, p1_ = 0.0, q0_ = 0.0, q1_ = 0.0;
   // two terms beyond the step's order for the reaction's series (reaction_series)
-  std::array<double, kMaxOrder + 4> th_{}, s_{}, c_{}, r_{}, w_{};
+  std::array<double, kMaxOrder + 4> th_{}, s_{}, c_{}, w_{};
   std::array<double, kMaxOrder + 4> dth_{};  // k th_[k], formed once per term (theta_dot's)
   // a sinusoidal motion's series of u and v - 1, and k P, k Q from them; used from order 2 up to
   // higher_ - 1 (0: a linear forcing)

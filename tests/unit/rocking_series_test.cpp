@@ -311,6 +311,93 @@ TEST(RockingSeries, OneStepUnderSinusoidsMatchesAnIndependentIntegration) {
   expect_dense_matches(series, rhs, ctl, t0, t1, x0);
 }
 
+// the input work's terms of a step (RockingSeries::work_series forms them from W' = a sin' - b
+// cos') against the integral of the power's own series, M h g theta' (a cos + b sin) by Cauchy
+// products written out here, on the step's theta polynomial: every term to rounding, the last
+// included (it needs sin and cos one power past the step's), under a record and under two sinusoids
+TEST(RockingSeries, WorkTermsIntegrateThePowersSeries) {
+  using State = Eigen::Vector4d;
+  const double zeta2 = 0.4, h = 1.3, mass = 800.0, mhg = mass * h * g, t0 = 0.1;
+  auto none = [](double, const State&, State&) {};
+  const GroundMotion pulse = two_sinusoids();
+  const GroundMotion record = one_record_interval();
+  int checked = 0;
+  for (const GroundMotion* motion : {&record, &pulse}) {
+    const bool sampled = motion == &record;
+    for (double alpha : {-0.25, 0.3}) {
+      for (double rtol : {1e-6, 1e-13}) {
+        const double k = g / h / (1 + zeta2 + alpha * alpha);
+        StepControl ctl = tight_control();
+        ctl.rtol = rtol;
+        detail::RockingSeries<State> series(*motion);
+        series.set_pivot(alpha, k, mhg, g);
+        series.start(none, ctl, t0, State(0.05, -0.3, 1.5, 0.0));
+        ASSERT_EQ(series.step(none, sampled ? 0.14 : 0.5),
+                  detail::RockingSeries<State>::Status::kAccepted);
+        const int p = series.order() - 1;  // the work's highest power
+        const double* th = series.theta_coefficients();
+        const double* w = series.work_coefficients();
+        const auto n = static_cast<std::size_t>(p + 1);
+        // u = a_x/g and v - 1 = a_y/g as Taylor series at t0: the record's interval is linear; a
+        // sinusoid a sin(wt + phi) has the terms a w^j / j! sin(w t0 + phi + j pi/2)
+        std::vector<double> u(n, 0.0), v(n, 0.0);
+        if (sampled) {
+          const BaseAcceleration a0 = motion->at(t0), a1 = motion->at(0.13);
+          u[0] = a0.x / g;
+          v[0] = a0.y / g;
+          u[1] = (a1.x - a0.x) / 0.03 / g;
+          v[1] = (a1.y - a0.y) / 0.03 / g;
+        } else {
+          double fu = 3.1 / g, fv = -1.9 / g;
+          for (std::size_t j = 0; j < n; ++j) {
+            const double turn = 0.5 * std::numbers::pi * static_cast<double>(j);
+            u[j] = fu * std::sin(9.0 * t0 + 0.3 + turn);
+            v[j] = fv * std::sin(14.0 * t0 + 2.0 + turn);
+            fu *= 9.0 / static_cast<double>(j + 1);
+            fv *= 14.0 / static_cast<double>(j + 1);
+          }
+        }
+        // sin and cos of theta's polynomial, then the bracket a cos + b sin with its absolute sums
+        std::vector<double> sn(n), cs(n), r(n), r_abs(n);
+        sn[0] = std::sin(th[0]);
+        cs[0] = std::cos(th[0]);
+        for (std::size_t j = 1; j < n; ++j) {
+          double a = 0.0, b = 0.0;
+          for (std::size_t i = 1; i <= j; ++i) {
+            a += static_cast<double>(i) * th[i] * cs[j - i];
+            b -= static_cast<double>(i) * th[i] * sn[j - i];
+          }
+          sn[j] = a / static_cast<double>(j);
+          cs[j] = b / static_cast<double>(j);
+        }
+        for (std::size_t j = 0; j < n; ++j) {
+          r[j] = r_abs[j] = 0.0;
+          for (std::size_t i = 0; i <= j; ++i) {
+            const double a = mhg * (u[i] + alpha * v[i]), b = mhg * (v[i] - alpha * u[i]);
+            r[j] += a * cs[j - i] + b * sn[j - i];
+            r_abs[j] += std::abs(a * cs[j - i]) + std::abs(b * sn[j - i]);
+          }
+        }
+        EXPECT_EQ(w[0], 1.5);
+        for (std::size_t j = 0; j + 1 < n; ++j) {
+          double power = 0.0, scale = 0.0;  // the power's term j and the sum of its products' sizes
+          for (std::size_t i = 0; i <= j; ++i) {
+            const double rate = static_cast<double>(i + 1) * th[i + 1];
+            power += rate * r[j - i];
+            scale += std::abs(rate) * r_abs[j - i];
+          }
+          const double term = power / static_cast<double>(j + 1);
+          EXPECT_NEAR(w[j + 1], term, 1e-13 * scale)
+              << (sampled ? "record" : "sinusoids") << " alpha " << alpha << " rtol " << rtol
+              << " power " << j + 1 << " of " << p;
+        }
+        ++checked;
+      }
+    }
+  }
+  EXPECT_EQ(checked, 8);
+}
+
 // the reaction's enclosure over a step (reaction_range, which spares the event loop the reaction's
 // series on most steps) holds the reaction and the moment that the closed forms give on the step's
 // dense states, theta'' from the equation written out here; and it is not wider than the step's

@@ -2859,13 +2859,17 @@ def rocking_series_recurrence(P, Q, th0, om0, order):
 
 
 def rocking_work_recurrence(a, b, thc, sc, cc, order):
-    """the input work's terms W_1..W_order as src/sim/rocking_series.hpp computes them: the
-    bracket's series r_j = sum_i (a_i c_{j-i} + b_i s_{j-i}), a and b the series of M h g (u +
-    alpha (v - 1)) and M h g ((v - 1) - alpha u), then W_{k+1} = sum_j (j + 1) theta_{j+1} r_{k-j}
-    / (k + 1)"""
+    """the input work's terms W_1..W_order as src/sim/rocking_series.hpp computes them: with a and
+    b the series of M h g (u + alpha (v - 1)) and M h g ((v - 1) - alpha u), W' = theta' (a cos +
+    b sin) = a sin' - b cos' (theta' cos = sin', theta' sin = -cos'), whose term k - 1 gives
+    W_k = sum_{i<k} (k - i) (a_i s_{k-i} - b_i c_{k-i}) / k; sin and cos (known to power order - 1)
+    are carried to power order by their recurrence first"""
+    s, c = list(sc[:order]), list(cc[:order])
+    s.append(sum((i * thc[i] * c[order - i] for i in range(1, order + 1)), 0) / order)
+    c.append(-sum((i * thc[i] * s[order - i] for i in range(1, order + 1)), 0) / order)
     a, b = list(a) + [0] * order, list(b) + [0] * order
-    rr = [sum((a[i] * cc[j - i] + b[i] * sc[j - i] for i in range(j + 1)), 0) for j in range(order)]
-    return [sum(((j + 1) * thc[j + 1] * rr[kk - j] for j in range(kk + 1)), 0) / (kk + 1) for kk in range(order)]
+    return [sum(((k - i) * (a[i] * s[k - i] - b[i] * c[k - i]) for i in range(k)), 0) / k
+            for k in range(1, order + 1)]
 
 
 def rocking_reaction_recurrence(us, vs, al, gh, thc, sc, cc, order):
