@@ -2842,6 +2842,13 @@ def print_equations(gens):
             print('rigid ratio thd+/thd- =', Gn.rigid_ratio)
 
 
+def sincos_term(th, s, c, j):
+    """the terms of power j > 0 of sin and cos of theta's series th, from s' = c theta' and
+    c' = -s theta' and the lower terms in s, c"""
+    s[j] = sum((i * th[i] * c[j - i] for i in range(1, j + 1)), 0) / j
+    c[j] = -sum((i * th[i] * s[j - i] for i in range(1, j + 1)), 0) / j
+
+
 def rocking_series_recurrence(P, Q, th0, om0, order):
     """the Taylor coefficients of the rigid rocking motion by the recurrence of docs/theory.md
     (Rocking of a rigid body by its Taylor series), as src/sim/rocking_series.hpp computes them:
@@ -2851,8 +2858,7 @@ def rocking_series_recurrence(P, Q, th0, om0, order):
     th, s, c = [th0, om0] + [0] * order, [sp.sin(th0)] + [0] * order, [sp.cos(th0)] + [0] * order
     for j in range(order):
         if j > 0:
-            s[j] = sum((i * th[i] * c[j - i] for i in range(1, j + 1)), 0) / j
-            c[j] = -sum((i * th[i] * s[j - i] for i in range(1, j + 1)), 0) / j
+            sincos_term(th, s, c, j)
         a = sum((P[i] * c[j - i] + Q[i] * s[j - i] for i in range(j + 1)), 0)
         th[j + 2] = a / ((j + 1) * (j + 2))
     return th, s, c
@@ -2864,9 +2870,8 @@ def rocking_work_recurrence(a, b, thc, sc, cc, order):
     b sin) = a sin' - b cos' (theta' cos = sin', theta' sin = -cos'), whose term k - 1 gives
     W_k = sum_{i<k} (k - i) (a_i s_{k-i} - b_i c_{k-i}) / k; sin and cos (known to power order - 1)
     are carried to power order by their recurrence first"""
-    s, c = list(sc[:order]), list(cc[:order])
-    s.append(sum((i * thc[i] * c[order - i] for i in range(1, order + 1)), 0) / order)
-    c.append(-sum((i * thc[i] * s[order - i] for i in range(1, order + 1)), 0) / order)
+    s, c = list(sc[:order]) + [0], list(cc[:order]) + [0]
+    sincos_term(thc, s, c, order)
     a, b = list(a) + [0] * order, list(b) + [0] * order
     return [sum(((k - i) * (a[i] * s[k - i] - b[i] * c[k - i]) for i in range(k)), 0) / k
             for k in range(1, order + 1)]
