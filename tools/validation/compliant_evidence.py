@@ -118,7 +118,8 @@ def conclusion(names, by, closest, ref):
            for n in names for mo in MODELS}
     cost = [med[(n, ref)] / med[(n, "paper")] for n in names]
     growth = [med[(n, ref)] / med[(n, MODELS[2])] for n in names]
-    short = [half_bounces(n)[-1][1] for n in paper if half_bounces(n) is not None]
+    bounces = {n: half_bounces(n) for n in names}
+    short = [bounces[n][-1][1] for n in paper if bounces[n] is not None]
     text = ("The default stays `paper` (docs/theory.md §22): " if 2 * len(paper) > len(names)
             else "")
     text += (f"at ω_v/p = {RATIOS[-1]:g} `paper` is the closest impulsive law for {len(paper)} of "
@@ -129,7 +130,7 @@ def conclusion(names, by, closest, ref):
              if differ == 0 else
              f", and {differ} outcomes of the closest law differ from the compliant contact's")
     for n in others:
-        hb = half_bounces(n)
+        hb = bounces[n]
         where = (f", whose half bounce is {hb[-1][1]:.2g} of its shortest modal period,"
                  if hb is not None else "")
         text += (f"; the {n}{where} is closer to `{closest[n][0]}`: a body whose modes are "
