@@ -403,6 +403,41 @@ class ContactPropagator {
     return e;
   }
 
+  /// Bounds on the values themselves over the whole last piece, from the modes' bounds alone (no
+  /// value at its ends): |F_I| <= fi, fj_lo <= F_J <= fj_hi, |R(0)| <= moment, in evaluate()'s
+  /// units. A piece within them, with every guard and extreme clear, needs no evaluation at all
+  /// (docs/theory.md, "Walking the record"). `ax`: max |a_x|; `ay_lo`, `ay_hi`: a_y's range.
+  struct Reach {
+    double fi = 0.0, fj_lo = 0.0, fj_hi = 0.0, moment = 0.0;
+  };
+  Reach walk_reach(double ax, double ay_lo, double ay_hi) const {
+    double px2 = 0.0, py2 = 0.0, b2 = 0.0, px0 = 0.0, py0 = 0.0;
+    for (int i = 0; i < n_; ++i) {
+      const double e0 = bound_[0](i), e2 = bound_[2](i);  // |eta_i|, |eta_i''|
+      px2 += std::abs(pxm_(i)) * e2;
+      py2 += std::abs(pym_(i)) * e2;
+      b2 += std::abs(betam_(i) - pxm_(i)) * e2;  // b(0) = beta - psi_x
+      px0 += std::abs(pxm_(i)) * e0;
+      py0 += std::abs(pym_(i)) * e0;
+    }
+    const double gh = dyn_.g_over_h();
+    Reach r;
+    r.fi = ax + px2 / gh;
+    r.fj_lo = ay_lo - py2 / gh;
+    r.fj_hi = ay_hi + py2 / gh;
+    // R(0) = (b(0) + Gamma^T q).q''/(g/h) + psi_x.q a_y - (1 + psi_y.q) a_x, term by term
+    const double quad = gamma_norm_ * bound_[0].norm() * bound_[2].norm();
+    r.moment =
+        (b2 + quad) / gh + px0 * std::max(std::abs(ay_lo), std::abs(ay_hi)) + (1.0 + py0) * ax;
+    return r;
+  }
+  /// A bound on |u_j| over the whole last piece.
+  double walk_q_reach(int j) const {
+    double e = 0.0;
+    for (int i = 0; i < n_; ++i) e += std::abs(user_from_modal_(j, i)) * bound_[0](i);
+    return e;
+  }
+
   /// A bound on the excursion of u_j from its chord over any part of length w of the last piece.
   double walk_q_excursion(int j, double w) const {
     const double w8 = 0.125 * w * w;
@@ -713,6 +748,11 @@ class ContactPropagator<0, MaxN, State> {
   void output_basis(const Mat&) {}
   Excursion walk_excursion(double, double, double, double, double) const { return {}; }
   double walk_q_excursion(int, double) const { return 0.0; }
+  struct Reach {
+    double fi = 0.0, fj_lo = 0.0, fj_hi = 0.0, moment = 0.0;
+  };
+  Reach walk_reach(double, double, double) const { return {}; }
+  double walk_q_reach(int) const { return 0.0; }
   double t0() const { return 0.0; }
   double t1() const { return 0.0; }
   const State& x0() const { return x_; }

@@ -40,6 +40,11 @@ class Recorder {
   void observe_deformation(int j, double abs_q) {
     res_.extremes.max_abs_q(j) = std::max(res_.extremes.max_abs_q(j), abs_q);
   }
+  /// Folds the cumulative input work and damping loss [J] of an instant whose other quantities are
+  /// known not to raise an extreme.
+  void observe_energy(double input_work, double damping_loss) {
+    energy_scale_ = std::max({energy_scale_, std::abs(input_work), std::abs(damping_loss)});
+  }
   /// Appends one history row.
   void row(const Observation& o, BaseAcceleration base, double kinetic, double potential,
            double resultant, double impact_loss);

@@ -191,6 +191,7 @@ class Simulator final : private GuardProbe {
   using Excursion = typename ContactPropagator<N, MaxN, State>::Excursion;
   Excursion walk_excursion(double w) const;
   bool guards_clear(const GuardSample& sa, const GuardSample& sb, const Excursion& e) const;
+  bool walk_quiet(BaseAcceleration a0, BaseAcceleration slope, double h) const;
   int walk_search(double tp0, double a, double b, const GuardSample& sa, const GuardSample& sb,
                   int depth, double& a_out, double& b_out);
   void emit_walk_rows(double tp0, double tp1);
@@ -1415,6 +1416,7 @@ bool Simulator<N, MaxN>::advance_walk(double& t, State& x) {
   GuardSample& sa = samples_buf_[0];
   GuardSample& sb = samples_buf_[1];
   sa = s0_;
+  bool sa_due = false;  // sa is not yet evaluated at the piece's start (after a quiet piece)
   const double cap = prop_.walk_cap();
   for (; i + 1 < ts.size() && ts[i + 1] <= t_end_; ++i) {
     if (!count_step(t)) {
@@ -1435,6 +1437,21 @@ bool Simulator<N, MaxN>::advance_walk(double& t, State& x) {
       prop_.walk_piece(h, a0, slope);
       xe_ = xw_;
       prop_.walk_state(xe_);
+      if (walk_quiet(a0, slope, h)) {
+        // no guard near zero and no extreme within reach anywhere in the piece: its end is not
+        // evaluated (the energies' scale still follows the ends)
+        rec_.observe_energy(xe_(iw()), xe_(id()));
+        emit_walk_rows(tp0, tp1);
+        xw_ = xe_;
+        sa_due = true;
+        t = tp1;
+        if (opt_.progress) opt_.progress->store(t, std::memory_order_relaxed);
+        continue;
+      }
+      if (sa_due) {
+        evaluate(tp0, xw_, sa);
+        sa_due = false;
+      }
       evaluate(tp1, xe_, sb);
       // the guards' excursion between the piece's ends
       walk_forcing_ = {std::max(std::abs(a0.x), std::abs(a0.x + slope.x * h)) / g,
@@ -1481,6 +1498,7 @@ bool Simulator<N, MaxN>::advance_walk(double& t, State& x) {
   }
   scan_index_ = i;
   x = xw_;
+  if (sa_due) evaluate(t, xw_, sa);
   s0_ = sa;
   release_latches(s0_);
   prop_.start(t, x);
@@ -1510,6 +1528,34 @@ bool Simulator<N, MaxN>::guards_clear(const GuardSample& sa, const GuardSample& 
   return clear(kSlot<m, Guard::kUpliftEdge1>, e.u1) && clear(kSlot<m, Guard::kUpliftEdge2>, e.u2) &&
          clear(kSlot<m, Guard::kLiftOff>, e.fj) &&
          (!std::isfinite(mu) || clear(kSlot<m, Guard::kFrictionLimit>, mu * e.fj + e.fi));
+}
+
+// the walk's last piece (from tp0, of length h, under a0 + slope tau) can neither cross a
+// full-contact guard nor raise an extreme anywhere: the bounds on the values themselves over the
+// piece (ContactPropagator::walk_reach) keep every guard above zero, U_k = R(0) -+ alpha_k F_J >=
+// alpha_k min F_J - max|R(0)|, and every reported quantity within its extreme so far
+template <int N, int MaxN>
+bool Simulator<N, MaxN>::walk_quiet(BaseAcceleration a0, BaseAcceleration slope, double h) const {
+  const double g = dyn_.g();
+  const double ax = std::max(std::abs(a0.x), std::abs(a0.x + slope.x * h)) / g;
+  const double ay0 = 1.0 + a0.y / g, ay1 = 1.0 + (a0.y + slope.y * h) / g;
+  const auto r = prop_.walk_reach(ax, std::min(ay0, ay1), std::max(ay0, ay1));
+  const double margin = 1e-12 * (1.0 + r.fj_hi + r.moment);
+  if (!(r.fj_lo > margin && dyn_.alpha1() * r.fj_lo - r.moment > margin &&
+        dyn_.alpha2() * r.fj_lo - r.moment > margin))
+    return false;
+  const double mu = opt_.friction_coefficient;
+  if (std::isfinite(mu) && !(mu * r.fj_lo - r.fi > margin)) return false;
+  const Extremes& ex = res_.extremes;
+  const double mg = dyn_.mass() * g;
+  if (mg * r.fi > ex.max_base_shear || mg * dyn_.height() * r.moment > ex.max_overturning_moment)
+    return false;
+  if (r.fj_hi >= kPressingFraction &&
+      !(r.fj_lo >= kPressingFraction && r.fi / r.fj_lo <= ex.max_friction_demand))
+    return false;
+  for (int j = 0; j < n_; ++j)
+    if (prop_.walk_q_reach(j) > ex.max_abs_q(j)) return false;
+  return true;
 }
 
 // [a, b] of the walk's piece from tp0 (guards sa, sb at its ends, every one > 0 at a), halved

@@ -607,6 +607,68 @@ TEST(FullContactWalk, ExcursionBoundsHoldAtEveryPointOfRandomPieces) {
   EXPECT_GT(tight, 40 * 6 / 2);
 }
 
+TEST(FullContactWalk, ReachBoundsHoldAtEveryPointOfRandomPieces) {
+  // the claim that lets the walk skip a piece's evaluation (Simulator::walk_quiet): over a piece,
+  // |F_I|, F_J, |R(0)| and each |q_j| stay within the bounds on the values themselves, and the
+  // uplift functions above alpha_k min F_J - max|R(0)|. The bodies, states and forcing of the
+  // excursion test; the functions by Dynamics at 4001 points of the exact solution.
+  using Dyn = Dynamics<Eigen::Dynamic, 16>;
+  using State = Eigen::Matrix<double, Eigen::Dynamic, 1, Eigen::ColMajor, 64, 1>;
+  std::mt19937 rng(78u);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  int tight = 0, checks = 0;
+  for (int trial = 0; trial < 40; ++trial) {
+    const int n = 1 + trial % 3;
+    std::vector<double> hz;
+    for (int i = 0; i < n; ++i) hz.push_back(std::pow(10.0, 0.3 + 2.4 * (0.5 + 0.5 * u(rng))));
+    std::sort(hz.begin(), hz.end());
+    BodyParameters p = test::random_coupled(hz, 600u + static_cast<unsigned>(trial), 0.02).params();
+    p.damping.kind = DampingKind::kModal;
+    p.damping.modal_ratios = VectorX::Constant(n, 0.5 * (0.5 + 0.5 * u(rng)) * 0.2);
+    const Body body(p);
+    const Dyn dyn(body);
+    const GroundMotion motion = random_record(1u, 0.1, 1.0, true);
+    detail::ContactPropagator<Eigen::Dynamic, 16, State> prop(dyn, motion, 4, 0.01, true);
+    ASSERT_TRUE(prop.available());
+    State x = State::Zero(2 * n + 11);
+    const VectorX q0 = body.static_deformation();
+    for (int i = 0; i < n; ++i) {
+      x(1 + i) = q0(i) * (1.0 + 0.5 * u(rng));
+      x(n + 2 + i) = 0.05 * u(rng) * std::abs(q0(i)) * 2.0 * std::numbers::pi *
+                     hz[static_cast<std::size_t>(i)];
+    }
+    const double h = 0.002 + 0.018 * (0.5 + 0.5 * u(rng));
+    const BaseAcceleration a0{0.3 * g * u(rng), 0.2 * g * u(rng)};
+    const BaseAcceleration slope{20.0 * g * u(rng), 10.0 * g * u(rng)};
+    prop.walk_start(x);
+    prop.walk_piece(h, a0, slope, false);
+    const double ax = std::max(std::abs(a0.x), std::abs(a0.x + slope.x * h)) / g;
+    const double ay0 = 1.0 + a0.y / g, ay1 = 1.0 + (a0.y + slope.y * h) / g;
+    const auto r = prop.walk_reach(ax, std::min(ay0, ay1), std::max(ay0, ay1));
+    // the largest |F_I|, F_J, -F_J, |R(0)|, -U1, -U2 and |q_j| over the piece, and their bounds
+    VectorX worst = VectorX::Constant(6 + n, -std::numeric_limits<double>::infinity());
+    VectorX bound(6 + n);
+    bound << r.fi, r.fj_hi, -r.fj_lo, r.moment, r.moment - body.alpha1() * r.fj_lo,
+        r.moment - body.alpha2() * r.fj_lo, VectorX::Zero(n);
+    for (int j = 0; j < n; ++j) bound(6 + j) = prop.walk_q_reach(j);
+    for (int k = 0; k <= 4000; ++k) {
+      const PieceReaction pr = reaction_at(dyn, prop, x, n, a0, slope, h * k / 4000.0);
+      VectorX f(6 + n);
+      f << std::abs(pr.r(0)), pr.r(1), -pr.r(1), std::abs(pr.moment), -pr.uplift(0), -pr.uplift(1),
+          pr.q.cwiseAbs();
+      worst = worst.cwiseMax(f);
+    }
+    SCOPED_TRACE("trial " + std::to_string(trial));
+    for (int j = 0; j < 6 + n; ++j) {
+      EXPECT_LE(worst(j), bound(j) + 1e-9 * (1.0 + std::abs(bound(j)))) << "function " << j;
+      // not vacuous: the value's reach within twice its true one (about the forcing's level)
+      ++checks;
+      if (std::abs(bound(j)) < 2.0 * std::abs(worst(j)) + 1e-3) ++tight;
+    }
+  }
+  EXPECT_GT(tight, checks / 2);
+}
+
 TEST(FullContactWalk, StiffModesWalkedAWholeIntervalAtATimeMatchTheSteppedPath) {
   // modes up to 500 Hz: 31 rad of the fastest mode's phase per 10 ms piece of the walk (20 steps
   // of the stepped path, whose phase cap is 1.5 rad). The guards' bound then takes the fast

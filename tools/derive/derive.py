@@ -920,6 +920,11 @@ def walk_bound_checks(n=2):
         - (py.T * d(q, 2))[0] * ax - 2 * (py.T * d(q, 1))[0] * ax1
     out['walk_moment_curvature'] = is_zero(sp.expand(d(sp.Matrix([R]), 2)[0] - R2))
     FI = ax + (px.T * d(q, 2))[0] / gh
+    # the moment about a point alpha is R(0) - alpha F_J, so U1 = R(-alpha1) = R(0) + alpha1 F_J and
+    # U2 = -R(alpha2) = alpha2 F_J - R(0): bounds on |R(0)| and F_J bound both uplift functions
+    # (Simulator::walk_quiet)
+    FJ = ay + (py.T * d(q, 2))[0] / gh
+    out['walk_uplift_from_moment'] = is_zero(sp.expand(R - (R.subs(al, 0) - al * FJ)))
     out['walk_reaction_curvature'] = is_zero(sp.expand(d(sp.Matrix([FI]), 2)[0] - (px.T * d(q, 4))[0] / gh))
     # the first derivatives that the search for the extremes uses (Dynamics::full_contact_reaction_rates)
     R1 = (b.T * d(q, 3) + d(q, 1).T * Gam * d(q, 2))[0] / gh + (px.T * d(q, 1))[0] * ay \
