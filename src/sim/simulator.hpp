@@ -1399,7 +1399,8 @@ bool Simulator<N, MaxN>::can_walk(double t) const {
 // positive for every guard no crossing lies in the piece; else the piece is halved until the
 // bound clears or a guard is found <= 0, and the stepped propagation locates the crossing there.
 // The extremes are located the same way: a piece whose bound could raise one is searched
-// (locate_extremes).
+// (locate_extremes). A quiet piece (walk_quiet: bounds on the values themselves clear every guard
+// and extreme) is not evaluated at its end at all.
 template <int N, int MaxN>
 bool Simulator<N, MaxN>::advance_walk(double& t, State& x) {
   const std::vector<double>& ts = motion_.times();
