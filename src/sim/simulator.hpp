@@ -1533,8 +1533,9 @@ bool Simulator<N, MaxN>::guards_clear(const GuardSample& sa, const GuardSample& 
 
 // the walk's last piece (from tp0, of length h, under a0 + slope tau) can neither cross a
 // full-contact guard nor raise an extreme anywhere: the bounds on the values themselves over the
-// piece (ContactPropagator::walk_reach) keep every guard above zero, U_k = R(0) -+ alpha_k F_J >=
-// alpha_k min F_J - max|R(0)|, and every reported quantity within its extreme so far
+// piece (ContactPropagator::walk_reach) keep every guard above zero (U_1 = R(0) + alpha_1 F_J and
+// U_2 = alpha_2 F_J - R(0) are >= alpha_k min F_J - max|R(0)|), and every reported quantity
+// within its extreme so far
 template <int N, int MaxN>
 bool Simulator<N, MaxN>::walk_quiet(BaseAcceleration a0, BaseAcceleration slope, double h) const {
   const double g = dyn_.g();
