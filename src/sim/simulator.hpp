@@ -191,7 +191,11 @@ class Simulator final : private GuardProbe {
   using Excursion = typename ContactPropagator<N, MaxN, State>::Excursion;
   Excursion walk_excursion(double w) const;
   bool guards_clear(const GuardSample& sa, const GuardSample& sb, const Excursion& e) const;
-  bool walk_quiet(BaseAcceleration a0, BaseAcceleration slope, double h) const;
+  bool walk_quiet(double ax, double ay0, double ay1) const;
+  struct ReactionReach {
+    bool shear = false, moment = false, demand = false;
+  };
+  ReactionReach reaction_reach(double fi_top, double moment_top, double fj_lo, double fj_hi) const;
   int walk_search(double tp0, double a, double b, const GuardSample& sa, const GuardSample& sb,
                   int depth, double& a_out, double& b_out);
   void emit_walk_rows(double tp0, double tp1);
@@ -1319,10 +1323,9 @@ void Simulator<N, MaxN>::series_extremes(double t0, double tau_end, bool event,
   // the reaction's enclosure over the step first (O(order)): where it keeps the shear, the moment
   // and the friction demand within their extremes so far, as on most steps, its series is not
   // needed
-  const double fi_abs = std::max(std::abs(range.fi_lo), std::abs(range.fi_hi));
-  if (mg * fi_abs > ex.max_base_shear || mgh * range.moment_abs > ex.max_overturning_moment ||
-      !(range.fj_hi < kPressingFraction ||
-        (range.fj_lo >= kPressingFraction && fi_abs / range.fj_lo <= r))) {
+  const ReactionReach reach = reaction_reach(std::max(std::abs(range.fi_lo), std::abs(range.fi_hi)),
+                                             range.moment_abs, range.fj_lo, range.fj_hi);
+  if (reach.shear || reach.moment || reach.demand) {
     if (!reaction) {
       reaction_polynomials(series_integ_.t1() - series_integ_.t0());
       reaction = true;
@@ -1438,7 +1441,10 @@ bool Simulator<N, MaxN>::advance_walk(double& t, State& x) {
       prop_.walk_piece(h, a0, slope);
       xe_ = xw_;
       prop_.walk_state(xe_);
-      if (walk_quiet(a0, slope, h)) {
+      // the forcing over the piece (over g; a_y = 1 + Y''/g): max |a_x|, a_y at its ends
+      const double ax = std::max(std::abs(a0.x), std::abs(a0.x + slope.x * h)) / g;
+      const double ay0 = 1.0 + a0.y / g, ay1 = 1.0 + (a0.y + slope.y * h) / g;
+      if (walk_quiet(ax, ay0, ay1)) {
         // no guard near zero and no extreme within reach anywhere in the piece: its end is not
         // evaluated (the energies' scale still follows the ends)
         rec_.observe_energy(xe_(iw()), xe_(id()));
@@ -1455,9 +1461,8 @@ bool Simulator<N, MaxN>::advance_walk(double& t, State& x) {
       }
       evaluate(tp1, xe_, sb);
       // the guards' excursion between the piece's ends
-      walk_forcing_ = {std::max(std::abs(a0.x), std::abs(a0.x + slope.x * h)) / g,
-                       std::max(std::abs(1.0 + a0.y / g), std::abs(1.0 + (a0.y + slope.y * h) / g)),
-                       std::abs(slope.x) / g, std::abs(slope.y) / g};
+      walk_forcing_ = {ax, std::max(std::abs(ay0), std::abs(ay1)), std::abs(slope.x) / g,
+                       std::abs(slope.y) / g};
       const Excursion c = walk_excursion(h);
       if (!guards_clear(sa, sb, c)) {
         // a crossing may lie in this piece: halve it until the bound clears every part or a
@@ -1531,16 +1536,13 @@ bool Simulator<N, MaxN>::guards_clear(const GuardSample& sa, const GuardSample& 
          (!std::isfinite(mu) || clear(kSlot<m, Guard::kFrictionLimit>, mu * e.fj + e.fi));
 }
 
-// the walk's last piece (from tp0, of length h, under a0 + slope tau) can neither cross a
+// the walk's last piece (max |a_x| = ax, a_y from ay0 to ay1, over g) can neither cross a
 // full-contact guard nor raise an extreme anywhere: the bounds on the values themselves over the
 // piece (ContactPropagator::walk_reach) keep every guard above zero (U_1 = R(0) + alpha_1 F_J and
 // U_2 = alpha_2 F_J - R(0) are >= alpha_k min F_J - max|R(0)|), and every reported quantity
 // within its extreme so far
 template <int N, int MaxN>
-bool Simulator<N, MaxN>::walk_quiet(BaseAcceleration a0, BaseAcceleration slope, double h) const {
-  const double g = dyn_.g();
-  const double ax = std::max(std::abs(a0.x), std::abs(a0.x + slope.x * h)) / g;
-  const double ay0 = 1.0 + a0.y / g, ay1 = 1.0 + (a0.y + slope.y * h) / g;
+bool Simulator<N, MaxN>::walk_quiet(double ax, double ay0, double ay1) const {
   const auto r = prop_.walk_reach(ax, std::min(ay0, ay1), std::max(ay0, ay1));
   const double margin = 1e-12 * (1.0 + r.fj_hi + r.moment);
   if (!(r.fj_lo > margin && dyn_.alpha1() * r.fj_lo - r.moment > margin &&
@@ -1548,16 +1550,28 @@ bool Simulator<N, MaxN>::walk_quiet(BaseAcceleration a0, BaseAcceleration slope,
     return false;
   const double mu = opt_.friction_coefficient;
   if (std::isfinite(mu) && !(mu * r.fj_lo - r.fi > margin)) return false;
+  const ReactionReach reach = reaction_reach(r.fi, r.moment, r.fj_lo, r.fj_hi);
+  if (reach.shear || reach.moment || reach.demand) return false;
   const Extremes& ex = res_.extremes;
-  const double mg = dyn_.mass() * g;
-  if (mg * r.fi > ex.max_base_shear || mg * dyn_.height() * r.moment > ex.max_overturning_moment)
-    return false;
-  if (r.fj_hi >= kPressingFraction &&
-      !(r.fj_lo >= kPressingFraction && r.fi / r.fj_lo <= ex.max_friction_demand))
-    return false;
   for (int j = 0; j < n_; ++j)
     if (prop_.walk_q_reach(j) > ex.max_abs_q(j)) return false;
   return true;
+}
+
+// which reported reaction quantities (the shear, the overturning moment, the friction demand as
+// Recorder::observe forms it) could exceed their extremes so far, for values within |F_I| <=
+// fi_top, |R(0)| <= moment_top and fj_lo <= F_J <= fj_hi (evaluate()'s units)
+template <int N, int MaxN>
+typename Simulator<N, MaxN>::ReactionReach Simulator<N, MaxN>::reaction_reach(double fi_top,
+                                                                              double moment_top,
+                                                                              double fj_lo,
+                                                                              double fj_hi) const {
+  const Extremes& ex = res_.extremes;
+  const double mg = dyn_.mass() * dyn_.g();
+  return {mg * fi_top > ex.max_base_shear,
+          mg * dyn_.height() * moment_top > ex.max_overturning_moment,
+          fj_hi >= kPressingFraction &&
+              !(fj_lo >= kPressingFraction && fi_top / fj_lo <= ex.max_friction_demand)};
 }
 
 // [a, b] of the walk's piece from tp0 (guards sa, sb at its ends, every one > 0 at a), halved
@@ -1619,7 +1633,6 @@ template <int N, int MaxN>
 void Simulator<N, MaxN>::locate_extremes(double tp0, double h, const GuardSample& sa,
                                          const GuardSample& sb, const Excursion& e) {
   const Extremes& ex = res_.extremes;
-  const double mg = dyn_.mass() * dyn_.g(), mgh = mg * dyn_.height();
   // which quantities might exceed their extreme within the piece: -1 none, j < n: q_j,
   // n: shear, n + 1: moment, n + 2: friction demand
   std::vector<int>& wanted = wanted_;
@@ -1630,16 +1643,13 @@ void Simulator<N, MaxN>::locate_extremes(double tp0, double h, const GuardSample
     const double top = std::max(std::abs(ua_(j)), std::abs(ub_(j))) + prop_.walk_q_excursion(j, h);
     if (top > ex.max_abs_q(j)) wanted[static_cast<std::size_t>(count++)] = j;
   }
-  const double fi_top = std::max(std::abs(sa.fi), std::abs(sb.fi)) + e.fi;
-  if (mg * fi_top > ex.max_base_shear) wanted[static_cast<std::size_t>(count++)] = n_;
-  if (mgh * (std::max(std::abs(sa.moment), std::abs(sb.moment)) + e.moment) >
-      ex.max_overturning_moment)
-    wanted[static_cast<std::size_t>(count++)] = n_ + 1;
-  const double fj_lo = std::min(sa.fj, sb.fj) - e.fj;
-  const double fj_hi = std::max(sa.fj, sb.fj) + e.fj;
-  if (fj_hi >= kPressingFraction &&
-      !(fj_lo >= kPressingFraction && fi_top / fj_lo <= ex.max_friction_demand))
-    wanted[static_cast<std::size_t>(count++)] = n_ + 2;
+  const ReactionReach reach =
+      reaction_reach(std::max(std::abs(sa.fi), std::abs(sb.fi)) + e.fi,
+                     std::max(std::abs(sa.moment), std::abs(sb.moment)) + e.moment,
+                     std::min(sa.fj, sb.fj) - e.fj, std::max(sa.fj, sb.fj) + e.fj);
+  if (reach.shear) wanted[static_cast<std::size_t>(count++)] = n_;
+  if (reach.moment) wanted[static_cast<std::size_t>(count++)] = n_ + 1;
+  if (reach.demand) wanted[static_cast<std::size_t>(count++)] = n_ + 2;
   if (count == 0) return;
   // the state at tau in the piece, and the guards where a reaction's extreme is sought (they
   // come after the deformations in `wanted`), observed on the way
