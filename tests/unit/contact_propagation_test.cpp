@@ -542,41 +542,83 @@ TEST(FullContactWalk, ClosedFormExponentialOfAModeIsTheTaylorStepsAndPadesOne) {
   }
 }
 
-TEST(FullContactWalk, ExcursionBoundsHoldAtEveryPointOfRandomPieces) {
-  // the walk's claim itself: over a piece, each full-contact function (floor reaction, uplift
-  // functions, moment) and each q_j stays within the bound of its chord between the piece's ends.
-  // Random coupled bodies (slow to stiff modes), random states and linear forcing; the functions
-  // by Dynamics at 4001 points of the exact solution.
+// A random piece of the walk, for the tests of its bounds: a coupled body of n modes between 2 Hz
+// and 500 Hz (random_coupled's, seeded by body_seed) with modal damping up to 10 %, a state about
+// its static deflection, and a linear forcing over a piece of 2 to 20 ms, all drawn from rng.
+struct RandomPiece {
   using Dyn = Dynamics<Eigen::Dynamic, 16>;
   using State = Eigen::Matrix<double, Eigen::Dynamic, 1, Eigen::ColMajor, 64, 1>;
-  std::mt19937 rng(77u);
-  std::uniform_real_distribution<double> u(-1.0, 1.0);
-  int tight = 0;
-  for (int trial = 0; trial < 40; ++trial) {
-    const int n = 1 + trial % 3;
-    std::vector<double> hz;
-    for (int i = 0; i < n; ++i) hz.push_back(std::pow(10.0, 0.3 + 2.4 * (0.5 + 0.5 * u(rng))));
-    std::sort(hz.begin(), hz.end());
-    BodyParameters p = test::random_coupled(hz, 500u + static_cast<unsigned>(trial), 0.02).params();
-    p.damping.kind = DampingKind::kModal;
-    p.damping.modal_ratios = VectorX::Constant(n, 0.5 * (0.5 + 0.5 * u(rng)) * 0.2);
-    const Body body(p);
-    const Dyn dyn(body);
-    const GroundMotion motion = random_record(1u, 0.1, 1.0, true);
-    detail::ContactPropagator<Eigen::Dynamic, 16, State> prop(dyn, motion, 4, 0.01, true);
-    ASSERT_TRUE(prop.available());
-    State x = State::Zero(2 * n + 11);
+
+  RandomPiece(int modes, unsigned body_seed, std::mt19937& rng)
+      : n(modes),
+        hz(frequencies(modes, rng)),
+        body(damped(hz, body_seed, rng)),
+        dyn(body),
+        motion(random_record(1u, 0.1, 1.0, true)),
+        prop(dyn, motion, 4, 0.01, true),
+        x(State::Zero(2 * modes + 11)) {
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
     const VectorX q0 = body.static_deformation();
     for (int i = 0; i < n; ++i) {
       x(1 + i) = q0(i) * (1.0 + 0.5 * u(rng));
       x(n + 2 + i) = 0.05 * u(rng) * std::abs(q0(i)) * 2.0 * std::numbers::pi *
                      hz[static_cast<std::size_t>(i)];
     }
-    const double h = 0.002 + 0.018 * (0.5 + 0.5 * u(rng));
-    const BaseAcceleration a0{0.3 * g * u(rng), 0.2 * g * u(rng)};
-    const BaseAcceleration slope{20.0 * g * u(rng), 10.0 * g * u(rng)};
+    h = 0.002 + 0.018 * (0.5 + 0.5 * u(rng));
+    a0 = {0.3 * g * u(rng), 0.2 * g * u(rng)};
+    slope = {20.0 * g * u(rng), 10.0 * g * u(rng)};
+  }
+  /// The propagator's piece from x over h under a0 + slope tau.
+  void walk() {
     prop.walk_start(x);
     prop.walk_piece(h, a0, slope, false);
+  }
+
+  int n;
+  std::vector<double> hz;
+  Body body;
+  Dyn dyn;
+  GroundMotion motion;
+  detail::ContactPropagator<Eigen::Dynamic, 16, State> prop;
+  State x;
+  double h = 0.0;
+  BaseAcceleration a0, slope;
+
+ private:
+  static std::vector<double> frequencies(int n, std::mt19937& rng) {
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    std::vector<double> hz;
+    for (int i = 0; i < n; ++i) hz.push_back(std::pow(10.0, 0.3 + 2.4 * (0.5 + 0.5 * u(rng))));
+    std::sort(hz.begin(), hz.end());
+    return hz;
+  }
+  static Body damped(const std::vector<double>& hz, unsigned seed, std::mt19937& rng) {
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    BodyParameters p = test::random_coupled(hz, seed, 0.02).params();
+    p.damping.kind = DampingKind::kModal;
+    p.damping.modal_ratios =
+        VectorX::Constant(static_cast<Eigen::Index>(hz.size()), 0.5 * (0.5 + 0.5 * u(rng)) * 0.2);
+    return Body(p);
+  }
+};
+
+TEST(FullContactWalk, ExcursionBoundsHoldAtEveryPointOfRandomPieces) {
+  // the walk's claim itself: over a piece, each full-contact function (floor reaction, uplift
+  // functions, moment) and each q_j stays within the bound of its chord between the piece's ends.
+  // Random coupled bodies (slow to stiff modes), random states and linear forcing; the functions
+  // by Dynamics at 4001 points of the exact solution.
+  std::mt19937 rng(77u);
+  int tight = 0;
+  for (int trial = 0; trial < 40; ++trial) {
+    const int n = 1 + trial % 3;
+    RandomPiece piece(n, 500u + static_cast<unsigned>(trial), rng);
+    ASSERT_TRUE(piece.prop.available());
+    piece.walk();
+    const RandomPiece::Dyn& dyn = piece.dyn;
+    const auto& prop = piece.prop;
+    const RandomPiece::State& x = piece.x;
+    const double h = piece.h;
+    const BaseAcceleration a0 = piece.a0, slope = piece.slope;
     const double ax = std::max(std::abs(a0.x), std::abs(a0.x + slope.x * h)) / g;
     const double ay = std::max(std::abs(1.0 + a0.y / g), std::abs(1.0 + (a0.y + slope.y * h) / g));
     const auto e = prop.walk_excursion(h, ax, ay, std::abs(slope.x) / g, std::abs(slope.y) / g);
@@ -612,36 +654,19 @@ TEST(FullContactWalk, ReachBoundsHoldAtEveryPointOfRandomPieces) {
   // |F_I|, F_J, |R(0)| and each |q_j| stay within the bounds on the values themselves, and the
   // uplift functions above alpha_k min F_J - max|R(0)|. The bodies, states and forcing of the
   // excursion test; the functions by Dynamics at 4001 points of the exact solution.
-  using Dyn = Dynamics<Eigen::Dynamic, 16>;
-  using State = Eigen::Matrix<double, Eigen::Dynamic, 1, Eigen::ColMajor, 64, 1>;
   std::mt19937 rng(78u);
-  std::uniform_real_distribution<double> u(-1.0, 1.0);
   int tight = 0, checks = 0;
   for (int trial = 0; trial < 40; ++trial) {
     const int n = 1 + trial % 3;
-    std::vector<double> hz;
-    for (int i = 0; i < n; ++i) hz.push_back(std::pow(10.0, 0.3 + 2.4 * (0.5 + 0.5 * u(rng))));
-    std::sort(hz.begin(), hz.end());
-    BodyParameters p = test::random_coupled(hz, 600u + static_cast<unsigned>(trial), 0.02).params();
-    p.damping.kind = DampingKind::kModal;
-    p.damping.modal_ratios = VectorX::Constant(n, 0.5 * (0.5 + 0.5 * u(rng)) * 0.2);
-    const Body body(p);
-    const Dyn dyn(body);
-    const GroundMotion motion = random_record(1u, 0.1, 1.0, true);
-    detail::ContactPropagator<Eigen::Dynamic, 16, State> prop(dyn, motion, 4, 0.01, true);
-    ASSERT_TRUE(prop.available());
-    State x = State::Zero(2 * n + 11);
-    const VectorX q0 = body.static_deformation();
-    for (int i = 0; i < n; ++i) {
-      x(1 + i) = q0(i) * (1.0 + 0.5 * u(rng));
-      x(n + 2 + i) = 0.05 * u(rng) * std::abs(q0(i)) * 2.0 * std::numbers::pi *
-                     hz[static_cast<std::size_t>(i)];
-    }
-    const double h = 0.002 + 0.018 * (0.5 + 0.5 * u(rng));
-    const BaseAcceleration a0{0.3 * g * u(rng), 0.2 * g * u(rng)};
-    const BaseAcceleration slope{20.0 * g * u(rng), 10.0 * g * u(rng)};
-    prop.walk_start(x);
-    prop.walk_piece(h, a0, slope, false);
+    RandomPiece piece(n, 600u + static_cast<unsigned>(trial), rng);
+    ASSERT_TRUE(piece.prop.available());
+    piece.walk();
+    const Body& body = piece.body;
+    const RandomPiece::Dyn& dyn = piece.dyn;
+    const auto& prop = piece.prop;
+    const RandomPiece::State& x = piece.x;
+    const double h = piece.h;
+    const BaseAcceleration a0 = piece.a0, slope = piece.slope;
     const double ax = std::max(std::abs(a0.x), std::abs(a0.x + slope.x * h)) / g;
     const double ay0 = 1.0 + a0.y / g, ay1 = 1.0 + (a0.y + slope.y * h) / g;
     const auto r = prop.walk_reach(ax, std::min(ay0, ay1), std::max(ay0, ay1));
