@@ -454,22 +454,27 @@ SimulationResult Simulator<N, MaxN>::run(const InitialState& init) {
 template <int N, int MaxN>
 void Simulator<N, MaxN>::contact_rhs(double t, const ContactState& x, ContactState& dx) {
   const BaseAcceleration a = motion_.at(t, rhs_cursor_);
-  unpack(x);
   dx.resize(x.size());
-  double thdd = 0.0;
-  if (full_contact()) {
-    dyn_.full_contact_acceleration(q_, qd_, a, qdd_);
-    dx(0) = 0.0;
-    dx(iw()) = dyn_.input_power(0.0, 0.0, q_, 0.0, qd_, a);
-  } else {
+  if (rocking()) {
+    // from the state to its derivative in place, every shared sum formed once
     const double sn = std::sin(x(0)), cs = std::cos(x(0));
-    dyn_.rocking_acceleration_sc(edge(), sn, cs, q_, x(ithd()), qd_, a, thdd, qdd_);
+    typename Dyn::RockingRates r;
+    dyn_.rocking_rates_sc(edge(), sn, cs, x.data() + iq(), x(ithd()), x.data() + iqd(), a,
+                          dx.data() + iqd(), r);
     dx(0) = x(ithd());
-    dx(iw()) = dyn_.input_power_sc(dyn_.alpha(edge()), sn, cs, q_, x(ithd()), qd_, a);
+    dx.segment(iq(), n_) = x.segment(iqd(), n_);
+    dx(ithd()) = r.theta_ddot;
+    dx(iw()) = r.input_power;
+    dx(id()) = r.damping_power;
+    return;
   }
+  unpack(x);
+  dyn_.full_contact_acceleration(q_, qd_, a, qdd_);
+  dx(0) = 0.0;
   dx.segment(iq(), n_) = qd_;
-  dx(ithd()) = thdd;
+  dx(ithd()) = 0.0;
   dx.segment(iqd(), n_) = qdd_;
+  dx(iw()) = dyn_.input_power(0.0, 0.0, q_, 0.0, qd_, a);
   dx(id()) = dyn_.damping_power(qd_);
 }
 

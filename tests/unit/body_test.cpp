@@ -8,6 +8,7 @@
 #include <Eigen/Eigenvalues>
 #include <cmath>
 #include <limits>
+#include <random>
 
 #include "flexrock/core/error.hpp"
 #include "flexrock/model/dynamics.hpp"
@@ -254,6 +255,61 @@ TEST(BodyDerived, ModalCoordinatesMapTheMotion) {
   c.damping.kind = DampingKind::kModal;
   c.damping.modal_ratios = VectorX::Constant(5, 0.03);
   expect_modal_coordinates_map_the_motion<5>(c);
+}
+
+// The rocking right-hand side's fused sums (Dynamics::rocking_rates_sc) give what the
+// accelerations, input power and damping power give apart, on the general path (full mu, K, C)
+// and the modal one with and without damping and with and without the coupling gamma
+template <int N>
+void expect_rocking_rates_match(const Body& b) {
+  using Dyn = Dynamics<N>;
+  const Dyn dyn(b);
+  const int n = b.modes();
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  typename Dyn::Vec q(n), qd(n), qdd(n), fused(n);
+  for (int trial = 0; trial < 20; ++trial) {
+    for (int i = 0; i < n; ++i) {
+      q(i) = 0.02 * u(rng) + b.static_deformation()(i);
+      qd(i) = 0.5 * u(rng);
+    }
+    const double theta = 0.3 * u(rng), thd = 2.0 * u(rng);
+    const BaseAcceleration base{4.0 * u(rng), 3.0 * u(rng)};
+    const double s = std::sin(theta), c = std::cos(theta);
+    for (int edge : {1, 2}) {
+      double thdd = 0.0;
+      dyn.rocking_acceleration_sc(edge, s, c, q, thd, qd, base, thdd, qdd);
+      typename Dyn::RockingRates r{};
+      dyn.rocking_rates_sc(edge, s, c, q.data(), thd, qd.data(), base, fused.data(), r);
+      const double scale = 1.0 + std::abs(thdd) + qdd.cwiseAbs().maxCoeff();
+      EXPECT_NEAR(r.theta_ddot, thdd, 1e-13 * scale);
+      EXPECT_LT((fused - qdd).cwiseAbs().maxCoeff(), 1e-13 * scale);
+      const double power = dyn.input_power_sc(dyn.alpha(edge), s, c, q, thd, qd, base);
+      EXPECT_NEAR(r.input_power, power, 1e-13 * (1.0 + std::abs(power)));
+      const double damping = dyn.damping_power(qd);
+      EXPECT_NEAR(r.damping_power, damping, 1e-13 * (1.0 + damping));
+    }
+  }
+}
+
+TEST(BodyDerived, RockingRatesAreTheAccelerationsAndPowers) {
+  for (const bool damped : {false, true}) {
+    for (const bool coupled : {false, true}) {
+      BodyParameters p = test::random_coupled({0.7, 2.0, 5.5, 13.0, 31.0}, 4).params();
+      if (damped) {
+        p.damping.kind = DampingKind::kRayleigh;
+        p.damping.rayleigh_mass = 0.3;
+        p.damping.rayleigh_stiffness = 0.002;
+      }
+      if (!coupled) p.gamma.setZero();
+      const Body general(p);
+      const Body modal = general.in_modal_coordinates();
+      ASSERT_EQ(modal.params().gamma.isZero(0.0), !coupled);
+      expect_rocking_rates_match<5>(general);
+      expect_rocking_rates_match<5>(modal);
+      expect_rocking_rates_match<Eigen::Dynamic>(modal);
+    }
+  }
 }
 
 }  // namespace

@@ -78,6 +78,13 @@ class Dynamics {
     uncoupled_ = n_ == 0 || (gamma_.array() == 0.0).all();
     stiffness_diag_ = stiffness_.diagonal();
     damping_diag_ = damping_.diagonal();
+    // the parts of d, b and m that depend on the pivot alone (rocking_rates_sc)
+    for (int e = 0; e < 2; ++e) {
+      const double a = alpha(e + 1);
+      pivot_d_[e] = delta_ - a * psi_x_ + psi_y_;
+      pivot_b_[e] = beta_ - a * psi_y_ - psi_x_;
+      pivot_m_[e] = 1.0 + zeta2_ + a * a;
+    }
   }
 
   /// A matrix-vector product: unrolled in place for fixed sizes above 4, where Eigen would call
@@ -161,6 +168,38 @@ class Dynamics {
     const Vec y = mv(mu_inv_, f_q);
     theta_ddot = (f_theta - b.dot(y)) / (m - b.dot(z));
     q_ddot = y - z * theta_ddot;
+  }
+
+  /// What the rocking state's derivative needs, at once: theta_ddot and q_ddot (as
+  /// rocking_acceleration_sc), the base's input power (input_power_sc) and the damping power
+  /// (damping_power). The rocking right-hand side is most of a flexible body's run; in modal
+  /// coordinates one pass over the modes forms every sum the three share (psi.q, psi.q', c.q',
+  /// b.f_q, b.b, q'.C q'), where apart they take about a dozen dot products and copies. q, q_dot
+  /// and q_ddot point at n entries each (the stepper's state and its derivative, in place).
+  struct RockingRates {
+    double theta_ddot, input_power, damping_power;
+  };
+  void rocking_rates_sc(int edge, double s, double c, const double* q, double theta_dot,
+                        const double* q_dot, BaseAcceleration base, double* q_ddot,
+                        RockingRates& r) const {
+    if (!modal_) {
+      const Vec qv = Eigen::Map<const Vec>(q, n_), qdv = Eigen::Map<const Vec>(q_dot, n_);
+      Vec qdd(n_);
+      rocking_acceleration_sc(edge, s, c, qv, theta_dot, qdv, base, r.theta_ddot, qdd);
+      Eigen::Map<Vec>(q_ddot, n_) = qdd;
+      r.input_power = input_power_sc(alpha(edge), s, c, qv, theta_dot, qdv, base);
+      r.damping_power = damping_power(qdv);
+      return;
+    }
+    // the two flags fixed at compile time keep the pass over the modes free of branches
+    if (damped_) {
+      if (uncoupled_)
+        return modal_rocking_rates<true, false>(edge, s, c, q, theta_dot, q_dot, base, q_ddot, r);
+      return modal_rocking_rates<true, true>(edge, s, c, q, theta_dot, q_dot, base, q_ddot, r);
+    }
+    if (uncoupled_)
+      return modal_rocking_rates<false, false>(edge, s, c, q, theta_dot, q_dot, base, q_ddot, r);
+    modal_rocking_rates<false, true>(edge, s, c, q, theta_dot, q_dot, base, q_ddot, r);
   }
 
   /// Deformation accelerations in full contact (theta = 0): mu q'' = -K q - C q' - (g/h) psi.G.
@@ -476,6 +515,66 @@ class Dynamics {
   const Mat& gamma() const { return gamma_; }  // its change with q: b = beta + Gamma^T q - ...
 
  private:
+  // rocking_rates_sc in modal coordinates (mu = I, K and C diagonal): the terms of
+  // rocking_acceleration_sc's modal path, input_power_sc and damping_power, summed in one pass
+  template <bool kDamped, bool kCoupled>
+  void modal_rocking_rates(int edge, double s, double c, const double* q, double theta_dot,
+                           const double* q_dot, BaseAcceleration base, double* q_ddot,
+                           RockingRates& r) const {
+    constexpr int kFixed = N;
+    const int n = kFixed == Eigen::Dynamic ? n_ : kFixed;
+    const int e = edge == 1 ? 0 : 1;
+    const double a = alpha(edge);
+    const double ax = base.x / g_, ay = 1.0 + base.y / g_;
+    const double gx = ax * c + ay * s, gy = ay * c - ax * s;  // effective gravity, body axes
+    const double ghx = gh_ * gx, ghy = gh_ * gy, thd2 = theta_dot * theta_dot;
+    const Vec& d = pivot_d_[e];   // delta - alpha psi_x + psi_y
+    const Vec& b0 = pivot_b_[e];  // beta - alpha psi_y - psi_x
+    Vec gq, gqd;                  // Gamma^T q, Gamma^T q' (coupled bodies)
+    if constexpr (kCoupled) {
+      gq.noalias() = mv(gamma_.transpose(), Eigen::Map<const Vec>(q, n_));
+      gqd.noalias() = mv(gamma_.transpose(), Eigen::Map<const Vec>(q_dot, n_));
+    }
+    Vec f(n_), b(n_);                                 // f_q and b(q)
+    double px = 0.0, py = 0.0, pxd = 0.0, pyd = 0.0;  // psi_x.q, psi_y.q, psi_x.q', psi_y.q'
+    double cqd = 0.0, mq = 0.0, bf = 0.0, bb = 0.0,
+           cdq = 0.0;  // c.q', (c + d).q, b.f, b.b, q'.C q'
+    for (int j = 0; j < n; ++j) {
+      const double qj = q[j], vj = q_dot[j], cj = d[j] + qj;  // c = d + q: half of m's gradient
+      px += psi_x_[j] * qj;
+      py += psi_y_[j] * qj;
+      pxd += psi_x_[j] * vj;
+      pyd += psi_y_[j] * vj;
+      cqd += cj * vj;
+      mq += (cj + d[j]) * qj;
+      double fj = thd2 * cj - stiffness_diag_[j] * qj - (psi_x_[j] * ghx + psi_y_[j] * ghy);
+      double bj = b0[j];
+      if constexpr (kDamped) {
+        const double cvj = damping_diag_[j] * vj;
+        fj -= cvj;
+        cdq += cvj * vj;
+      }
+      if constexpr (kCoupled) {
+        fj -= 2.0 * theta_dot * gqd[j];
+        bj += gq[j];
+      }
+      f[j] = fj;
+      b[j] = bj;
+      bf += bj * fj;
+      bb += bj * bj;
+    }
+    const double wx = -a + px, wy = 1.0 + py;
+    const double f_theta = -2.0 * cqd * theta_dot - gh_ * (wx * gy - wy * gx);
+    const double thdd = (f_theta - bf) / (pivot_m_[e] + mq - bb);
+    for (int j = 0; j < n; ++j) q_ddot[j] = f[j] - b[j] * thdd;
+    r.theta_ddot = thdd;
+    // the c.g.'s velocity relative to the base and the base's acceleration, body axes
+    const double vx = h_ * (pxd - theta_dot * wy), vy = h_ * (pyd + theta_dot * wx);
+    const double abx = base.x * c + base.y * s, aby = base.y * c - base.x * s;
+    r.input_power = -mass_ * (abx * vx + aby * vy);
+    r.damping_power = kDamped ? mass_ * h_ * h_ * cdq : 0.0;
+  }
+
   /// u^T mu v, without the product where mu = I
   double mu_form(const Vec& u, const Vec& v) const { return modal_ ? u.dot(v) : u.dot(mv(mu_, v)); }
 
@@ -500,6 +599,8 @@ class Dynamics {
   bool modal_ = false;       // mu = I, K and C diagonal (modal coordinates)
   bool uncoupled_ = true;    // gamma = 0
   Vec stiffness_diag_, damping_diag_;
+  std::array<Vec, 2> pivot_d_, pivot_b_;  // per edge: delta - alpha psi_x + psi_y, beta - ...
+  std::array<double, 2> pivot_m_{};       // per edge: 1 + zeta^2 + alpha^2
 };
 
 }  // namespace flexrock
