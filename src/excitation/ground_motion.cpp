@@ -115,31 +115,43 @@ double GroundMotion::quiet_from() const {
   return end;
 }
 
-BaseAcceleration GroundMotion::at(double t, Cursor& c) const {
+BaseAcceleration GroundMotion::look_up(double t, Cursor& c) const {
   if (!time_.empty()) {
     if (t < time_.front() || t > time_.back()) return {};
+    const std::size_t last = time_.size() - 2;  // the last interval
     std::size_t i;
     if (uniform_) {
-      // direct index, clamped; the cursor is not needed for uniform records
+      // direct index, clamped, then moved onto the interval time_[i] <= t < time_[i + 1] that
+      // the samples' own times give (the quotient may round across a sample)
       const double s = (t - t0_) / dt_;
-      i = std::min(static_cast<std::size_t>(s), time_.size() - 2);
+      i = std::min(static_cast<std::size_t>(s), last);
+      if (i > 0 && t < time_[i]) --i;
+      if (i < last && t >= time_[i + 1]) ++i;
     } else {
       // the cursor's interval or the next one (sequential use), else a binary search
-      i = std::min(c.index, time_.size() - 2);
+      i = std::min(c.index, last);
       if (!(time_[i] <= t && t < time_[i + 1])) {
         if (i + 2 < time_.size() && time_[i + 1] <= t && t < time_[i + 2]) {
           ++i;
         } else {
           const auto it = std::upper_bound(time_.begin(), time_.end(), t);
           i = std::min(
-              static_cast<std::size_t>(std::max<std::ptrdiff_t>(it - time_.begin() - 1, 0)),
-              time_.size() - 2);
+              static_cast<std::size_t>(std::max<std::ptrdiff_t>(it - time_.begin() - 1, 0)), last);
         }
       }
-      c.index = i;
     }
-    const double w = (t - time_[i]) / (time_[i + 1] - time_[i]);
-    return {ax_[i] + w * (ax_[i + 1] - ax_[i]), ay_[i] + w * (ay_[i + 1] - ay_[i])};
+    c.index = i;
+    const double span = time_[i + 1] - time_[i];
+    c.t0 = time_[i];
+    c.t1 = time_[i + 1];
+    c.x0 = ax_[i];
+    c.y0 = ay_[i];
+    c.x1 = ax_[i + 1];
+    c.y1 = ay_[i + 1];
+    c.sx = (ax_[i + 1] - ax_[i]) / span;
+    c.sy = (ay_[i + 1] - ay_[i]) / span;
+    if (t == c.t1) return {c.x1, c.y1};
+    return {c.x0 + (t - c.t0) * c.sx, c.y0 + (t - c.t0) * c.sy};
   }
   if (t < 0.0 || t > duration_ || !f_) return {};
   const BaseAcceleration a = f_(t);

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <random>
 #include <vector>
 
@@ -37,6 +38,48 @@ TEST(GroundMotion, UnevenRecordAnswersInAnyOrder) {
     const double want = a[i] + (tq - t[i]) / (t[i + 1] - t[i]) * (a[i + 1] - a[i]);
     EXPECT_NEAR(m.at(tq, walking).x, want, 1e-14);
     EXPECT_NEAR(m.at(tq).x, want, 1e-14);
+  }
+}
+
+// A cursor keeps the interval it last found; what at() answers must still depend on the time
+// alone: the sample itself at a sample time, from whichever side the cursor comes, and the same
+// bits from a walking cursor as from a fresh one
+TEST(GroundMotion, CursorAnswersDependOnTheTimeAlone) {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::vector<double> a, b, t{0.0};
+  for (int i = 0; i < 200; ++i) {
+    a.push_back(2 * u(rng) - 1);
+    b.push_back(2 * u(rng) - 1);
+    if (i > 0) t.push_back(t.back() + 0.002 + 0.01 * u(rng));
+  }
+  for (const GroundMotion& m :
+       {GroundMotion::uniform(0.01, a, b, 0.5), GroundMotion::sampled(t, a, b)}) {
+    const std::vector<double>& ts = m.times();
+    GroundMotion::Cursor walking;
+    auto same = [&](double tq) {
+      const BaseAcceleration w = m.at(tq, walking), f = m.at(tq);
+      EXPECT_EQ(w.x, f.x) << tq;
+      EXPECT_EQ(w.y, f.y) << tq;
+      return w;
+    };
+    for (std::size_t k = 0; k + 1 < ts.size(); ++k) {
+      // the interval's interior, its end (from inside), its start again (from the next one)
+      const double mid = ts[k] + 0.37 * (ts[k + 1] - ts[k]);
+      const BaseAcceleration v = same(mid);
+      const double w = (mid - ts[k]) / (ts[k + 1] - ts[k]);
+      EXPECT_NEAR(v.x, a[k] + w * (a[k + 1] - a[k]), 1e-14);
+      EXPECT_NEAR(v.y, b[k] + w * (b[k + 1] - b[k]), 1e-14);
+      EXPECT_EQ(same(ts[k + 1]).x, a[k + 1]);
+      same(ts[k + 1] + 0.5 * (ts[std::min(k + 2, ts.size() - 1)] - ts[k + 1]));
+      EXPECT_EQ(same(ts[k]).x, a[k]);
+      EXPECT_EQ(same(ts[k]).y, b[k]);
+    }
+    // jumps in any order, and the record's outside (zero)
+    for (int j = 0; j < 500; ++j) same(ts.front() - 0.1 + (ts.back() - ts.front() + 0.2) * u(rng));
+    EXPECT_EQ(same(ts.back()).x, a.back());
+    EXPECT_EQ(same(std::nextafter(ts.back(), 1e9)).x, 0.0);
+    EXPECT_EQ(same(std::nextafter(ts.front(), -1e9)).y, 0.0);
   }
 }
 

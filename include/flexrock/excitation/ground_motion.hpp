@@ -58,9 +58,23 @@ class GroundMotion {
   /// any other call costs a binary search. One cursor per thread.
   struct Cursor {
     std::size_t index = 0;
+    // the sample interval [t0, t1] of the last lookup and the record on it: Xddot = x0 + (t -
+    // t0) sx inside, x1 at its end (Yddot alike). An integration step lies in one interval, so
+    // its dozen calls cost two comparisons and two products each, not a search and two
+    // divisions. At a sample the value is the sample's, whichever side the cursor saw last, so a
+    // value depends on t alone.
+    double t0 = std::numeric_limits<double>::infinity();
+    double t1 = -std::numeric_limits<double>::infinity();
+    double x0 = 0.0, y0 = 0.0, x1 = 0.0, y1 = 0.0, sx = 0.0, sy = 0.0;
   };
 
-  BaseAcceleration at(double t, Cursor& cursor) const;
+  BaseAcceleration at(double t, Cursor& cursor) const {
+    if (cursor.t0 <= t && t <= cursor.t1) {
+      if (t == cursor.t1) return {cursor.x1, cursor.y1};
+      return {cursor.x0 + (t - cursor.t0) * cursor.sx, cursor.y0 + (t - cursor.t0) * cursor.sy};
+    }
+    return look_up(t, cursor);
+  }
   BaseAcceleration at(double t) const {
     Cursor c;
     return at(t, c);
@@ -90,6 +104,9 @@ class GroundMotion {
   GroundMotion scaled(double factor) const;
 
  private:
+  // at() outside the cursor's interval: finds t's interval (and keeps it in the cursor)
+  BaseAcceleration look_up(double t, Cursor& cursor) const;
+
   std::vector<double> time_, ax_, ay_;    // sampled record
   Function f_;                            // analytic motion
   std::vector<double> breaks_;            // analytic breakpoints, sorted
