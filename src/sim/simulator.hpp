@@ -23,6 +23,7 @@
 #include "event_location.hpp"
 #include "flexrock/contact/impact.hpp"
 #include "flexrock/core/error.hpp"
+#include "flexrock/core/sin_cos.hpp"
 #include "flexrock/integrate/dopri5.hpp"
 #include "flexrock/integrate/stiff_switching.hpp"
 #include "flexrock/model/dynamics.hpp"
@@ -457,7 +458,8 @@ void Simulator<N, MaxN>::contact_rhs(double t, const ContactState& x, ContactSta
   dx.resize(x.size());
   if (rocking()) {
     // from the state to its derivative in place, every shared sum formed once
-    const double sn = std::sin(x(0)), cs = std::cos(x(0));
+    double sn = 0.0, cs = 0.0;
+    sin_cos(x(0), sn, cs);
     typename Dyn::RockingRates r;
     dyn_.rocking_rates_sc(edge(), sn, cs, x.data() + iq(), x(ithd()), x.data() + iqd(), a,
                           dx.data() + iqd(), r);
@@ -539,7 +541,9 @@ void Simulator<N, MaxN>::slide_rhs(double t, const SlideState& x, SlideState& dx
   const BaseAcceleration a = motion_.at(t, rhs_cursor_);
   unpack(x);
   dx.resize(x.size());
-  const double sn = std::sin(x(0)), cs = std::cos(x(0)), v = x(jsd() + 1);
+  double sn = 0.0, cs = 0.0;
+  sin_cos(x(0), sn, cs);
+  const double v = x(jsd() + 1);
   double thdd = 0.0;
   Eigen::Vector2d r;
   const double dd = slide_acceleration(sn, cs, x(ithd()), a, thdd, r);
@@ -586,7 +590,8 @@ void Simulator<N, MaxN>::evaluate(double t, const State& x, GuardSample& s) {
     case ContactMode::kRockingEdge2: {
       const int e = edge();
       double thdd = 0.0;
-      const double sn = std::sin(x(0)), cs = std::cos(x(0));
+      double sn = 0.0, cs = 0.0;
+      sin_cos(x(0), sn, cs);
       dyn_.rocking_acceleration_sc(e, sn, cs, q_, x(ithd()), qd_, a, thdd, qdd_);
       const Eigen::Vector2d r =
           dyn_.rocking_reaction_sc(e, sn, cs, q_, x(ithd()), qd_, thdd, qdd_, a);
@@ -627,7 +632,8 @@ void Simulator<N, MaxN>::evaluate(double t, const State& x, GuardSample& s) {
           mode_spec(m).guards == mode_spec(ContactMode::kRockingEdge2SlidingPlus).guards);
       const int e = edge();
       const double sg = edge_sign(e);
-      const double sn = std::sin(x(0)), cs = std::cos(x(0));
+      double sn = 0.0, cs = 0.0;
+      sin_cos(x(0), sn, cs);
       double thdd = 0.0;
       Eigen::Vector2d r;
       slide_acceleration(sn, cs, x(ithd()), a, thdd, r);
@@ -643,7 +649,9 @@ void Simulator<N, MaxN>::evaluate(double t, const State& x, GuardSample& s) {
     }
     case ContactMode::kFlight: {
       constexpr ContactMode m = ContactMode::kFlight;
-      const double sn = std::sin(x(0)), cs = std::cos(x(0)), h = dyn_.height();
+      double sn = 0.0, cs = 0.0;
+      sin_cos(x(0), sn, cs);
+      const double h = dyn_.height();
       s.fi = s.fj = s.moment = 0.0;
       v[kSlot<m, Guard::kLandingEdge1>] = dyn_.corner_height(1, sn, cs, q_, x(ixc() + 1)) / h;
       v[kSlot<m, Guard::kLandingEdge2>] = dyn_.corner_height(2, sn, cs, q_, x(ixc() + 1)) / h;
