@@ -150,8 +150,7 @@ BaseAcceleration GroundMotion::look_up(double t, Cursor& c) const {
     c.y1 = ay_[i + 1];
     c.sx = (ax_[i + 1] - ax_[i]) / span;
     c.sy = (ay_[i + 1] - ay_[i]) / span;
-    if (t == c.t1) return {c.x1, c.y1};
-    return {c.x0 + (t - c.t0) * c.sx, c.y0 + (t - c.t0) * c.sy};
+    return at(t, c);  // the cursor now covers t
   }
   if (t < 0.0 || t > duration_ || !f_) return {};
   const BaseAcceleration a = f_(t);

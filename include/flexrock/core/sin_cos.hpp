@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cmath>
+#include <numbers>
 
 namespace flexrock {
 
@@ -13,7 +14,7 @@ namespace flexrock {
 /// Truncation: sin stops after x^15, whose remainder x^17/17! < 6e-17 |x| on the range; cos
 /// after x^16, remainder x^18/18! < 3e-18.
 inline void sin_cos(double x, double& s, double& c) {
-  constexpr double kQuarterPi = 0.78539816339744830962;
+  constexpr double kQuarterPi = std::numbers::pi / 4.0;
   if (!(std::abs(x) <= kQuarterPi)) {
     s = std::sin(x);
     c = std::cos(x);
