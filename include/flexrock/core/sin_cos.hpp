@@ -7,6 +7,15 @@
 
 namespace flexrock {
 
+namespace detail {
+// outside sin_cos's range: libm, out of line so that the polynomial path stays small enough to be
+// inlined at its callers (called once per right-hand side)
+[[gnu::cold, gnu::noinline]] inline void sin_cos_libm(double x, double& s, double& c) {
+  s = std::sin(x);
+  c = std::cos(x);
+}
+}  // namespace detail
+
 /// s = sin(x), c = cos(x). For |x| <= pi/4 (rocking angles are well inside) by their Taylor
 /// polynomials in z = x^2, to within about an ulp of the libm values; elsewhere by libm. The
 /// rocking right-hand side and the guard samples need both at every call, and libm's sincos
@@ -15,9 +24,8 @@ namespace flexrock {
 /// after x^16, remainder x^18/18! < 3e-18.
 inline void sin_cos(double x, double& s, double& c) {
   constexpr double kQuarterPi = std::numbers::pi / 4.0;
-  if (!(std::abs(x) <= kQuarterPi)) {
-    s = std::sin(x);
-    c = std::cos(x);
+  if (!(std::abs(x) <= kQuarterPi)) [[unlikely]] {
+    detail::sin_cos_libm(x, s, c);
     return;
   }
   const double z = x * x, z2 = z * z, z4 = z2 * z2;
