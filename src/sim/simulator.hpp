@@ -1668,6 +1668,10 @@ void Simulator<N, MaxN>::locate_extremes(double tp0, double h, const GuardSample
   // come after the deformations in `wanted`), observed on the way
   const bool guards = wanted[static_cast<std::size_t>(count - 1)] >= n_;
   GuardSample s;
+  // the reaction's range over the piece's ends and kept points (where guards are evaluated)
+  double fi_top = std::max(std::abs(sa.fi), std::abs(sb.fi));
+  double moment_top = std::max(std::abs(sa.moment), std::abs(sb.moment));
+  double fj_lo = std::min(sa.fj, sb.fj), fj_hi = std::max(sa.fj, sb.fj);
   auto visit = [&](double tau) {
     prop_.walk_dense(tau, xr_);
     if (!guards) return;
@@ -1691,6 +1695,12 @@ void Simulator<N, MaxN>::locate_extremes(double tp0, double h, const GuardSample
   for (int p = 1; p < kPoints; ++p) {
     const double tau = h * p / kPoints;
     visit(tau);
+    if (guards) {
+      fi_top = std::max(fi_top, std::abs(s.fi));
+      moment_top = std::max(moment_top, std::abs(s.moment));
+      fj_lo = std::min(fj_lo, s.fj);
+      fj_hi = std::max(fj_hi, s.fj);
+    }
     for (int q = 0; q < count; ++q) {
       const double v = quantity(wanted[static_cast<std::size_t>(q)]);
       if (v > best[static_cast<std::size_t>(q)]) {
@@ -1698,6 +1708,17 @@ void Simulator<N, MaxN>::locate_extremes(double tp0, double h, const GuardSample
         at[static_cast<std::size_t>(q)] = tau;
       }
     }
+  }
+  // a quantity is searched further only where a part between two neighbouring points (the ends
+  // and the kept points, all observed) could still raise its extreme: the largest value at the
+  // points plus the excursion bound over a part of length h / kPoints, whose curvature term
+  // (w^2/8 max|f''|) is 64 times smaller than the one over the whole piece that asked for it
+  const double part = h / kPoints;
+  ReactionReach part_reach{false, false, false};
+  if (guards) {
+    const Excursion ep = walk_excursion(part);
+    part_reach =
+        reaction_reach(fi_top + ep.fi, moment_top + ep.moment, fj_lo - ep.fj, fj_hi + ep.fj);
   }
   // the largest value of each about its best kept point, from its jet: a deformation u_j from its
   // own (ContactPropagator::walk_q_jet), each point observed; a reaction from q's derivatives
@@ -1708,13 +1729,17 @@ void Simulator<N, MaxN>::locate_extremes(double tp0, double h, const GuardSample
     const double lo = std::max(0.0, tau - h / kPoints), hi = std::min(h, tau + h / kPoints);
     if (k < n_) {
       rec_.observe_deformation(k, best[static_cast<std::size_t>(q)]);
+      const double top =
+          std::max({best[static_cast<std::size_t>(q)], std::abs(ua_(k)), std::abs(ub_(k))}) +
+          prop_.walk_q_excursion(k, part);
+      if (!(top > ex.max_abs_q(k))) continue;
       auto jet = [&](double t) {
         const std::array<double, 3> u = prop_.walk_q_jet(t, k);
         rec_.observe_deformation(k, std::abs(u[0]));
         return u;
       };
       largest_near(jet, tau, lo, hi);
-    } else {
+    } else if (k == n_ ? part_reach.shear : k == n_ + 1 ? part_reach.moment : part_reach.demand) {
       visit(largest_near([&](double t) { return guard_jet(k, t); }, tau, lo, hi));
     }
   }
