@@ -1650,16 +1650,24 @@ void Simulator<N, MaxN>::locate_extremes(double tp0, double h, const GuardSample
   // n: shear, n + 1: moment, n + 2: friction demand
   std::vector<int>& wanted = wanted_;
   int count = 0;
+  // u_j could exceed its extreme within the excursion bound over a length w of a value `top`
+  auto deformation_reach = [&](int j, double top, double w) {
+    return top + prop_.walk_q_excursion(j, w) > ex.max_abs_q(j);
+  };
+  // the reaction's range over the points seen: the piece's ends, then its kept points too
+  double fi_top = std::max(std::abs(sa.fi), std::abs(sb.fi));
+  double moment_top = std::max(std::abs(sa.moment), std::abs(sb.moment));
+  double fj_lo = std::min(sa.fj, sb.fj), fj_hi = std::max(sa.fj, sb.fj);
+  // which reaction quantities could exceed their extremes within excursion bounds r of that range
+  auto range_reach = [&](const Excursion& r) {
+    return reaction_reach(fi_top + r.fi, moment_top + r.moment, fj_lo - r.fj, fj_hi + r.fj);
+  };
   ua_.noalias() = Dyn::mv(to_user_, xw_.segment(iq(), n_));
   ub_.noalias() = Dyn::mv(to_user_, xe_.segment(iq(), n_));
-  for (int j = 0; j < n_; ++j) {
-    const double top = std::max(std::abs(ua_(j)), std::abs(ub_(j))) + prop_.walk_q_excursion(j, h);
-    if (top > ex.max_abs_q(j)) wanted[static_cast<std::size_t>(count++)] = j;
-  }
-  const ReactionReach reach =
-      reaction_reach(std::max(std::abs(sa.fi), std::abs(sb.fi)) + e.fi,
-                     std::max(std::abs(sa.moment), std::abs(sb.moment)) + e.moment,
-                     std::min(sa.fj, sb.fj) - e.fj, std::max(sa.fj, sb.fj) + e.fj);
+  for (int j = 0; j < n_; ++j)
+    if (deformation_reach(j, std::max(std::abs(ua_(j)), std::abs(ub_(j))), h))
+      wanted[static_cast<std::size_t>(count++)] = j;
+  const ReactionReach reach = range_reach(e);
   if (reach.shear) wanted[static_cast<std::size_t>(count++)] = n_;
   if (reach.moment) wanted[static_cast<std::size_t>(count++)] = n_ + 1;
   if (reach.demand) wanted[static_cast<std::size_t>(count++)] = n_ + 2;
@@ -1668,10 +1676,6 @@ void Simulator<N, MaxN>::locate_extremes(double tp0, double h, const GuardSample
   // come after the deformations in `wanted`), observed on the way
   const bool guards = wanted[static_cast<std::size_t>(count - 1)] >= n_;
   GuardSample s;
-  // the reaction's range over the piece's ends and kept points (where guards are evaluated)
-  double fi_top = std::max(std::abs(sa.fi), std::abs(sb.fi));
-  double moment_top = std::max(std::abs(sa.moment), std::abs(sb.moment));
-  double fj_lo = std::min(sa.fj, sb.fj), fj_hi = std::max(sa.fj, sb.fj);
   auto visit = [&](double tau) {
     prop_.walk_dense(tau, xr_);
     if (!guards) return;
@@ -1714,12 +1718,8 @@ void Simulator<N, MaxN>::locate_extremes(double tp0, double h, const GuardSample
   // points plus the excursion bound over a part of length h / kPoints, whose curvature term
   // (w^2/8 max|f''|) is 64 times smaller than the one over the whole piece that asked for it
   const double part = h / kPoints;
-  ReactionReach part_reach{false, false, false};
-  if (guards) {
-    const Excursion ep = walk_excursion(part);
-    part_reach =
-        reaction_reach(fi_top + ep.fi, moment_top + ep.moment, fj_lo - ep.fj, fj_hi + ep.fj);
-  }
+  ReactionReach part_reach;
+  if (guards) part_reach = range_reach(walk_excursion(part));
   // the largest value of each about its best kept point, from its jet: a deformation u_j from its
   // own (ContactPropagator::walk_q_jet), each point observed; a reaction from q's derivatives
   // (guard_jet), the point found then observed through evaluate() as every other sample
@@ -1729,10 +1729,10 @@ void Simulator<N, MaxN>::locate_extremes(double tp0, double h, const GuardSample
     const double lo = std::max(0.0, tau - h / kPoints), hi = std::min(h, tau + h / kPoints);
     if (k < n_) {
       rec_.observe_deformation(k, best[static_cast<std::size_t>(q)]);
-      const double top =
-          std::max({best[static_cast<std::size_t>(q)], std::abs(ua_(k)), std::abs(ub_(k))}) +
-          prop_.walk_q_excursion(k, part);
-      if (!(top > ex.max_abs_q(k))) continue;
+      if (!deformation_reach(
+              k, std::max({best[static_cast<std::size_t>(q)], std::abs(ua_(k)), std::abs(ub_(k))}),
+              part))
+        continue;
       auto jet = [&](double t) {
         const std::array<double, 3> u = prop_.walk_q_jet(t, k);
         rec_.observe_deformation(k, std::abs(u[0]));
