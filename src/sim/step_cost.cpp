@@ -86,6 +86,9 @@ double rocking_stable_step(const Body& body, int edge, ExplicitMethod method) {
   // at rounding level: taken on the imaginary axis. The rocking motion's growing eigenvalue (real,
   // about +p) bounds no step.
   for (const std::complex<double>& mu : rocking_eigenvalues(body, dyn, edge)) {
+    // a real matrix's complex eigenvalues come in exact conjugate pairs (Eigen's real Schur
+    // form), and |R(conj z)| = |R(z)| for the methods' real coefficients: one of each pair
+    if (mu.imag() < 0.0) continue;
     const std::complex<double> m{std::min(mu.real(), 0.0), mu.imag()};
     h = std::min(h,
                  method == ExplicitMethod::kDop853 ? dop853_stable_step(m) : dopri5_stable_step(m));
