@@ -543,16 +543,21 @@ TEST(FullContactWalk, ClosedFormExponentialOfAModeIsTheTaylorStepsAndPadesOne) {
 }
 
 // A random piece of the walk, for the tests of its bounds: a coupled body of n modes between 2 Hz
-// and 500 Hz (random_coupled's, seeded by body_seed) with modal damping up to 10 %, a state about
-// its static deflection, and a linear forcing over a piece of 2 to 20 ms, all drawn from rng.
+// and 500 Hz (random_coupled's, seeded by body_seed, its vertical mode shapes scaled by
+// vertical_scale) with modal damping up to 10 %, a state about its static deflection, and a linear
+// forcing over a piece of 2 to 20 ms, all drawn from rng. `swing` > 0 adds to each q_i a random
+// deformation up to swing and a velocity up to swing times its pinned-base frequency: with mode
+// shapes of both directions (Gamma far from 0) the moment's quadratic term Gamma^T q . q'' then
+// counts in the bounds.
 struct RandomPiece {
   using Dyn = Dynamics<Eigen::Dynamic, 16>;
   using State = Eigen::Matrix<double, Eigen::Dynamic, 1, Eigen::ColMajor, 64, 1>;
 
-  RandomPiece(int modes, unsigned body_seed, std::mt19937& rng)
+  RandomPiece(int modes, unsigned body_seed, std::mt19937& rng, double vertical_scale = 0.02,
+              double swing = 0.0)
       : n(modes),
         hz(frequencies(modes, rng)),
-        body(damped(hz, body_seed, rng)),
+        body(damped(hz, body_seed, rng, vertical_scale)),
         dyn(body),
         motion(random_record(1u, 0.1, 1.0, true)),
         prop(dyn, motion, 4, 0.01, true),
@@ -560,9 +565,13 @@ struct RandomPiece {
     std::uniform_real_distribution<double> u(-1.0, 1.0);
     const VectorX q0 = body.static_deformation();
     for (int i = 0; i < n; ++i) {
+      const double w = 2.0 * std::numbers::pi * hz[static_cast<std::size_t>(i)];
       x(1 + i) = q0(i) * (1.0 + 0.5 * u(rng));
-      x(n + 2 + i) = 0.05 * u(rng) * std::abs(q0(i)) * 2.0 * std::numbers::pi *
-                     hz[static_cast<std::size_t>(i)];
+      x(n + 2 + i) = 0.05 * u(rng) * std::abs(q0(i)) * w;
+      if (swing > 0.0) {
+        x(1 + i) += swing * u(rng);
+        x(n + 2 + i) += swing * w * u(rng);
+      }
     }
     h = 0.002 + 0.018 * (0.5 + 0.5 * u(rng));
     a0 = {0.3 * g * u(rng), 0.2 * g * u(rng)};
@@ -592,15 +601,21 @@ struct RandomPiece {
     std::sort(hz.begin(), hz.end());
     return hz;
   }
-  static Body damped(const std::vector<double>& hz, unsigned seed, std::mt19937& rng) {
+  static Body damped(const std::vector<double>& hz, unsigned seed, std::mt19937& rng,
+                     double vertical_scale) {
     std::uniform_real_distribution<double> u(-1.0, 1.0);
-    BodyParameters p = test::random_coupled(hz, seed, 0.02).params();
+    BodyParameters p = test::random_coupled(hz, seed, vertical_scale).params();
     p.damping.kind = DampingKind::kModal;
     p.damping.modal_ratios =
         VectorX::Constant(static_cast<Eigen::Index>(hz.size()), 0.5 * (0.5 + 0.5 * u(rng)) * 0.2);
     return Body(p);
   }
 };
+
+// The swing of the tests' last 20 pieces, on bodies whose vertical mode shapes are 0.3 of the
+// horizontal ones: large enough that the bounds without the moment's Gamma term fail there (both
+// tests fail with it dropped; at 0.1 neither does).
+constexpr double kSwing = 3.0;
 
 TEST(FullContactWalk, ExcursionBoundsHoldAtEveryPointOfRandomPieces) {
   // the walk's claim itself: over a piece, each full-contact function (floor reaction, uplift
@@ -609,9 +624,11 @@ TEST(FullContactWalk, ExcursionBoundsHoldAtEveryPointOfRandomPieces) {
   // by Dynamics at 4001 points of the exact solution.
   std::mt19937 rng(77u);
   int tight = 0;
-  for (int trial = 0; trial < 40; ++trial) {
+  for (int trial = 0; trial < 60; ++trial) {
     const int n = 1 + trial % 3;
-    RandomPiece piece(n, 500u + static_cast<unsigned>(trial), rng);
+    const bool swinging = trial >= 40;  // the last 20: Gamma's term counts
+    RandomPiece piece(n, 500u + static_cast<unsigned>(trial), rng, swinging ? 0.3 : 0.02,
+                      swinging ? kSwing : 0.0);
     ASSERT_TRUE(piece.prop.available());
     piece.walk();
     const RandomPiece::Dyn& dyn = piece.dyn;
@@ -656,9 +673,11 @@ TEST(FullContactWalk, ReachBoundsHoldAtEveryPointOfRandomPieces) {
   // excursion test; the functions by Dynamics at 4001 points of the exact solution.
   std::mt19937 rng(78u);
   int tight = 0, checks = 0;
-  for (int trial = 0; trial < 40; ++trial) {
+  for (int trial = 0; trial < 60; ++trial) {
     const int n = 1 + trial % 3;
-    RandomPiece piece(n, 600u + static_cast<unsigned>(trial), rng);
+    const bool swinging = trial >= 40;  // the last 20: Gamma's term counts
+    RandomPiece piece(n, 600u + static_cast<unsigned>(trial), rng, swinging ? 0.3 : 0.02,
+                      swinging ? kSwing : 0.0);
     ASSERT_TRUE(piece.prop.available());
     piece.walk();
     const Body& body = piece.body;
