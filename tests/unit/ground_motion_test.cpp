@@ -83,5 +83,38 @@ TEST(GroundMotion, CursorAnswersDependOnTheTimeAlone) {
   }
 }
 
+// A uniform record's lookup takes the interval from the quotient (t - t0)/dt, which may round
+// across a sample: one ulp below a sample it can give the next interval, at a sample the one
+// before. The fix-ups move it onto the interval the samples' own times give, t0 <= t < t1. The
+// first one's loss would not go unseen (the cursor would not cover t, and the lookup would repeat
+// itself); the second one's would: [t_(k-1), t_k] covers t_k at its end. This test fails without
+// it.
+TEST(GroundMotion, UniformLookupKeepsTheIntervalTheSampleTimesGive) {
+  std::vector<double> a;
+  for (int i = 0; i < 2001; ++i) a.push_back(std::sin(0.37 * i));
+  int below = 0, at = 0;  // quotients that rounded across the sample, either way
+  for (double t0 : {0.0, 0.5, 3.7}) {
+    for (double dt : {0.01, 0.005, 0.02, 1.0 / 3.0}) {
+      const GroundMotion m = GroundMotion::uniform(dt, a, {}, t0);
+      const std::vector<double>& ts = m.times();
+      for (std::size_t k = 1; k + 1 < ts.size(); ++k) {
+        for (const double tq : {std::nextafter(ts[k], -1e9), ts[k]}) {
+          GroundMotion::Cursor c;
+          m.at(tq, c);
+          const std::size_t i = tq < ts[k] ? k - 1 : k;  // the interval holding tq
+          ASSERT_EQ(c.t0, ts[i]) << "t0 " << t0 << " dt " << dt << " k " << k;
+          ASSERT_EQ(c.t1, ts[i + 1]) << "t0 " << t0 << " dt " << dt << " k " << k;
+          const auto s = static_cast<std::size_t>((tq - ts.front()) / dt);
+          if (tq < ts[k] && s == k) ++below;
+          if (tq == ts[k] && s == k - 1) ++at;
+        }
+      }
+    }
+  }
+  // the cases the fix-ups are for do occur here
+  EXPECT_GT(below, 0);
+  EXPECT_GT(at, 0);
+}
+
 }  // namespace
 }  // namespace flexrock
