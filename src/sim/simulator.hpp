@@ -1443,9 +1443,10 @@ bool Simulator<N, MaxN>::advance_walk(double& t, State& x) {
     const double tb = ts[i + 1], span = ts[i + 1] - ts[i];
     const BaseAcceleration slope{(hx[i + 1] - hx[i]) / span,
                                  vertical ? (vy[i + 1] - vy[i]) / span : 0.0};
-    // most intervals are one piece: std::ceil is a libm call without SSE4.1
+    // most intervals are one piece: std::ceil is a libm call without SSE4.1 (above one span,
+    // spans - 1e-9 > 0, so the ceiling is at least 1)
     const double spans = (tb - t) / cap;
-    const double pieces = spans <= 1.0 ? 1.0 : std::max(1.0, std::ceil(spans - 1e-9));
+    const double pieces = spans <= 1.0 ? 1.0 : std::ceil(spans - 1e-9);
     const double hp = (tb - t) / pieces;
     const double ti = t;
     for (int k = 0; k < static_cast<int>(pieces); ++k) {
