@@ -204,6 +204,13 @@ class Simulator final : private GuardProbe {
                        const Excursion& e);
   template <class Jet>
   double largest_near(Jet&& jet, double tau, double lo, double hi);
+  // the quantities of locate_extremes at the last step's observed point p (time t, guards s, u the
+  // deformation there), into point_t_ and point_vals_
+  void keep_point(int p, double t, const GuardSample& s, const Vec& u);
+  // the extremes of those quantities between the step's observed points 0..points-1, located
+  // where the parabola through three neighbouring points peaks above the extreme so far
+  void locate_step_extremes(int points);
+  double step_quantity(int k, double t);  // quantity k at t within the last step
   std::array<double, 3> guard_jet(int k, double tau);
   bool step_guards(int samples, double t1, double& t_hit, int& slot_hit);
   void state_at(double t, State& out) const;
@@ -327,8 +334,16 @@ class Simulator final : private GuardProbe {
   double fine_until_ = -1.0;  // [s] the walk resumes once the stepped propagation reaches it
   // [s] the stepped propagation's next step ends here: a bracket the walk found a crossing in
   double step_stop_ = std::numeric_limits<double>::infinity();
-  std::vector<int> wanted_;                    // the walk's extremes search: the quantities sought
-  std::vector<double> best_, best_at_;         // their largest values found, and where [s]
+  std::vector<int> wanted_;             // the walk's extremes search: the quantities sought
+  std::vector<double> best_, best_at_;  // their largest values found, and where [s]
+  // a step's observed points (its start, its samples before any event, the event) and the
+  // quantities of locate_extremes there (|u_j|, |F_I|, |moment|, friction demand)
+  static constexpr int NQ = N == Eigen::Dynamic ? Eigen::Dynamic : N + 3;
+  static constexpr int MaxNQ = MaxN == Eigen::Dynamic ? Eigen::Dynamic : MaxN + 3;
+  using Quantities = Eigen::Array<double, NQ, 1, Eigen::ColMajor, MaxNQ, 1>;
+  std::array<double, kMaxSamples + 2> point_t_{};
+  std::array<Quantities, kMaxSamples + 2> point_vals_;
+  Quantities point_extreme_;                   // scratch: the extremes so far, in the same units
   std::array<double, 4> walk_forcing_{};       // the piece's max |a_x|, |a_y|, |a_x'|, |a_y'|
   double still_t1_ = 0.0;                      // [s] end of the span checked last while still
   std::array<bool, kMaxGuards> zero_start_{};  // guards known to turn positive from zero
@@ -414,6 +429,8 @@ Simulator<N, MaxN>::Simulator(const Body& body, const GroundMotion& motion,
   wanted_.assign(static_cast<std::size_t>(n_ + 3), 0);
   best_.assign(static_cast<std::size_t>(n_ + 3), 0.0);
   best_at_.assign(static_cast<std::size_t>(n_ + 3), 0.0);
+  for (Quantities& v : point_vals_) v.setZero(n_ + 3);
+  point_extreme_.setZero(n_ + 3);
 }
 
 template <int N, int MaxN>
@@ -1016,12 +1033,25 @@ bool Simulator<N, MaxN>::advance_with(Stepper& integ, System&& sys, Buffer& buf,
   double t_hit = 0.0;
   int slot_hit = -1;
   const bool hit = step_guards(samples_, t1, t_hit, slot_hit);
-  // extremes from the samples that precede any state change
+  // extremes from the samples that precede any state change and from the state just before it,
+  // then located between them
+  if (n_ > 0) qu_.noalias() = Dyn::mv(to_user_, x.segment(iq(), n_));
+  keep_point(0, t0, s0_, qu_);
+  int points = 1;
   for (int k = 1; k <= samples_; ++k) {
     const auto kk = static_cast<std::size_t>(k);
     if (smp[kk].t >= t_hit) break;
-    observe(smp[kk], sample_states_[kk]);
+    observe(smp[kk], sample_states_[kk]);  // leaves u in qu_
+    keep_point(points++, smp[kk].t, smp[kk], qu_);
   }
+  if (hit && t_hit > point_t_[static_cast<std::size_t>(points - 1)]) {
+    GuardSample before;
+    state_at(t_hit, xr_);
+    evaluate(t_hit, xr_, before);
+    observe(before, xr_);
+    keep_point(points++, t_hit, before, qu_);
+  }
+  locate_step_extremes(points);
   // an analytic motion may jump at a breakpoint: start the next step from its right limit
   if (!hit && t1 == t_stop && t1 < t_end_ && !motion_.is_sampled())
     integ.refresh_derivative(sys, std::nextafter(t1, t_end_));
@@ -1744,6 +1774,93 @@ void Simulator<N, MaxN>::locate_extremes(double tp0, double h, const GuardSample
       largest_near(jet, tau, lo, hi);
     } else if (k == n_ ? part_reach.shear : k == n_ + 1 ? part_reach.moment : part_reach.demand) {
       visit(largest_near([&](double t) { return guard_jet(k, t); }, tau, lo, hi));
+    }
+  }
+}
+
+template <int N, int MaxN>
+void Simulator<N, MaxN>::keep_point(int p, double t, const GuardSample& s, const Vec& u) {
+  const auto pp = static_cast<std::size_t>(p);
+  point_t_[pp] = t;
+  Quantities& v = point_vals_[pp];
+  if constexpr (N == Eigen::Dynamic)
+    v.head(n_) = u.array().abs();
+  else if constexpr (N != 0)
+    v.template head<N>() = u.array().abs();
+  v(n_) = std::abs(s.fi);
+  v(n_ + 1) = std::abs(s.moment);
+  v(n_ + 2) = s.fj >= kPressingFraction ? std::abs(s.fi) / s.fj : 0.0;
+}
+
+template <int N, int MaxN>
+double Simulator<N, MaxN>::step_quantity(int k, double t) {
+  state_at(t, xr_);
+  if (k < n_) {
+    if constexpr (N != 0) return std::abs(to_user_.row(k).dot(xr_.segment(iq(), n_)));
+  }
+  GuardSample s;
+  evaluate(t, xr_, s);
+  if (k == n_) return std::abs(s.fi);
+  if (k == n_ + 1) return std::abs(s.moment);
+  return s.fj >= kPressingFraction ? std::abs(s.fi) / s.fj : 0.0;
+}
+
+// A step's quantities (|u_j|, |F_I|, |moment|, friction demand) peak between its observed points:
+// the parabola through three neighbours (the divided differences f01, f012) has its vertex in the
+// part of the step nearest the middle one (the first and last triples reach the step's ends),
+// and where that vertex lies above the extreme so far, Brent's search over the triple's span
+// finds the peak, which is observed (evaluate() there, every quantity folded). Sampled alone, a
+// quantity misses about (h w / S)^2 / 8 of its peak for a motion of w on a step h with S samples
+// (docs/theory.md, "Extremes between samples"). Over the equally spaced samples every quantity is
+// tested at once and with no division; only a triple where one could peak goes to the parabolas.
+template <int N, int MaxN>
+void Simulator<N, MaxN>::locate_step_extremes(int points) {
+  if (points < 3) return;
+  const auto last = static_cast<std::size_t>(points - 1);
+  const Extremes& ex = res_.extremes;
+  const double mg = dyn_.mass() * dyn_.g(), mgh = mg * dyn_.height();
+  if constexpr (N != 0) point_extreme_.head(n_) = ex.max_abs_q.array();
+  point_extreme_(n_) = ex.max_base_shear / mg;
+  point_extreme_(n_ + 1) = ex.max_overturning_moment / mgh;
+  point_extreme_(n_ + 2) = ex.max_friction_demand;
+  // the samples are equally spaced (d); the last point may be the event's, closer
+  const double d = point_t_[1] - point_t_[0];
+  const bool even = std::abs((point_t_[last] - point_t_[last - 1]) - d) <= 1e-9 * d;
+  for (std::size_t c = 1; c < last; ++c) {
+    const double from = c == 1 ? -1.0 : -0.5, to = c + 1 == last ? 1.0 : 0.5;
+    if (even) {
+      // every quantity at once, with no division: with d2 = y0 - 2 y1 + y2 < 0 the vertex is at
+      // s = (y0 - y2) / (2 d2) spacings from the middle point, within [from, to], and lies
+      // y1 - (y2 - y0)^2 / (8 d2) high, above the extreme E: each condition a negative number
+      const Quantities &y0 = point_vals_[c - 1], &y1 = point_vals_[c], &y2 = point_vals_[c + 1];
+      const auto d2 = y0 - 2.0 * y1 + y2;
+      const auto slope = y0 - y2;
+      const auto concave_peak = d2.max(slope - 2.0 * from * d2).max(2.0 * to * d2 - slope);
+      if (!(concave_peak.max(8.0 * d2 * (y1 - point_extreme_) - slope.square()).minCoeff() < 0.0))
+        continue;
+    }
+    // the parabola of each quantity by divided differences, for one that peaks above its extreme
+    const double x0 = point_t_[c - 1], x1 = point_t_[c], x2 = point_t_[c + 1];
+    if (!(x0 < x1 && x1 < x2)) continue;
+    for (int k = 0; k < n_ + 3; ++k) {
+      const double y0 = point_vals_[c - 1](k), y1 = point_vals_[c](k), y2 = point_vals_[c + 1](k);
+      const double f01 = (y1 - y0) / (x1 - x0);
+      const double f012 = ((y2 - y1) / (x2 - x1) - f01) / (x2 - x0);
+      if (!(f012 < 0.0)) continue;  // no peak inside
+      const double xv = 0.5 * (x0 + x1) - 0.5 * f01 / f012;
+      const double lo = c == 1 ? x0 : 0.5 * (x0 + x1), hi = c + 1 == last ? x2 : 0.5 * (x1 + x2);
+      if (!(xv >= lo && xv <= hi)) continue;
+      // against the extreme before this step's searches: a point another quantity's search
+      // observed does not locate this one's peak
+      if (!(y0 + (f01 + f012 * (xv - x1)) * (xv - x0) > point_extreme_(k))) continue;
+      // over u in [0, 1] on the triple's span: Brent's tolerance is relative to u
+      std::uintmax_t iterations = 40;
+      const double w = x2 - x0;
+      const double u =
+          boost::math::tools::brent_find_minima(
+              [&](double uu) { return -step_quantity(k, x0 + w * uu); }, 0.0, 1.0, 20, iterations)
+              .first;
+      observe_at(x0 + w * u);
     }
   }
 }

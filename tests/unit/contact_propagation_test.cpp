@@ -499,18 +499,22 @@ void compare_full_contact(const Body& body, const SimulationResult& wk, const Si
   EXPECT_NEAR(wk.energy.damping_loss, in.energy.damping_loss, 1e-6 * es);
 }
 
-// the walk against the stepped path over a full-contact phase: its located extremes never below
-// the sampled ones beyond rounding, the same rows, the same energies
+// the walk against the stepped path over a full-contact phase: the same located extremes, the
+// same rows, the same energies. Both locate each peak of the exact solution, the walk by Newton's
+// method to 2^-16 of its bracket, the stepped path by Brent's search to 2^-19 of three samples'
+// span (Simulator::locate_step_extremes): equal to 1e-10 of their scale (1.8e-12 measured);
+// sampled alone, the stepped path's fell short by up to 1e-4
 void compare_walk_with_steps(const Body& body, const SimulationResult& wk,
                              const SimulationResult& st) {
   const double qs = st.extremes.max_abs_q.maxCoeff();
   for (int i = 0; i < body.modes(); ++i)
-    EXPECT_GE(wk.extremes.max_abs_q(i), st.extremes.max_abs_q(i) - 1e-12 * qs);
-  const double mg = body.params().mass * g;
-  EXPECT_GE(wk.extremes.max_base_shear, st.extremes.max_base_shear - 1e-12 * mg);
-  EXPECT_GE(wk.extremes.max_overturning_moment,
-            st.extremes.max_overturning_moment - 1e-12 * mg * body.params().height);
-  EXPECT_GE(wk.extremes.max_friction_demand, st.extremes.max_friction_demand - 1e-12);
+    EXPECT_NEAR(wk.extremes.max_abs_q(i), st.extremes.max_abs_q(i), 1e-10 * qs);
+  EXPECT_NEAR(wk.extremes.max_base_shear, st.extremes.max_base_shear,
+              1e-10 * st.extremes.max_base_shear);
+  EXPECT_NEAR(wk.extremes.max_overturning_moment, st.extremes.max_overturning_moment,
+              1e-10 * st.extremes.max_overturning_moment);
+  EXPECT_NEAR(wk.extremes.max_friction_demand, st.extremes.max_friction_demand,
+              1e-10 * st.extremes.max_friction_demand);
   ASSERT_EQ(wk.history.size(), st.history.size());
   double worst = 0.0;
   for (std::size_t k = 0; k < wk.history.q.size(); ++k)
