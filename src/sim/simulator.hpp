@@ -211,6 +211,12 @@ class Simulator final : private GuardProbe {
   // where the parabola through three neighbouring points peaks above the extreme so far
   void locate_step_extremes(int points);
   double step_quantity(int k, double t);  // quantity k at t within the last step
+  // quantity k of locate_extremes at a point: |u_k| (k < n) from its state x, else from its guards
+  double point_quantity(int k, const GuardSample& s, const State& x) const;
+  // |F_I|/F_J where the floor presses with at least kPressingFraction of the weight, else 0
+  static double friction_demand(const GuardSample& s) {
+    return s.fj >= kPressingFraction ? std::abs(s.fi) / s.fj : 0.0;
+  }
   std::array<double, 3> guard_jet(int k, double tau);
   bool step_guards(int samples, double t1, double& t_hit, int& slot_hit);
   void state_at(double t, State& out) const;
@@ -1716,14 +1722,7 @@ void Simulator<N, MaxN>::locate_extremes(double tp0, double h, const GuardSample
     observe(s, xr_);
   };
   // the quantity `k` of the point visited last
-  auto quantity = [&](int k) {
-    if (k < n_) {
-      if constexpr (N != 0) return std::abs(to_user_.row(k).dot(xr_.segment(iq(), n_)));
-    }
-    if (k == n_) return std::abs(s.fi);
-    if (k == n_ + 1) return std::abs(s.moment);
-    return s.fj >= kPressingFraction ? std::abs(s.fi) / s.fj : 0.0;
-  };
+  auto quantity = [&](int k) { return point_quantity(k, s, xr_); };
   xr_ = xw_;
   constexpr int kPoints = ContactPropagator<N, MaxN, State>::kPoints;
   std::vector<double>& best = best_;
@@ -1789,20 +1788,26 @@ void Simulator<N, MaxN>::keep_point(int p, double t, const GuardSample& s, const
     v.template head<N>() = u.array().abs();
   v(n_) = std::abs(s.fi);
   v(n_ + 1) = std::abs(s.moment);
-  v(n_ + 2) = s.fj >= kPressingFraction ? std::abs(s.fi) / s.fj : 0.0;
+  v(n_ + 2) = friction_demand(s);
+}
+
+template <int N, int MaxN>
+inline double Simulator<N, MaxN>::point_quantity(int k, const GuardSample& s,
+                                                 const State& x) const {
+  if (k < n_) {
+    if constexpr (N != 0) return std::abs(to_user_.row(k).dot(x.segment(iq(), n_)));
+  }
+  if (k == n_) return std::abs(s.fi);
+  if (k == n_ + 1) return std::abs(s.moment);
+  return friction_demand(s);
 }
 
 template <int N, int MaxN>
 double Simulator<N, MaxN>::step_quantity(int k, double t) {
   state_at(t, xr_);
-  if (k < n_) {
-    if constexpr (N != 0) return std::abs(to_user_.row(k).dot(xr_.segment(iq(), n_)));
-  }
   GuardSample s;
-  evaluate(t, xr_, s);
-  if (k == n_) return std::abs(s.fi);
-  if (k == n_ + 1) return std::abs(s.moment);
-  return s.fj >= kPressingFraction ? std::abs(s.fi) / s.fj : 0.0;
+  if (k >= n_) evaluate(t, xr_, s);  // a deformation needs the state alone
+  return point_quantity(k, s, xr_);
 }
 
 // A step's quantities (|u_j|, |F_I|, |moment|, friction demand) peak between its observed points:
