@@ -17,6 +17,7 @@
 #include "flexrock/integrate/stiff_switching.hpp"
 #include "flexrock/model/dynamics.hpp"
 #include "recorder.hpp"
+#include "step_extremes.hpp"
 
 namespace flexrock::detail {
 
@@ -93,6 +94,10 @@ class CompliantSim final : private GuardProbe {
   using Vec = typename Dyn::Vec;
   using Mat = typename Dyn::Mat;
   using State = Eigen::Matrix<double, Eigen::Dynamic, 1, Eigen::ColMajor, MaxS, 1>;
+  // the n deformations and the kReported other quantities whose extremes a run reports
+  static constexpr int kReported = 10;
+  static constexpr int MaxQ = MaxN == Eigen::Dynamic ? Eigen::Dynamic : MaxN + kReported;
+  using Quantities = Eigen::Array<double, Eigen::Dynamic, 1, Eigen::ColMajor, MaxQ, 1>;
 
   CompliantSim(const Body& body, const GroundMotion& motion, const SimulationOptions& opt)
       : body_(body),
@@ -125,6 +130,9 @@ class CompliantSim final : private GuardProbe {
     z_.setZero(n_);
     buf_.setZero(size());
     for (State& s : states_) s.setZero(size());
+    for (Quantities& v : point_vals_) v.setZero(n_ + kReported);
+    point_extreme_.setZero(n_ + kReported);
+    point_scratch_.setZero(n_ + kReported);
   }
 
   SimulationResult run(const InitialState& init);
@@ -317,13 +325,74 @@ class CompliantSim final : private GuardProbe {
   }
 
   // gs and fn (the corners' normal forces) as evaluate() left them for the instant x
-  void observe(const GuardSample& gs, const State& x, const std::array<double, 2>& fn) {
-    rec_.observe(observation(gs, x));
+  // (returns the observation, for keep_point)
+  Observation observe(const GuardSample& gs, const State& x, const std::array<double, 2>& fn) {
+    const Observation o = observation(gs, x);
+    rec_.observe(o);
     for (std::size_t j = 0; j < 2; ++j) {
       if (corner_[j].state == CornerState::kFree) continue;
       corner_[j].peak = std::max(corner_[j].peak, fn[j]);
       res_.extremes.max_contact_force = std::max(res_.extremes.max_contact_force, fn[j]);
     }
+    return o;
+  }
+
+  // the quantities whose largest values the run reports, at the instant o (fn its corners' forces
+  // as evaluate() left them): |q_j|, then |F_I| and |moment| (over M g, M g h), the friction
+  // demand, theta on edge 1 and on edge 2, the higher corner's height, |offset|, the height in
+  // flight, and each corner's normal force while it touches [N] (its contact's peak, the touch
+  // event's force)
+  void reported_values(const Observation& o, const std::array<double, 2>& fn, Quantities& v) const {
+    for (int i = 0; i < n_; ++i) v(i) = std::abs(o.q[i]);
+    v(n_) = std::abs(o.fi);
+    v(n_ + 1) = std::abs(o.moment);
+    v(n_ + 2) = friction_demand(o.fi, o.fj);
+    v(n_ + 3) = std::max(o.theta, 0.0);
+    v(n_ + 4) = std::max(-o.theta, 0.0);
+    v(n_ + 5) = o.high;
+    v(n_ + 6) = std::abs(o.offset);
+    v(n_ + 7) = o.mode == ContactMode::kFlight ? o.lift : 0.0;
+    for (std::size_t j = 0; j < 2; ++j)
+      v(n_ + 8 + static_cast<int>(j)) = corner_[j].state == CornerState::kFree ? 0.0 : fn[j];
+  }
+  // the same quantities' extremes so far
+  void reported_extremes(Quantities& e) const {
+    const Extremes& ex = res_.extremes;
+    e.head(n_) = ex.max_abs_q.array();
+    e(n_) = ex.max_base_shear / mg_;
+    e(n_ + 1) = ex.max_overturning_moment / (mg_ * h_);
+    e(n_ + 2) = ex.max_friction_demand;
+    e(n_ + 3) = ex.max_theta_edge1;
+    e(n_ + 4) = ex.max_theta_edge2;
+    e(n_ + 5) = ex.max_uplift;
+    e(n_ + 6) = ex.max_offset;
+    e(n_ + 7) = ex.max_flight_height;
+    e(n_ + 8) = corner_[0].peak;
+    e(n_ + 9) = corner_[1].peak;
+  }
+  void keep_point(int p, const Observation& o, const std::array<double, 2>& fn) {
+    point_t_[static_cast<std::size_t>(p)] = o.t;
+    reported_values(o, fn, point_vals_[static_cast<std::size_t>(p)]);
+  }
+  // the peaks between the step's kept points 0..points-1 (step_extremes.hpp), on the dense output
+  void locate_step_extremes(int points) {
+    if (points < 3) return;
+    reported_extremes(point_extreme_);
+    locate_peaks_between(
+        point_t_.data(), point_vals_.data(), points, point_extreme_,
+        [this](int k, double t) {
+          integ_.dense(t, buf_);
+          GuardSample gs;
+          evaluate(t, buf_, gs);
+          reported_values(observation(gs, buf_), fn_, point_scratch_);
+          return point_scratch_(k);
+        },
+        [this](double t) {
+          integ_.dense(t, buf_);
+          GuardSample gs;
+          evaluate(t, buf_, gs);
+          observe(gs, buf_, fn_);
+        });
   }
 
   void emit_rows_until(double t_cut) {
@@ -528,6 +597,10 @@ class CompliantSim final : private GuardProbe {
   std::array<bool, kMaxGuards> zero_start_{};
   std::array<GuardSample, kMaxSamples + 1> smp_;
   std::array<State, kMaxSamples + 1> states_;
+  // the reported quantities (reported_values) at the step's observed points, for their extremes
+  std::array<double, kMaxSamples + 2> point_t_{};
+  std::array<Quantities, kMaxSamples + 2> point_vals_;
+  Quantities point_extreme_, point_scratch_;
   GroundMotion::Cursor rhs_cursor_, row_cursor_, break_cursor_;
   Vec q_, qd_, qdd_, gq_, z_;
   State buf_;
@@ -667,12 +740,21 @@ bool CompliantSim<MaxN>::advance(double& t, State& x) {
       slot_hit = slot;
     }
   }
-  // the extremes at the samples before the crossing (the normal forces at them included)
+  // the extremes at the samples before the crossing (the normal forces at them included) and at
+  // the state just before it, then located between them
+  int points = 0;
   for (int k = 0; k <= samples_; ++k) {
     const std::size_t i = static_cast<std::size_t>(k);
     if (smp_[i].t >= t_hit) break;
-    observe(smp_[i], states_[i], fn_at_[i]);
+    keep_point(points++, observe(smp_[i], states_[i], fn_at_[i]), fn_at_[i]);
   }
+  if (slot_hit >= 0 && points > 0 && t_hit > point_t_[static_cast<std::size_t>(points - 1)]) {
+    integ_.dense(t_hit, buf_);
+    GuardSample before;
+    evaluate(t_hit, buf_, before);
+    keep_point(points++, observe(before, buf_, fn_), fn_);
+  }
+  locate_step_extremes(points);
   zero_start_.fill(false);
   if (slot_hit < 0) {
     emit_rows_until(t1);

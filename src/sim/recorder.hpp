@@ -30,6 +30,12 @@ struct Observation {
 /// demand").
 inline constexpr double kPressingFraction = 0.05;
 
+/// The friction demand |F_I|/F_J of an instant (the reaction over M g), 0 where the floor presses
+/// with less than kPressingFraction of the weight.
+inline double friction_demand(double fi, double fj) {
+  return fj >= kPressingFraction ? std::abs(fi) / fj : 0.0;
+}
+
 class Recorder {
  public:
   Recorder(SimulationResult& res, double mass, double g, double height, int n);
@@ -71,8 +77,7 @@ inline void Recorder::observe(const Observation& o) {
   ex.max_base_shear = std::max(ex.max_base_shear, mg_ * std::abs(o.fi));
   ex.max_overturning_moment =
       std::max(ex.max_overturning_moment, mg_ * height_ * std::abs(o.moment));
-  if (o.fj >= kPressingFraction)
-    ex.max_friction_demand = std::max(ex.max_friction_demand, std::abs(o.fi) / o.fj);
+  ex.max_friction_demand = std::max(ex.max_friction_demand, friction_demand(o.fi, o.fj));
   energy_scale_ = std::max({energy_scale_, std::abs(o.input_work), std::abs(o.damping_loss)});
 }
 

@@ -33,6 +33,7 @@
 #include "recorder.hpp"
 #include "rocking_series.hpp"
 #include "series_guards.hpp"
+#include "step_extremes.hpp"
 
 namespace flexrock::detail {
 
@@ -215,7 +216,7 @@ class Simulator final : private GuardProbe {
   double point_quantity(int k, const GuardSample& s, const State& x) const;
   // |F_I|/F_J where the floor presses with at least kPressingFraction of the weight, else 0
   static double friction_demand(const GuardSample& s) {
-    return s.fj >= kPressingFraction ? std::abs(s.fi) / s.fj : 0.0;
+    return detail::friction_demand(s.fi, s.fj);
   }
   std::array<double, 3> guard_jet(int k, double tau);
   bool step_guards(int samples, double t1, double& t_hit, int& slot_hit);
@@ -1811,63 +1812,20 @@ double Simulator<N, MaxN>::step_quantity(int k, double t) {
 }
 
 // A step's quantities (|u_j|, |F_I|, |moment|, friction demand) peak between its observed points:
-// the parabola through three neighbours (the divided differences f01, f012) has its vertex in the
-// part of the step nearest the middle one (the first and last triples reach the step's ends),
-// and where that vertex lies above the extreme so far, Brent's search over the triple's span
-// finds the peak, which is observed (evaluate() there, every quantity folded). Sampled alone, a
-// quantity misses about (h w / S)^2 / 8 of its peak for a motion of w on a step h with S samples
-// (docs/theory.md, "Extremes between samples"). Over the equally spaced samples every quantity is
-// tested at once and with no division; only a triple where one could peak goes to the parabolas.
+// located by locate_peaks_between (step_extremes.hpp), each value through the guards' own
+// evaluation and each peak observed (evaluate() there, every quantity folded)
 template <int N, int MaxN>
 void Simulator<N, MaxN>::locate_step_extremes(int points) {
   if (points < 3) return;
-  const auto last = static_cast<std::size_t>(points - 1);
   const Extremes& ex = res_.extremes;
   const double mg = dyn_.mass() * dyn_.g(), mgh = mg * dyn_.height();
   if constexpr (N != 0) point_extreme_.head(n_) = ex.max_abs_q.array();
   point_extreme_(n_) = ex.max_base_shear / mg;
   point_extreme_(n_ + 1) = ex.max_overturning_moment / mgh;
   point_extreme_(n_ + 2) = ex.max_friction_demand;
-  // the samples are equally spaced (d); the last point may be the event's, closer
-  const double d = point_t_[1] - point_t_[0];
-  const bool even = std::abs((point_t_[last] - point_t_[last - 1]) - d) <= 1e-9 * d;
-  for (std::size_t c = 1; c < last; ++c) {
-    const double from = c == 1 ? -1.0 : -0.5, to = c + 1 == last ? 1.0 : 0.5;
-    if (even) {
-      // every quantity at once, with no division: with d2 = y0 - 2 y1 + y2 < 0 the vertex is at
-      // s = (y0 - y2) / (2 d2) spacings from the middle point, within [from, to], and lies
-      // y1 - (y2 - y0)^2 / (8 d2) high, above the extreme E: each condition a negative number
-      const Quantities &y0 = point_vals_[c - 1], &y1 = point_vals_[c], &y2 = point_vals_[c + 1];
-      const auto d2 = y0 - 2.0 * y1 + y2;
-      const auto slope = y0 - y2;
-      const auto concave_peak = d2.max(slope - 2.0 * from * d2).max(2.0 * to * d2 - slope);
-      if (!(concave_peak.max(8.0 * d2 * (y1 - point_extreme_) - slope.square()).minCoeff() < 0.0))
-        continue;
-    }
-    // the parabola of each quantity by divided differences, for one that peaks above its extreme
-    const double x0 = point_t_[c - 1], x1 = point_t_[c], x2 = point_t_[c + 1];
-    if (!(x0 < x1 && x1 < x2)) continue;
-    for (int k = 0; k < n_ + 3; ++k) {
-      const double y0 = point_vals_[c - 1](k), y1 = point_vals_[c](k), y2 = point_vals_[c + 1](k);
-      const double f01 = (y1 - y0) / (x1 - x0);
-      const double f012 = ((y2 - y1) / (x2 - x1) - f01) / (x2 - x0);
-      if (!(f012 < 0.0)) continue;  // no peak inside
-      const double xv = 0.5 * (x0 + x1) - 0.5 * f01 / f012;
-      const double lo = c == 1 ? x0 : 0.5 * (x0 + x1), hi = c + 1 == last ? x2 : 0.5 * (x1 + x2);
-      if (!(xv >= lo && xv <= hi)) continue;
-      // against the extreme before this step's searches: a point another quantity's search
-      // observed does not locate this one's peak
-      if (!(y0 + (f01 + f012 * (xv - x1)) * (xv - x0) > point_extreme_(k))) continue;
-      // over u in [0, 1] on the triple's span: Brent's tolerance is relative to u
-      std::uintmax_t iterations = 40;
-      const double w = x2 - x0;
-      const double u =
-          boost::math::tools::brent_find_minima(
-              [&](double uu) { return -step_quantity(k, x0 + w * uu); }, 0.0, 1.0, 20, iterations)
-              .first;
-      observe_at(x0 + w * u);
-    }
-  }
+  locate_peaks_between(
+      point_t_.data(), point_vals_.data(), points, point_extreme_,
+      [this](int k, double t) { return step_quantity(k, t); }, [this](double t) { observe_at(t); });
 }
 
 // The largest |f| in [lo, hi] about tau, the kept point of the walk's piece where |f| is largest
