@@ -26,7 +26,8 @@ flexrock_add_test(flexrock_impact_law_tests SOURCES unit/impact_law_test.cpp LAB
 flexrock_add_test(flexrock_compliant_tests SOURCES unit/compliant_test.cpp LABEL unit)
 flexrock_add_test(flexrock_step_cost_tests SOURCES unit/step_cost_test.cpp LABEL unit)
 flexrock_add_test(flexrock_stiff_rocking_tests SOURCES unit/stiff_rocking_test.cpp LABEL unit)
-flexrock_add_test(flexrock_step_extremes_tests SOURCES unit/step_extremes_test.cpp LABEL unit)
+flexrock_add_test(flexrock_step_extremes_tests SOURCES unit/step_extremes_test.cpp
+                  LIBS flexrock::io LABEL unit)
 # replaces global operator new to count allocations: its own executable
 flexrock_add_test(flexrock_allocation_tests SOURCES unit/no_allocation_test.cpp LABEL unit)
 flexrock_add_test(flexrock_excitation_motion_tests SOURCES unit/ground_motion_test.cpp LABEL unit)

@@ -371,8 +371,10 @@ class CompliantSim final : private GuardProbe {
     e(n_ + 9) = corner_[1].peak;
   }
   void keep_point(int p, const Observation& o, const std::array<double, 2>& fn) {
-    point_t_[static_cast<std::size_t>(p)] = o.t;
-    reported_values(o, fn, point_vals_[static_cast<std::size_t>(p)]);
+    const auto pp = static_cast<std::size_t>(p);
+    point_t_[pp] = o.t;
+    reported_values(o, fn, point_vals_[pp]);
+    point_press_[pp] = {fn[0] > 0.0, fn[1] > 0.0, o.fj >= kPressingFraction};
   }
   // the peaks between the step's kept points 0..points-1 (step_extremes.hpp), on the dense output
   void locate_step_extremes(int points) {
@@ -393,6 +395,41 @@ class CompliantSim final : private GuardProbe {
           evaluate(t, buf_, gs);
           observe(gs, buf_, fn_);
         });
+  }
+
+  // Two switches inside a step make a reported quantity jump or kink, so that its peak lies at
+  // the switch, where no parabola finds it: a touching corner's force is clipped at zero where its
+  // dashpot would pull (max(0, ...)), and the moment rises as the corner that leaves unloads until
+  // its force reaches zero; the friction demand |F_I|/F_J counts only while the floor presses with
+  // at least kPressingFraction of the weight, and rises toward that limit before a lift-off.
+  // Between two kept points where one of them switches, the switch is bisected on the dense output
+  // to 2^-40 of their spacing and observed on the side where the force still presses.
+  void observe_switches(int points) {
+    for (int p = 1; p < points; ++p) {
+      const auto pp = static_cast<std::size_t>(p);
+      for (int j = 0; j < 3; ++j) {
+        const auto jj = static_cast<std::size_t>(j);
+        // j = 0, 1: corner j + 1's force; j = 2: the floor's pressing for the friction demand
+        if (j < 2 && corner_[jj].state == CornerState::kFree) continue;
+        auto pressing = [&](const GuardSample& gs) {
+          return j < 2 ? fn_[jj] > 0.0 : gs.fj >= kPressingFraction;
+        };
+        const bool pressed_before = point_press_[pp - 1][jj];
+        if (pressed_before == point_press_[pp][jj]) continue;
+        double press = pressed_before ? point_t_[pp - 1] : point_t_[pp];
+        double other = pressed_before ? point_t_[pp] : point_t_[pp - 1];
+        GuardSample gs;
+        for (int it = 0; it < 40; ++it) {
+          const double mid = 0.5 * (press + other);
+          integ_.dense(mid, buf_);
+          evaluate(mid, buf_, gs);
+          (pressing(gs) ? press : other) = mid;
+        }
+        integ_.dense(press, buf_);
+        evaluate(press, buf_, gs);
+        observe(gs, buf_, fn_);
+      }
+    }
   }
 
   void emit_rows_until(double t_cut) {
@@ -601,6 +638,9 @@ class CompliantSim final : private GuardProbe {
   std::array<double, kMaxSamples + 2> point_t_{};
   std::array<Quantities, kMaxSamples + 2> point_vals_;
   Quantities point_extreme_, point_scratch_;
+  // at the same points: corner 1's and 2's force pressing, the floor pressing the friction demand's
+  // kPressingFraction (observe_switches)
+  std::array<std::array<bool, 3>, kMaxSamples + 2> point_press_{};
   GroundMotion::Cursor rhs_cursor_, row_cursor_, break_cursor_;
   Vec q_, qd_, qdd_, gq_, z_;
   State buf_;
@@ -754,6 +794,7 @@ bool CompliantSim<MaxN>::advance(double& t, State& x) {
     evaluate(t_hit, buf_, before);
     keep_point(points++, observe(before, buf_, fn_), fn_);
   }
+  observe_switches(points);
   locate_step_extremes(points);
   zero_start_.fill(false);
   if (slot_hit < 0) {

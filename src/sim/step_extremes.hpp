@@ -12,13 +12,13 @@
 
 namespace flexrock::detail {
 
-/// Quantities that are never negative (|u_j|, |F_I|, a contact force...) peak between a step's
-/// observed points t[0] < ... < t[points - 1] (vals[p] their values at t[p], an Eigen array each;
-/// extreme the largest of each before this step's searches, in the same units): the parabola
-/// through three neighbours (the divided differences f01, f012) has its vertex in the part of the
-/// step nearest the middle one (the first and last triples reach the step's ends), and where that
-/// vertex lies above the extreme, Brent's search over the triple's span (20 bits of it) on
-/// `quantity(k, t)` finds the peak of quantity k, and `visit(t)` observes it (every quantity
+/// Quantities whose largest values a run reports (|u_j|, |F_I|, a contact force, a height) peak
+/// between a step's observed points t[0] < ... < t[points - 1] (vals[p] their values at t[p], an
+/// Eigen array each; extreme the largest of each before this step's searches, in the same units):
+/// the parabola through three neighbours (the divided differences f01, f012) has its vertex in the
+/// part of the step nearest the middle one (the first and last triples reach the step's ends), and
+/// where that vertex lies above the extreme, Brent's search over the triple's span (20 bits of it)
+/// on `quantity(k, t)` finds the peak of quantity k, and `visit(t)` observes it (every quantity
 /// folded there). Sampled alone, a quantity misses about (h w / S)^2 / 8 of its peak for a motion
 /// of w on a step h with S samples. Over equally spaced points every quantity is tested at once
 /// and with no division; only a triple where one could peak goes to the parabolas. Against the
