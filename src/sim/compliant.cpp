@@ -403,7 +403,7 @@ class CompliantSim final : private GuardProbe {
   // its force reaches zero; the friction demand |F_I|/F_J counts only while the floor presses with
   // at least kPressingFraction of the weight, and rises toward that limit before a lift-off.
   // Between two kept points where one of them switches, the switch is bisected on the dense output
-  // to 2^-40 of their spacing and observed on the side where the force still presses.
+  // (bisect_switch) and observed on the side where the force still presses.
   void observe_switches(int points) {
     for (int p = 1; p < points; ++p) {
       const auto pp = static_cast<std::size_t>(p);
@@ -411,22 +411,18 @@ class CompliantSim final : private GuardProbe {
         const auto jj = static_cast<std::size_t>(j);
         // j = 0, 1: corner j + 1's force; j = 2: the floor's pressing for the friction demand
         if (j < 2 && corner_[jj].state == CornerState::kFree) continue;
-        auto pressing = [&](const GuardSample& gs) {
-          return j < 2 ? fn_[jj] > 0.0 : gs.fj >= kPressingFraction;
-        };
         const bool pressed_before = point_press_[pp - 1][jj];
         if (pressed_before == point_press_[pp][jj]) continue;
-        double press = pressed_before ? point_t_[pp - 1] : point_t_[pp];
-        double other = pressed_before ? point_t_[pp] : point_t_[pp - 1];
         GuardSample gs;
-        for (int it = 0; it < 40; ++it) {
-          const double mid = 0.5 * (press + other);
-          integ_.dense(mid, buf_);
-          evaluate(mid, buf_, gs);
-          (pressing(gs) ? press : other) = mid;
-        }
-        integ_.dense(press, buf_);
-        evaluate(press, buf_, gs);
+        auto pressing = [&](double t) {
+          integ_.dense(t, buf_);
+          evaluate(t, buf_, gs);
+          return j < 2 ? fn_[jj] > 0.0 : gs.fj >= kPressingFraction;
+        };
+        const double t = bisect_switch(pressed_before ? point_t_[pp - 1] : point_t_[pp],
+                                       pressed_before ? point_t_[pp] : point_t_[pp - 1], pressing);
+        integ_.dense(t, buf_);
+        evaluate(t, buf_, gs);
         observe(gs, buf_, fn_);
       }
     }

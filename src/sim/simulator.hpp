@@ -350,6 +350,7 @@ class Simulator final : private GuardProbe {
   using Quantities = Eigen::Array<double, NQ, 1, Eigen::ColMajor, MaxNQ, 1>;
   std::array<double, kMaxSamples + 2> point_t_{};
   std::array<Quantities, kMaxSamples + 2> point_vals_;
+  std::array<bool, kMaxSamples + 2> point_pressing_{};  // F_J >= kPressingFraction at the points
   Quantities point_extreme_;                   // scratch: the extremes so far, in the same units
   std::array<double, 4> walk_forcing_{};       // the piece's max |a_x|, |a_y|, |a_x'|, |a_y'|
   double still_t1_ = 0.0;                      // [s] end of the span checked last while still
@@ -1790,6 +1791,7 @@ void Simulator<N, MaxN>::keep_point(int p, double t, const GuardSample& s, const
   v(n_) = std::abs(s.fi);
   v(n_ + 1) = std::abs(s.moment);
   v(n_ + 2) = friction_demand(s);
+  point_pressing_[pp] = s.fj >= kPressingFraction;
 }
 
 template <int N, int MaxN>
@@ -1816,6 +1818,20 @@ double Simulator<N, MaxN>::step_quantity(int k, double t) {
 // evaluation and each peak observed (evaluate() there, every quantity folded)
 template <int N, int MaxN>
 void Simulator<N, MaxN>::locate_step_extremes(int points) {
+  // the friction demand counts only while the floor presses with kPressingFraction of the weight,
+  // and rises toward that limit before the floor lets go: its peak lies at the switch
+  for (int p = 1; p < points; ++p) {
+    const auto pp = static_cast<std::size_t>(p);
+    const bool pressed_before = point_pressing_[pp - 1];
+    if (pressed_before == point_pressing_[pp]) continue;
+    GuardSample s;
+    observe_at(bisect_switch(pressed_before ? point_t_[pp - 1] : point_t_[pp],
+                             pressed_before ? point_t_[pp] : point_t_[pp - 1], [&](double t) {
+                               state_at(t, xr_);
+                               evaluate(t, xr_, s);
+                               return s.fj >= kPressingFraction;
+                             }));
+  }
   if (points < 3) return;
   const Extremes& ex = res_.extremes;
   const double mg = dyn_.mass() * dyn_.g(), mgh = mg * dyn_.height();

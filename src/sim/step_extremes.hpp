@@ -70,4 +70,17 @@ void locate_peaks_between(const double* t, const Values* vals, int points, const
   }
 }
 
+/// A switch inside a step puts a quantity's peak at it, where no parabola finds it (a friction
+/// demand that counts only while the floor presses enough, a force clipped at zero): between
+/// `press`, where `pressing(t)` holds, and `other`, where it does not, the switch by 40 halvings,
+/// returned on the pressing side.
+template <class Pressing>
+double bisect_switch(double press, double other, Pressing&& pressing) {
+  for (int it = 0; it < 40; ++it) {
+    const double mid = 0.5 * (press + other);
+    (pressing(mid) ? press : other) = mid;
+  }
+  return press;
+}
+
 }  // namespace flexrock::detail
