@@ -389,12 +389,14 @@ class CompliantSim final : private GuardProbe {
           reported_values(observation(gs, buf_), fn_, point_scratch_);
           return point_scratch_(k);
         },
-        [this](double t) {
-          integ_.dense(t, buf_);
-          GuardSample gs;
-          evaluate(t, buf_, gs);
-          observe(gs, buf_, fn_);
-        });
+        [this](double t) { observe_at(t); });
+  }
+  // the state at t within the last step, evaluated and observed (an extreme located there)
+  void observe_at(double t) {
+    integ_.dense(t, buf_);
+    GuardSample gs;
+    evaluate(t, buf_, gs);
+    observe(gs, buf_, fn_);
   }
 
   // Two switches inside a step make a reported quantity jump or kink, so that its peak lies at
@@ -409,21 +411,16 @@ class CompliantSim final : private GuardProbe {
       const auto pp = static_cast<std::size_t>(p);
       for (int j = 0; j < 3; ++j) {
         const auto jj = static_cast<std::size_t>(j);
-        // j = 0, 1: corner j + 1's force; j = 2: the floor's pressing for the friction demand
-        if (j < 2 && corner_[jj].state == CornerState::kFree) continue;
+        // j = 0, 1: corner j + 1's force (never pressing while free); j = 2: the floor's
+        // pressing for the friction demand
         const bool pressed_before = point_press_[pp - 1][jj];
         if (pressed_before == point_press_[pp][jj]) continue;
-        GuardSample gs;
-        auto pressing = [&](double t) {
+        observe_at(bisect_switch(point_t_[pp - 1], point_t_[pp], pressed_before, [&](double t) {
           integ_.dense(t, buf_);
+          GuardSample gs;
           evaluate(t, buf_, gs);
           return j < 2 ? fn_[jj] > 0.0 : gs.fj >= kPressingFraction;
-        };
-        const double t = bisect_switch(pressed_before ? point_t_[pp - 1] : point_t_[pp],
-                                       pressed_before ? point_t_[pp] : point_t_[pp - 1], pressing);
-        integ_.dense(t, buf_);
-        evaluate(t, buf_, gs);
-        observe(gs, buf_, fn_);
+        }));
       }
     }
   }

@@ -1825,12 +1825,11 @@ void Simulator<N, MaxN>::locate_step_extremes(int points) {
     const bool pressed_before = point_pressing_[pp - 1];
     if (pressed_before == point_pressing_[pp]) continue;
     GuardSample s;
-    observe_at(bisect_switch(pressed_before ? point_t_[pp - 1] : point_t_[pp],
-                             pressed_before ? point_t_[pp] : point_t_[pp - 1], [&](double t) {
-                               state_at(t, xr_);
-                               evaluate(t, xr_, s);
-                               return s.fj >= kPressingFraction;
-                             }));
+    observe_at(bisect_switch(point_t_[pp - 1], point_t_[pp], pressed_before, [&](double t) {
+      state_at(t, xr_);
+      evaluate(t, xr_, s);
+      return s.fj >= kPressingFraction;
+    }));
   }
   if (points < 3) return;
   const Extremes& ex = res_.extremes;

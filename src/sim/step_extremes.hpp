@@ -71,11 +71,12 @@ void locate_peaks_between(const double* t, const Values* vals, int points, const
 }
 
 /// A switch inside a step puts a quantity's peak at it, where no parabola finds it (a friction
-/// demand that counts only while the floor presses enough, a force clipped at zero): between
-/// `press`, where `pressing(t)` holds, and `other`, where it does not, the switch by 40 halvings,
-/// returned on the pressing side.
+/// demand that counts only while the floor presses enough, a force clipped at zero): between a and
+/// b, where `pressing(t)` holds at a if `pressing_at_a` and at b if not, the switch by 40
+/// halvings, returned on the pressing side.
 template <class Pressing>
-double bisect_switch(double press, double other, Pressing&& pressing) {
+double bisect_switch(double a, double b, bool pressing_at_a, Pressing&& pressing) {
+  double press = pressing_at_a ? a : b, other = pressing_at_a ? b : a;
   for (int it = 0; it < 40; ++it) {
     const double mid = 0.5 * (press + other);
     (pressing(mid) ? press : other) = mid;
