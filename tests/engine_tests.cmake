@@ -24,6 +24,10 @@ gtest_discover_tests(flexrock_sympy_tests PROPERTIES LABELS unit FIXTURES_REQUIR
 flexrock_add_test(flexrock_sim_tests SOURCES unit/simulate_test.cpp LABEL unit)
 flexrock_add_test(flexrock_impact_law_tests SOURCES unit/impact_law_test.cpp LABEL unit)
 flexrock_add_test(flexrock_compliant_tests SOURCES unit/compliant_test.cpp LABEL unit)
+flexrock_add_test(flexrock_compliant_corners_tests SOURCES unit/compliant_corners_test.cpp LABEL unit)
+flexrock_add_test(flexrock_compliant_energy_tests SOURCES unit/compliant_energy_test.cpp LABEL unit)
+# also the audit of the compliant contact's loss (src/sim)
+target_include_directories(flexrock_compliant_energy_tests PRIVATE ${PROJECT_SOURCE_DIR}/src)
 flexrock_add_test(flexrock_step_cost_tests SOURCES unit/step_cost_test.cpp LABEL unit)
 flexrock_add_test(flexrock_stiff_rocking_tests SOURCES unit/stiff_rocking_test.cpp LABEL unit)
 flexrock_add_test(flexrock_step_extremes_tests SOURCES unit/step_extremes_test.cpp

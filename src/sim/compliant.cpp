@@ -12,7 +12,9 @@
 #include <string>
 
 #include "automaton.hpp"
+#include "crossing_resolution.hpp"
 #include "event_location.hpp"
+#include "flexrock/contact/corner_potential.hpp"
 #include "flexrock/core/format.hpp"
 #include "flexrock/integrate/stiff_switching.hpp"
 #include "flexrock/model/dynamics.hpp"
@@ -87,7 +89,7 @@ struct Transfer {
 
 template <int MaxN>
 class CompliantSim final : private GuardProbe {
-  static constexpr int MaxS = MaxN == Eigen::Dynamic ? Eigen::Dynamic : 2 * (3 + MaxN) + 6;
+  static constexpr int MaxS = MaxN == Eigen::Dynamic ? Eigen::Dynamic : 2 * (3 + MaxN) + 7;
 
  public:
   using Dyn = Dynamics<Eigen::Dynamic, MaxN>;
@@ -99,8 +101,10 @@ class CompliantSim final : private GuardProbe {
   static constexpr int MaxQ = MaxN == Eigen::Dynamic ? Eigen::Dynamic : MaxN + kReported;
   using Quantities = Eigen::Array<double, Eigen::Dynamic, 1, Eigen::ColMajor, MaxQ, 1>;
 
-  CompliantSim(const Body& body, const GroundMotion& motion, const SimulationOptions& opt)
-      : body_(body),
+  CompliantSim(const Body& body, const GroundMotion& motion, const SimulationOptions& opt,
+               CompliantAudit* audit)
+      : audit_(audit),
+        body_(body),
         dyn_(body),
         motion_(motion),
         opt_(opt),
@@ -112,6 +116,7 @@ class CompliantSim final : private GuardProbe {
     g_ = body.g();
     h_ = body.params().height;
     mg_ = m_ * g_;
+    f_ref_ = 0.5 * mg_;
     mu_s_ = opt.friction_coefficient;
     mu_k_ = std::min(opt.kinetic_friction_coefficient, opt.friction_coefficient);
     mu_cg_inv_ = body.flight_mu_inverse();
@@ -139,8 +144,9 @@ class CompliantSim final : private GuardProbe {
 
  private:
   // ---- the state: (x_c, y_c, theta, q), their rates, then the accumulated input work, damping
-  // loss, work taken by the floor's springs and dashpots, friction work, and the floor's impulse
-  int size() const { return 2 * (3 + n_) + 6; }
+  // loss, work taken by the floor's springs and dashpots, friction work, the floor's impulse, and
+  // the dashpots' work (the floor's work less the springs': for the audit)
+  int size() const { return 2 * (3 + n_) + 7; }
   int iv() const { return 3 + n_; }
   int iw() const { return 2 * (3 + n_); }
 
@@ -150,22 +156,32 @@ class CompliantSim final : private GuardProbe {
     qd_ = x.segment(iv() + 3, n_);
   }
 
-  // the force of the floor on corner e (inertial components) and the corner's velocity
+  // the force of the floor on corner e (inertial components) and the corner's velocity; with
+  // `dashpot`, the power its dashpots take (the force less the contact potential's gradient,
+  // against the corner's velocity)
   template <class X>
   double corner_force(int e, double s, double c, const X& x, Eigen::Vector2d& f,
-                      Eigen::Vector2d& ve) const {
+                      Eigen::Vector2d& ve, double* dashpot = nullptr) const {
     const Corner& k = corner_[static_cast<std::size_t>(e - 1)];
     const Eigen::Vector2d vc(x(iv()), x(iv() + 1));
     const Eigen::Vector2d vb = dyn_.corner_velocity_body(e, s, c, q_, x(iv() + 2), qd_, vc);
     ve = {c * vb(0) - s * vb(1), s * vb(0) + c * vb(1)};
-    const double fn = normal_force(cc_, -dyn_.corner_height(e, s, c, q_, x(1)), -ve(1), k.v_in);
-    double ft = 0.0;
+    const double delta = -dyn_.corner_height(e, s, c, q_, x(1));
     if (k.state == CornerState::kStick) {
-      ft = -cc_.k_t * (dyn_.corner_x(e, s, c, q_, x(0)) - k.anchor) - cc_.c_t * ve(0);
-    } else if (k.state == CornerState::kSlip) {
-      ft = -k.slip * mu_k_ * fn;
+      const double u = dyn_.corner_x(e, s, c, q_, x(0)) - k.anchor;
+      const CornerForce cf = sticking_corner_force(cc_, f_ref_, delta, -ve(1), u, ve(0), k.v_in);
+      f = {cf.t, cf.n};
+      if (dashpot) {
+        const double phi = tangential_scale(cc_, f_ref_, delta);
+        const double fn_el =
+            phi * f_ref_ + 0.5 * cc_.k_t * tangential_scale_slope(cc_, f_ref_, delta) * u * u;
+        *dashpot = -(cf.n - fn_el) * ve(1) - (cf.t + phi * cc_.k_t * u) * ve(0);
+      }
+      return cf.n;
     }
-    f = {ft, fn};
+    const double fn = normal_force(cc_, delta, -ve(1), k.v_in);
+    f = {k.state == CornerState::kSlip ? -k.slip * mu_k_ * fn : 0.0, fn};
+    if (dashpot) *dashpot = -(fn - tangential_scale(cc_, f_ref_, delta) * f_ref_) * ve(1);
     return fn;
   }
 
@@ -178,13 +194,15 @@ class CompliantSim final : private GuardProbe {
     dyn_.flight_acceleration(q_, thd, qd_, thdd, qdd_);
     // the corner forces' generalised forces on (theta, q) over M h^2: -B_e^T R^T F / (M h)
     // (docs/theory.md, "Compliant contact")
-    double g_theta = 0.0, fx = 0.0, fy = 0.0, p_floor = 0.0, p_friction = 0.0;
+    double g_theta = 0.0, fx = 0.0, fy = 0.0, p_floor = 0.0, p_friction = 0.0, p_dashpot = 0.0;
     gq_.setZero();
     for (int e = 1; e <= 2; ++e) {
       const Corner& k = corner_[static_cast<std::size_t>(e - 1)];
       if (k.state == CornerState::kFree) continue;
       Eigen::Vector2d f, ve;
-      corner_force(e, s, c, x, f, ve);
+      double dashpot = 0.0;
+      corner_force(e, s, c, x, f, ve, &dashpot);
+      p_dashpot += dashpot;
       const double fbx = c * f(0) + s * f(1), fby = -s * f(0) + c * f(1);
       const double wx = -dyn_.alpha(e) + dyn_.psi_x().dot(q_), wy = 1.0 + dyn_.psi_y().dot(q_);
       g_theta -= (-wy * fbx + wx * fby) / (m_ * h_);
@@ -220,6 +238,7 @@ class CompliantSim final : private GuardProbe {
     dx(iw() + 3) = -p_friction;
     dx(iw() + 4) = fx;
     dx(iw() + 5) = fy;
+    dx(iw() + 6) = p_dashpot;
   }
 
   // guards in slot order: corner 1 and 2 contact, corner 1 and 2 friction, overturning
@@ -282,11 +301,10 @@ class CompliantSim final : private GuardProbe {
     for (int i = 1; i <= 2; ++i) {
       const Corner& k = corner_[static_cast<std::size_t>(i - 1)];
       if (k.state == CornerState::kFree) continue;
-      e += normal_spring_energy(cc_, -dyn_.corner_height(i, s, c, q_, x(1)));
-      if (k.state == CornerState::kStick) {
-        const double u = dyn_.corner_x(i, s, c, q_, x(0)) - k.anchor;
-        e += 0.5 * cc_.k_t * u * u;
-      }
+      const double delta = -dyn_.corner_height(i, s, c, q_, x(1));
+      e += k.state == CornerState::kStick
+               ? corner_potential(cc_, f_ref_, delta, dyn_.corner_x(i, s, c, q_, x(0)) - k.anchor)
+               : normal_spring_energy(cc_, delta);
     }
     return e;
   }
@@ -471,7 +489,8 @@ class CompliantSim final : private GuardProbe {
   void close_contact(std::size_t j) {
     Corner& k = corner_[j];
     if (k.touch >= 0) {
-      res_.events[static_cast<std::size_t>(k.touch)].force_estimate = k.peak;
+      double& estimate = res_.events[static_cast<std::size_t>(k.touch)].force_estimate;
+      estimate = std::max(estimate, k.peak);  // a landing on both corners: the larger
       res_.extremes.max_impact_force = std::max(res_.extremes.max_impact_force, k.peak);
     }
     k.touch = -1;
@@ -510,22 +529,40 @@ class CompliantSim final : private GuardProbe {
   }
 
   // a corner whose sticking force already needs more than mu_s F_n slips at once
-  void resolve_stick(int e, const State& x) {
+  void resolve_stick(int e, State& x) {
     Corner& k = corner_[static_cast<std::size_t>(e - 1)];
     if (!std::isfinite(mu_s_) || k.state != CornerState::kStick) return;
     unpack(x);
     Eigen::Vector2d f, ve;
     corner_force(e, std::sin(x(2)), std::cos(x(2)), x, f, ve);
     if (std::abs(f(0)) <= mu_s_ * f(1)) return;
-    k.state = CornerState::kSlip;
-    k.slip = ve(0) != 0.0 ? (ve(0) > 0.0 ? 1 : -1) : (f(0) > 0.0 ? -1 : 1);
-    zero_start_[static_cast<std::size_t>(e + 1)] = true;
+    start_slip(e, f, ve, x);
   }
 
-  bool fire(int slot, double t, State& x) {
-    unpack(x);
+  // a sticking corner starts to slip: its tangential spring lets go through the slider, so the
+  // energy it held is the slip's work (the floor's springs give it to friction)
+  void start_slip(int e, const Eigen::Vector2d& f, const Eigen::Vector2d& ve, State& x) {
+    const std::size_t j = static_cast<std::size_t>(e - 1);
+    Corner& k = corner_[j];
     const double s = std::sin(x(2)), c = std::cos(x(2));
-    if (slot == 4) {
+    const double u = dyn_.corner_x(e, s, c, q_, x(0)) - k.anchor;
+    const double delta = -dyn_.corner_height(e, s, c, q_, x(1));
+    const double held = 0.5 * cc_.k_t * tangential_scale(cc_, f_ref_, delta) * u * u;
+    x(iw() + 2) -= held;
+    x(iw() + 3) += held;
+    released_ += held;
+    k.state = CornerState::kSlip;
+    k.slip = ve(0) != 0.0 ? (ve(0) > 0.0 ? 1 : -1) : (f(0) > 0.0 ? -1 : 1);
+    zero_start_[j + 2] = true;
+  }
+
+  // The guards that cross at one instant fire together (advance): an overturn ends the run;
+  // corners that touch come down together (one touch event: a landing on both corners when both
+  // were free), corners that leave the floor leave together (one lift_off when none is left),
+  // then the friction switches of corners that neither touched nor left.
+  bool fire(const std::array<bool, kMaxGuards>& fires, double t, State& x) {
+    unpack(x);
+    if (fires[4]) {
       const int edge = x(2) > 0.0 ? 1 : 2;
       res_.status = Status::kOverturned;
       res_.message = "overturned";
@@ -535,74 +572,110 @@ class CompliantSim final : private GuardProbe {
       return false;
     }
     before_change();
-    const int e = slot % 2 + 1;
-    const std::size_t j = static_cast<std::size_t>(e - 1);
-    Corner& k = corner_[j];
-    Corner& other = corner_[1 - j];
-    if (slot < 2 && k.state == CornerState::kFree) {
-      // a touch: an impact when the other corner presses, a landing when it flies
-      close_transfer(x);
-      if (++res_.extremes.impacts > opt_.max_impacts)
-        return stop(t, "more than max_impacts = " + std::to_string(opt_.max_impacts) +
-                           " touches of the floor");
-      const bool impact = other.state != CornerState::kFree;
-      Eigen::Vector2d vb = dyn_.corner_velocity_body(e, s, c, q_, x(iv() + 2), qd_,
-                                                     Eigen::Vector2d(x(iv()), x(iv() + 1)));
-      const double vy = s * vb(0) + c * vb(1);
+    const std::array<CornerState, 2> was = {corner_[0].state, corner_[1].state};
+    const std::array<bool, 2> touch = {fires[0] && was[0] == CornerState::kFree,
+                                       fires[1] && was[1] == CornerState::kFree};
+    const std::array<bool, 2> release = {fires[0] && was[0] != CornerState::kFree,
+                                         fires[1] && was[1] != CornerState::kFree};
+    if ((touch[0] || touch[1]) && !touch_down(touch, t, x)) return false;
+    if (release[0] || release[1]) release_corners(release, t, x);
+    for (int e = 1; e <= 2; ++e) {
+      const std::size_t j = static_cast<std::size_t>(e - 1);
+      if (fires[j + 2] && corner_[j].state == was[j]) friction_switch(e, t, x);
+    }
+    after_change(t);
+    return true;
+  }
+
+  // corners touching the floor: an impact when the other corner presses, a landing when it flies
+  // (on both corners, edge 0, when both come down at once)
+  bool touch_down(const std::array<bool, 2>& touch, double t, State& x) {
+    close_transfer(x);
+    if (++res_.extremes.impacts > opt_.max_impacts)
+      return stop(t, "more than max_impacts = " + std::to_string(opt_.max_impacts) +
+                         " touches of the floor");
+    const bool both = touch[0] && touch[1];
+    const int single = touch[0] ? 1 : 2;
+    const bool impact =
+        !both && corner_[static_cast<std::size_t>(2 - single)].state != CornerState::kFree;
+    const double s = std::sin(x(2)), c = std::cos(x(2));
+    const long index = static_cast<long>(res_.events.size());
+    for (int e = 1; e <= 2; ++e) {
+      const std::size_t j = static_cast<std::size_t>(e - 1);
+      if (!touch[j]) continue;
+      Corner& k = corner_[j];
+      const Eigen::Vector2d vb = dyn_.corner_velocity_body(e, s, c, q_, x(iv() + 2), qd_,
+                                                           Eigen::Vector2d(x(iv()), x(iv() + 1)));
       k.state = CornerState::kStick;
       k.anchor = dyn_.corner_x(e, s, c, q_, x(0));
-      k.v_in = std::max(-vy, 0.0);
+      k.v_in = std::max(-(s * vb(0) + c * vb(1)), 0.0);
       k.peak = 0.0;
-      k.touch = static_cast<long>(res_.events.size());
-      rec_.event(event_at(t, impact ? EventKind::kImpact : EventKind::kLanding, e, x));
-      transfer_.event = k.touch;
-      transfer_.ix = x(iw() + 4);
-      transfer_.iy = x(iw() + 5);
-      transfer_.loss = contact_loss(x);
-      transfer_.theta_dot = x(iv() + 2);
+      k.touch = index;
       zero_start_[j] = true;
-      resolve_stick(e, x);
-    } else if (slot < 2) {
-      // a release: the end of an impact's transfer, an uplift, or a lift-off
-      const bool closes = transfer_.event >= 0;
-      close_transfer(x);
+    }
+    rec_.event(
+        event_at(t, impact ? EventKind::kImpact : EventKind::kLanding, both ? 0 : single, x));
+    transfer_.event = index;
+    transfer_.ix = x(iw() + 4);
+    transfer_.iy = x(iw() + 5);
+    transfer_.loss = contact_loss(x);
+    transfer_.theta_dot = x(iv() + 2);
+    for (int e = 1; e <= 2; ++e)
+      if (touch[static_cast<std::size_t>(e - 1)]) resolve_stick(e, x);
+    return true;
+  }
+
+  // corners leaving the floor: the end of an impact's transfer, an uplift, or a lift-off (one,
+  // edge 0, when no corner is left pressing)
+  void release_corners(const std::array<bool, 2>& release, double t, const State& x) {
+    // a transfer opened at this very instant (a corner touched as the other left) stays open
+    const bool opened_now =
+        transfer_.event >= 0 && res_.events[static_cast<std::size_t>(transfer_.event)].time == t;
+    const bool closes = transfer_.event >= 0 && !opened_now;
+    if (closes) close_transfer(x);
+    for (std::size_t j = 0; j < 2; ++j) {
+      if (!release[j]) continue;
       close_contact(j);
-      k.state = CornerState::kFree;
+      corner_[j].state = CornerState::kFree;
       zero_start_[j] = true;
-      if (other.state == CornerState::kFree) {
-        rec_.event(event_at(t, EventKind::kLiftOff, 0, x));
-        ++res_.extremes.lift_offs;
-      } else if (!closes) {
-        const int pivot = 3 - e;
-        rec_.event(event_at(t, EventKind::kUplift, pivot, x));
-        if (res_.extremes.first_uplift_time < 0.0) {
-          res_.extremes.first_uplift_time = t;
-          res_.extremes.first_uplift_edge = pivot;
-        }
+    }
+    if (corner_[0].state == CornerState::kFree && corner_[1].state == CornerState::kFree) {
+      rec_.event(event_at(t, EventKind::kLiftOff, 0, x));
+      ++res_.extremes.lift_offs;
+    } else if (!closes && !opened_now) {
+      const int pivot = corner_[0].state != CornerState::kFree ? 1 : 2;
+      rec_.event(event_at(t, EventKind::kUplift, pivot, x));
+      if (res_.extremes.first_uplift_time < 0.0) {
+        res_.extremes.first_uplift_time = t;
+        res_.extremes.first_uplift_edge = pivot;
       }
-    } else if (k.state == CornerState::kStick) {
-      // the friction limit: the corner slips
+    }
+  }
+
+  // corner e's friction guard: a sticking corner slips, a slipping one sticks where it is
+  void friction_switch(int e, double t, State& x) {
+    const std::size_t j = static_cast<std::size_t>(e - 1);
+    Corner& k = corner_[j];
+    unpack(x);
+    const double s = std::sin(x(2)), c = std::cos(x(2));
+    if (k.state == CornerState::kStick) {
       Eigen::Vector2d f, ve;
       corner_force(e, s, c, x, f, ve);
-      k.state = CornerState::kSlip;
-      k.slip = ve(0) != 0.0 ? (ve(0) > 0.0 ? 1 : -1) : (f(0) > 0.0 ? -1 : 1);
-      zero_start_[j + 2] = true;
+      start_slip(e, f, ve, x);
       rec_.event(event_at(t, EventKind::kSlipStart, e, x));
     } else if (k.state == CornerState::kSlip) {
-      // the slip velocity reached zero: the corner sticks where it is
       k.state = CornerState::kStick;
       k.anchor = dyn_.corner_x(e, s, c, q_, x(0));
       rec_.event(event_at(t, EventKind::kStick, e, x));
       resolve_stick(e, x);
     }
-    after_change(t);
-    return true;
   }
 
   bool advance(double& t, State& x);
   void place_at_rest(const InitialState& init, State& x);
   void finish(double t, const State& x);
 
+  CompliantAudit* audit_;
   const Body& body_;
   Dyn dyn_;
   const GroundMotion& motion_;
@@ -616,6 +689,8 @@ class CompliantSim final : private GuardProbe {
   SimulationResult res_;
   Recorder rec_;
   double m_ = 0, g_ = 0, h_ = 0, mg_ = 0, mu_s_ = 0, mu_k_ = 0;
+  double f_ref_ = 0;     // [N] the normal spring's force at rest on both corners (M g / 2)
+  double released_ = 0;  // [J] tangential springs' energy let go at slip starts
   Mat mu_cg_inv_;
   std::array<double, 2> limit_{};
   int samples_ = 4;
@@ -765,9 +840,11 @@ bool CompliantSim<MaxN>::advance(double& t, State& x) {
   }
   double t_hit = std::numeric_limits<double>::infinity();
   int slot_hit = -1;
+  std::array<double, kMaxGuards> crossing{};
   for (int slot = 0; slot < kMaxGuards; ++slot) {
     const double th = first_crossing(slot, smp_.data(), samples_,
                                      zero_start_[static_cast<std::size_t>(slot)], false, *this);
+    crossing[static_cast<std::size_t>(slot)] = th;
     if (th < t_hit) {
       t_hit = th;
       slot_hit = slot;
@@ -814,7 +891,15 @@ bool CompliantSim<MaxN>::advance(double& t, State& x) {
     burst_time_ = t;
     burst_ = 0;
   }
-  if (!fire(slot_hit, t, x)) return false;
+  // every guard whose crossing cannot be told from the first one's fires with it, at t_hit: a
+  // crossing's bracket ends where it was returned and is crossing_resolution wide, and two
+  // brackets that overlap are one instant (both corners of a level body lifting off or landing;
+  // alone, the second corner's guard would start the next step already crossed, and be missed)
+  std::array<bool, kMaxGuards> fires{};
+  for (std::size_t i = 0; i < fires.size(); ++i)
+    fires[i] =
+        std::isfinite(crossing[i]) && crossing[i] - crossing_resolution(crossing[i]) <= t_hit;
+  if (!fire(fires, t, x)) return false;
   integ_.start(sys, ctl_, t, x, integ_.suggested_step());
   if (opt_.progress) opt_.progress->store(t, std::memory_order_relaxed);
   return true;
@@ -854,6 +939,10 @@ void CompliantSim<MaxN>::finish(double t, const State& x) {
                                e.impact_loss + e.friction_loss);
   e.scale = std::max({rec_.energy_scale(), std::abs(pot - potential0_), std::abs(kin), kinetic0_,
                       std::abs(e.impact_loss) + e.friction_loss, x(iw() + 2)});
+  if (audit_) {
+    audit_->dashpot_work = x(iw() + 6);
+    audit_->released_at_slip = released_;
+  }
   res_.rejected_steps = integ_.rejected_steps();
   res_.rhs_evaluations = integ_.rhs_evaluations();
   if (res_.status == Status::kCompleted) res_.message = "completed";
@@ -862,10 +951,11 @@ void CompliantSim<MaxN>::finish(double t, const State& x) {
 }  // namespace
 
 SimulationResult simulate_compliant(const Body& body, const GroundMotion& motion,
-                                    const InitialState& init, const SimulationOptions& opt) {
+                                    const InitialState& init, const SimulationOptions& opt,
+                                    CompliantAudit* audit) {
   // a stack-bounded state up to 16 modes, heap beyond
-  if (body.modes() <= 16) return CompliantSim<16>(body, motion, opt).run(init);
-  return CompliantSim<Eigen::Dynamic>(body, motion, opt).run(init);
+  if (body.modes() <= 16) return CompliantSim<16>(body, motion, opt, audit).run(init);
+  return CompliantSim<Eigen::Dynamic>(body, motion, opt, audit).run(init);
 }
 
 }  // namespace flexrock::detail

@@ -13,19 +13,30 @@
 // | slip s       | -y_e / h                          | none                      | free      |
 // |              | s x_e' / sqrt(g h)                | anchor xi_e = x_e         | stick     |
 //
-// (* slip at once when the sticking force already needs more than mu_s F_n.) Overturning, as in
-// the impulsive model, is |theta| reaching the chosen angle. The body's contact mode in the
-// outputs (full contact, rocking on an edge, flight, their sliding variants) is read from which
-// corners press and which slip.
+// (* slip at once when the sticking force already needs more than mu_s F_n.) Guards that cross at
+// one instant (within the locator's resolution: a level body's two corners) fire together.
+// Overturning, as in the impulsive model, is |theta| reaching the chosen angle. The body's contact
+// mode in the outputs (full contact, rocking on an edge, flight, their sliding variants) is read
+// from which corners press and which slip.
 #pragma once
 
 #include "flexrock/sim/simulate.hpp"
 
 namespace flexrock::detail {
 
-/// One run with the compliant contact; the options are already checked.
+/// What the compliant contact's loss is made of, integrated apart from the energy balance (tests).
+struct CompliantAudit {
+  double dashpot_work = 0.0;      // [J] the dashpots' work (the floor's force less the contact
+                                  // potential's gradient), normal and tangential
+  double released_at_slip = 0.0;  // [J] tangential springs' energy let go where corners began to
+                                  // slip (booked in friction_loss with the slips' work)
+};
+
+/// One run with the compliant contact; the options are already checked. `audit`, if given,
+/// receives the dashpots' work.
 SimulationResult simulate_compliant(const Body& body, const GroundMotion& motion,
-                                    const InitialState& init, const SimulationOptions& opt);
+                                    const InitialState& init, const SimulationOptions& opt,
+                                    CompliantAudit* audit = nullptr);
 
 /// The spring-dashpot constants of each tipping point for `body` under `opt`.
 CornerContact corner_contact(const Body& body, const SimulationOptions& opt);

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 #include <set>
 
+#include "flexrock/contact/corner_potential.hpp"
 #include "flexrock/contact/impact.hpp"
 #include "flexrock/model/dynamics.hpp"
 
@@ -259,6 +260,35 @@ TEST_F(SympyReference, ImpactLawsAgainstPointMassMechanics) {
   }
   EXPECT_GE(rigid, 30);
   EXPECT_GE(restitution, 40);
+}
+
+TEST_F(SympyReference, CompliantCornerPotentialAndForces) {
+  // the sticking corner's stored energy and forces (with dashpots) against the contact potential
+  // derived in tools/derive/derive.py (theory "Compliant contact"), for p = 1, 1.5 and 2.2
+  int cases = 0;
+  for (const auto& s : (*ref_)["compliant_potential"]) {
+    CornerContact cc;
+    cc.law = s["law"] == "linear" ? ContactForceLaw::kLinear : ContactForceLaw::kHuntCrossley;
+    cc.p = s["p"];
+    cc.k = s["k"];
+    cc.k_t = s["k_t"];
+    cc.c = s["c"];
+    cc.c_t = s["c_t"];
+    cc.hc = s["hc"];
+    cc.v_floor = s["v_floor"];
+    const double f_ref = s["f_ref"], delta = s["delta"], u = s["u"];
+    const double v = s["potential"], ft = s["force_t"], fn = s["force_n"];
+    EXPECT_NEAR(corner_potential(cc, f_ref, delta, u), v, 1e-13 * std::abs(v));
+    const CornerForce f =
+        sticking_corner_force(cc, f_ref, delta, s["delta_dot"], u, s["u_dot"], s["v_in"]);
+    EXPECT_NEAR(f.t, ft, 1e-13 * (std::abs(ft) + std::abs(fn)));
+    EXPECT_NEAR(f.n, fn, 1e-13 * (std::abs(ft) + std::abs(fn)));
+    // at and above the floor the corner stores nothing and is held by nothing
+    EXPECT_EQ(corner_potential(cc, f_ref, 0.0, u), 0.0);
+    EXPECT_EQ(sticking_corner_force(cc, f_ref, 0.0, 0.0, u, 0.0, s["v_in"]).t, 0.0);
+    ++cases;
+  }
+  EXPECT_EQ(cases, 9);
 }
 
 }  // namespace

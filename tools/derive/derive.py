@@ -2768,6 +2768,78 @@ def squat_block():
 
 # ---------------------------------------------------------------------------
 
+def compliant_potential():
+    """The compliant corner's contact potential (theory "Compliant contact").
+
+    V(delta, u) = k delta^(p+1)/(p+1) + k_t phi(delta) u^2 / 2 with phi = k delta^p / f_ref: the
+    tangential spring's stiffness scales with the normal spring's force (f_ref = M g / 2, so that
+    phi = 1 at rest on both corners). Checked symbolically: the forces the engine applies are the
+    potential's gradient (F_t = -dV/du, the elastic normal force dV/ddelta with its push
+    k_t phi' u^2 / 2); along any motion the elastic forces' power on the body is -dV/dt, so that a
+    contact without dashpots stores and returns energy exactly; V and the tangential force vanish as
+    delta -> 0+ for every u (the release discards nothing); phi(delta_st) = 1; the dashpots'
+    power is -(c delta'^2 + c_t phi u'^2) <= 0. Then reference values of V and of the sticking
+    corner's forces (with dashpots) at sample points, for tests/unit/sympy_reference_test.cpp."""
+    k, kt, fref, d, u, c, ct, dd, ud = sp.symbols('k k_t f_ref delta u c c_t deltadot udot', positive=True)
+    res = {}
+    refs = []
+    for p in (sp.Integer(1), sp.Rational(3, 2), sp.Rational(11, 5)):
+        phi = k * d ** p / fref
+        V = k * d ** (p + 1) / (p + 1) + kt * phi * u ** 2 / 2
+        ft_el = -kt * phi * u                                       # the engine's elastic F_t
+        fn_el = k * d ** p + kt * (p * k * d ** (p - 1) / fref) * u ** 2 / 2  # and elastic F_n
+        tag = 'p=%s' % p
+        res['gradient_' + tag] = (sp.simplify(-sp.diff(V, u) - ft_el) == 0
+                                  and sp.simplify(sp.diff(V, d) - fn_el) == 0)
+        # power along a motion delta(t), u(t): the corner's velocity is (u', -delta')
+        t = sp.Symbol('t')
+        D, U = sp.Function('D')(t), sp.Function('U')(t)
+        on = {d: D, u: U}
+        power = ft_el.subs(on) * U.diff(t) + fn_el.subs(on) * (-D.diff(t))
+        res['conservative_' + tag] = sp.simplify(power + V.subs(on).diff(t)) == 0
+        # with the dashpots (linear normal dashpot c delta', tangential c_t phi u'; unclipped)
+        ft = -phi * (kt * u + ct * ud)
+        fn = k * d ** p + c * dd + kt * (p * k * d ** (p - 1) / fref) * u ** 2 / 2
+        pw = ft * ud + fn * (-dd) + sp.diff(V, d) * dd + sp.diff(V, u) * ud
+        res['dashpots_dissipate_' + tag] = sp.simplify(pw + c * dd ** 2 + ct * phi * ud ** 2) == 0
+        res['vanishes_at_release_' + tag] = (sp.limit(V, d, 0, '+') == 0
+                                             and sp.limit(ft_el, d, 0, '+') == 0)
+        dst = (fref / k) ** (1 / p)
+        res['unit_scale_at_rest_' + tag] = sp.simplify(phi.subs(d, dst) - 1) == 0
+        # reference values: a 1000 kg body, delta_st = 5e-5 m, at three penetrations
+        M, g = mp.mpf(1000), mp.mpf(G_STD)
+        f_ref = M * g / 2
+        d_st = mp.mpf('5e-5')
+        kk = f_ref / d_st ** mp.mpf(p)
+        k_t = f_ref / d_st
+        zeta, e = mp.mpf('0.3'), mp.mpf('0.6')
+        c_t = 2 * zeta * mp.sqrt(k_t * M / 2)
+        law = 'linear' if p == 1 else 'hunt_crossley'
+        cn = c_t if law == 'linear' else mp.mpf(0)
+        hc = mp.mpf(0) if law == 'linear' else mp.mpf(3) / 4 * (1 - e ** 2)
+        v_floor = mp.sqrt(g * d_st)
+        v_in = mp.mpf('0.3')
+        num = {k: kk, kt: k_t, fref: f_ref, ct: c_t, c: cn}
+        Vn = sp.lambdify((d, u), V.subs(num), 'mpmath')
+        ftn = sp.lambdify((d, u), ft_el.subs(num), 'mpmath')
+        fnn = sp.lambdify((d, u), (fn_el - k * d ** p).subs(num), 'mpmath')
+        for (rd, ru, rdd, rud) in ((mp.mpf('0.3'), mp.mpf('-0.7'), mp.mpf('0.05'), mp.mpf('-0.02')),
+                                   (mp.mpf(1), mp.mpf('1.3'), mp.mpf('-0.01'), mp.mpf('0.04')),
+                                   (mp.mpf('2.5'), mp.mpf('0.4'), mp.mpf('-0.2'), mp.mpf('0.1'))):
+            dl, uu = rd * d_st, ru * d_st
+            phin = kk * dl ** mp.mpf(p) / f_ref
+            spring = kk * dl ** mp.mpf(p)
+            if law == 'linear':
+                normal = max(spring + cn * rdd, mp.mpf(0))
+            else:
+                normal = max(spring * (1 + hc * rdd / max(v_in, v_floor)), mp.mpf(0))
+            refs.append(dict(law=law, p=float(p), k=kk, k_t=k_t, c=cn, c_t=c_t, hc=hc, v_floor=v_floor,
+                             f_ref=f_ref, v_in=v_in, delta=dl, delta_dot=rdd, u=uu, u_dot=rud,
+                             potential=Vn(dl, uu), force_t=ftn(dl, uu) - phin * c_t * rud,
+                             force_n=normal + fnn(dl, uu)))
+    return res, refs
+
+
 def fmt(x):
     if isinstance(x, str):
         return json.dumps(x)
@@ -3200,6 +3272,8 @@ def main():
     print('  rigid rocking by its Taylor series: %s' % sres['rocking_series'], file=sys.stderr)
     sres['free_rocking_arc'] = derive_free_rocking_arc()
     print('  free rocking in closed form: %s' % sres['free_rocking_arc'], file=sys.stderr)
+    sres['compliant_potential'], compliant_refs = compliant_potential()
+    print('  compliant contact potential: %s' % sres['compliant_potential'], file=sys.stderr)
     failed = [(n, k) for n, r in sres.items() for k, v in r.items()
               if (isinstance(v, bool) and not v) or (isinstance(v, list) and v)]
     print('symbolic checks (n=0..%d): %s  [%.1f s]' % (args.symbolic_n, 'ALL PASS' if not failed else
@@ -3335,7 +3409,8 @@ def main():
     with open(args.out, 'w') as fh:
         fh.write('{"g": 9.80665, "seed": %d, "cases": [\n' % args.seed)
         fh.write(',\n'.join(fmt(c) for c in cases))
-        fh.write('\n], "rigid_block_friction": %s, "sliding_pulses": %s}\n' % (fmt(rigid_friction), fmt(pulses)))
+        fh.write('\n], "rigid_block_friction": %s, "sliding_pulses": %s, "compliant_potential": %s}\n' %
+                 (fmt(rigid_friction), fmt(pulses), fmt(compliant_refs)))
     json.load(open(args.out))
     print('numeric cases: %d, max relative (a)-vs-(b) difference %.2e (%s)' %
           (len(cases), float(chk.maxerr), chk.where), file=sys.stderr)
