@@ -135,9 +135,10 @@ void bind_sim(py::module_& m) {
       .def_readwrite("contact_restitution", &SimulationOptions::contact_restitution,
                      "restitution of a free bounce (linear: sets the damping; hunt_crossley: "
                      "required); < 0: not given")
-      .def_readwrite("contact_tangential_stiffness",
-                     &SimulationOptions::contact_tangential_stiffness,
-                     "[N/m] a sticking corner's horizontal spring; 0: the normal secant stiffness");
+      .def_readwrite(
+          "contact_tangential_stiffness", &SimulationOptions::contact_tangential_stiffness,
+          "[N/m] a sticking corner's horizontal spring at rest under half the weight, > 0; "
+          "-1: not given, the normal spring's secant stiffness");
 
   py::class_<Event>(m, "Event", "Something that happened; fields not meaningful are zero.")
       .def_readonly("time", &Event::time)

@@ -689,7 +689,8 @@ std::string summary_json(const Case& c, const Body& body, const SimulationResult
         {"exponent", o.contact_exponent},
         {"damping_ratio", o.contact_damping_ratio},
         {"restitution", o.contact_restitution < 0.0 ? json() : json(o.contact_restitution)},
-        {"tangential_stiffness_N_per_m", o.contact_tangential_stiffness},
+        {"tangential_stiffness_N_per_m",
+         o.contact_tangential_stiffness > 0.0 ? json(o.contact_tangential_stiffness) : json()},
         {"max_contact_force_N", x.max_contact_force}};
   }
   auto jpath = [](const std::string& s) { return s.empty() ? json() : json(s); };

@@ -22,6 +22,7 @@
 #include "flexrock/io/case_file.hpp"
 #include "flexrock/io/files.hpp"
 #include "flexrock/io/records.hpp"
+#include "flexrock/sim/contact_rules.hpp"
 #include "flexrock/sim/simulate.hpp"
 
 namespace flexrock::io::detail {
@@ -295,6 +296,10 @@ inline void read_contact_keys(TableReader& r, SimulationOptions& o) {
         "contact_restitution", "contact_tangential_stiffness"})
     only_compliant(key);
   if (!compliant) return;
+  for (const ImpulsiveOnlyKey& k : kImpulsiveOnlyKeys)
+    if (r.has(k.key)) r.expected(k.key, std::string("no ") + k.key + ": " + kImpulsiveOnlyWhy);
+  if (r.has("restitution_ratio"))
+    r.expected("restitution_ratio", std::string("no restitution_ratio: ") + kImpulsiveOnlyWhy);
   if (!r.has("contact_stiffness"))
     r.expected("contact_stiffness",
                "the spring of each tipping point [N/m, or N/m^p with hunt_crossley] with "
@@ -328,8 +333,11 @@ inline void read_contact_keys(TableReader& r, SimulationOptions& o) {
   } else if (hc) {
     r.expected("contact_restitution", rw + " with contact_force_law = \"hunt_crossley\"");
   }
-  o.contact_tangential_stiffness =
-      r.nonnegative_or("contact_tangential_stiffness", o.contact_tangential_stiffness, "[N/m]");
+  // > 0: zero would be no tangential spring at all (omit the key for the default)
+  o.contact_tangential_stiffness = r.positive_or(
+      "contact_tangential_stiffness", o.contact_tangential_stiffness,
+      "[N/m] (omit it for the default, the normal spring's secant stiffness under half the "
+      "weight)");
 }
 
 // the solver keys of a [solver] table but t_end (case files and study files); the defaults are

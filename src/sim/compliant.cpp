@@ -18,6 +18,7 @@
 #include "flexrock/core/format.hpp"
 #include "flexrock/integrate/stiff_switching.hpp"
 #include "flexrock/model/dynamics.hpp"
+#include "flexrock/sim/contact_rules.hpp"
 #include "recorder.hpp"
 #include "step_extremes.hpp"
 
@@ -46,7 +47,9 @@ CornerContact corner_contact(const Body& body, const SimulationOptions& opt) {
     cc.hc = 0.75 * (1.0 - e * e);
     cc.v_floor = std::sqrt(g * delta_static);
   }
-  cc.k_t = opt.contact_tangential_stiffness > 0.0 ? opt.contact_tangential_stiffness : cc.k_secant;
+  cc.k_t = opt.contact_tangential_stiffness == kTangentialStiffnessUnset
+               ? cc.k_secant
+               : opt.contact_tangential_stiffness;
   cc.c_t = 2.0 * (cc.law == ContactForceLaw::kLinear ? zeta : 1.0) * std::sqrt(0.5 * cc.k_t * m);
   return cc;
 }

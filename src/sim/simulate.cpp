@@ -13,6 +13,7 @@
 #include "compliant.hpp"
 #include "flexrock/core/error.hpp"
 #include "flexrock/core/format.hpp"
+#include "flexrock/sim/contact_rules.hpp"
 #include "simulator_instances.hpp"
 
 namespace flexrock {
@@ -155,14 +156,19 @@ void check_options(const Body& body, const InitialState& init, const SimulationO
                           "options: contact_force_law = hunt_crossley needs contact_restitution "
                           "in (0, 1] (its damping follows from it)");
     FLEXROCK_THROW_UNLESS(
-        std::isfinite(o.contact_tangential_stiffness) && o.contact_tangential_stiffness >= 0.0,
-        "options: contact_tangential_stiffness must be >= 0 (0: the normal spring's secant "
-        "stiffness), got " +
-            std::to_string(o.contact_tangential_stiffness));
+        o.contact_tangential_stiffness == kTangentialStiffnessUnset ||
+            (std::isfinite(o.contact_tangential_stiffness) && o.contact_tangential_stiffness > 0.0),
+        "options: contact_tangential_stiffness must be > 0 [N/m] (or -1, not given: the normal "
+        "spring's secant stiffness under half the weight), got " +
+            format_number(o.contact_tangential_stiffness));
+    for (const ImpulsiveOnlyKey& k : kImpulsiveOnlyKeys)
+      FLEXROCK_THROW_UNLESS(k.is_default(o), std::string("options: ") + k.key +
+                                                 " is set with contact_model = compliant, but " +
+                                                 kImpulsiveOnlyWhy);
   } else {
     FLEXROCK_THROW_UNLESS(o.contact_stiffness == 0.0 && o.contact_exponent == 1.0 &&
                               o.contact_damping_ratio == 1.0 && o.contact_restitution < 0.0 &&
-                              o.contact_tangential_stiffness == 0.0 &&
+                              o.contact_tangential_stiffness == kTangentialStiffnessUnset &&
                               o.contact_force_law == ContactForceLaw::kLinear,
                           "options: contact_stiffness, contact_force_law, contact_exponent, "
                           "contact_damping_ratio, contact_restitution and "

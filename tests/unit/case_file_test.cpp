@@ -675,5 +675,23 @@ TEST_F(CaseFile, LoadBodyReadsOnlyTheBodyTable) {
   EXPECT_DOUBLE_EQ(p.mass, 100.0);
 }
 
+TEST_F(CaseFile, CompliantContactRefusesTheImpactLawsKeys) {
+  // keys the compliant contact would ignore are refused with the file's line; a tangential
+  // stiffness of 0 is refused (omitting it gives the default)
+  const std::string compliant =
+      "[solver]\ncontact_model = \"compliant\"\ncontact_stiffness = 1e8\n";
+  for (const char* key :
+       {"impact_law = \"rigid_body\"", "restitution_factor = 0.9", "impact_duration = 0.004"}) {
+    const std::string line = key;
+    expect_error(kBlock + kPulse + compliant + line + "\n",
+                 {line.substr(0, line.find(' ')), "contact_model = \"impulsive\"", "case.toml"});
+  }
+  expect_error(kBlock + kPulse + compliant + "contact_tangential_stiffness = 0\n",
+               {"contact_tangential_stiffness", "omit it for the default"});
+  EXPECT_LT(
+      load_case(write("ok.toml", kBlock + kPulse + compliant)).options.contact_tangential_stiffness,
+      0.0);
+}
+
 }  // namespace
 }  // namespace flexrock::io

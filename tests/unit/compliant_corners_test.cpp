@@ -10,8 +10,10 @@
 #include <cmath>
 #include <cstdio>
 #include <numbers>
+#include <string>
 #include <vector>
 
+#include "flexrock/core/error.hpp"
 #include "flexrock/model/builders.hpp"
 #include "flexrock/sim/simulate.hpp"
 
@@ -233,6 +235,41 @@ TEST(CompliantCorners, LiftOffsAndLandingsTendToTheImpulsiveFloors) {
     EXPECT_EQ(count(r, EventKind::kLanding), ref_landings) << "ratio " << ratio;
     EXPECT_EQ(r.extremes.impacts, ref.extremes.impacts) << "ratio " << ratio;
   }
+}
+
+TEST(CompliantOptions, ImpulsiveKeysAndAZeroTangentialSpringAreRefused) {
+  // the compliant contact has no impact law, restitution or assumed impact duration: a value it
+  // would ignore is refused, naming the key; a tangential stiffness of 0 is no default
+  const Body body(rigid_block(0.6, 1.8, 1000.0));
+  const GroundMotion none = GroundMotion::none(0.1);
+  auto refused = [&](const SimulationOptions& o, const std::string& key) {
+    try {
+      simulate(body, none, {}, o);
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(key), std::string::npos) << e.what();
+      return;
+    }
+    ADD_FAILURE() << key << " was not refused";
+  };
+  const SimulationOptions base = compliant(body, {ContactForceLaw::kLinear, 300.0, 1.0});
+  EXPECT_EQ(simulate(body, none, {}, base).status, Status::kCompleted);
+  SimulationOptions o = base;
+  o.impact_law = ImpactLaw::kRigidBody;
+  refused(o, "impact_law");
+  o = base;
+  o.restitution_factor = 0.9;
+  refused(o, "restitution_factor");
+  o = base;
+  o.restitution_ratio_edge2 = 0.8;
+  refused(o, "restitution_ratio_edge2");
+  o = base;
+  o.impact_duration = 0.005;
+  refused(o, "impact_duration");
+  o = base;
+  o.contact_tangential_stiffness = 0.0;
+  refused(o, "contact_tangential_stiffness");
+  o.contact_tangential_stiffness = -3.0;
+  refused(o, "contact_tangential_stiffness");
 }
 
 }  // namespace

@@ -135,9 +135,10 @@ struct SimulationOptions {
   // the restitution of a free bounce (linear: sets the damping ratio; hunt_crossley: its
   // damping); < 0: not given
   double contact_restitution = -1.0;
-  // [N/m] the sticking tipping point's horizontal spring; 0: the normal spring's secant stiffness
-  // under the body's weight shared by both tipping points
-  double contact_tangential_stiffness = 0.0;
+  // [N/m] the sticking tipping point's horizontal spring at rest under half the weight (it scales
+  // with the normal spring's force: docs/theory.md, "Compliant contact"), > 0; -1: not given, the
+  // normal spring's secant stiffness there
+  double contact_tangential_stiffness = -1.0;
   // how the compliant contact is integrated: kAuto switches between DOPRI5 and a Rosenbrock
   // method as the springs' stiffness would hold the explicit step (tests force either)
   ContactIntegrator contact_integrator = ContactIntegrator::kAuto;
