@@ -490,7 +490,13 @@ const EventColumn kEventColumns[] = {
     {"theta_rad", "rad", "tilt (peaks)", [](const Event& e) { return e.theta; }, nullptr},
     {"theta_dot_before_rad_per_s", "rad/s", "tilt rate before (impacts)",
      [](const Event& e) { return e.theta_dot_before; }, nullptr},
-    {"theta_dot_after_rad_per_s", "rad/s", "tilt rate after (impacts)",
+    {"theta_dot_after_rad_per_s", "rad/s",
+     "tilt rate after (impacts). With the compliant contact a touch lasts: this is theta_dot at "
+     "the end of the touch's transfer, i.e. at the next corner event (the other corner's release, "
+     "the rate at separation, or another touch) or, if theta_dot reaches zero first, at the end "
+     "of the step where it did. It is not a restitution: the springs keep exchanging energy with "
+     "the body after it, so the ratio to theta_dot before moves with the stiffness "
+     "(docs/theory.md §22, \"Results\")",
      [](const Event& e) { return e.theta_dot_after; }, nullptr},
     {"energy_loss_J", "J",
      "energy lost (impacts, chatter cut-off); for `energy_unbalanced`, the residual",

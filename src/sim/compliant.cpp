@@ -161,10 +161,11 @@ class CompliantSim final : private GuardProbe {
 
   // the force of the floor on corner e (inertial components) and the corner's velocity; with
   // `dashpot`, the power its dashpots take (the force less the contact potential's gradient,
-  // against the corner's velocity)
+  // against the corner's velocity); with `law`, the normal law's part of the normal force (zero
+  // where it clips a pull: the kink the extremes must find)
   template <class X>
   double corner_force(int e, double s, double c, const X& x, Eigen::Vector2d& f,
-                      Eigen::Vector2d& ve, double* dashpot = nullptr) const {
+                      Eigen::Vector2d& ve, double* dashpot = nullptr, double* law = nullptr) const {
     const Corner& k = corner_[static_cast<std::size_t>(e - 1)];
     const Eigen::Vector2d vc(x(iv()), x(iv() + 1));
     const Eigen::Vector2d vb = dyn_.corner_velocity_body(e, s, c, q_, x(iv() + 2), qd_, vc);
@@ -174,6 +175,7 @@ class CompliantSim final : private GuardProbe {
       const double u = dyn_.corner_x(e, s, c, q_, x(0)) - k.anchor;
       const CornerForce cf = sticking_corner_force(cc_, f_ref_, delta, -ve(1), u, ve(0), k.v_in);
       f = {cf.t, cf.n};
+      if (law) *law = normal_force(cc_, delta, -ve(1), k.v_in);
       if (dashpot) {
         const double phi = tangential_scale(cc_, f_ref_, delta);
         const double fn_el =
@@ -183,6 +185,7 @@ class CompliantSim final : private GuardProbe {
       return cf.n;
     }
     const double fn = normal_force(cc_, delta, -ve(1), k.v_in);
+    if (law) *law = fn;
     f = {k.state == CornerState::kSlip ? -k.slip * mu_k_ * fn : 0.0, fn};
     if (dashpot) *dashpot = -(fn - tangential_scale(cc_, f_ref_, delta) * f_ref_) * ve(1);
     return fn;
@@ -255,14 +258,14 @@ class CompliantSim final : private GuardProbe {
       const std::size_t j = static_cast<std::size_t>(e - 1);
       const Corner& k = corner_[j];
       const double y = dyn_.corner_height(e, s, c, q_, x(1));
-      fn_[j] = 0.0;
+      fn_[j] = law_[j] = 0.0;
       if (k.state == CornerState::kFree) {
         gs.v[j] = y / h_;
         gs.v[j + 2] = 1.0;
         continue;
       }
       Eigen::Vector2d f, ve;
-      fn_[j] = corner_force(e, s, c, x, f, ve);
+      fn_[j] = corner_force(e, s, c, x, f, ve, nullptr, &law_[j]);
       gs.v[j] = -y / h_;
       if (k.state == CornerState::kSlip) {
         gs.v[j + 2] = k.slip * ve(0) / std::sqrt(g_ * h_);
@@ -391,11 +394,13 @@ class CompliantSim final : private GuardProbe {
     e(n_ + 8) = corner_[0].peak;
     e(n_ + 9) = corner_[1].peak;
   }
-  void keep_point(int p, const Observation& o, const std::array<double, 2>& fn) {
+  // (law: the normal laws' parts of fn, whose clipping at zero is the corners' pressing switch)
+  void keep_point(int p, const Observation& o, const std::array<double, 2>& fn,
+                  const std::array<double, 2>& law) {
     const auto pp = static_cast<std::size_t>(p);
     point_t_[pp] = o.t;
     reported_values(o, fn, point_vals_[pp]);
-    point_press_[pp] = {fn[0] > 0.0, fn[1] > 0.0, o.fj >= kPressingFraction};
+    point_press_[pp] = {law[0] > 0.0, law[1] > 0.0, o.fj >= kPressingFraction};
   }
   // the peaks between the step's kept points 0..points-1 (step_extremes.hpp), on the dense output
   void locate_step_extremes(int points) {
@@ -440,7 +445,7 @@ class CompliantSim final : private GuardProbe {
           integ_.dense(t, buf_);
           GuardSample gs;
           evaluate(t, buf_, gs);
-          return j < 2 ? fn_[jj] > 0.0 : gs.fj >= kPressingFraction;
+          return j < 2 ? law_[jj] > 0.0 : gs.fj >= kPressingFraction;
         }));
       }
     }
@@ -702,6 +707,9 @@ class CompliantSim final : private GuardProbe {
   Transfer transfer_;
   std::array<double, 2> fn_{};  // the corners' normal forces at the last evaluation [N]
   std::array<std::array<double, 2>, kMaxSamples + 1> fn_at_{};  // fn_ at this step's samples
+  // the normal laws' parts of fn_ (clipped at zero where a dashpot would pull), and at the samples
+  std::array<double, 2> law_{};
+  std::array<std::array<double, 2>, kMaxSamples + 1> law_at_{};
   std::array<bool, kMaxGuards> zero_start_{};
   std::array<GuardSample, kMaxSamples + 1> smp_;
   std::array<State, kMaxSamples + 1> states_;
@@ -840,6 +848,7 @@ bool CompliantSim<MaxN>::advance(double& t, State& x) {
     }
     evaluate(tk, xk, smp_[static_cast<std::size_t>(k)]);
     fn_at_[static_cast<std::size_t>(k)] = fn_;
+    law_at_[static_cast<std::size_t>(k)] = law_;
   }
   double t_hit = std::numeric_limits<double>::infinity();
   int slot_hit = -1;
@@ -859,13 +868,13 @@ bool CompliantSim<MaxN>::advance(double& t, State& x) {
   for (int k = 0; k <= samples_; ++k) {
     const std::size_t i = static_cast<std::size_t>(k);
     if (smp_[i].t >= t_hit) break;
-    keep_point(points++, observe(smp_[i], states_[i], fn_at_[i]), fn_at_[i]);
+    keep_point(points++, observe(smp_[i], states_[i], fn_at_[i]), fn_at_[i], law_at_[i]);
   }
   if (slot_hit >= 0 && points > 0 && t_hit > point_t_[static_cast<std::size_t>(points - 1)]) {
     integ_.dense(t_hit, buf_);
     GuardSample before;
     evaluate(t_hit, buf_, before);
-    keep_point(points++, observe(before, buf_, fn_), fn_);
+    keep_point(points++, observe(before, buf_, fn_), fn_, law_);
   }
   observe_switches(points);
   locate_step_extremes(points);
