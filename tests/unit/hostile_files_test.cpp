@@ -15,6 +15,7 @@
 #include <string>
 
 #include "flexrock/core/error.hpp"
+#include "flexrock/excitation/pulses.hpp"
 #include "flexrock/io/case_file.hpp"
 #include "flexrock/io/files.hpp"
 #include "flexrock/io/journal.hpp"
@@ -286,6 +287,16 @@ TEST_F(HostileFiles, TheEngineAppliesTheSameRanges) {
   o.contact_damping_ratio = 1e300;
   expect_input_error([&] { simulate(body, GroundMotion::none(0.1), {}, o); },
                      {"contact_damping_ratio", "[0, 100]"});
+  // a pulse made from the table (Python's keyword functions): its period in range
+  const double omega = 2.0 * 3.141592653589793 / 1e-300;
+  expect_input_error(
+      [&] {
+        make_pulse(pulse_kind("one_sine"), {1.0, omega, 2.0, Component::kHorizontal, {}});
+      },
+      {"one_sine", "period 1e-300 s", "[0.0001, 10000] s"});
+  EXPECT_NO_THROW(
+      make_pulse(pulse_kind("one_sine"),
+                 {1.0, 2.0 * 3.141592653589793 / 1e-4, 2.0, Component::kHorizontal, {}}));
 }
 
 }  // namespace

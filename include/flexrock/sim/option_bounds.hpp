@@ -12,6 +12,7 @@
 #include <string_view>
 
 #include "flexrock/core/format.hpp"
+#include "flexrock/excitation/pulses.hpp"
 
 namespace flexrock {
 
@@ -47,7 +48,7 @@ inline constexpr OptionBound kImpactDurationBound{
 // a synthetic pulse's period (or 1/frequency_hz): no ground or shake-table motion is faster than
 // 10 kHz, and one slower than 1e-4 Hz (a period of 2.8 hours) is a static tilt
 inline constexpr OptionBound kPulsePeriodBound{
-    "period", 1e-4, 1e4, "s",
+    "period", kMinPulsePeriod, kMaxPulsePeriod, "s",
     "no ground or shake-table motion is faster than 10 kHz; a period of hours is a static tilt"};
 
 /// "[lo, hi] unit"
