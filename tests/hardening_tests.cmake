@@ -56,3 +56,20 @@ target_link_libraries(flexrock_io_hazard_tests PRIVATE flexrock::io flexrock::co
 flexrock_apply_sanitizers(flexrock_io_hazard_tests)
 gtest_discover_tests(flexrock_io_hazard_tests PROPERTIES LABELS unit TIMEOUT 60
                      DISCOVERY_TIMEOUT 60)
+
+# files planted or forged by someone else (links at temporaries and journals, binary and
+# oversized inputs, a hand-edited sweep CSV) and solver values past their physical range
+add_executable(flexrock_hostile_files_tests unit/hostile_files_test.cpp)
+target_include_directories(flexrock_hostile_files_tests PRIVATE ${PROJECT_SOURCE_DIR}/tests)
+target_link_libraries(flexrock_hostile_files_tests PRIVATE flexrock::io flexrock::core
+                                                           GTest::gtest GTest::gtest_main
+                                                           flexrock_warnings)
+flexrock_apply_sanitizers(flexrock_hostile_files_tests)
+gtest_discover_tests(flexrock_hostile_files_tests PROPERTIES LABELS unit TIMEOUT 60
+                     DISCOVERY_TIMEOUT 60)
+if(TARGET flexrock)
+  add_test(NAME cli_hostile_files
+           COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/cli/hostile_files.sh $<TARGET_FILE:flexrock>
+                   ${PROJECT_SOURCE_DIR})
+  set_tests_properties(cli_hostile_files PROPERTIES LABELS cli TIMEOUT 300)
+endif()

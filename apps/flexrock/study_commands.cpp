@@ -11,6 +11,7 @@
 #include <atomic>
 #include <cerrno>
 #include <chrono>
+#include <cmath>
 #include <csignal>
 #include <cstdlib>
 #include <cstring>
@@ -23,6 +24,7 @@
 #include <vector>
 
 #include "flexrock/core/error.hpp"
+#include "flexrock/core/format.hpp"
 #include "flexrock/excitation/intensity.hpp"
 #include "flexrock/io/files.hpp"
 #include "flexrock/io/journal.hpp"
@@ -47,6 +49,10 @@ namespace fs = std::filesystem;
 constexpr int kExitOk = 0;
 constexpr int kExitRunFailed = 1;
 constexpr int kExitBadInput = 2;
+
+// the most points of `fragility --curve`: a curve of 10000 points is smooth at any print size,
+// and its CSV stays under 2 MB a body and state
+constexpr int kMaxCurvePoints = 10000;
 
 // ---------------------------------------------------------------------------------------------
 // interruption: the first SIGINT/SIGTERM asks the workers to stop taking runs (finished ones are
@@ -233,7 +239,7 @@ struct StudyCommands::Impl {
   std::vector<std::string> state_texts;  // --state, in the order given
   std::string analysis = "runs";         // runs, msa or ida
   double level = 0.0, confidence = 0.95;
-  int curve_points = 50;
+  double curve_points = 50;  // read as a number, so that any value gets its range message
 
   bool show_progress(const Processes& p) const {
     return !quiet && !no_progress && p.root() && ::isatty(STDERR_FILENO);
@@ -448,6 +454,12 @@ const CurveColumn kCurveColumns[] = {
 }  // namespace
 
 int StudyCommands::Impl::run_fragility() {
+  if (!(curve_points >= 1.0 && curve_points <= kMaxCurvePoints &&
+        curve_points == std::floor(curve_points))) {
+    throw InputError("--curve-points: expected an integer in [1, " +
+                     std::to_string(kMaxCurvePoints) + "], got " + format_number(curve_points));
+  }
+  const int points = static_cast<int>(curve_points);
   io::check_distinct_files({{"sweep CSV", input}}, {{"output", output}, {"curve", curve_output}});
   const io::CsvTable table = io::read_csv_table(input);
   // the damage states: those of --state, in the order given (least severe first), or the one
@@ -615,10 +627,9 @@ int StudyCommands::Impl::run_fragility() {
             const io::FragilityData& d = data[s][k];
             const double lo = *std::min_element(d.im.begin(), d.im.end());
             const double hi = *std::max_element(d.im.begin(), d.im.end());
-            for (int i = 0; i < curve_points; ++i) {
-              const double x = curve_points == 1
-                                   ? lo
-                                   : lo + (hi - lo) * i / static_cast<double>(curve_points - 1);
+            for (int i = 0; i < points; ++i) {
+              const double x =
+                  points == 1 ? lo : lo + (hi - lo) * i / static_cast<double>(points - 1);
               for (const CurveColumn& c : kCurveColumns) {
                 out << (&c == kCurveColumns ? "" : ",") << c.field(d, fits[s][k], x);
                 if (several && &c == kCurveColumns) out << ',' << states[s].label;
@@ -717,8 +728,9 @@ StudyCommands::StudyCommands(CLI::App& app) : impl_(std::make_unique<Impl>()) {
   s.fragility->add_option("-o,--output", s.output, "fit CSV (default: none)");
   s.fragility->add_option("--curve", s.curve_output,
                           "CSV of the curve and its confidence band over the data's IM range");
-  s.fragility->add_option("--curve-points", s.curve_points, "points of --curve (default 50)")
-      ->check(CLI::PositiveNumber);
+  s.fragility->add_option(
+      "--curve-points", s.curve_points,
+      "points of --curve (default 50; an integer in [1, " + std::to_string(kMaxCurvePoints) + "])");
   s.fragility->add_flag("-q,--quiet", s.quiet, "no file list");
 }
 

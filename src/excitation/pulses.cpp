@@ -351,6 +351,17 @@ GroundMotion make_pulse(const PulseKind& kind, PulseArgs args) {
                                            "': missing; expected a number [" + k.unit + "]");
     if (!std::isnan(k.fixed)) args.keys.emplace(k.name, k.fixed);
   }
+  // a period past its range, not an overflow later (omega_p <= 0 keeps the type's own message)
+  if (kind.frequency && args.omega_p > 0.0) {
+    const double period = 2.0 * std::numbers::pi / args.omega_p;
+    FLEXROCK_THROW_UNLESS(period >= kMinPulsePeriod && period <= kMaxPulsePeriod,
+                          std::string(kind.name) + ": period " + format_number(period, 6) +
+                              " s (frequency_hz " + format_number(1.0 / period, 6) +
+                              "), expected a period in [" + format_number(kMinPulsePeriod, 6) +
+                              ", " + format_number(kMaxPulsePeriod, 6) +
+                              "] s: no ground or shake-table motion is faster than 10 kHz, and a "
+                              "period of hours is a static tilt");
+  }
   return kind.make(args);
 }
 

@@ -471,8 +471,16 @@ Built read_component(Reader& r, bool vertical, ExcitationComponent& out) {
       r.fail_at(r.line(), "frequency_hz",
                 "expected exactly one of 'frequency_hz' [Hz] or 'period' [s]");
     }
-    omega = f ? 2.0 * std::numbers::pi * r.positive("frequency_hz", "[Hz]")
-              : 2.0 * std::numbers::pi / r.positive("period", "[s]");
+    // the period's range (option_bounds.hpp): a frequency as its inverse
+    const OptionBound& pb = kPulsePeriodBound;
+    const std::string range =
+        f ? "[" + format_number(1.0 / pb.hi, 6) + ", " + format_number(1.0 / pb.lo, 6) + "] Hz"
+          : range_text(pb);
+    const std::string what = "a number in " + range + " (" + pb.why + ")";
+    const char* key = f ? "frequency_hz" : "period";
+    const double v = r.number(key, what);
+    if (!in_range(pb, f ? 1.0 / v : v)) r.expected(key, what);
+    omega = f ? 2.0 * std::numbers::pi * v : 2.0 * std::numbers::pi / v;
   }
   PulseArgs args{ap, omega, duration, dir, {}};
   for (const PulseKey& k : kind.keys) {

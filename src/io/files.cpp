@@ -28,6 +28,12 @@ struct Fd {
   }
 };
 
+// a byte count as a cap is stated: "256 MiB"
+std::string size_in_words(std::uint64_t bytes) {
+  if (bytes >= (1u << 20) && bytes % (1u << 20) == 0) return std::to_string(bytes >> 20) + " MiB";
+  return std::to_string(bytes) + " bytes";
+}
+
 // what a non-regular file is, for messages
 std::string kind_of(mode_t mode) {
   if (S_ISDIR(mode)) return "is a directory";
@@ -39,7 +45,8 @@ std::string kind_of(mode_t mode) {
 
 }  // namespace
 
-std::string read_input_file(const std::string& path, const std::string& what) {
+std::string read_input_file(const std::string& path, const std::string& what,
+                            std::uint64_t max_bytes) {
   const std::string expected = "; expected a " + what + " file";
   // O_NONBLOCK: opening a FIFO must not wait for a writer; it is refused below
   const Fd f{::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC | O_NOCTTY)};
@@ -53,20 +60,46 @@ std::string read_input_file(const std::string& path, const std::string& what) {
     throw InputError(path + ": cannot read the " + what + " file: " + std::strerror(errno));
   }
   if (!S_ISREG(st.st_mode)) throw InputError(path + ": " + kind_of(st.st_mode) + expected);
+  auto too_large = [&](std::uint64_t bytes, const char* qualifier) {
+    return InputError(path + ": " + qualifier + std::to_string(bytes) + " bytes, over the " +
+                      size_in_words(max_bytes) + " a " + what +
+                      " file may have; expected a smaller " + what +
+                      " file (docs/reliability.md, "
+                      "\"Input sizes\")");
+  };
   std::string text;
-  try {
-    text.reserve(static_cast<std::size_t>(st.st_size));
-  } catch (const std::bad_alloc&) {
-    throw InputError(path + ": out of memory for the " + std::to_string(st.st_size) +
-                     " bytes of the " + what + " file");
-  }
   char buf[1 << 16];
+  bool reserved = false;
   for (;;) {
     const ssize_t n = ::read(f.fd, buf, sizeof buf);
     if (n == 0) break;
     if (n < 0) {
       if (errno == EINTR || errno == EAGAIN) continue;
       throw InputError(path + ": cannot read the " + what + " file: " + std::strerror(errno));
+    }
+    // every input is text: a NUL byte is binary data, found in the block that holds it (a large
+    // binary file is refused at its first block, not after it was read whole)
+    const auto* nul = static_cast<const char*>(std::memchr(buf, '\0', static_cast<std::size_t>(n)));
+    if (nul) {
+      throw InputError(path + ": binary data (NUL byte at offset " +
+                       std::to_string(text.size() + static_cast<std::size_t>(nul - buf)) +
+                       "), expected a text " + what + " file");
+    }
+    if (!reserved) {
+      // the size once the first block said text or binary: a large binary file is named as such
+      if (static_cast<std::uint64_t>(st.st_size) > max_bytes) {
+        throw too_large(static_cast<std::uint64_t>(st.st_size), "");
+      }
+      reserved = true;
+      try {
+        text.reserve(static_cast<std::size_t>(st.st_size));
+      } catch (const std::bad_alloc&) {
+        throw InputError(path + ": out of memory for the " + std::to_string(st.st_size) +
+                         " bytes of the " + what + " file");
+      }
+    }
+    if (text.size() + static_cast<std::size_t>(n) > max_bytes) {
+      throw too_large(text.size() + static_cast<std::size_t>(n), "more than ");  // it grew
     }
     text.append(buf, static_cast<std::size_t>(n));
   }

@@ -52,6 +52,18 @@ std::string read_all(int fd, const std::string& path) {
       throw std::runtime_error("cannot read the journal " + path + ": " + reason(errno));
     }
     if (n == 0) return text;
+    // a NUL before the first line end: binary data, not a header (nor a header torn by a kill,
+    // which writes text); found in the first block, before a large file is read whole
+    if (text.find('\n') == std::string::npos) {
+      const std::string_view block(buf, static_cast<std::size_t>(n));
+      const std::size_t nul = block.substr(0, block.find('\n')).find('\0');
+      if (nul != std::string_view::npos) {
+        throw InputError(path + ": binary data (NUL byte at offset " +
+                         std::to_string(text.size() + nul) +
+                         "), expected a text flexrock journal: move it away; flexrock keeps a "
+                         "study's finished runs in a file of this name");
+      }
+    }
     text.append(buf, static_cast<std::size_t>(n));
   }
 }
@@ -97,17 +109,35 @@ Journal::Journal(std::string path, std::string kind, std::uint64_t inputs, std::
   // open and lock; the lock must be on the file that is at `path` now: a writer that finishes
   // deletes its journal, and a process that opened it just before holds a dead file
   for (int attempt = 0;; ++attempt) {
-    fd_ = ::open(path_.c_str(), O_RDWR | O_CREAT | O_APPEND | O_CLOEXEC | O_NONBLOCK, 0644);
+    // O_NOFOLLOW: a symbolic link planted at the name (dangling or not) is never followed
+    fd_ = ::open(path_.c_str(), O_RDWR | O_CREAT | O_APPEND | O_CLOEXEC | O_NONBLOCK | O_NOFOLLOW,
+                 0644);
+    if (fd_ < 0 && errno == ELOOP) {
+      throw InputError(path_ + ": is a symbolic link; the " + kind_ +
+                       " journal of this output must be a regular file that flexrock created "
+                       "(move the link away; it was not followed)");
+    }
     if (fd_ < 0) {
       throw std::runtime_error("cannot open the " + kind_ + " journal " + path_ + ": " +
                                reason(errno));
     }
     struct stat st {};
+    // what is wrong with the file at the name, "" when it can be this journal: a regular file of
+    // ours with no other name (a hard link to a file elsewhere would be written through)
+    std::string foreign;
     if (::fstat(fd_, &st) != 0 || !S_ISREG(st.st_mode)) {
+      foreign = "is not a regular file";
+    } else if (st.st_uid != ::geteuid()) {
+      foreign = "belongs to another user";
+    } else if (st.st_nlink != 1) {
+      foreign = "has other names (hard links)";
+    }
+    if (!foreign.empty()) {
       ::close(fd_);
       fd_ = -1;
-      throw InputError(path_ + ": is not a regular file; the " + kind_ +
-                       " journal of this output must be one (move it away)");
+      throw InputError(path_ + ": " + foreign + "; the " + kind_ +
+                       " journal of this output must be a regular file that flexrock created "
+                       "(move it away; it was not read or changed)");
     }
     if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
       const int err = errno;
@@ -121,7 +151,7 @@ Journal::Journal(std::string path, std::string kind, std::uint64_t inputs, std::
       throw std::runtime_error("cannot lock the journal " + path_ + ": " + reason(err));
     }
     struct stat now {};
-    if (::stat(path_.c_str(), &now) == 0 && now.st_dev == st.st_dev && now.st_ino == st.st_ino) {
+    if (::lstat(path_.c_str(), &now) == 0 && now.st_dev == st.st_dev && now.st_ino == st.st_ino) {
       break;
     }
     ::close(fd_);
@@ -162,9 +192,11 @@ void Journal::read_back(const std::string& header, const JournalCheck& check) {
                        "(or finish the sweep with the version that wrote it)");
     }
     if (!first.starts_with("# flexrock ") || first.find(" journal v") == std::string::npos) {
-      throw InputError(path_ + ":1: not a flexrock journal (\"" + shown(first) +
-                       "\"): move it away; flexrock keeps a study's finished runs in a file of "
-                       "this name");
+      // its content is not shown: the file may be anyone's
+      throw InputError(path_ +
+                       ":1: not a flexrock journal (its first line is not a journal "
+                       "header): move it away; flexrock keeps a study's finished runs in a file "
+                       "of this name");
     }
     if (!has_lines) {
       // a journal with no run in it loses nothing when started afresh

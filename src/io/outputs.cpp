@@ -3,6 +3,7 @@
 
 #include <fcntl.h>
 #include <signal.h>
+#include <sys/random.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -10,6 +11,7 @@
 #include <atomic>
 #include <cerrno>
 #include <charconv>
+#include <chrono>
 #include <cmath>
 #include <csignal>
 #include <cstdint>
@@ -100,8 +102,10 @@ class TempRegistration {
 
 namespace {
 
-// the bytes that follow a name in its temporary: ".tmp." and a process id (at most 10 digits)
-constexpr std::size_t kTempSuffixMax = 5 + 10;
+// the bytes that follow a name in its temporary: ".tmp.", a process id (at most 10 digits), '.'
+// and 16 random hex digits
+constexpr std::size_t kTempRandomDigits = 16;
+constexpr std::size_t kTempSuffixMax = 5 + 10 + 1 + kTempRandomDigits;
 
 // the longest file name the directory takes (NAME_MAX: 255 on Linux file systems)
 std::size_t name_max(const fs::path& dir) {
@@ -109,7 +113,7 @@ std::size_t name_max(const fs::path& dir) {
   return n > 0 ? static_cast<std::size_t>(n) : 255;
 }
 
-// "NAME.tmp.": the name a temporary of `path` starts with, before the process id. A name too long
+// "NAME.tmp.": the name a temporary of `path` starts with, before "<pid>.<random>". A name too long
 // to take the suffix within NAME_MAX is cut and told apart by a hash of the whole name.
 std::string temp_stem(const fs::path& path) {
   const std::string name = path.filename().string();
@@ -124,7 +128,8 @@ std::string temp_stem(const fs::path& path) {
 }
 
 // removes the temporaries of `path` that runs killed before they could clean up (SIGKILL, power
-// loss) left behind: "STEM<pid>" where no process <pid> runs any more
+// loss) left behind: regular files "STEM<pid>.<16 hex digits>" (or "STEM<pid>", as earlier
+// versions named them) where no process <pid> runs any more; anything else is left alone
 void remove_stale_temporaries(const fs::path& path, const std::string& stem) {
   const fs::path dir = path.parent_path().empty() ? fs::path(".") : path.parent_path();
   std::error_code ec;
@@ -132,16 +137,42 @@ void remove_stale_temporaries(const fs::path& path, const std::string& stem) {
   for (; !ec && it != fs::directory_iterator(); it.increment(ec)) {
     const std::string name = it->path().filename().string();
     if (!name.starts_with(stem) || name.size() == stem.size()) continue;
-    const std::string digits = name.substr(stem.size());
-    if (digits.size() > 10 || digits.find_first_not_of("0123456789") != std::string::npos) {
+    std::string digits = name.substr(stem.size());
+    if (const std::size_t dot = digits.find('.'); dot != std::string::npos) {
+      const std::string random = digits.substr(dot + 1);
+      if (random.size() != kTempRandomDigits ||
+          random.find_first_not_of("0123456789abcdef") != std::string::npos) {
+        continue;
+      }
+      digits.resize(dot);
+    }
+    if (digits.empty() || digits.size() > 10 ||
+        digits.find_first_not_of("0123456789") != std::string::npos) {
       continue;
     }
     const long pid = std::stol(digits);
     if (pid <= 0 || pid == static_cast<long>(::getpid())) continue;
     if (::kill(static_cast<pid_t>(pid), 0) == 0 || errno != ESRCH) continue;  // still running
+    struct stat st {};
+    if (::lstat(it->path().c_str(), &st) != 0 || !S_ISREG(st.st_mode)) continue;
     std::error_code ignored;
     fs::remove(it->path(), ignored);
   }
+}
+
+// 16 hex digits nobody can guess: a temporary's name must not be known before it exists
+std::string random_hex() {
+  std::uint64_t v = 0;
+  if (::getrandom(&v, sizeof v, 0) != static_cast<ssize_t>(sizeof v)) {
+    // no entropy source (a very old kernel): the clock and the address space still vary
+    static std::atomic<std::uint64_t> counter{0};
+    v = static_cast<std::uint64_t>(std::chrono::steady_clock::now().time_since_epoch().count()) ^
+        (reinterpret_cast<std::uintptr_t>(&v) << 16) ^
+        (counter.fetch_add(1) * 0x9e3779b97f4a7c15ULL);
+  }
+  char buf[kTempRandomDigits + 1];
+  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(v));
+  return buf;
 }
 
 // "PATH: reason" of the last system call
@@ -196,11 +227,21 @@ void write_atomically(const std::string& path, const std::function<void(std::ost
   }
   const std::string stem = temp_stem(target);
   remove_stale_temporaries(target, stem);
-  const std::string tmp = (target.parent_path() / (stem + std::to_string(::getpid()))).string();
   install_interrupt_cleanup();
+  // a new file of an unpredictable name, never an existing one and never through a symbolic link
+  // planted at the name: O_EXCL fails on any existing entry, links included
+  std::string tmp;
+  int fd = -1;
+  for (int attempt = 0; fd < 0; ++attempt) {
+    tmp =
+        (target.parent_path() / (stem + std::to_string(::getpid()) + "." + random_hex())).string();
+    fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0666);
+    if (fd < 0 && (errno != EEXIST || attempt == 100)) {
+      throw os_error("create the temporary file", tmp, errno);
+    }
+  }
   const TempRegistration registration(tmp);
-  const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
-  if (fd < 0) throw os_error("create the temporary file", tmp, errno);
+  struct stat written {};
   bool open = true;
   try {
     FdBuf buf(fd);
@@ -211,6 +252,7 @@ void write_atomically(const std::string& path, const std::function<void(std::ost
     if (!out) throw std::runtime_error("cannot write " + tmp);
     // on the disk before the rename: a crash after it finds the new content, not an empty file
     if (::fsync(fd) != 0) throw os_error("flush to disk", tmp, errno);
+    if (::fstat(fd, &written) != 0) throw os_error("inspect", tmp, errno);
     open = false;
     if (::close(fd) != 0) throw os_error("close", tmp, errno);
   } catch (...) {
@@ -218,6 +260,14 @@ void write_atomically(const std::string& path, const std::function<void(std::ost
     std::error_code ignored;
     fs::remove(tmp, ignored);
     throw;
+  }
+  // the name must still be the file written: a directory others may write to can have had it
+  // replaced (by a link to a file of theirs) meanwhile
+  struct stat now {};
+  if (::lstat(tmp.c_str(), &now) != 0 || !S_ISREG(now.st_mode) || now.st_dev != written.st_dev ||
+      now.st_ino != written.st_ino) {
+    throw std::runtime_error("cannot rename " + tmp + " to " + path +
+                             ": the temporary was replaced by another process; nothing written");
   }
   if (::rename(tmp.c_str(), path.c_str()) != 0) {
     const int e = errno;

@@ -266,7 +266,29 @@ SuiteComponent suite_component(Keys& r, const std::string& key) {
   std::vector<std::string> names;
   for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
     const std::string f = it->path().filename().string();
-    if (glob_match(name, f) && fs::is_regular_file(it->path(), ec)) names.push_back(f);
+    if (!glob_match(name, f)) continue;
+    // a match that is no record file is named, never skipped: a record would vanish from the
+    // study without a word
+    std::error_code sec;
+    const fs::file_status st = fs::status(it->path(), sec);
+    std::string why;
+    if (sec || st.type() == fs::file_type::not_found) {
+      const std::string reason = sec.message();
+      why = fs::is_symlink(fs::symlink_status(it->path(), sec))
+                ? "a symbolic link to nothing (dangling)"
+                : "unreadable (" + reason + ")";
+    } else if (st.type() == fs::file_type::directory) {
+      why = "a directory";
+    } else if (st.type() == fs::file_type::fifo) {
+      why = "a FIFO (named pipe)";
+    } else if (st.type() != fs::file_type::regular) {
+      why = "not a regular file";
+    }
+    if (!why.empty())
+      r.fail(key, "the pattern \"" + c.pattern + "\" matches " +
+                      (fs::path(dir) / f).lexically_normal().string() + ", " + why +
+                      "; expected only record files (move it away, or narrow the pattern)");
+    names.push_back(f);
   }
   if (ec) r.fail(key, "cannot list the directory " + dir + ": " + ec.message());
   if (names.empty())
@@ -1506,6 +1528,60 @@ std::string first_difference(const std::vector<std::string>& names, std::string_
 
 }  // namespace
 
+void check_sweep_table(const CsvTable& t) {
+  const auto where = [&t](const char* name) {
+    return static_cast<std::size_t>(std::find(t.columns.begin(), t.columns.end(), name) -
+                                    t.columns.begin());
+  };
+  const std::size_t none = t.columns.size();
+  const std::size_t index = where("index"), outcome = where("outcome"), flag = where("overturned"),
+                    edge = where("overturn_edge"), impacts = where("impacts"),
+                    status = where("status"), first_figure = where("overturn_time_s"),
+                    regime = where("regime"), slips = where("slips");
+  std::map<std::size_t, std::size_t> seen;  // run index -> file line
+  for (std::size_t r = 0; r < t.rows.size(); ++r) {
+    const std::vector<std::string>& f = t.rows[r];
+    auto bad = [&](const std::string& what) {
+      throw InputError(t.source + ":" + std::to_string(t.lines[r]) + ": " + what +
+                       "; expected a row as flexrock sweep writes it (was the file edited?)");
+    };
+    auto column = [&](std::size_t c, const std::string& what) {
+      bad("column '" + t.columns[c] + "': expected " + what + ", got \"" + f[c] + "\"");
+    };
+    if (index != none) {
+      if (!is_count(f[index])) column(index, "a run index (an integer >= 0)");
+      const std::size_t i = std::stoul(f[index]);
+      if (const auto [it, fresh] = seen.emplace(i, t.lines[r]); !fresh) {
+        bad("run index " + f[index] + " twice, first at line " + std::to_string(it->second));
+      }
+    }
+    // `contact_lost`, as outcome and as status: rows written before the engine followed flight,
+    // which fragility still reads (and leaves out unless the outcome says overturned)
+    const bool legacy = outcome != none && f[outcome] == "contact_lost";
+    if (outcome != none && flag != none && !(legacy && f[flag] == "0")) {
+      if (std::string why = check_outcome(f[outcome], f[flag]); !why.empty()) bad(why);
+    }
+    if (edge != none && f[edge] != "0" && f[edge] != "1" && f[edge] != "2") {
+      column(edge, "0, 1 or 2");
+    }
+    if (impacts != none && !is_count(f[impacts])) column(impacts, "a count (an integer >= 0)");
+    if (status != none && !is_status(f[status]) && f[status] != "contact_lost") {
+      column(status, "a status flexrock writes");
+    }
+    // the run's figures: from overturn_time_s up to the status, and the sliding ones
+    for (std::size_t c = first_figure; c < std::min(status, none); ++c) {
+      if (c != impacts && !is_figure(f[c])) column(c, "a finite number or empty");
+    }
+    if (regime != none) {
+      if (!regime_named(f[regime])) column(regime, "a regime flexrock writes");
+      for (std::size_t c = regime + 1; c < std::min(slips, none); ++c) {
+        if (!is_figure(f[c])) column(c, "a finite number or empty");
+      }
+    }
+    if (slips != none && !is_count(f[slips])) column(slips, "a count (an integer >= 0)");
+  }
+}
+
 study::SweepRow read_sweep_row(const study::SweepSpec& spec, std::size_t index,
                                const std::string& line) {
   const std::size_t scales = spec.scales.size(), records = spec.records.size();
@@ -1703,6 +1779,7 @@ std::string fragility_im_column(const std::string& im) {
 }
 
 std::vector<FragilityData> fragility_data(const CsvTable& t, const FragilityQuery& q) {
+  check_sweep_table(t);
   const std::string im_col = fragility_im_column(q.im);
   if (std::find(t.columns.begin(), t.columns.end(), im_col) == t.columns.end()) {
     throw InputError(t.source + ":1: intensity measure '" + q.im + "' needs the column '" + im_col +

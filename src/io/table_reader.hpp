@@ -23,6 +23,7 @@
 #include "flexrock/io/files.hpp"
 #include "flexrock/io/records.hpp"
 #include "flexrock/sim/contact_rules.hpp"
+#include "flexrock/sim/option_bounds.hpp"
 #include "flexrock/sim/simulate.hpp"
 
 namespace flexrock::io::detail {
@@ -124,6 +125,13 @@ class TableReader {
     const std::string what = "a number >= 0 " + unit;
     const std::optional<double> v = number_opt(key, what);
     if (v && !(*v >= 0.0)) expected(key, what);
+    return v.value_or(def);
+  }
+  // a number in the closed range of `b` (option_bounds.hpp), `b.key` being the key
+  double bounded_or(const OptionBound& b, double def) {
+    const std::string what = "a number in " + range_text(b) + " (" + b.why + ")";
+    const std::optional<double> v = number_opt(b.key, what);
+    if (v && !in_range(b, *v)) expected(b.key, what);
     return v.value_or(def);
   }
   long integer_or(std::string_view key, long def, long min, const std::string& what) {
@@ -319,12 +327,14 @@ inline void read_contact_keys(TableReader& r, SimulationOptions& o) {
   o.contact_exponent = r.positive_or("contact_exponent", o.contact_exponent, "[-]");
   if (!(o.contact_exponent >= 1.0 && o.contact_exponent <= 3.0))
     r.expected("contact_exponent", "a number in [1, 3] (1.5: Hertz)");
+  if (!in_range(kContactForceAt1mmBound,
+                contact_force_at_1mm(o.contact_stiffness, o.contact_exponent)))
+    r.expected("contact_stiffness", "a number in " + stiffness_range_text(o.contact_exponent));
   if (r.has("contact_damping_ratio") && (hc || r.has("contact_restitution")))
     r.expected("contact_damping_ratio",
                "either contact_damping_ratio or contact_restitution, not both, and no damping "
                "ratio with hunt_crossley (its damping follows from contact_restitution)");
-  o.contact_damping_ratio =
-      r.nonnegative_or("contact_damping_ratio", o.contact_damping_ratio, "[-]");
+  o.contact_damping_ratio = r.bounded_or(kContactDampingRatioBound, o.contact_damping_ratio);
   const std::string rw = hc ? "a number in (0, 1] (the restitution of a free bounce)"
                             : "a number in [0, 1] (the restitution of a free bounce)";
   if (const auto e = r.number_opt("contact_restitution", rw)) {
@@ -355,7 +365,7 @@ inline void read_solver_keys(TableReader& r, SimulationOptions& o) {
   o.overturn =
       crit == "half_pi" ? OverturnCriterion::kHalfPi : OverturnCriterion::kStaticInstability;
   o.chatter_ratio = r.nonnegative_or("chatter_ratio", o.chatter_ratio, "[-]");
-  o.restitution_factor = r.nonnegative_or("restitution_factor", o.restitution_factor, "[-]");
+  o.restitution_factor = r.bounded_or(kRestitutionFactorBound, o.restitution_factor);
   std::vector<std::string> laws;
   for (const ImpactLawInfo& l : kImpactLaws) laws.emplace_back(l.name);
   const std::string law = r.choice("impact_law", laws, to_string(o.impact_law));
@@ -388,7 +398,7 @@ inline void read_solver_keys(TableReader& r, SimulationOptions& o) {
     r.expected("restitution_factor",
                "no restitution_factor with impact_law = \"restitution\" (give the measured "
                "ratio as restitution_ratio)");
-  o.impact_duration = r.positive_or("impact_duration", o.impact_duration, "[s]");
+  o.impact_duration = r.bounded_or(kImpactDurationBound, o.impact_duration);
   const std::string fw = "a number > 0 [-] (or inf: no friction limit)";
   if (const auto mu = r.number_opt("friction_coefficient", fw, true)) {
     if (!(*mu > 0.0)) r.expected("friction_coefficient", fw);
@@ -411,7 +421,7 @@ inline void read_solver_keys(TableReader& r, SimulationOptions& o) {
 // a TOML file, read through read_input_file; a syntax error names the file, line and column.
 // `what` names the file for messages ("case", "spectrum", "sweep manifest")
 inline toml::table parse_toml(const std::string& path, const std::string& what) {
-  const std::string text = read_input_file(path, what);
+  const std::string text = read_input_file(path, what, kMaxTomlFileBytes);
   try {
     return toml::parse(text, path);
   } catch (const toml::parse_error& e) {

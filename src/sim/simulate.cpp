@@ -14,6 +14,7 @@
 #include "flexrock/core/error.hpp"
 #include "flexrock/core/format.hpp"
 #include "flexrock/sim/contact_rules.hpp"
+#include "flexrock/sim/option_bounds.hpp"
 #include "simulator_instances.hpp"
 
 namespace flexrock {
@@ -99,10 +100,13 @@ void check_options(const Body& body, const InitialState& init, const SimulationO
   FLEXROCK_THROW_UNLESS(
       std::isfinite(o.chatter_ratio) && o.chatter_ratio >= 0.0,
       "options: chatter_ratio must be >= 0, got " + std::to_string(o.chatter_ratio));
-  FLEXROCK_THROW_UNLESS(
-      std::isfinite(o.restitution_factor) && o.restitution_factor >= 0.0,
-      "options: restitution_factor must be >= 0 (1: the impact law's own theta_dot), got " +
-          std::to_string(o.restitution_factor));
+  // the keys without a natural limit: the ranges of option_bounds.hpp, as the readers apply them
+  auto bounded = [](const OptionBound& b, double v) {
+    FLEXROCK_THROW_UNLESS(in_range(b, v), std::string("options: ") + b.key + " must be in " +
+                                              range_text(b) + " (" + b.why + "), got " +
+                                              format_number(v));
+  };
+  bounded(kRestitutionFactorBound, o.restitution_factor);
   for (const double r : {o.restitution_ratio_edge1, o.restitution_ratio_edge2})
     FLEXROCK_THROW_UNLESS(r >= 0.0 && r <= 1.0,
                           "options: restitution_ratio_edge1/2 must be in [0, 1] "
@@ -113,8 +117,7 @@ void check_options(const Body& body, const InitialState& init, const SimulationO
                             " with impact_law = restitution: give the measured ratio as "
                             "restitution_ratio instead (the factor applies to paper and "
                             "rigid_body)");
-  positive(o.impact_duration, "impact_duration",
-           "seconds: the contact duration assumed for an impact's force estimate, e.g. 0.002");
+  bounded(kImpactDurationBound, o.impact_duration);
   positive(o.stiff_switch_scale, "stiff_switch_scale",
            "a factor on the rate where the rocking integrator switches methods; 1 by default");
   FLEXROCK_THROW_UNLESS(!(o.friction_coefficient <= 0.0) && !std::isnan(o.friction_coefficient),
@@ -144,9 +147,12 @@ void check_options(const Body& body, const InitialState& init, const SimulationO
     FLEXROCK_THROW_UNLESS(hunt_crossley || o.contact_exponent == 1.0,
                           "options: contact_exponent applies to contact_force_law = "
                           "hunt_crossley (the linear law has p = 1)");
-    FLEXROCK_THROW_UNLESS(std::isfinite(o.contact_damping_ratio) && o.contact_damping_ratio >= 0.0,
-                          "options: contact_damping_ratio must be >= 0 (1: critical), got " +
-                              std::to_string(o.contact_damping_ratio));
+    bounded(kContactDampingRatioBound, o.contact_damping_ratio);
+    FLEXROCK_THROW_UNLESS(in_range(kContactForceAt1mmBound,
+                                   contact_force_at_1mm(o.contact_stiffness, o.contact_exponent)),
+                          "options: contact_stiffness must be in " +
+                              stiffness_range_text(o.contact_exponent) + ", got " +
+                              format_number(o.contact_stiffness));
     FLEXROCK_THROW_UNLESS(
         o.contact_restitution < 0.0 || (o.contact_restitution <= 1.0 && !hunt_crossley) ||
             (hunt_crossley && o.contact_restitution > 0.0 && o.contact_restitution <= 1.0),

@@ -8,6 +8,7 @@
 
 #include "flexrock/core/error.hpp"
 #include "flexrock/core/format.hpp"
+#include "flexrock/sim/option_bounds.hpp"
 
 namespace flexrock::study {
 
@@ -30,7 +31,7 @@ const std::vector<UncertainKindInfo>& uncertain_kinds() {
        "the static Coulomb coefficient mu_s at the base, in place of the body's or [solver]'s; "
        "a finite kinetic coefficient keeps its ratio to it"},
       {UncertainKind::kRestitutionFactor, "restitution_factor", "restitution_factor", "-", 0.0,
-       false, kInf, true, ">= 0",
+       false, kRestitutionFactorBound.hi, false, "in [0, 2]",
        "[solver] restitution_factor: the factor on theta_dot after an impact (impact laws "
        "`paper` and `rigid_body`)"},
       {UncertainKind::kRestitutionRatio, "restitution_ratio", "restitution_ratio", "-", 0.0, false,

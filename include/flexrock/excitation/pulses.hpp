@@ -164,6 +164,12 @@ struct PulseKind {
   const char* doc;          // one line: the acceleration
 };
 
+/// [s] the range of a pulse's period 2 pi/omega_p (or 1/frequency_hz): no ground or shake-table
+/// motion is faster than 10 kHz, and one with a period of hours is a static tilt. make_pulse
+/// refuses a period outside, naming it (a period of 1e-300 s would end in an overflow).
+inline constexpr double kMinPulsePeriod = 1e-4;
+inline constexpr double kMaxPulsePeriod = 1e4;
+
 /// Every pulse type, in the order the docs list them.
 const std::vector<PulseKind>& pulse_kinds();
 

@@ -205,9 +205,16 @@ struct FragilityData {
   std::vector<std::string> record;
 };
 
+/// Checks a sweep CSV read without its manifest as a resume checks a journal line, so far as
+/// no manifest is needed: each run index once, an outcome known and its `overturned` flag the
+/// one that goes with it, `overturn_edge` 0, 1 or 2, counts, known status and regime words,
+/// the run's figures finite or empty (each check where the file has the column). Throws
+/// InputError naming file:line and the column.
+void check_sweep_table(const CsvTable& table);
+
 /// Groups a sweep CSV's rows by body (in first-appearance order) and turns each row into an
-/// (IM, outcome) pair. Throws InputError for unknown columns, bodies or outcome names, and for
-/// fields that are not numbers (file:line).
+/// (IM, outcome) pair. Checks the table first (check_sweep_table). Throws InputError for
+/// unknown columns, bodies or outcome names, and for fields that are not numbers (file:line).
 std::vector<FragilityData> fragility_data(const CsvTable& table, const FragilityQuery& query);
 
 /// Columns of the fragility fit CSV, and one line of it.
