@@ -1162,19 +1162,6 @@ const SweepColumn kSweepColumns[] = {
     {"max_friction_demand", "-", "largest \\|F_I\\|/F_J, impulses included", ColumnType::kReal,
      [](const Spec&, const Row& r) -> Value { return r.run.max_friction_demand; },
      [](Row& r, const Value& v) { r.run.max_friction_demand = real(v); }},
-    {"status", "-", "engine status", ColumnType::kText,
-     [](const Spec&, const Row& r) -> Value { return to_string(r.run.status); },
-     [](Row& r, const Value& v) { r.run.status = status_value(v); }},
-    {"message", "-", "why a stopped run stopped (commas replaced by `;`)", ColumnType::kText,
-     [](const Spec&, const Row& r) -> Value {
-       std::string msg = r.message;
-       for (char& c : msg) {
-         if (c == ',' || c == '"') c = ';';
-         if (c == '\n' || c == '\r') c = ' ';
-       }
-       return msg;
-     },
-     [](Row& r, const Value& v) { r.message = text(v); }},
     // where the sticking contact breaks without a friction limit (a finite coefficient removes
     // them): docs/theory.md §15, §16
     {"pivot_tension_episodes", "-",
@@ -1201,6 +1188,19 @@ const SweepColumn kSweepColumns[] = {
      ColumnType::kReal,
      [](const Spec&, const Row& r) -> Value { return r.run.max_tensile_impulse; },
      [](Row& r, const Value& v) { r.run.max_tensile_impulse = real(v); }},
+    {"status", "-", "engine status", ColumnType::kText,
+     [](const Spec&, const Row& r) -> Value { return to_string(r.run.status); },
+     [](Row& r, const Value& v) { r.run.status = status_value(v); }},
+    {"message", "-", "why a stopped run stopped (commas replaced by `;`)", ColumnType::kText,
+     [](const Spec&, const Row& r) -> Value {
+       std::string msg = r.message;
+       for (char& c : msg) {
+         if (c == ',' || c == '"') c = ';';
+         if (c == '\n' || c == '\r') c = ' ';
+       }
+       return msg;
+     },
+     [](Row& r, const Value& v) { r.message = text(v); }},
 };
 
 }  // namespace
