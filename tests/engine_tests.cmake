@@ -22,6 +22,8 @@ target_compile_definitions(flexrock_sympy_tests PRIVATE FLEXROCK_BINARY_DIR="${P
 flexrock_apply_sanitizers(flexrock_sympy_tests)
 gtest_discover_tests(flexrock_sympy_tests PROPERTIES LABELS unit FIXTURES_REQUIRED sympy_reference)
 flexrock_add_test(flexrock_sim_tests SOURCES unit/simulate_test.cpp LABEL unit)
+# the run says where the sticking contact breaks (pivot_tension, tensile_landing), with magnitudes
+flexrock_add_test(flexrock_assumption_breaks_tests SOURCES unit/assumption_breaks_test.cpp LABEL unit)
 flexrock_add_test(flexrock_impact_law_tests SOURCES unit/impact_law_test.cpp LABEL unit)
 flexrock_add_test(flexrock_compliant_tests SOURCES unit/compliant_test.cpp LABEL unit)
 flexrock_add_test(flexrock_compliant_corners_tests SOURCES unit/compliant_corners_test.cpp LABEL unit)

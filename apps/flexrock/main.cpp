@@ -40,6 +40,16 @@ constexpr int kExitOk = 0;
 constexpr int kExitRunFailed = 1;
 constexpr int kExitBadInput = 2;
 
+// where the sticking contact of the impulsive floor breaks (docs/theory.md §15, §16), said by check
+// and params
+constexpr const char* kNoFrictionNote =
+    "friction: no limit (friction_coefficient = inf): where the pivot force vanishes with a "
+    "sideways force left the floor is let pull on the sticking pivot (pivot_tension), and a "
+    "landing may need a pulling impulse (tensile_landing); runs report both with their "
+    "magnitudes. A finite friction_coefficient removes them (the pivot slides instead), except "
+    "briefly after a grazing landing shorter than the chatter interval (reported in the same "
+    "figures)";
+
 int error(const std::string& message, int code) {
   std::fflush(stdout);
   fmt::print(stderr, "flexrock: error: {}\n", message);
@@ -118,10 +128,13 @@ void print_summary(const io::Case& c, const Body& body, const SimulationResult& 
         c.options.contact_exponent, x.max_contact_force, x.max_impulse);
   } else if (x.impacts > 0) {
     fmt::print(
-        "impact law: {}; largest vertical impulse {:.4g} N s, largest force estimate {:.4g} N "
+        "impact law: {}; largest vertical impulse {:.4g} N s{}, largest force estimate {:.4g} N "
         "(a half-sine contact of an assumed {:.3g} ms: impact_duration)\n",
-        to_string(c.options.impact_law), x.max_impulse, x.max_impact_force,
-        1e3 * c.options.impact_duration);
+        to_string(c.options.impact_law), x.max_impulse,
+        x.tensile_landings > 0
+            ? fmt::format(" pressing, {:.4g} N s pulling (tensile_landing)", -x.max_tensile_impulse)
+            : std::string(),
+        x.max_impact_force, 1e3 * c.options.impact_duration);
   }
   if (x.lift_offs > 0) {
     fmt::print(
@@ -155,10 +168,24 @@ void print_summary(const io::Case& c, const Body& body, const SimulationResult& 
     fmt::print("note: the chatter criterion ended rocking {} time(s), removing {:.3g} J\n",
                x.chatter_cutoffs, e.chatter_loss);
   }
-  if (r.pivot_tension) {
+  // where the sticking contact broke (docs/theory.md §15, §16): how hard and how long
+  const bool no_friction = !std::isfinite(c.options.friction_coefficient);
+  const char* remedy =
+      no_friction ? "; a finite friction_coefficient lets the contact slide instead" : "";
+  if (r.pivot_tension || x.max_pivot_pull > 0.0) {
+    const double w = p.mass * p.gravity;
     fmt::print(
-        "warning: the pivot force vanished where the body could only leave its sticking pivot "
-        "by sliding; the floor pulled on the pivot (events: pivot_tension)\n");
+        "warning: the floor pulled on a held pivot: largest pull {:.4g} N ({:.3g} M g), {:.4g} s "
+        "under tension in all, over {} pivot_tension episode(s) (the pivot force vanished where "
+        "the body could leave it only by sliding) and the holds after grazing landings. The "
+        "model's sticking contact breaks there{}\n",
+        x.max_pivot_pull, x.max_pivot_pull / w, x.tension_time, x.tension_episodes, remedy);
+  }
+  if (x.tensile_landings > 0) {
+    fmt::print(
+        "warning: {} landing(s) needed the floor to pull (events: tensile_landing); largest "
+        "pulling impulse {:.4g} N s. The model's sticking contact breaks there{}\n",
+        x.tensile_landings, -x.max_tensile_impulse, remedy);
   }
   if (r.impact_gained_energy) {
     fmt::print(
@@ -348,6 +375,9 @@ int cmd_check(const std::vector<std::string>& args, bool quiet) {
                    c.output.events.empty() ? "" : c.output.events + " ", c.output.summary);
         print_inputs(c);
         print_records(c);
+        if (!std::isfinite(c.options.friction_coefficient) &&
+            c.options.contact_model != ContactModel::kCompliant)
+          fmt::print("  {}\n", kNoFrictionNote);
       }
       print_notes(c);
     } catch (const InputError& e) {
@@ -401,6 +431,9 @@ int cmd_params(const std::string& file) {
   fmt::print("  overturning angle         {:.6g} rad on edge 1, {:.6g} rad on edge 2\n",
              body.tipping_angle(1), body.tipping_angle(2));
   fmt::print("  rocking frequency p       {:.6g} rad/s\n", body.rocking_frequency());
+  fmt::print(
+      "contact (impulsive floor; friction_coefficient is a [solver] key of the case):\n  {}\n",
+      kNoFrictionNote);
   const int n = body.modes();
   fmt::print("deformation modes: {}\n", n);
   if (n > 0) {

@@ -210,7 +210,18 @@ void bind_sim(py::module_& m) {
       .def_readonly("max_contact_force", &Extremes::max_contact_force,
                     "[N] compliant contact: the largest normal force of a tipping point")
       .def_readonly("impact_law_fallbacks", &Extremes::impact_law_fallbacks,
-                    "impacts where the chosen law would have added energy (impact_law_fallback)");
+                    "impacts where the chosen law would have added energy (impact_law_fallback)")
+      .def_readonly("tension_episodes", &Extremes::tension_episodes,
+                    "pivot_tension events: the pivot force vanished where only sliding could free "
+                    "the pivot, and the floor was let pull (no friction limit)")
+      .def_readonly("max_pivot_pull", &Extremes::max_pivot_pull,
+                    "[N] largest pull of the floor on a held pivot, -min F_J (0: none)")
+      .def_readonly("tension_time", &Extremes::tension_time,
+                    "[s] total time the floor pulled on a held pivot")
+      .def_readonly("tensile_landings", &Extremes::tensile_landings,
+                    "landings/impacts that needed a pulling impulse (tensile_landing events)")
+      .def_readonly("max_tensile_impulse", &Extremes::max_tensile_impulse,
+                    "[N s] largest pulling vertical impulse of such a landing, -min I_y (0: none)");
 
   py::class_<EnergyBalance>(m, "EnergyBalance")
       .def_readonly("input_work", &EnergyBalance::input_work)

@@ -135,7 +135,16 @@ bool)doc");
       .def_readonly("final_offset", &RunSummary::final_offset)
       .def_readonly("sliding_time", &RunSummary::sliding_time)
       .def_readonly("slips", &RunSummary::slips)
-      .def_readonly("regime", &RunSummary::regime);
+      .def_readonly("regime", &RunSummary::regime)
+      .def_readonly("tension_episodes", &RunSummary::tension_episodes, "pivot_tension events")
+      .def_readonly("max_pivot_pull", &RunSummary::max_pivot_pull,
+                    "[N] largest pull of the floor on a held pivot (0: none)")
+      .def_readonly("tension_time", &RunSummary::tension_time,
+                    "[s] time the floor pulled on a held pivot")
+      .def_readonly("tensile_landings", &RunSummary::tensile_landings,
+                    "landings that needed a pulling impulse")
+      .def_readonly("max_tensile_impulse", &RunSummary::max_tensile_impulse,
+                    "[N s] largest pulling impulse of a landing (0: none)");
   m.def("summarize", &summarize, py::arg("body"), py::arg("result"),
         R"doc(The study outcome class and peaks of a finished simulation.
 

@@ -553,14 +553,18 @@ const EventColumn kEventColumns[] = {
      [](const Event& e) { return e.energy_loss; }, nullptr},
     {"impulse_x_N_s", "N s", "horizontal impulse of the floor (impacts)",
      [](const Event& e) { return e.impulse_x; }, nullptr},
-    {"impulse_y_N_s", "N s", "vertical impulse of the floor (impacts)",
+    {"impulse_y_N_s", "N s",
+     "vertical impulse of the floor (impacts); negative at a `tensile_landing`: the pull the "
+     "sticking landing needed",
      [](const Event& e) { return e.impulse_y; }, nullptr},
     {"friction_demand", "-", "\\|F_I\\|/F_J, or \\|impulse_x\\|/impulse_y at an impact",
      [](const Event& e) { return e.friction_demand; }, nullptr},
     {"force_estimate_N", "N",
      "impacts: the peak force of a half-sine contact of the assumed `impact_duration` carrying the "
      "impulse, pi \\|impulse\\| / (2 impact_duration); with the compliant contact, the resolved "
-     "peak normal force of the touching tipping point until it leaves the floor",
+     "peak normal force of the touching tipping point until it leaves the floor; for "
+     "`pivot_tension`, the episode's most negative vertical reaction F_J (the floor's largest "
+     "pull on the held pivot, < 0)",
      [](const Event& e) { return e.force_estimate; }, nullptr},
 };
 
@@ -712,6 +716,13 @@ std::string summary_json(const Case& c, const Body& body, const SimulationResult
                    {"impact_gained_energy", r.impact_gained_energy},
                    {"impact_law_fallbacks", x.impact_law_fallbacks},
                    {"pivot_tension", r.pivot_tension},
+                   {"pivot_tension_episodes", x.tension_episodes},
+                   {"max_pivot_pull_N", x.max_pivot_pull},
+                   {"max_pivot_pull_over_weight", x.max_pivot_pull / (p.mass * g)},
+                   {"tension_time_s", x.tension_time},
+                   {"tensile_landing", x.tensile_landings > 0},
+                   {"tensile_landings", x.tensile_landings},
+                   {"max_tensile_impulse_N_s", x.max_tensile_impulse},
                    {"energy_unbalanced", r.energy_unbalanced}};
   const SimulationOptions& o = c.options;
   j["solver"] = {

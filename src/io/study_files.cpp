@@ -1184,6 +1184,32 @@ const SweepColumn kSweepColumns[] = {
     {"max_friction_demand", "-", "largest \\|F_I\\|/F_J, impulses included", ColumnType::kReal,
      [](const Spec&, const Row& r) -> Value { return r.run.max_friction_demand; },
      [](Row& r, const Value& v) { r.run.max_friction_demand = real(v); }},
+    // where the sticking contact breaks without a friction limit (a finite coefficient removes
+    // them): docs/theory.md §15, §16
+    {"pivot_tension_episodes", "-",
+     "times the pivot force vanished where only sliding could free the pivot (`pivot_tension`): "
+     "the floor was let pull",
+     ColumnType::kInteger,
+     [](const Spec&, const Row& r) -> Value {
+       return static_cast<long long>(r.run.tension_episodes);
+     },
+     [](Row& r, const Value& v) { r.run.tension_episodes = static_cast<long>(integer(v)); }},
+    {"max_pivot_pull_N", "N", "largest pull of the floor on a held pivot, -min F_J (0: none)",
+     ColumnType::kReal, [](const Spec&, const Row& r) -> Value { return r.run.max_pivot_pull; },
+     [](Row& r, const Value& v) { r.run.max_pivot_pull = real(v); }},
+    {"tension_time_s", "s", "time the floor pulled on a held pivot", ColumnType::kReal,
+     [](const Spec&, const Row& r) -> Value { return r.run.tension_time; },
+     [](Row& r, const Value& v) { r.run.tension_time = real(v); }},
+    {"tensile_landings", "-", "landings that needed a pulling impulse (`tensile_landing`)",
+     ColumnType::kInteger,
+     [](const Spec&, const Row& r) -> Value {
+       return static_cast<long long>(r.run.tensile_landings);
+     },
+     [](Row& r, const Value& v) { r.run.tensile_landings = static_cast<long>(integer(v)); }},
+    {"max_tensile_impulse_N_s", "N s", "largest such pulling impulse, -min I_y (0: none)",
+     ColumnType::kReal,
+     [](const Spec&, const Row& r) -> Value { return r.run.max_tensile_impulse; },
+     [](Row& r, const Value& v) { r.run.max_tensile_impulse = real(v); }},
     {"status", "-", "engine status", ColumnType::kText,
      [](const Spec&, const Row& r) -> Value { return to_string(r.run.status); },
      [](Row& r, const Value& v) { r.run.status = status_value(v); }},

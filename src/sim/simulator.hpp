@@ -45,6 +45,12 @@ inline std::string short_number(double v) {
   return buf;
 }
 
+// A landing is tensile (the sticking corner would need the floor to pull) when its vertical
+// impulse is below -kTensileRounding M (|v_c-| + |v_c+|): beyond the rounding of M (v+ - v-). On
+// bench/pulls_grid the grazing landings, whose impulse vanishes, left at most 2e-12 N s of either
+// sign, and the smallest tensile impulse beyond this bound was 7e-5 N s
+inline constexpr double kTensileRounding = 1e-12;
+
 // The stepper interface the loop uses (Dopri5 and ContactPropagator both provide it):
 //   step(sys, t_stop) -> Status       one accepted step from t1() toward t_stop (ends on it)
 //   restep_to(sys, t)                 redo the last step from t0() to t (an event time)
@@ -196,6 +202,7 @@ class Simulator final : private GuardProbe {
   bool walk_quiet(double ax, double ay0, double ay1) const;
   struct ReactionReach {
     bool shear = false, moment = false, demand = false;
+    bool pull = false;  // the floor's pull on a held pivot (tension_)
   };
   ReactionReach reaction_reach(double fi_top, double moment_top, double fj_lo, double fj_hi) const;
   int walk_search(double tp0, double a, double b, const GuardSample& sa, const GuardSample& sb,
@@ -230,7 +237,8 @@ class Simulator final : private GuardProbe {
   // `rigid`: the rigid_body law (false: the paper's, also when rigid_body would add energy)
   bool land(double t, State& x, int e, bool rigid);
   bool overturned(double t, State& x);
-  bool after_impulse(double t, State& x, const Event& ev, double th);
+  // `momentum` [N s]: M (|v_c| before + after), the scale of the impulse's rounding
+  bool after_impulse(double t, State& x, const Event& ev, double th, double momentum);
   bool start_slip(double t, State& x);
   // an uplift onto e from sticking full contact at t (state in q_, qd_) has a continuation: the
   // pivot's friction holds, or with the pivot sliding the body still turns up (theory §20)
@@ -271,7 +279,22 @@ class Simulator final : private GuardProbe {
   double kinetic_energy(const State& x);
   double potential_energy(const State& x);
   double offset_of(const State& x);
-  void observe(const GuardSample& s, const State& x) { rec_.observe(observation(s.t, x, s)); }
+  void observe(const GuardSample& s, const State& x) {
+    rec_.observe(observation(s.t, x, s));
+    if (s.fj < 0.0 && tension_) fold_pull(s.fj);
+  }
+  // the floor pulls on a held pivot (F_J over M g, < 0): into the run's largest pull and the
+  // episode's pivot_tension event
+  void fold_pull(double fj) {
+    const double f = fj * dyn_.mass() * dyn_.g();
+    res_.extremes.max_pivot_pull = std::max(res_.extremes.max_pivot_pull, -f);
+    if (tension_event_ >= 0) {
+      Event& ev = res_.events[static_cast<std::size_t>(tension_event_)];
+      ev.force_estimate = std::min(ev.force_estimate, f);
+    }
+  }
+  // the pull of a sample while the pivot is held (over M g, >= 0): a located quantity
+  double pull_of(const GuardSample& s) const { return tension_ && s.fj < 0.0 ? -s.fj : 0.0; }
   // the state at t within the last step, evaluated and observed (an extreme located there)
   void observe_at(double t) {
     GuardSample s;
@@ -344,13 +367,14 @@ class Simulator final : private GuardProbe {
   std::vector<int> wanted_;             // the walk's extremes search: the quantities sought
   std::vector<double> best_, best_at_;  // their largest values found, and where [s]
   // a step's observed points (its start, its samples before any event, the event) and the
-  // quantities of locate_extremes there (|u_j|, |F_I|, |moment|, friction demand)
-  static constexpr int NQ = N == Eigen::Dynamic ? Eigen::Dynamic : N + 3;
-  static constexpr int MaxNQ = MaxN == Eigen::Dynamic ? Eigen::Dynamic : MaxN + 3;
+  // quantities of locate_extremes there (|u_j|, |F_I|, |moment|, friction demand, pull)
+  static constexpr int NQ = N == Eigen::Dynamic ? Eigen::Dynamic : N + 4;
+  static constexpr int MaxNQ = MaxN == Eigen::Dynamic ? Eigen::Dynamic : MaxN + 4;
   using Quantities = Eigen::Array<double, NQ, 1, Eigen::ColMajor, MaxNQ, 1>;
   std::array<double, kMaxSamples + 2> point_t_{};
   std::array<Quantities, kMaxSamples + 2> point_vals_;
   std::array<bool, kMaxSamples + 2> point_pressing_{};  // F_J >= kPressingFraction at the points
+  std::array<double, kMaxSamples + 2> point_fj_{};      // F_J over M g at the points
   Quantities point_extreme_;                   // scratch: the extremes so far, in the same units
   std::array<double, 4> walk_forcing_{};       // the piece's max |a_x|, |a_y|, |a_x'|, |a_y'|
   double still_t1_ = 0.0;                      // [s] end of the span checked last while still
@@ -362,7 +386,8 @@ class Simulator final : private GuardProbe {
   double mu_s_ = 0.0, mu_k_ = 0.0;   // static and kinetic friction coefficients (inf: no limit)
   double slide_start_ = 0.0;         // [s] when the current slide began
   bool slide_inconsistent_ = false;  // a sliding mode had no consistent slip acceleration
-  bool tension_ = false;  // the floor pulls (pivot_tension): lift-off disarmed until it presses
+  bool tension_ = false;     // the floor pulls (pivot_tension): lift-off disarmed until it presses
+  long tension_event_ = -1;  // the index of the episode's pivot_tension event (-1: none)
   // after a grazing landing with friction the floor is let pull through the modes entered at that
   // instant (a slip that starts where the pivot force vanishes) until a step ends: else the body
   // would lift off and land again without end
@@ -434,11 +459,11 @@ Simulator<N, MaxN>::Simulator(const Body& body, const GroundMotion& motion,
   prop_buf_.setZero(2 * n_ + 11);
   xw_.setZero(2 * n_ + 11);
   xe_.setZero(2 * n_ + 11);
-  wanted_.assign(static_cast<std::size_t>(n_ + 3), 0);
-  best_.assign(static_cast<std::size_t>(n_ + 3), 0.0);
-  best_at_.assign(static_cast<std::size_t>(n_ + 3), 0.0);
-  for (Quantities& v : point_vals_) v.setZero(n_ + 3);
-  point_extreme_.setZero(n_ + 3);
+  wanted_.assign(static_cast<std::size_t>(n_ + 4), 0);
+  best_.assign(static_cast<std::size_t>(n_ + 4), 0.0);
+  best_at_.assign(static_cast<std::size_t>(n_ + 4), 0.0);
+  for (Quantities& v : point_vals_) v.setZero(n_ + 4);
+  point_extreme_.setZero(n_ + 4);
 }
 
 template <int N, int MaxN>
@@ -1376,6 +1401,22 @@ void Simulator<N, MaxN>::series_extremes(double t0, double tau_end, bool event,
   // needed
   const ReactionReach reach = reaction_reach(std::max(std::abs(range.fi_lo), std::abs(range.fi_hi)),
                                              range.moment_abs, range.fj_lo, range.fj_hi);
+  if (tension_) {
+    // the floor pulls on the held pivot: its largest pull and the time it pulls, on F_J's series
+    if (!reaction) {
+      reaction_polynomials(series_integ_.t1() - series_integ_.t0());
+      reaction = true;
+    }
+    constexpr int kParts = 16;
+    std::array<double, kParts + 1> ts{}, fs{};
+    for (int k = 0; k <= kParts; ++k) {
+      ts[static_cast<std::size_t>(k)] = tau_end * k / kParts;
+      fs[static_cast<std::size_t>(k)] = sp_fj_.value(ts[static_cast<std::size_t>(k)]);
+    }
+    res_.extremes.tension_time += time_negative(ts.data(), fs.data(), kParts + 1,
+                                                [&](double tau) { return sp_fj_.value(tau); });
+    if (reach.pull) at(polynomial_argmax([&](double tau) { return -sp_fj_.value(tau); }, tau_end));
+  }
   if (reach.shear || reach.moment || reach.demand) {
     if (!reaction) {
       reaction_polynomials(series_integ_.t1() - series_integ_.t0());
@@ -1605,7 +1646,7 @@ bool Simulator<N, MaxN>::walk_quiet(double ax, double ay0, double ay1) const {
   const double mu = opt_.friction_coefficient;
   if (std::isfinite(mu) && !(mu * r.fj_lo - r.fi > margin)) return false;
   const ReactionReach reach = reaction_reach(r.fi, r.moment, r.fj_lo, r.fj_hi);
-  if (reach.shear || reach.moment || reach.demand) return false;
+  if (reach.shear || reach.moment || reach.demand || reach.pull) return false;
   const Extremes& ex = res_.extremes;
   for (int j = 0; j < n_; ++j)
     if (prop_.walk_q_reach(j) > ex.max_abs_q(j)) return false;
@@ -1625,7 +1666,8 @@ typename Simulator<N, MaxN>::ReactionReach Simulator<N, MaxN>::reaction_reach(do
   return {mg * fi_top > ex.max_base_shear,
           mg * dyn_.height() * moment_top > ex.max_overturning_moment,
           fj_hi >= kPressingFraction &&
-              !(fj_lo >= kPressingFraction && fi_top / fj_lo <= ex.max_friction_demand)};
+              !(fj_lo >= kPressingFraction && fi_top / fj_lo <= ex.max_friction_demand),
+          tension_ && -mg * fj_lo > ex.max_pivot_pull};
 }
 
 // [a, b] of the walk's piece from tp0 (guards sa, sb at its ends, every one > 0 at a), halved
@@ -1688,7 +1730,7 @@ void Simulator<N, MaxN>::locate_extremes(double tp0, double h, const GuardSample
                                          const GuardSample& sb, const Excursion& e) {
   const Extremes& ex = res_.extremes;
   // which quantities might exceed their extreme within the piece: -1 none, j < n: q_j,
-  // n: shear, n + 1: moment, n + 2: friction demand
+  // n: shear, n + 1: moment, n + 2: friction demand, n + 3: the floor's pull on a held pivot
   std::vector<int>& wanted = wanted_;
   int count = 0;
   // u_j could exceed its extreme within the excursion bound over a length w of a value `top`
@@ -1712,6 +1754,7 @@ void Simulator<N, MaxN>::locate_extremes(double tp0, double h, const GuardSample
   if (reach.shear) wanted[static_cast<std::size_t>(count++)] = n_;
   if (reach.moment) wanted[static_cast<std::size_t>(count++)] = n_ + 1;
   if (reach.demand) wanted[static_cast<std::size_t>(count++)] = n_ + 2;
+  if (reach.pull) wanted[static_cast<std::size_t>(count++)] = n_ + 3;
   if (count == 0) return;
   // the state at tau in the piece, and the guards where a reaction's extreme is sought (they
   // come after the deformations in `wanted`), observed on the way
@@ -1773,7 +1816,10 @@ void Simulator<N, MaxN>::locate_extremes(double tp0, double h, const GuardSample
         return u;
       };
       largest_near(jet, tau, lo, hi);
-    } else if (k == n_ ? part_reach.shear : k == n_ + 1 ? part_reach.moment : part_reach.demand) {
+    } else if (k == n_       ? part_reach.shear
+               : k == n_ + 1 ? part_reach.moment
+               : k == n_ + 2 ? part_reach.demand
+                             : part_reach.pull) {
       visit(largest_near([&](double t) { return guard_jet(k, t); }, tau, lo, hi));
     }
   }
@@ -1791,7 +1837,9 @@ void Simulator<N, MaxN>::keep_point(int p, double t, const GuardSample& s, const
   v(n_) = std::abs(s.fi);
   v(n_ + 1) = std::abs(s.moment);
   v(n_ + 2) = friction_demand(s);
+  v(n_ + 3) = pull_of(s);
   point_pressing_[pp] = s.fj >= kPressingFraction;
+  point_fj_[pp] = s.fj;
 }
 
 template <int N, int MaxN>
@@ -1802,7 +1850,8 @@ inline double Simulator<N, MaxN>::point_quantity(int k, const GuardSample& s,
   }
   if (k == n_) return std::abs(s.fi);
   if (k == n_ + 1) return std::abs(s.moment);
-  return friction_demand(s);
+  if (k == n_ + 2) return friction_demand(s);
+  return pull_of(s);
 }
 
 template <int N, int MaxN>
@@ -1818,6 +1867,16 @@ double Simulator<N, MaxN>::step_quantity(int k, double t) {
 // evaluation and each peak observed (evaluate() there, every quantity folded)
 template <int N, int MaxN>
 void Simulator<N, MaxN>::locate_step_extremes(int points) {
+  // the time the floor pulls on the held pivot, its sign changes between the points located
+  if (tension_) {
+    GuardSample s;
+    res_.extremes.tension_time +=
+        time_negative(point_t_.data(), point_fj_.data(), points, [&](double t) {
+          state_at(t, xr_);
+          evaluate(t, xr_, s);
+          return s.fj;
+        });
+  }
   // the friction demand counts only while the floor presses with kPressingFraction of the weight,
   // and rises toward that limit before the floor lets go: its peak lies at the switch
   for (int p = 1; p < points; ++p) {
@@ -1838,6 +1897,7 @@ void Simulator<N, MaxN>::locate_step_extremes(int points) {
   point_extreme_(n_) = ex.max_base_shear / mg;
   point_extreme_(n_ + 1) = ex.max_overturning_moment / mgh;
   point_extreme_(n_ + 2) = ex.max_friction_demand;
+  point_extreme_(n_ + 3) = ex.max_pivot_pull / mg;
   locate_peaks_between(
       point_t_.data(), point_vals_.data(), points, point_extreme_,
       [this](int k, double t) { return step_quantity(k, t); }, [this](double t) { observe_at(t); });
@@ -1897,6 +1957,7 @@ std::array<double, 3> Simulator<N, MaxN>::guard_jet(int k, double tau) {
   const auto r = dyn_.full_contact_reaction_rates(qjet_, prop_.walk_base(tau), prop_.walk_slope());
   if (k == n_) return r.fi;
   if (k == n_ + 1) return r.moment;
+  if (k == n_ + 3) return {-r.fj[0], -r.fj[1], -r.fj[2]};
   const std::array<double, 3>&fi = r.fi, &fj = r.fj;
   const double d = fi[0] / fj[0], d1 = (fi[1] - d * fj[1]) / fj[0];
   return {d, d1, (fi[2] - d * fj[2] - 2.0 * d1 * fj[1]) / fj[0]};
@@ -1939,10 +2000,31 @@ bool Simulator<N, MaxN>::advance_still(double& t, State& x) {
   double t_hit = 0.0;
   int slot_hit = -1;
   const bool hit = step_guards(samples, tb, t_hit, slot_hit);
+  int points = 1;
   for (int k = 1; k <= samples; ++k) {
     const auto kk = static_cast<std::size_t>(k);
     if (smp[kk].t >= t_hit) break;
     observe(smp[kk], x_still_);
+    ++points;
+  }
+  if (tension_) {
+    // the time the floor pulls on the held body, to the last sample before any event and on to it
+    std::array<double, kMaxSamples + 2> ts{}, fs{};
+    GuardSample s;
+    auto fj_at = [&](double tt) {
+      evaluate(tt, x_still_, s);
+      return s.fj;
+    };
+    for (int p = 0; p < points; ++p) {
+      ts[static_cast<std::size_t>(p)] = smp[static_cast<std::size_t>(p)].t;
+      fs[static_cast<std::size_t>(p)] = smp[static_cast<std::size_t>(p)].fj;
+    }
+    if (hit && t_hit > ts[static_cast<std::size_t>(points - 1)]) {
+      ts[static_cast<std::size_t>(points)] = t_hit;
+      fs[static_cast<std::size_t>(points)] = fj_at(t_hit);
+      ++points;
+    }
+    res_.extremes.tension_time += time_negative(ts.data(), fs.data(), points, fj_at);
   }
   if (!hit) {
     emit_rows_until(tb);
@@ -2205,6 +2287,9 @@ bool Simulator<N, MaxN>::lift_off(double t, State& x) {
     ev.theta = x(0);
     ev.theta_dot_before = ev.theta_dot_after = x(ithd());
     rec_.event(ev);
+    // the episode's largest pull goes into this event as the floor pulls (fold_pull)
+    tension_event_ = static_cast<long>(res_.events.size()) - 1;
+    ++res_.extremes.tension_episodes;
     return enter_mode(t, x);
   }
   Eigen::Vector2d r, v;
@@ -2244,7 +2329,10 @@ bool Simulator<N, MaxN>::land(double t, State& x, int e, bool rigid) {
   if (std::isfinite(mu_s_)) {
     res_.extremes.flight_time += t - flight_start_;
     const bool chatter = t - last_contact_change_ < chatter_interval_;
-    if (chatter) tension_ = hold_tension_ = true;  // as below: grazing hops cannot accumulate
+    if (chatter) {
+      tension_ = hold_tension_ = true;  // as below: grazing hops cannot accumulate
+      tension_event_ = -1;
+    }
     return friction_impact(t, x, e, v_c, true, false,
                            chatter ? EventKind::kChatterCutoff : EventKind::kLanding, chatter,
                            rigid);
@@ -2326,9 +2414,10 @@ bool Simulator<N, MaxN>::land(double t, State& x, int e, bool rigid) {
   if (chatter) {
     ev.kind = EventKind::kChatterCutoff;
     tension_ = true;
+    tension_event_ = -1;
   }
   count_impact(ev, impulse(1), ev.energy_loss, chatter);
-  return after_impulse(t, x, ev, th);
+  return after_impulse(t, x, ev, th, dyn_.mass() * (v_c.norm() + v_after.norm()));
 }
 
 template <int N, int MaxN>
@@ -2620,18 +2709,24 @@ bool Simulator<N, MaxN>::friction_impact(double t, State& x, int e, const Eigen:
     fe.friction_demand = sticking_demand;
     rec_.event(fe);
   }
-  return after_impulse(t, x, ev, th);
+  return after_impulse(t, x, ev, th, m * (v_c.norm() + v_after.norm()));
 }
 
 // the end of a landing or an impact with friction, recorded as `ev` at tilt th: a tensile impulse
 // is said, and the new mode starts (theta = 0 and rocking: the impact guard starts at zero)
 template <int N, int MaxN>
-bool Simulator<N, MaxN>::after_impulse(double t, State& x, const Event& ev, double th) {
-  if (ev.impulse_y < 0.0) {
+bool Simulator<N, MaxN>::after_impulse(double t, State& x, const Event& ev, double th,
+                                       double momentum) {
+  // (a grazing landing's impulse vanishes: its sign within the rounding of M (v+ - v-) says
+  // nothing, and such a landing pulls on nothing)
+  if (ev.impulse_y < -kTensileRounding * momentum) {
     // the sticking tipping point would need the floor to pull: say so
     Event te = ev;
     te.kind = EventKind::kTensileLanding;
     rec_.event(te);
+    Extremes& ex = res_.extremes;
+    ++ex.tensile_landings;
+    ex.max_tensile_impulse = std::max(ex.max_tensile_impulse, -ev.impulse_y);
   }
   last_contact_change_ = t;
   zero_start_.fill(false);

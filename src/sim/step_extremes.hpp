@@ -84,4 +84,24 @@ double bisect_switch(double a, double b, bool pressing_at_a, Pressing&& pressing
   return press;
 }
 
+/// The time within [t[0], t[points - 1]] where f < 0, from f's values fv at the points: between
+/// two points of opposite signs the sign change by bisect_switch on `f(t)`. A dip below zero
+/// between two points where f >= 0 is not seen: the points must resolve f, as the guards' do (the
+/// floor's pull on a held pivot, whose end the lift-off guard's samples bracket).
+template <class F>
+double time_negative(const double* t, const double* fv, int points, F&& f) {
+  double sum = 0.0;
+  for (int p = 1; p < points; ++p) {
+    const double a = t[p - 1], b = t[p];
+    const bool na = fv[p - 1] < 0.0, nb = fv[p] < 0.0;
+    if (na && nb) {
+      sum += b - a;
+    } else if (na != nb) {
+      const double c = bisect_switch(a, b, na, [&](double tt) { return f(tt) < 0.0; });
+      sum += na ? c - a : b - c;
+    }
+  }
+  return sum;
+}
+
 }  // namespace flexrock::detail

@@ -56,6 +56,11 @@ RunSummary summarize(const Body& body, const SimulationResult& r) {
   s.final_offset = r.final_offset;
   s.sliding_time = x.sliding_time;
   s.slips = x.slips;
+  s.tension_episodes = x.tension_episodes;
+  s.max_pivot_pull = x.max_pivot_pull;
+  s.tension_time = x.tension_time;
+  s.tensile_landings = x.tensile_landings;
+  s.max_tensile_impulse = x.max_tensile_impulse;
   if (flexrock::overturned(r)) {
     // the engine's one overturning rule, whether the body was rocking or in flight
     s.outcome =

@@ -56,7 +56,7 @@ run "$FLEXROCK" sweep friction.toml -o friction.csv -q
 expect_rc 0 "sweep with friction"
 head -1 friction.csv | grep -q ",status,message,regime,max_offset_m,final_offset_m,sliding_time_s,slips$" ||
   fail "sliding columns: $(head -1 friction.csv)"
-[ "$(awk -F, '{print NF}' friction.csv | sort -u)" = "29" ] || fail "fields per row"
+[ "$(awk -F, '{print NF}' friction.csv | sort -u)" = "34" ] || fail "fields per row"
 grep -q "^[0-9]*,block,.*,sliding,[0-9.e-]*,[-0-9.e]*,[0-9.e-]*,[0-9]*$" friction.csv || fail "no sliding row"
 grep -q "^[0-9]*,statue,.*,none,0,0,0,0$" friction.csv || fail "the statue has no friction: none"
 run "$FLEXROCK" fragility friction.csv --im pgv --outcome offset --level 0.12 --body block

@@ -339,14 +339,17 @@ TEST_F(StudyFiles, FragilityDataFromASweepCsv) {
     csv += (i ? "," : "") + sweep_columns()[i];
   csv += "\n";
   // index body record requested_level requested_units scale pga pga_g pgv duration outcome
-  // overturned edge t_over theta theta/alpha impacts t_up uplift impulse energy friction status
-  // message
-  csv += "0,a,r,1,-,1,1.5,0.15,0.2,10,rocking,0,0,-1,0.1,0.5,3,1,0,0,2.5,0.1,completed,\n";
+  // overturned edge t_over theta theta/alpha impacts t_up uplift impulse energy friction
+  // tension_episodes pull tension_time tensile_landings tensile_impulse status message
   csv +=
-      "1,a,r,2,-,2,3.0,0.3,0.4,10,overturned_after_impacts,1,1,4,1,1,3,1,0,0,1.0,0.1,"
+      "0,a,r,1,-,1,1.5,0.15,0.2,10,rocking,0,0,-1,0.1,0.5,3,1,0,0,2.5,0.1,0,0,0,0,0,completed,\n";
+  csv +=
+      "1,a,r,2,-,2,3.0,0.3,0.4,10,overturned_after_impacts,1,1,4,1,1,3,1,0,0,1.0,0.1,0,0,0,0,0,"
       "overturned,\n";
-  csv += "2,a,r,3,-,3,4.5,0.45,0.6,10,stopped,0,0,-1,0,0,0,-1,0,0,0,0,stopped,step collapse\n";
-  csv += "3,b,r,1,-,1,1.5,0.15,0.2,10,no_uplift,0,0,-1,0,0,0,-1,0,0,0,0.1,completed,\n";
+  csv +=
+      "2,a,r,3,-,3,4.5,0.45,0.6,10,stopped,0,0,-1,0,0,0,-1,0,0,0,0,0,0,0,0,0,stopped,step "
+      "collapse\n";
+  csv += "3,b,r,1,-,1,1.5,0.15,0.2,10,no_uplift,0,0,-1,0,0,0,-1,0,0,0,0.1,0,0,0,0,0,completed,\n";
   const std::string p = write("s.csv", csv);
   const CsvTable t = read_csv_table(p);
   FragilityQuery q;
@@ -371,7 +374,7 @@ TEST_F(StudyFiles, FragilityDataFromASweepCsv) {
   test::expect_input_error([&] { fragility_data(t, q); }, {"'sa'", "pga, pga_g, pgv, scale"});
   // a figure that is not finite (written by no flexrock) is refused, naming it
   std::string inf_csv = csv;
-  inf_csv.replace(inf_csv.find(",2.5,0.1,completed"), 4, ",inf");
+  inf_csv.replace(inf_csv.find(",2.5,0.1,0,0,0,0,0,completed"), 4, ",inf");
   const CsvTable ti = read_csv_table(write("inf.csv", inf_csv));
   q.outcome = "energy";
   q.level = 1.0;

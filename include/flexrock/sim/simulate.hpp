@@ -60,9 +60,11 @@ enum class EventKind {
                         // impact law applied (docs/theory.md, "Impacts with friction")
   kImpactGainedEnergy,  // an impact (with a restitution factor) added kinetic energy
   kStopped,             // step collapse, step or event limit
-  kTensileLanding,      // a plastic landing needed a pulling impulse: the sticking model breaks
+  kTensileLanding,      // a plastic landing needed a pulling impulse (`impulse_y` < 0): the
+                        // sticking model breaks
   kPivotTension,        // the vertical reaction vanished but the body cannot fly off its sticking
                         // pivot (it would have to slide): the floor is let pull until it presses
+                        // (`force_estimate`: the episode's most negative F_J [N])
   kEnergyUnbalanced,    // at the end: |energy residual| above its bound (`energy_loss`: residual)
   kSlipStart,           // the friction demand reached the static coefficient: the base slides
   kStick,               // the slip velocity reached zero and friction holds: sliding ends
@@ -231,6 +233,13 @@ struct Extremes {
   long impact_law_fallbacks = 0;   // impacts where the chosen law would have added energy
   double max_contact_force = 0.0;  // [N] compliant contact: the largest normal force of a tipping
                                    // point (resolved, not estimated)
+  // where the sticking-contact model breaks without a friction limit (docs/theory.md §15, §16):
+  // the floor pulling on a held pivot (F_J < 0) and landings that need a pulling impulse
+  long tension_episodes = 0;         // pivot_tension events: the floor began to pull
+  double max_pivot_pull = 0.0;       // [N] largest pull on a held pivot, -min F_J (>= 0)
+  double tension_time = 0.0;         // [s] total time with the floor pulling (F_J < 0 held)
+  long tensile_landings = 0;         // landings and impacts that needed a pulling impulse
+  double max_tensile_impulse = 0.0;  // [N s] largest pulling vertical impulse, -min I_y (>= 0)
 };
 
 /// Energy balance relative to the base [J]: residual = input_work - (kinetic_change +

@@ -69,6 +69,12 @@ struct RunSummary {
   double sliding_time = 0.0;      // [s] time spent sliding
   long slips = 0;                 // slip starts
   Regime regime = Regime::kNone;  // slid and/or uplifted
+  // where the sticking-contact model broke (no friction limit): Extremes' fields of those names
+  long tension_episodes = 0;         // pivot_tension events
+  double max_pivot_pull = 0.0;       // [N] largest pull of the floor on a held pivot (-min F_J)
+  double tension_time = 0.0;         // [s] time the floor pulled
+  long tensile_landings = 0;         // landings/impacts that needed a pulling impulse
+  double max_tensile_impulse = 0.0;  // [N s] largest such pull (-min I_y)
 };
 
 /// Classifies a finished simulation: overturned with zero impacts (Extremes::impacts, which
