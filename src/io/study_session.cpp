@@ -220,7 +220,15 @@ std::vector<study::SweepRow> SweepSession::finish() {
     journal_.finish(false);
     return {};
   }
-  FLEXROCK_DEMAND(lines.size() == runs_);
+  // finish() before run() has done every run (or after a stopped one): a usage error the caller
+  // mends by running on, never an abort
+  if (lines.size() != runs_) {
+    journal_.finish(false);
+    throw std::runtime_error(
+        output_ + ": finish() before every run is done: " + std::to_string(lines.size()) + " of " +
+        std::to_string(runs_) + " runs are finished (journal " + journal_.path() +
+        "); call run() first: it goes on from the journal, then finish() writes the CSV");
+  }
   // every row as data: those computed here or read when the journal was checked as they are,
   // the others (from other processes) read back from their lines
   std::vector<study::SweepRow> rows;
@@ -334,6 +342,12 @@ void SpectrumSession::run(const study::RunOptions& options) {
   }
 }
 
+std::string SpectrumSession::unfinished(std::size_t done, std::size_t of, const char* what) const {
+  return output_ + ": finish() before every cell and boundary is done: " + std::to_string(done) +
+         " of " + std::to_string(of) + " " + what + " are finished (journal " + journal_.path() +
+         "); call run() first: it goes on from the journal, then finish() writes the CSVs";
+}
+
 study::SpectrumResult SpectrumSession::finish(const std::atomic<bool>* cancel) {
   const std::map<std::size_t, std::string>& lines = journal_.gather();
   if (!transport_.root()) {
@@ -347,6 +361,11 @@ study::SpectrumResult SpectrumSession::finish(const std::atomic<bool>* cancel) {
   bool stopped = false;
   // whatever fails here, every process still makes the journal's last collective call
   try {
+    // finish() before run() has done every cell (or after a stopped one): a usage error the
+    // caller mends by running on
+    std::size_t done = 0;
+    for (std::size_t i = 0; i < n; ++i) done += lines.count(i);
+    if (done != n) throw std::runtime_error(unfinished(done, n, "cells"));
     // every cell as data, read back from its line
     for (std::size_t i = 0; i < n; ++i) {
       res.cells[i] = read_spectrum_cell(grid_, i, lines.at(i), g);
@@ -360,7 +379,9 @@ study::SpectrumResult SpectrumSession::finish(const std::atomic<bool>* cancel) {
       if (!stopped) journal_.append_on_root(n, boundary_row(grid_, b, true, g));
     }
     if (!stopped) {
-      FLEXROCK_DEMAND(lines.size() == runs());
+      if (lines.size() != runs()) {
+        throw std::runtime_error(unfinished(lines.size() - n, runs() - n, "boundaries"));
+      }
       for (std::size_t j = 0; j < res.boundary.size(); ++j) {
         res.boundary[j] = read_boundary(grid_, j, lines.at(n + j), normalized, g);
       }

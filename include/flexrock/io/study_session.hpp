@@ -118,7 +118,7 @@ class SweepSession {
   /// After run() on every process, when none was stopped: gathers the rows on rank 0, writes
   /// the CSV there (atomically) and deletes the journals. Returns every row in index order on
   /// rank 0 (empty on the others). Throws std::runtime_error when the CSV cannot be written
-  /// (the journals are kept).
+  /// or when a run is not finished (run() stopped or not called; the journals are kept).
   std::vector<study::SweepRow> finish();
   const SweepManifest& manifest() const { return manifest_; }
 
@@ -171,10 +171,13 @@ class SpectrumSession {
   /// written, the journals stay and the result has no cells), writes the CSVs (the boundary
   /// last, an old one removed first) and deletes the journals. Returns the whole result on rank
   /// 0, every cell and boundary read back as data (empty on the others). Throws
-  /// std::runtime_error when an output cannot be written (the journals are kept).
+  /// std::runtime_error when an output cannot be written or when a cell or boundary is not
+  /// finished (run() stopped or not called; the journals are kept).
   study::SpectrumResult finish(const std::atomic<bool>* cancel = nullptr);
 
  private:
+  std::string unfinished(std::size_t done, std::size_t of, const char* what) const;
+
   SpectrumFile file_;
   Body body_;
   std::string output_, boundary_output_;
