@@ -6,7 +6,10 @@
 #include <pybind11/stl.h>
 
 #include <algorithm>
+#include <atomic>
+#include <chrono>
 #include <cmath>
+#include <future>
 #include <limits>
 #include <memory>
 #include <sstream>
@@ -30,10 +33,40 @@ namespace flexrock::python {
 
 namespace {
 
-study::RunOptions threads_only(int threads) {
+// a study's thread pool on `threads` workers, run on a thread of its own while this one waits
+// without the GIL and takes it every 20 ms to look for signals: Ctrl-C (or any signal whose
+// Python handler raises) stops the pool between runs, as SIGINT stops the command line, and
+// its exception is raised here once the pool has stopped (a session's journal keeps every
+// finished run); from a thread other than the main one no signal is seen (Python's rule)
+template <class Work>
+auto interruptible(int threads, Work work) {
+  std::atomic<bool> cancel{false};
   study::RunOptions o;
   o.threads = threads;
-  return o;
+  o.cancel = &cancel;
+  auto done = std::async(std::launch::async, [&] { return work(o); });
+  bool interrupted = false;
+  for (;;) {
+    std::future_status state;
+    {
+      py::gil_scoped_release nogil;
+      state = done.wait_for(std::chrono::milliseconds(20));
+    }
+    if (state == std::future_status::ready) break;
+    if (!interrupted && PyErr_CheckSignals() != 0) {
+      interrupted = true;
+      cancel.store(true);
+    }
+  }
+  if (interrupted) {
+    // the signal's exception wins over what the stopped pool returned or threw
+    try {
+      done.get();
+    } catch (...) {
+    }
+    throw py::error_already_set();
+  }
+  return done.get();
 }
 
 const char* type_name(io::ColumnType t) {
@@ -214,10 +247,10 @@ RunSummary)doc");
   m.def(
       "compute_spectrum",
       [](const Body& body, const SpectrumSpec& spec, int threads) {
-        return compute_spectrum(body, spec, threads_only(threads));
+        return interruptible(
+            threads, [&](const study::RunOptions& o) { return compute_spectrum(body, spec, o); });
       },
       py::arg("body"), py::arg("spec"), py::arg("threads") = 0,
-      py::call_guard<py::gil_scoped_release>(),
       R"doc(Every cell of a pulse spectrum, then the minimum overturning amplitude of each column.
 
 Parameters
@@ -234,10 +267,11 @@ SpectrumResult)doc");
   m.def(
       "compute_record_spectrum",
       [](const Body& body, const RecordSpectrumSpec& spec, int threads) {
-        return compute_record_spectrum(body, spec, threads_only(threads));
+        return interruptible(threads, [&](const study::RunOptions& o) {
+          return compute_record_spectrum(body, spec, o);
+        });
       },
       py::arg("body"), py::arg("spec"), py::arg("threads") = 0,
-      py::call_guard<py::gil_scoped_release>(),
       R"doc(One record times scale factors, and the minimum overturning scale.
 
 Parameters
@@ -462,10 +496,10 @@ Intensity
   m.def(
       "run_sweep",
       [](const SweepSpec& spec, const std::vector<std::size_t>& indices, int threads) {
-        return run_sweep(spec, indices, threads_only(threads));
+        return interruptible(
+            threads, [&](const study::RunOptions& o) { return run_sweep(spec, indices, o); });
       },
       py::arg("spec"), py::arg("indices") = std::vector<std::size_t>{}, py::arg("threads") = 0,
-      py::call_guard<py::gil_scoped_release>(),
       R"doc(Runs a sweep (bodies x records x scales), or the given run indices.
 
 Parameters
@@ -902,16 +936,22 @@ and the CSV has the same bytes as an uninterrupted run.)doc")
       .def_property_readonly("journal_path", &io::SweepSession::journal_path)
       .def_property_readonly("manifest", &io::SweepSession::manifest)
       .def(
-          "run", [](io::SweepSession& s, int threads) { s.run(threads_only(threads)); },
-          py::arg("threads") = 0, py::call_guard<py::gil_scoped_release>(),
+          "run",
+          [](io::SweepSession& s, int threads) {
+            interruptible(threads, [&](const study::RunOptions& o) { s.run(o); });
+          },
+          py::arg("threads") = 0,
           R"doc(Runs the runs left, journaling each as it finishes (the GIL is released).
+Ctrl-C stops it between runs and raises KeyboardInterrupt; the journal keeps every finished run
+and a new session on the same manifest and output goes on from there.
 
 Parameters
 ----------
 threads : int
     0: every core.)doc")
       .def("finish", &io::SweepSession::finish, py::call_guard<py::gil_scoped_release>(),
-           R"doc(Writes the CSV from every row and deletes the journal.
+           R"doc(Writes the CSV from every row and deletes the journal. Raises RuntimeError, the
+journal kept, when a run is not finished (run() not called, or stopped): call run() first.
 
 Returns
 -------
@@ -943,10 +983,14 @@ here, and the CSVs have the same bytes as an uninterrupted run.)doc")
       .def_property_readonly("journal_path", &io::SpectrumSession::journal_path)
       .def_property_readonly("grid", &io::SpectrumSession::grid)
       .def(
-          "run", [](io::SpectrumSession& s, int threads) { s.run(threads_only(threads)); },
-          py::arg("threads") = 0, py::call_guard<py::gil_scoped_release>(),
+          "run",
+          [](io::SpectrumSession& s, int threads) {
+            interruptible(threads, [&](const study::RunOptions& o) { s.run(o); });
+          },
+          py::arg("threads") = 0,
           R"doc(Runs the cells and bisections left, journaling each as it finishes (the GIL is
-released).
+released). Ctrl-C stops it between runs and raises KeyboardInterrupt; the journal keeps every
+finished cell and boundary and a new session on the same file and outputs goes on from there.
 
 Parameters
 ----------
@@ -955,7 +999,9 @@ threads : int
       .def(
           "finish", [](io::SpectrumSession& s) { return s.finish(); },
           py::call_guard<py::gil_scoped_release>(),
-          R"doc(Writes the CSVs from every cell and boundary and deletes the journal.
+          R"doc(Writes the CSVs from every cell and boundary and deletes the journal. Raises
+RuntimeError, the journal kept, when a cell or boundary is not finished (run() not called, or
+stopped): call run() first.
 
 Returns
 -------
