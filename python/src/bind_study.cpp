@@ -393,12 +393,16 @@ Returns
 list of dict
     name, column (empty for sa: ``sa_T<T>_z<zeta>_m_per_s2``), unit, doc, scale_power (the value
     of the record scaled by s is s**scale_power times the value), needs_period.)doc");
+  m.def("require_spectral_period", &require_spectral_period, py::arg("period"), py::arg("key"),
+        R"doc(Raises InputError naming ``key`` unless ``period`` [s] is finite and at least 1e-6 s
+(below it the oscillator follows the ground and Sa is the PGA).)doc");
   m.def(
       "intensity_measure",
       [](const std::string& name, const std::vector<double>& t, const std::vector<double>& a,
          double period, double zeta) {
         const IntensityMeasure* k = find_intensity_measure(name);
         if (!k) throw InputError("intensity measure '" + name + "': unknown");
+        if (k->needs_period) require_spectral_period(period, "intensity_measure: period");
         return k->compute(t, a, period, zeta);
       },
       py::arg("name"), py::arg("t"), py::arg("a"), py::arg("period") = 0.0, py::arg("zeta") = 0.05,
