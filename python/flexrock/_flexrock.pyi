@@ -1017,7 +1017,7 @@ class SpectrumSession:
     def finish(self) -> SpectrumResult:
         """Writes the CSVs from every cell and boundary and deletes the journal. Raises
         RuntimeError, the journal kept, when a cell or boundary is not finished (run() not called, or
-        stopped): call run() first.
+        stopped): call run() first; and when called again (the session is over).
 
         Returns
         -------
@@ -1033,7 +1033,8 @@ class SpectrumSession:
     def run(self, threads: int = ...) -> None:
         """Runs the cells and bisections left, journaling each as it finishes (the GIL is
         released). Ctrl-C stops it between runs and raises KeyboardInterrupt; the journal keeps every
-        finished cell and boundary and a new session on the same file and outputs goes on from there.
+        finished cell and boundary and run() again, or a new session on the same file and outputs, goes
+        on from there. Raises RuntimeError after finish().
 
         Parameters
         ----------
@@ -1126,7 +1127,8 @@ class SweepSession:
     def __init__(self, manifest: SweepManifest, output: str) -> None: ...
     def finish(self) -> list[SweepRow]:
         """Writes the CSV from every row and deletes the journal. Raises RuntimeError, the
-        journal kept, when a run is not finished (run() not called, or stopped): call run() first.
+        journal kept, when a run is not finished (run() not called, or stopped): call run() first; and
+        when called again (the session is over).
 
         Returns
         -------
@@ -1146,7 +1148,8 @@ class SweepSession:
     def run(self, threads: int = ...) -> None:
         """Runs the runs left, journaling each as it finishes (the GIL is released).
         Ctrl-C stops it between runs and raises KeyboardInterrupt; the journal keeps every finished run
-        and a new session on the same manifest and output goes on from there.
+        and run() again, or a new session on the same manifest and output, goes on from there. Raises
+        RuntimeError after finish().
 
         Parameters
         ----------

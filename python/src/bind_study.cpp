@@ -947,7 +947,8 @@ and the CSV has the same bytes as an uninterrupted run.)doc")
           py::arg("threads") = 0,
           R"doc(Runs the runs left, journaling each as it finishes (the GIL is released).
 Ctrl-C stops it between runs and raises KeyboardInterrupt; the journal keeps every finished run
-and a new session on the same manifest and output goes on from there.
+and run() again, or a new session on the same manifest and output, goes on from there. Raises
+RuntimeError after finish().
 
 Parameters
 ----------
@@ -955,7 +956,8 @@ threads : int
     0: every core.)doc")
       .def("finish", &io::SweepSession::finish, py::call_guard<py::gil_scoped_release>(),
            R"doc(Writes the CSV from every row and deletes the journal. Raises RuntimeError, the
-journal kept, when a run is not finished (run() not called, or stopped): call run() first.
+journal kept, when a run is not finished (run() not called, or stopped): call run() first; and
+when called again (the session is over).
 
 Returns
 -------
@@ -994,7 +996,8 @@ here, and the CSVs have the same bytes as an uninterrupted run.)doc")
           py::arg("threads") = 0,
           R"doc(Runs the cells and bisections left, journaling each as it finishes (the GIL is
 released). Ctrl-C stops it between runs and raises KeyboardInterrupt; the journal keeps every
-finished cell and boundary and a new session on the same file and outputs goes on from there.
+finished cell and boundary and run() again, or a new session on the same file and outputs, goes
+on from there. Raises RuntimeError after finish().
 
 Parameters
 ----------
@@ -1005,7 +1008,7 @@ threads : int
           py::call_guard<py::gil_scoped_release>(),
           R"doc(Writes the CSVs from every cell and boundary and deletes the journal. Raises
 RuntimeError, the journal kept, when a cell or boundary is not finished (run() not called, or
-stopped): call run() first.
+stopped): call run() first; and when called again (the session is over).
 
 Returns
 -------

@@ -60,7 +60,12 @@ def test_finish_before_the_runs_raises_and_says_to_run_first(tmp_path):
         s.finish()
     assert not out.exists() and os.path.exists(s.journal_path)
     s.run(1)
+    s.run(1)  # nothing left: each run is journaled once
     assert len(s.finish()) == 2 and out.exists() and not os.path.exists(s.journal_path)
+    # the session is over: it says so instead of journaling into a deleted journal
+    for call in (lambda: s.run(1), s.finish):
+        with pytest.raises(RuntimeError, match=r"after finish\(\): the session is over"):
+            call()
 
     spec = _spectrum(tmp_path, 2)
     cells, boundary = tmp_path / "c.csv", tmp_path / "b.csv"
@@ -70,6 +75,9 @@ def test_finish_before_the_runs_raises_and_says_to_run_first(tmp_path):
     assert not cells.exists()
     sp.run(1)
     assert len(sp.finish().cells) == 4 and cells.exists() and boundary.exists()
+    for call in (lambda: sp.run(1), sp.finish):
+        with pytest.raises(RuntimeError, match=r"after finish\(\): the session is over"):
+            call()
 
 
 def _interrupt(code, journal, out, min_rows):

@@ -104,5 +104,48 @@ TEST_F(StudySession, SpectrumFinishBeforeTheCellsIsAnErrorThatSaysToRunFirst) {
   EXPECT_TRUE(fs::exists(boundary));
 }
 
+TEST_F(StudySession, RunTwiceJournalsEachRunOnceAndNothingRunsAfterFinish) {
+  write("b.toml", kBody);
+  write("r.dat", "0.0\n0.1\n-0.2\n0.3\n0.0\n");
+  const std::string m = write("m.toml",
+                              "[[body]]\nfile = \"b.toml\"\n"
+                              "[[record]]\nfile = \"r.dat\"\nformat = \"single_column\"\n"
+                              "dt = 0.01\nunits = \"g\"\nname = \"rec\"\n"
+                              "[scales]\nfactors = [0.5, 1.0, 2.0]\n");
+  const std::string p = write("s.toml", std::string(kBody) +
+                                            "[spectrum]\namplitudes = [2.0, 4.0]\n"
+                                            "frequencies = [2.0, 4.0]\nfree_periods = 1\n");
+  const std::string out = (dir_ / "s.csv").string(), cells = (dir_ / "c.csv").string();
+  const std::string boundary = (dir_ / "b.csv").string();
+  study::RunOptions o;
+  o.threads = 1;
+  // run() twice, then left without finish(): the next session resumes every run from a journal
+  // that holds each once (a run journaled twice is refused as a duplicate)
+  {
+    SweepSession s(load_sweep_manifest(m), out);
+    s.run(o);
+    s.run(o);
+  }
+  {
+    SpectrumSession s(load_spectrum_file(p), cells, boundary);
+    s.run(o);
+    s.run(o);
+  }
+  SweepSession sweep(load_sweep_manifest(m), out);
+  EXPECT_EQ(sweep.resumed(), 3u);
+  EXPECT_EQ(sweep.finish().size(), 3u);
+  SpectrumSession spectrum(load_spectrum_file(p), cells, boundary);
+  EXPECT_EQ(spectrum.resumed(), spectrum.runs());
+  EXPECT_EQ(spectrum.finish().cells.size(), 4u);
+  // after finish() the sessions are over: run() and finish() say so
+  for (const std::string& e :
+       {runtime_error_of([&] { sweep.run(o); }), runtime_error_of([&] { sweep.finish(); }),
+        runtime_error_of([&] { spectrum.run(o); }), runtime_error_of([&] { spectrum.finish(); })}) {
+    EXPECT_NE(e.find("after finish(): the session is over"), std::string::npos) << e;
+    EXPECT_NE(e.find("open a new session"), std::string::npos) << e;
+  }
+  EXPECT_FALSE(fs::exists(out + ".partial"));
+}
+
 }  // namespace
 }  // namespace flexrock::io
