@@ -18,6 +18,14 @@ if(FLEXROCK_SANITIZE)
 endif()
 add_test(NAME soak_short COMMAND flexrock_soak --runs ${_soak_runs} --threads 2)
 set_tests_properties(soak_short PROPERTIES LABELS soak TIMEOUT 300)
+# a harsh case whose balance misses the bound at the default tolerances (2.85 x; within it at
+# rtol 1e-12): the soak must show that the run flagged it itself (energy_unbalanced)
+if(NOT FLEXROCK_SANITIZE)
+  add_test(NAME soak_shows_the_runs_energy_flag
+           COMMAND flexrock_soak --coupled --seed 20261129 --only 4935)
+  set_tests_properties(soak_shows_the_runs_energy_flag PROPERTIES LABELS soak TIMEOUT 300
+                       PASS_REGULAR_EXPRESSION "x the bound; flagged by the run \\(energy_unbalanced\\)")
+endif()
 
 # adversarial inputs (empty records, huge dt, 10^7 samples, 100 g, 1e-9 m edges, stiff modes,
 # singular modal mass, endless chatter): a hang fails on the TIMEOUT

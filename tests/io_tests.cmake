@@ -9,5 +9,5 @@ flexrock_add_test(flexrock_io_tests
 
 # synthetic pulses (excitation layer of flexrock::core, no files)
 flexrock_add_test(flexrock_excitation_tests
-  SOURCES unit/pulses_test.cpp unit/intensity_test.cpp
+  SOURCES unit/pulses_test.cpp unit/intensity_test.cpp unit/intensity_period_test.cpp
   LABEL unit)

@@ -1035,7 +1035,9 @@ class SpectrumSession:
     @property
     def cells(self) -> int: ...
     def finish(self) -> SpectrumResult:
-        """Writes the CSVs from every cell and boundary and deletes the journal.
+        """Writes the CSVs from every cell and boundary and deletes the journal. Raises
+        RuntimeError, the journal kept, when a cell or boundary is not finished (run() not called, or
+        stopped): call run() first; and when called again (the session is over).
 
         Returns
         -------
@@ -1050,7 +1052,9 @@ class SpectrumSession:
     def resumed(self) -> int: ...
     def run(self, threads: int = ...) -> None:
         """Runs the cells and bisections left, journaling each as it finishes (the GIL is
-        released).
+        released). Ctrl-C stops it between runs and raises KeyboardInterrupt; the journal keeps every
+        finished cell and boundary and run() again, or a new session on the same file and outputs, goes
+        on from there. Raises RuntimeError after finish().
 
         Parameters
         ----------
@@ -1142,7 +1146,9 @@ class SweepSession:
     """
     def __init__(self, manifest: SweepManifest, output: str) -> None: ...
     def finish(self) -> list[SweepRow]:
-        """Writes the CSV from every row and deletes the journal.
+        """Writes the CSV from every row and deletes the journal. Raises RuntimeError, the
+        journal kept, when a run is not finished (run() not called, or stopped): call run() first; and
+        when called again (the session is over).
 
         Returns
         -------
@@ -1161,6 +1167,9 @@ class SweepSession:
     def resumed(self) -> int: ...
     def run(self, threads: int = ...) -> None:
         """Runs the runs left, journaling each as it finishes (the GIL is released).
+        Ctrl-C stops it between runs and raises KeyboardInterrupt; the journal keeps every finished run
+        and run() again, or a new session on the same manifest and output, goes on from there. Raises
+        RuntimeError after finish().
 
         Parameters
         ----------
@@ -1995,6 +2004,11 @@ def rectangular_pulse(a_p: float, t_1: float, duration: float, component: Compon
     Returns
     -------
     GroundMotion
+    """
+
+def require_spectral_period(period: float, key: str) -> None:
+    """Raises InputError naming ``key`` unless ``period`` [s] is finite and at least 1e-6 s
+    (below it the oscillator follows the ground and Sa is the PGA).
     """
 
 def ricker_wavelet(a_p: float, omega_p: float, t_c: float, duration: float, component: Component = ...) -> GroundMotion:

@@ -45,6 +45,7 @@ from ._flexrock import (  # noqa: F401  (re-exported API)
     intensity_measure,
     intensity_measures,
     measure_request,
+    require_spectral_period,
     lognormal_log_likelihood,
     load_spectrum_file,
     load_sweep_manifest,
@@ -508,6 +509,8 @@ def sweep(
         spec.scales = [v * factor for v in spec.levels]
     spec.free_periods = free_periods
     spec.solver = _solver(solver)
+    for t in sa_periods:
+        _flexrock.require_spectral_period(float(t), "sweep: sa_periods")
     spec.measures = [MeasureRequest(str(m)) for m in measures] + [
         MeasureRequest("sa", float(t), float(sa_damping)) for t in sa_periods
     ]

@@ -6,7 +6,10 @@
 #include <pybind11/stl.h>
 
 #include <algorithm>
+#include <atomic>
+#include <chrono>
 #include <cmath>
+#include <future>
 #include <limits>
 #include <memory>
 #include <sstream>
@@ -30,10 +33,40 @@ namespace flexrock::python {
 
 namespace {
 
-study::RunOptions threads_only(int threads) {
+// a study's thread pool on `threads` workers, run on a thread of its own while this one waits
+// without the GIL and takes it every 20 ms to look for signals: Ctrl-C (or any signal whose
+// Python handler raises) stops the pool between runs, as SIGINT stops the command line, and
+// its exception is raised here once the pool has stopped (a session's journal keeps every
+// finished run); from a thread other than the main one no signal is seen (Python's rule)
+template <class Work>
+auto interruptible(int threads, Work work) {
+  std::atomic<bool> cancel{false};
   study::RunOptions o;
   o.threads = threads;
-  return o;
+  o.cancel = &cancel;
+  auto done = std::async(std::launch::async, [&] { return work(o); });
+  bool interrupted = false;
+  for (;;) {
+    std::future_status state;
+    {
+      py::gil_scoped_release nogil;
+      state = done.wait_for(std::chrono::milliseconds(20));
+    }
+    if (state == std::future_status::ready) break;
+    if (!interrupted && PyErr_CheckSignals() != 0) {
+      interrupted = true;
+      cancel.store(true);
+    }
+  }
+  if (interrupted) {
+    // the signal's exception wins over what the stopped pool returned or threw
+    try {
+      done.get();
+    } catch (...) {
+    }
+    throw py::error_already_set();
+  }
+  return done.get();
 }
 
 const char* type_name(io::ColumnType t) {
@@ -223,10 +256,10 @@ RunSummary)doc");
   m.def(
       "compute_spectrum",
       [](const Body& body, const SpectrumSpec& spec, int threads) {
-        return compute_spectrum(body, spec, threads_only(threads));
+        return interruptible(
+            threads, [&](const study::RunOptions& o) { return compute_spectrum(body, spec, o); });
       },
       py::arg("body"), py::arg("spec"), py::arg("threads") = 0,
-      py::call_guard<py::gil_scoped_release>(),
       R"doc(Every cell of a pulse spectrum, then the minimum overturning amplitude of each column.
 
 Parameters
@@ -243,10 +276,11 @@ SpectrumResult)doc");
   m.def(
       "compute_record_spectrum",
       [](const Body& body, const RecordSpectrumSpec& spec, int threads) {
-        return compute_record_spectrum(body, spec, threads_only(threads));
+        return interruptible(threads, [&](const study::RunOptions& o) {
+          return compute_record_spectrum(body, spec, o);
+        });
       },
       py::arg("body"), py::arg("spec"), py::arg("threads") = 0,
-      py::call_guard<py::gil_scoped_release>(),
       R"doc(One record times scale factors, and the minimum overturning scale.
 
 Parameters
@@ -368,12 +402,16 @@ Returns
 list of dict
     name, column (empty for sa: ``sa_T<T>_z<zeta>_m_per_s2``), unit, doc, scale_power (the value
     of the record scaled by s is s**scale_power times the value), needs_period.)doc");
+  m.def("require_spectral_period", &require_spectral_period, py::arg("period"), py::arg("key"),
+        R"doc(Raises InputError naming ``key`` unless ``period`` [s] is finite and at least 1e-6 s
+(below it the oscillator follows the ground and Sa is the PGA).)doc");
   m.def(
       "intensity_measure",
       [](const std::string& name, const std::vector<double>& t, const std::vector<double>& a,
          double period, double zeta) {
         const IntensityMeasure* k = find_intensity_measure(name);
         if (!k) throw InputError("intensity measure '" + name + "': unknown");
+        if (k->needs_period) require_spectral_period(period, "intensity_measure: period");
         return k->compute(t, a, period, zeta);
       },
       py::arg("name"), py::arg("t"), py::arg("a"), py::arg("period") = 0.0, py::arg("zeta") = 0.05,
@@ -471,10 +509,10 @@ Intensity
   m.def(
       "run_sweep",
       [](const SweepSpec& spec, const std::vector<std::size_t>& indices, int threads) {
-        return run_sweep(spec, indices, threads_only(threads));
+        return interruptible(
+            threads, [&](const study::RunOptions& o) { return run_sweep(spec, indices, o); });
       },
       py::arg("spec"), py::arg("indices") = std::vector<std::size_t>{}, py::arg("threads") = 0,
-      py::call_guard<py::gil_scoped_release>(),
       R"doc(Runs a sweep (bodies x records x scales), or the given run indices.
 
 Parameters
@@ -911,16 +949,24 @@ and the CSV has the same bytes as an uninterrupted run.)doc")
       .def_property_readonly("journal_path", &io::SweepSession::journal_path)
       .def_property_readonly("manifest", &io::SweepSession::manifest)
       .def(
-          "run", [](io::SweepSession& s, int threads) { s.run(threads_only(threads)); },
-          py::arg("threads") = 0, py::call_guard<py::gil_scoped_release>(),
+          "run",
+          [](io::SweepSession& s, int threads) {
+            interruptible(threads, [&](const study::RunOptions& o) { s.run(o); });
+          },
+          py::arg("threads") = 0,
           R"doc(Runs the runs left, journaling each as it finishes (the GIL is released).
+Ctrl-C stops it between runs and raises KeyboardInterrupt; the journal keeps every finished run
+and run() again, or a new session on the same manifest and output, goes on from there. Raises
+RuntimeError after finish().
 
 Parameters
 ----------
 threads : int
     0: every core.)doc")
       .def("finish", &io::SweepSession::finish, py::call_guard<py::gil_scoped_release>(),
-           R"doc(Writes the CSV from every row and deletes the journal.
+           R"doc(Writes the CSV from every row and deletes the journal. Raises RuntimeError, the
+journal kept, when a run is not finished (run() not called, or stopped): call run() first; and
+when called again (the session is over).
 
 Returns
 -------
@@ -952,10 +998,15 @@ here, and the CSVs have the same bytes as an uninterrupted run.)doc")
       .def_property_readonly("journal_path", &io::SpectrumSession::journal_path)
       .def_property_readonly("grid", &io::SpectrumSession::grid)
       .def(
-          "run", [](io::SpectrumSession& s, int threads) { s.run(threads_only(threads)); },
-          py::arg("threads") = 0, py::call_guard<py::gil_scoped_release>(),
+          "run",
+          [](io::SpectrumSession& s, int threads) {
+            interruptible(threads, [&](const study::RunOptions& o) { s.run(o); });
+          },
+          py::arg("threads") = 0,
           R"doc(Runs the cells and bisections left, journaling each as it finishes (the GIL is
-released).
+released). Ctrl-C stops it between runs and raises KeyboardInterrupt; the journal keeps every
+finished cell and boundary and run() again, or a new session on the same file and outputs, goes
+on from there. Raises RuntimeError after finish().
 
 Parameters
 ----------
@@ -964,7 +1015,9 @@ threads : int
       .def(
           "finish", [](io::SpectrumSession& s) { return s.finish(); },
           py::call_guard<py::gil_scoped_release>(),
-          R"doc(Writes the CSVs from every cell and boundary and deletes the journal.
+          R"doc(Writes the CSVs from every cell and boundary and deletes the journal. Raises
+RuntimeError, the journal kept, when a cell or boundary is not finished (run() not called, or
+stopped): call run() first; and when called again (the session is over).
 
 Returns
 -------

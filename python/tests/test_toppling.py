@@ -4,7 +4,6 @@ summary JSON, Python's simulate and summarize, and a spectrum cell (docs/theory.
 
 import json
 import math
-import os
 import subprocess
 
 import flexrock as fr
@@ -30,10 +29,9 @@ duration = 20.0
 """
 
 
-def test_toppling_block_is_overturned_by_the_cli_python_and_the_spectrum(tmp_path):
+def test_toppling_block_is_overturned_by_the_cli_python_and_the_spectrum(tmp_path, cli):
     case = tmp_path / "topple.toml"
     case.write_text(CASE)
-    cli = os.environ["FLEXROCK_CLI"]
     subprocess.run([cli, "run", "-q", "-o", str(tmp_path), str(case)], check=True)
     summary = json.loads((tmp_path / "topple.summary.json").read_text())
     assert summary["outcome"]["status"] == "overturned"

@@ -25,9 +25,47 @@ void require_record(const std::vector<double>& t, const std::vector<double>& a) 
 // one exact step of the oscillator over h with a going linearly from a0 to a1
 struct Step {
   double u11, u12, v21, v22;  // free vibration: [u; v](h) = [[u11 u12]; [v21 v22]] [u; v](0)
+  double g0u, g1u, g0v, g1v;  // forced, from rest: [u; v](h) += [g0u g1u; g0v g1v] [f0; f1]
   double omega, zeta;
+  bool series;  // w h <= 1: the coefficients from their power series in w h
 
-  Step(double h, double w, double z) : omega(w), zeta(z) {
+  Step(double h, double w, double z) : omega(w), zeta(z), series(w * h <= 1.0) {
+    if (series) {
+      // g(s) = e^(-z w s) sin(w_d s) / w_d, the response to a unit impulse, is G(w s) / w with
+      // G'' + 2 z G' + G = 0, G(0) = 0, G'(0) = 1: G = sum c_k x^k, c_(k+2) = -(2 z (k+1)
+      // c_(k+1) + c_k) / ((k+1)(k+2)). With X = w h: g(h) = h S1, g'(h) = S2, its integral
+      // G1(h) = h^2 S3 and double integral G2(h) = h^3 S4, S1..S4 = sum over k >= 1 of c_k
+      // X^(k-1) times 1, k, 1/(k+1), 1/((k+1)(k+2)). The terms fall as X^k / k!: no
+      // cancellation, and no division by w, which the closed form below needs (1 - u11)/w^2
+      // of: it loses (w h)^-2 of the digits, all of them as the period grows without bound.
+      const double X = w * h;
+      double c0 = 0.0, c1 = 1.0, xk = 1.0;  // c_(k-1), c_k, X^(k-1)
+      double s1 = 0.0, s2 = 0.0, s3 = 0.0, s4 = 0.0;
+      // c_k = (l1^k - l2^k) / ((l1 - l2) k!), l1,2 the roots of l^2 + 2 z l + 1, of modulus 1:
+      // a sum of k products of modulus 1 over k!, so |c_k| <= 1 / (k - 1)!, and at X <= 1 the
+      // terms after the 30th add less than 1e-30
+      for (int k = 1; k <= 30 && xk != 0.0; ++k) {
+        const double t = c1 * xk;
+        const double kd = k;
+        s1 += t;
+        s2 += kd * t;
+        s3 += t / (kd + 1.0);
+        s4 += t / ((kd + 1.0) * (kd + 2.0));
+        const double c2 = -(2.0 * z * kd * c1 + c0) / (kd * (kd + 1.0));
+        c0 = c1;
+        c1 = c2;
+        xk *= X;
+      }
+      u11 = s2 + 2.0 * z * X * s1;  // g' + 2 z w g: the free vibration from (1, 0)
+      u12 = h * s1;
+      v21 = -(w * X) * s1;  // -w^2 g
+      v22 = s2;
+      g0u = h * h * s3;
+      g1u = h * h * h * s4;
+      g0v = h * s1;
+      g1v = h * h * s3;
+      return;
+    }
     const double wd = w * std::sqrt(1.0 - z * z);
     const double e = std::exp(-z * w * h), c = std::cos(wd * h), s = std::sin(wd * h);
     const double r = z / std::sqrt(1.0 - z * z);
@@ -35,12 +73,20 @@ struct Step {
     u12 = e * s / wd;
     v21 = -e * w * w * s / wd;
     v22 = e * (c - r * s);
+    g0u = g1u = g0v = g1v = 0.0;
   }
 
-  // u'' + 2 z w u' + w^2 u = f0 + f1 s on [0, h] with f = -a: particular solution
-  // u_p = p0 + p1 s, p1 = f1/w^2, p0 = f0/w^2 - 2 z f1/w^3; the rest is free vibration
+  // u'' + 2 z w u' + w^2 u = f0 + f1 s on [0, h] with f = -a
   void advance(double h, double a0, double a1, double& u, double& v) const {
     const double f0 = -a0, f1 = -(a1 - a0) / h;
+    if (series) {
+      const double un = u11 * u + u12 * v + g0u * f0 + g1u * f1;
+      v = v21 * u + v22 * v + g0v * f0 + g1v * f1;
+      u = un;
+      return;
+    }
+    // particular solution u_p = p0 + p1 s, p1 = f1/w^2, p0 = f0/w^2 - 2 z f1/w^3; the rest is
+    // free vibration
     const double w2 = omega * omega;
     const double p1 = f1 / w2, p0 = f0 / w2 - 2.0 * zeta * f1 / (w2 * omega);
     const double du = u - p0, dv = v - p1;
@@ -48,6 +94,9 @@ struct Step {
     v = p1 + v21 * du + v22 * dv;
   }
 };
+
+// sin(x) / x, 1 at 0
+double sinc(double x) { return std::abs(x) < 1e-8 ? 1.0 - x * x / 6.0 : std::sin(x) / x; }
 
 }  // namespace
 
@@ -207,22 +256,68 @@ std::vector<double> sdof_displacement(const std::vector<double>& t, const std::v
   return u;
 }
 
+void require_spectral_period(double period, const std::string& key) {
+  FLEXROCK_THROW_UNLESS(std::isfinite(period) && period >= kMinSpectralPeriod,
+                        key + ": expected a period >= " + format_number(kMinSpectralPeriod) +
+                            " s (finite), got " + format_number(period) +
+                            " s; below it the oscillator follows the ground and Sa is the PGA "
+                            "(use pga)");
+}
+
+double free_vibration_peak(double u0, double v0, double omega, double zeta, double h,
+                           double period) {
+  const double q = std::sqrt(1.0 - zeta * zeta), wd = omega * q;
+  // u(s) = e^(-z w s) (u0 cos(wd s) + (v0 + z w u0) sin(wd s) / wd), sin(wd s) / wd as
+  // s sinc(wd s): exact where wd s is too small for sin(wd s) / wd
+  auto u = [&](double s) {
+    return std::exp(-zeta * omega * s) *
+           (u0 * std::cos(wd * s) + (v0 + zeta * omega * u0) * s * sinc(wd * s));
+  };
+  // u'(s) = e^(-z w s) (v0 cos(wd s) - w (w u0 + z v0) sin(wd s) / wd): zero at wd s = theta
+  // mod pi, tan(theta) = v0 q / (w u0 + z v0); the first zero after 0 is theta1 in (0, pi],
+  // the next one pi later, and |u| at the extrema falls by e^(-z pi / q) from one to the next:
+  // between two extrema u is monotone, so |u| falls to zero and rises again
+  double theta1 = std::atan2(v0 * q, omega * u0 + zeta * v0);
+  if (!(theta1 > 0.0)) theta1 += std::numbers::pi;
+  const double extrema[2] = {theta1 / wd, (theta1 + std::numbers::pi) / wd};
+  // the samples k h, k = 1 .. n with n h >= period: the largest |u| is at k = 1, k = n, or a
+  // sample beside an extremum inside [h, n h]; beyond 2^53 samples (a period that long against
+  // the step) they are not representable, and the sampled peak is the continuous one to within
+  // (wd h)^2 / 8 < 1e-31 relative: the extrema themselves
+  const double n = std::ceil(period / h);
+  double peak = 0.0;
+  if (n < 9.0e15) {
+    auto at = [&](double k) {
+      if (k >= 1.0 && k <= n) peak = std::max(peak, std::abs(u(k * h)));
+    };
+    at(1.0);
+    at(n);
+    for (const double s : extrema) {
+      at(std::floor(s / h));
+      at(std::ceil(s / h));
+    }
+  } else {
+    peak = std::abs(u(h));
+    for (const double s : extrema) {
+      if (s >= h && s <= period) peak = std::max(peak, std::abs(u(s)));
+    }
+  }
+  return peak;
+}
+
 double spectral_acceleration(const std::vector<double>& t, const std::vector<double>& a,
                              double period, double zeta) {
-  FLEXROCK_THROW_UNLESS(std::isfinite(period) && period > 0.0,
-                        "spectral acceleration: period must be > 0 [s]");
+  require_spectral_period(period, "spectral acceleration: period");
   const double omega = 2.0 * std::numbers::pi / period;
   double peak = 0.0;
   auto [x, v] =
       integrate_sdof(t, a, omega, zeta, [&](double u) { peak = std::max(peak, std::abs(u)); });
-  // then one period of free vibration (the ground at rest) sampled at the last step
+  // then one period of free vibration (the ground at rest) sampled at the last step, in closed
+  // form: the cost no longer grows with the period over the step
   const double h = t[t.size() - 1] - t[t.size() - 2];
-  const Step step(h, omega, zeta);
-  for (double s = 0.0; s < period; s += h) {
-    step.advance(h, 0.0, 0.0, x, v);
-    peak = std::max(peak, std::abs(x));
-  }
-  return omega * omega * peak;
+  peak = std::max(peak, free_vibration_peak(x, v, omega, zeta, h, period));
+  // w (w peak): w^2 underflows long before w peak does
+  return omega * (omega * peak);
 }
 
 namespace {

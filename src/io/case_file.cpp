@@ -543,7 +543,8 @@ double target_scale(Reader& r, const Built& h, Case& c) {
   const auto pga = r.number_opt("target_pga", "a number > 0 [g] (PGA of the scaled record)");
   const auto pgv = r.number_opt("target_pgv", "a number > 0 [m/s] (PGV of the scaled record)");
   const auto sa = r.number_opt("target_sa", "a number > 0 [g] (Sa of the scaled record)");
-  const auto period = r.number_opt("sa_period", "a number > 0 [s] (period of target_sa)");
+  const auto period = r.number_opt(
+      "sa_period", "a number >= " + num(kMinSpectralPeriod) + " [s] (period of target_sa)");
   const auto zeta = r.number_opt("sa_damping_ratio", "a number in [0, 1) (of target_sa)");
   const int given = int(pga.has_value()) + int(pgv.has_value()) + int(sa.has_value());
   if (!sa && (period || zeta)) {
@@ -574,8 +575,12 @@ double target_scale(Reader& r, const Built& h, Case& c) {
     what = "PGV " + num(target) + " m/s";
   } else {
     if (!period)
-      r.fail_at(r.line(), "sa_period", "missing; expected a number > 0 [s] with target_sa");
-    if (!(*period > 0.0)) r.expected("sa_period", "a number > 0 [s]");
+      r.fail_at(r.line(), "sa_period",
+                "missing; expected a period >= " + num(kMinSpectralPeriod) + " [s] with target_sa");
+    if (!(std::isfinite(*period) && *period >= kMinSpectralPeriod)) {
+      r.expected("sa_period", "a period >= " + num(kMinSpectralPeriod) +
+                                  " [s] (below it Sa is the PGA: use target_pga)");
+    }
     const double z = zeta.value_or(0.05);
     if (!(z >= 0.0 && z < 1.0)) r.expected("sa_damping_ratio", "a number in [0, 1)");
     measure = spectral_acceleration(h.record->time, a, *period, z);
@@ -583,6 +588,11 @@ double target_scale(Reader& r, const Built& h, Case& c) {
     what = "Sa(" + num(*period) + " s, " + num(100.0 * z) + " %) " + num(target) + " g";
   }
   if (!(measure > 0.0)) r.fail(key, "the horizontal record is zero: it cannot be scaled");
+  // Sa at a very long period tends to 0 as 1/T: no finite factor reaches a target from there
+  if (!std::isfinite(want / measure)) {
+    r.fail(key, "the horizontal record's measure is " + num(measure) +
+                    " (SI units): no finite factor scales it to " + what);
+  }
   c.scaled_to = what;
   return want / measure;
 }

@@ -1058,10 +1058,13 @@ SweepManifest load_sweep_manifest(const std::string& path) {
     }
     const double zeta = ik->number_or("sa_damping", 0.05, "a number in [0, 1) [-]");
     if (!(zeta >= 0.0 && zeta < 1.0)) ik->expected("sa_damping", "a number in [0, 1) [-]");
-    if (const auto periods = ik->vector_opt("sa_periods", "an array of periods > 0 [s]")) {
+    const std::string periods_what =
+        "an array of periods >= " + num(kMinSpectralPeriod) + " [s] (below it Sa is the PGA)";
+    if (const auto periods = ik->vector_opt("sa_periods", periods_what)) {
       for (std::size_t i = 0; i < periods->size(); ++i) {
         const double T = (*periods)[i];
-        if (!(T > 0.0)) ik->expected("sa_periods", "an array of periods > 0 [s]");
+        if (!(std::isfinite(T) && T >= kMinSpectralPeriod))
+          ik->expected("sa_periods", periods_what);
         for (std::size_t j = 0; j < i; ++j) {
           if ((*periods)[j] == T) ik->fail("sa_periods", "period " + num(T) + " s given twice");
         }

@@ -203,24 +203,49 @@ SweepSession::SweepSession(SweepManifest manifest, std::string output,
 
 SweepSession::~SweepSession() = default;
 
+void SweepSession::require_open(const char* call) const {
+  if (finished_) {
+    throw std::runtime_error(output_ + ": " + call +
+                             " after finish(): the session is over (its CSV written, its journal "
+                             "deleted); open a new session to run the sweep again");
+  }
+}
+
 void SweepSession::run(const study::RunOptions& options) {
-  if (share_.empty()) return;
+  require_open("run()");
+  // a second run() (after a stopped one) takes only the runs not finished yet: a run journaled
+  // twice would make the journal one the next start refuses
+  std::vector<std::size_t> todo;
+  for (const std::size_t i : share_) {
+    if (!rows_.count(i)) todo.push_back(i);
+  }
+  if (todo.empty()) return;
   study::RunOptions o = options;
   o.rank = 0;
   o.ranks = 1;  // the share is already this process's
-  study::run_sweep(manifest_.spec, share_, o, [&](const study::SweepRow& r) {
+  study::run_sweep(manifest_.spec, todo, o, [&](const study::SweepRow& r) {
     journal_.append(r.index, sweep_row(manifest_.spec, r));
     rows_[r.index] = r;
   });
 }
 
 std::vector<study::SweepRow> SweepSession::finish() {
+  require_open("finish()");
   const std::map<std::size_t, std::string>& lines = journal_.gather();
   if (!transport_.root()) {
     journal_.finish(false);
+    finished_ = true;
     return {};
   }
-  FLEXROCK_DEMAND(lines.size() == runs_);
+  // finish() before run() has done every run (or after a stopped one): a usage error the caller
+  // mends by running on, never an abort
+  if (lines.size() != runs_) {
+    journal_.finish(false);
+    throw std::runtime_error(
+        output_ + ": finish() before every run is done: " + std::to_string(lines.size()) + " of " +
+        std::to_string(runs_) + " runs are finished (journal " + journal_.path() +
+        "); call run() first: it goes on from the journal, then finish() writes the CSV");
+  }
   // every row as data: those computed here or read when the journal was checked as they are,
   // the others (from other processes) read back from their lines
   std::vector<study::SweepRow> rows;
@@ -239,6 +264,7 @@ std::vector<study::SweepRow> SweepSession::finish() {
     throw;
   }
   journal_.finish(true);
+  finished_ = true;
   return rows;
 }
 
@@ -303,13 +329,19 @@ SpectrumSession::SpectrumSession(SpectrumFile file, std::string output, std::str
       resume_.boundaries.insert(i - n);
     }
   }
+  // each cell and boundary journaled is also resumed by a later run() of this session (after a
+  // stopped one): journaled twice, the journal would be one the next start refuses. The
+  // callbacks are serialized and nothing reads resume_ while the runs go.
   resume_.on_cell = [this](const study::SpectrumCell& c) {
     const std::size_t columns = file_.is_record ? 1 : file_.pulse.frequencies.size();
-    journal_.append(c.row * columns + c.column, spectrum_row(grid_, c, body_.g()));
+    const std::size_t index = c.row * columns + c.column;
+    journal_.append(index, spectrum_row(grid_, c, body_.g()));
+    resume_.cells[index] = c.run.outcome;
   };
   const bool normalized = file_.pulse.normalized || file_.is_record;
   resume_.on_boundary = [this, normalized](const study::OverturnBoundary& b) {
     journal_.append(cells() + b.column, boundary_row(grid_, b, normalized, body_.g()));
+    resume_.boundaries.insert(b.column);
   };
   // the cells left in this process's share (the bisection's runs come on top)
   const std::size_t columns = file_.is_record ? 1 : file_.pulse.frequencies.size();
@@ -323,7 +355,16 @@ SpectrumSession::SpectrumSession(SpectrumFile file, std::string output, std::str
 
 SpectrumSession::~SpectrumSession() = default;
 
+void SpectrumSession::require_open(const char* call) const {
+  if (finished_) {
+    throw std::runtime_error(output_ + ": " + call +
+                             " after finish(): the session is over (its CSVs written, its journal "
+                             "deleted); open a new session to run the spectrum again");
+  }
+}
+
 void SpectrumSession::run(const study::RunOptions& options) {
+  require_open("run()");
   study::RunOptions o = options;
   o.rank = transport_.rank();
   o.ranks = transport_.size();
@@ -334,10 +375,18 @@ void SpectrumSession::run(const study::RunOptions& options) {
   }
 }
 
+std::string SpectrumSession::unfinished(std::size_t done, std::size_t of, const char* what) const {
+  return output_ + ": finish() before every cell and boundary is done: " + std::to_string(done) +
+         " of " + std::to_string(of) + " " + what + " are finished (journal " + journal_.path() +
+         "); call run() first: it goes on from the journal, then finish() writes the CSVs";
+}
+
 study::SpectrumResult SpectrumSession::finish(const std::atomic<bool>* cancel) {
+  require_open("finish()");
   const std::map<std::size_t, std::string>& lines = journal_.gather();
   if (!transport_.root()) {
     journal_.finish(false);
+    finished_ = true;
     return {};
   }
   const double g = body_.g();
@@ -347,6 +396,11 @@ study::SpectrumResult SpectrumSession::finish(const std::atomic<bool>* cancel) {
   bool stopped = false;
   // whatever fails here, every process still makes the journal's last collective call
   try {
+    // finish() before run() has done every cell (or after a stopped one): a usage error the
+    // caller mends by running on
+    std::size_t done = 0;
+    for (std::size_t i = 0; i < n; ++i) done += lines.count(i);
+    if (done != n) throw std::runtime_error(unfinished(done, n, "cells"));
     // every cell as data, read back from its line
     for (std::size_t i = 0; i < n; ++i) {
       res.cells[i] = read_spectrum_cell(grid_, i, lines.at(i), g);
@@ -360,7 +414,9 @@ study::SpectrumResult SpectrumSession::finish(const std::atomic<bool>* cancel) {
       if (!stopped) journal_.append_on_root(n, boundary_row(grid_, b, true, g));
     }
     if (!stopped) {
-      FLEXROCK_DEMAND(lines.size() == runs());
+      if (lines.size() != runs()) {
+        throw std::runtime_error(unfinished(lines.size() - n, runs() - n, "boundaries"));
+      }
       for (std::size_t j = 0; j < res.boundary.size(); ++j) {
         res.boundary[j] = read_boundary(grid_, j, lines.at(n + j), normalized, g);
       }
@@ -388,6 +444,7 @@ study::SpectrumResult SpectrumSession::finish(const std::atomic<bool>* cancel) {
     throw;
   }
   journal_.finish(!stopped);
+  finished_ = !stopped;
   // a stopped bisection: nothing written, the journal stays for the next start
   return stopped ? study::SpectrumResult{} : res;
 }

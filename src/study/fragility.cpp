@@ -63,6 +63,21 @@ double evaluate(const Data& d, double c, double b, Eigen::Vector2d* grad, Eigen:
   return ll;
 }
 
+// the observed information -hess must be positive definite, and not merely by rounding: where it
+// is singular the likelihood is flat along an eigenvector and the data do not identify (theta,
+// beta); the covariance would be its inverse, infinite there
+void require_identified(const Eigen::Matrix2d& hess, const std::string& what,
+                        const std::string& hint) {
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(-0.5 * (hess + hess.transpose()));
+  const Eigen::Vector2d l = eig.eigenvalues();  // ascending
+  FLEXROCK_THROW_UNLESS(l.allFinite() && l(1) > 0.0 && l(0) > 1e-8 * l(1),
+                        what +
+                            ": beta is not identified: the likelihood is flat (its information "
+                            "matrix is singular, eigenvalues " +
+                            std::to_string(l(0)) + " and " + std::to_string(l(1)) +
+                            "), so every beta fits these data equally; " + hint);
+}
+
 }  // namespace
 
 double normal_quantile(double p) {
@@ -167,6 +182,8 @@ FragilityFit fit_lognormal(const std::vector<double>& im, const std::vector<int>
                         "measure (b = " +
                             std::to_string(b) +
                             "): a lognormal fragility cannot describe these data");
+  require_identified(h, "fragility",
+                     "add runs at intensity measures between and around the present ones");
   // back to eta = a + b ln IM: a = c - b zbar; covariance from the observed information
   const double a = c - b * d.zbar;
   const Eigen::Matrix2d cov_cb = (-h).inverse();
@@ -370,6 +387,10 @@ FragilityFit fit_capacity_intervals(const std::vector<CapacityInterval>& c, doub
   const double mu = y(0), beta = std::exp(y(1));
   // covariance of (mu, beta) from the observed information in (mu, beta)
   const Eigen::Matrix2d hs = hessian(y);
+  require_identified(hs, "capacity fit",
+                     "with every capacity bracketed by the same level (one level with records "
+                     "failing at it and records surviving it) only the median is known: add "
+                     "levels so that records fail between two of them");
   Eigen::Matrix2d to_beta;  // y = (mu, ln beta): d(mu, beta)/dy
   to_beta << 1.0, 0.0, 0.0, beta;
   // at the maximum the gradient is zero, so the information transforms with the Jacobian

@@ -10,6 +10,7 @@
 #include <optional>
 
 #include "flexrock/core/error.hpp"
+#include "flexrock/core/format.hpp"
 #include "flexrock/excitation/intensity.hpp"
 
 namespace flexrock::study {
@@ -39,9 +40,10 @@ MeasureRequest measure_request(const std::string& text) {
   };
   MeasureRequest m{"sa", number(rest.substr(0, colon)),
                    colon == std::string::npos ? 0.05 : number(rest.substr(colon + 1))};
+  require_spectral_period(m.period, "\"" + text + "\"");
   FLEXROCK_THROW_UNLESS(
-      std::isfinite(m.period) && m.period > 0.0 && m.zeta >= 0.0 && m.zeta < 1.0,
-      "\"" + text + "\": expected a period > 0 [s] and a damping ratio in [0, 1)");
+      m.zeta >= 0.0 && m.zeta < 1.0,
+      "\"" + text + "\": expected a damping ratio in [0, 1), got " + format_number(m.zeta));
   return m;
 }
 
@@ -57,9 +59,7 @@ void check_request(const MeasureRequest& m) {
                         "intensity measure '" + m.name + "': expected one of: " + names +
                             (im ? " (pga and pgv are always written)" : ""));
   if (im->needs_period) {
-    FLEXROCK_THROW_UNLESS(
-        std::isfinite(m.period) && m.period > 0.0,
-        "intensity measure sa: expected a period > 0 [s], got " + std::to_string(m.period));
+    require_spectral_period(m.period, "intensity measure sa");
     FLEXROCK_THROW_UNLESS(
         m.zeta >= 0.0 && m.zeta < 1.0,
         "intensity measure sa: expected a damping ratio in [0, 1), got " + std::to_string(m.zeta));

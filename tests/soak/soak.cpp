@@ -78,10 +78,12 @@ struct RunResult {
   long steps = 0;
   long impacts = 0;
   bool chatter = false;
-  bool painleve = false;  // stopped where Coulomb friction has no consistent slide (theory §18)
-  bool flew = false;      // the body left the floor at least once (flight)
-  bool uplifted = false;  // the body left full contact (else the exact path ran alone)
-  double seconds = 0;     // [s] wall time (reported only)
+  bool painleve = false;    // stopped where Coulomb friction has no consistent slide (theory §18)
+  bool flew = false;        // the body left the floor at least once (flight)
+  bool uplifted = false;    // the body left full contact (else the exact path ran alone)
+  bool unbalanced = false;  // the run's own flag: energy_unbalanced (its residual above the bound)
+  bool over_bound = false;  // the soak's check: the residual above the documented bound
+  double seconds = 0;       // [s] wall time (reported only)
 };
 
 class Random {
@@ -456,6 +458,7 @@ RunResult run_case(const SoakCase& c) {
                    res.message.find("Painleve") != std::string::npos;
     if (res.status == flexrock::Status::kStopped && !out.painleve) fail("stopped: " + res.message);
     if (res.impact_gained_energy) fail("an impact gained energy");
+    out.unbalanced = res.energy_unbalanced;
     const auto& e = res.energy;
     for (double v :
          {e.input_work, e.kinetic_change, e.potential_change, e.damping_loss, e.impact_loss,
@@ -484,9 +487,20 @@ RunResult run_case(const SoakCase& c) {
     const double mgh = c.body.mass * c.body.gravity * c.body.height;
     const double bound = kResidualBound * e.scale + kResidualFloor * mgh;
     out.bound_use = std::abs(e.residual) / bound;
-    if (!(std::abs(e.residual) <= bound)) {
+    out.over_bound = !(std::abs(e.residual) <= bound);
+    // the run must say so itself (no silent physics): its flag and its event agree with the
+    // soak's own check
+    const bool event = std::any_of(res.events.begin(), res.events.end(), [](const auto& ev) {
+      return ev.kind == flexrock::EventKind::kEnergyUnbalanced;
+    });
+    if (out.over_bound) {
       fail("energy residual " + fmt(e.residual) + " J = " + fmt(out.rel_residual) + " of scale " +
-           fmt(e.scale) + " J = " + fmt(out.mgh_residual) + " M g h");
+           fmt(e.scale) + " J = " + fmt(out.mgh_residual) + " M g h = " + fmt(out.bound_use) +
+           " x the bound; " +
+           (res.energy_unbalanced && event ? "flagged by the run (energy_unbalanced)"
+                                           : "NOT flagged by the run (energy_unbalanced missing)"));
+    } else if (res.energy_unbalanced || event) {
+      fail("flagged energy_unbalanced within the bound (" + fmt(out.bound_use) + " of it)");
     }
   } catch (const std::exception& ex) {
     fail(std::string("exception: ") + ex.what());
@@ -559,16 +573,18 @@ int main(int argc, char** argv) {
 
   // figures, gathered in case order (independent of the threads)
   long failures = 0, completed = 0, overturned = 0, stopped = 0, flew = 0, chatter = 0;
-  long painleve = 0;
+  long painleve = 0, over_bound = 0, flagged = 0;
   std::size_t worst_res = 0, worst_use = 0, most_events = 0, slowest = 0, most_steps = 0;
   long full_contact_only = 0;
   std::size_t worst_exact = results.size();  // the worst residual of the runs never uplifted
   for (std::size_t k = 0; k < results.size(); ++k) {
     const auto& r = results[k];
     if (verbose) {
-      std::printf("%s\n  -> %s, %zu events, %ld steps, %ld impacts, residual %.3g, %.3f s\n",
-                  descriptions[k].c_str(), r.status.c_str(), r.events, r.steps, r.impacts,
-                  r.rel_residual, r.seconds);
+      std::printf(
+          "%s\n  -> %s, %zu events, %ld steps, %ld impacts, residual %.3g (%.3g of its bound)%s, "
+          "%.3f s\n",
+          descriptions[k].c_str(), r.status.c_str(), r.events, r.steps, r.impacts, r.rel_residual,
+          r.bound_use, r.unbalanced ? ", flagged energy_unbalanced" : "", r.seconds);
     }
     if (!r.ok) {
       ++failures;
@@ -578,6 +594,8 @@ int main(int argc, char** argv) {
     overturned += r.status == "overturned";
     stopped += r.status == "stopped";
     painleve += r.painleve;
+    over_bound += r.over_bound;
+    flagged += r.unbalanced;
     flew += r.flew;
     chatter += r.chatter;
     if (r.rel_residual > results[worst_res].rel_residual) worst_res = k;
@@ -608,6 +626,9 @@ int main(int argc, char** argv) {
       completed, overturned, stopped, painleve, flew, chatter);
   std::printf("bounds: |residual| <= %.0e scale + %.0e M g h, steps < %ld, impacts < %ld\n",
               kResidualBound, kResidualFloor, kMaxSteps, kMaxImpacts);
+  std::printf(
+      "energy balance: %ld runs above the bound, %ld flagged energy_unbalanced by the run\n",
+      over_bound, flagged);
   if (count > 0) {
     show("worst residual (relative to the scale)", worst_res);
     std::printf("runs that stayed in full contact: %ld\n", full_contact_only);

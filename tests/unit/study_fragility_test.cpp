@@ -154,7 +154,6 @@ TEST(StudyFragility, DataWithoutAFiniteEstimateAreClearErrors) {
   test::expect_input_error([] { fit_lognormal({1, 2}, {0}); }, {"as many outcomes"});
   test::expect_input_error([] { fit_lognormal({1, 2, 3}, {0, 2, 1}); }, {"0 or 1"});
 }
-
 }  // namespace
 }  // namespace flexrock::study
 
@@ -175,7 +174,6 @@ TEST(FragilityFamily, CurvesCrossWhereTheirProbabilitiesAreEqual) {
   b.beta = 0.3;
   EXPECT_TRUE(std::isnan(crossing_intensity(a, b)));
 }
-
 }  // namespace
 }  // namespace flexrock::study
 
@@ -231,6 +229,38 @@ TEST(CapacityFit, IntervalsFromFirstFailuresAndRefusals) {
   EXPECT_EQ(s[0].runs, 2u);
   EXPECT_EQ(s[1].failures, 1u);
   EXPECT_THROW(fit_stripes({{0.1, 2, 3}, {0.2, 2, 1}}), InputError);
+}
+
+TEST(CapacityFit, OneLevelLeavesBetaUnidentifiedAndIsRefused) {
+  // one level L: records that fail at it have capacity in (0, L], the others in (L, inf); the
+  // likelihood Phi(z)^k (1 - Phi(z))^m, z = (ln L - ln theta) / beta, depends on (theta, beta)
+  // through z only, so at its maximum every beta is as likely
+  const double inf = std::numeric_limits<double>::infinity(), L = 0.3;
+  for (const std::size_t copies : {1u, 3u}) {
+    std::vector<CapacityInterval> c;
+    for (std::size_t k = 0; k < copies; ++k) {
+      c.push_back({0.0, L});
+      c.push_back({L, inf});
+    }
+    // the flatness, from the likelihood itself
+    const double ll = capacity_log_likelihood(c, L, 0.5);
+    for (const double beta : {0.01, 0.1, 2.0, 50.0}) {
+      EXPECT_EQ(capacity_log_likelihood(c, L, beta), ll) << beta;
+    }
+    try {
+      fit_capacity_intervals(c);
+      ADD_FAILURE() << "one level was fitted";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("beta is not identified"), std::string::npos)
+          << e.what();
+      EXPECT_NE(std::string(e.what()).find("add levels"), std::string::npos) << e.what();
+    }
+  }
+  // two levels with a record failing between them identify beta
+  const FragilityFit f = fit_capacity_intervals({{0.0, 0.2}, {0.2, 0.3}, {0.3, inf}});
+  EXPECT_GT(f.beta, 0.0);
+  EXPECT_GT(f.se_beta, 0.0);
+  EXPECT_LT(f.beta_lower, f.beta_upper);
 }
 
 }  // namespace

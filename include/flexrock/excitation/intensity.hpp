@@ -55,9 +55,26 @@ double significant_duration(const std::vector<double>& t, const std::vector<doub
 std::vector<double> sdof_displacement(const std::vector<double>& t, const std::vector<double>& a,
                                       double omega, double zeta);
 
+/// The shortest period a spectral acceleration takes [s]: a 1 MHz oscillator follows any record
+/// (Sa is its PGA); far below it omega^2 and omega^3 overflow.
+inline constexpr double kMinSpectralPeriod = 1e-6;
+
+/// Throws InputError naming `key` unless `period` is finite and >= kMinSpectralPeriod.
+void require_spectral_period(double period, const std::string& key);
+
+/// The largest |u| of the oscillator's free vibration from (u0, v0) sampled at s = k h, k = 1
+/// .. ceil(period / h) (one natural period), in closed form from the extrema of u (wd s =
+/// atan2(v0 q, w u0 + z v0) mod pi, q = sqrt(1 - z^2)): its cost does not grow with the period.
+double free_vibration_peak(double u0, double v0, double omega, double zeta, double h,
+                           double period);
+
 /// Pseudo-spectral acceleration omega^2 max |u| of the oscillator of natural `period` [s] and
 /// damping ratio `zeta`, over the record and one natural period of free vibration after it (the
 /// peak of a long-period oscillator may come after the shaking), sampled at the record's steps.
+/// Any period >= kMinSpectralPeriod, in a time that does not depend on it. As the period grows
+/// the mass stays still (u -> minus the ground displacement) and, when the record ends with a
+/// ground velocity v_end != 0, Sa tends to omega |v_end| e^(-zeta acos(zeta) / sqrt(1 -
+/// zeta^2)), the peak of the free vibration that brings the oscillator back: to 0 as 1/T.
 /// [units of a]
 double spectral_acceleration(const std::vector<double>& t, const std::vector<double>& a,
                              double period, double zeta = 0.05);

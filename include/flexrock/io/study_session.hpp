@@ -113,16 +113,20 @@ class SweepSession {
 
   /// Runs this process's share on options.threads workers (options.rank and ranks are the
   /// transport's), journaling each row as it finishes. A stop request (options.cancel) ends it
-  /// between runs, every finished one journaled.
+  /// between runs, every finished one journaled; run() again goes on with the runs left. Throws
+  /// std::runtime_error after finish().
   void run(const study::RunOptions& options);
   /// After run() on every process, when none was stopped: gathers the rows on rank 0, writes
   /// the CSV there (atomically) and deletes the journals. Returns every row in index order on
   /// rank 0 (empty on the others). Throws std::runtime_error when the CSV cannot be written
-  /// (the journals are kept).
+  /// or when a run is not finished (run() stopped or not called; the journals are kept).
   std::vector<study::SweepRow> finish();
   const SweepManifest& manifest() const { return manifest_; }
 
  private:
+  // throws std::runtime_error naming `call` once finish() has written the CSV
+  void require_open(const char* call) const;
+
   SweepManifest manifest_;
   std::string output_;
   const StudyTransport& transport_;
@@ -131,6 +135,7 @@ class SweepSession {
   std::size_t runs_ = 0;
   StudyJournal journal_;
   std::vector<std::size_t> share_;
+  bool finished_ = false;  // finish() wrote the CSV: run() and finish() refuse
 };
 
 /// A spectrum from its spec file to its CSVs: the cells CSV `output` and, when it bisects, the
@@ -164,17 +169,22 @@ class SpectrumSession {
 
   /// Runs this process's share (study::compute_spectrum or compute_record_spectrum with the
   /// journal as its resume), journaling each cell and boundary as it finishes. A stop request
-  /// (options.cancel) ends it between runs.
+  /// (options.cancel) ends it between runs; run() again goes on with those left. Throws
+  /// std::runtime_error after finish().
   void run(const study::RunOptions& options);
   /// After run() on every process, when none was stopped: gathers the lines on rank 0, bisects
   /// a record spectrum run by several processes there (`cancel` stops it: then nothing is
   /// written, the journals stay and the result has no cells), writes the CSVs (the boundary
   /// last, an old one removed first) and deletes the journals. Returns the whole result on rank
   /// 0, every cell and boundary read back as data (empty on the others). Throws
-  /// std::runtime_error when an output cannot be written (the journals are kept).
+  /// std::runtime_error when an output cannot be written or when a cell or boundary is not
+  /// finished (run() stopped or not called; the journals are kept).
   study::SpectrumResult finish(const std::atomic<bool>* cancel = nullptr);
 
  private:
+  std::string unfinished(std::size_t done, std::size_t of, const char* what) const;
+  void require_open(const char* call) const;
+
   SpectrumFile file_;
   Body body_;
   std::string output_, boundary_output_;
@@ -184,6 +194,7 @@ class SpectrumSession {
   StudyJournal journal_;
   study::SpectrumResume resume_;
   std::size_t share_cells_ = 0;
+  bool finished_ = false;  // finish() wrote the CSVs: run() and finish() refuse
 };
 
 /// A sweep CSV read back as rows through the sweep's columns (read_sweep_row for every line):
