@@ -187,10 +187,11 @@ std::string sweep_csv(const std::string& rows) {
   for (std::size_t i = 0; i < cols.size(); ++i) csv += (i ? "," : "") + cols[i];
   return csv + "\n" + rows;
 }
+// the sweep columns in order (docs/studies.md), the pull and tensile-landing ones zero
 const char* kRow0 =
-    "0,a,r,1,-,1,1.5,0.15,0.2,10,rocking,0,0,-1,0.1,0.5,3,1,0,0,2.5,0.1,completed,\n";
+    "0,a,r,1,-,1,1.5,0.15,0.2,10,rocking,0,0,-1,0.1,0.5,3,1,0,0,2.5,0.1,0,0,0,0,0,completed,\n";
 const char* kRow1 =
-    "1,a,r,2,-,2,3.0,0.3,0.4,10,overturned_after_impacts,1,1,4,1,1,3,1,0,0,1.0,0.1,"
+    "1,a,r,2,-,2,3.0,0.3,0.4,10,overturned_after_impacts,1,1,4,1,1,3,1,0,0,1.0,0.1,0,0,0,0,0,"
     "overturned,\n";
 
 TEST_F(HostileFiles, AHandEditedSweepCsvIsReadThroughTheJournalChecks) {
