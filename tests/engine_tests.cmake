@@ -31,6 +31,10 @@ flexrock_add_test(flexrock_compliant_energy_tests SOURCES unit/compliant_energy_
 # also the audit of the compliant contact's loss (src/sim)
 target_include_directories(flexrock_compliant_energy_tests PRIVATE ${PROJECT_SOURCE_DIR}/src)
 flexrock_add_test(flexrock_step_cost_tests SOURCES unit/step_cost_test.cpp LABEL unit)
+flexrock_add_test(flexrock_compliant_step_cost_tests SOURCES unit/compliant_step_cost_test.cpp
+                  LABEL unit)
+# the compliant contact's linearization (src/sim)
+target_include_directories(flexrock_compliant_step_cost_tests PRIVATE ${PROJECT_SOURCE_DIR}/src)
 flexrock_add_test(flexrock_stiff_rocking_tests SOURCES unit/stiff_rocking_test.cpp LABEL unit)
 flexrock_add_test(flexrock_step_extremes_tests SOURCES unit/step_extremes_test.cpp
                   LIBS flexrock::io LABEL unit)

@@ -484,6 +484,19 @@ int cmd_params(const std::string& file) {
         "record)\n",
         cost.full_contact_omega / (2.0 * std::numbers::pi));
   }
+  if (cost.contact_steps_per_second > 0.0) {
+    fmt::print(
+        "compliant contact's step cost (Dopri5 at rtol = {:g}; docs/theory.md, \"Compliant "
+        "contact: step cost\"):\n  fastest motion on the corners' springs {:.6g} rad/s ({:.6g} "
+        "Hz): at least {:.4g} steps per simulated second ({:.4g} for stability",
+        opt.rtol, cost.contact_omega, cost.contact_omega / (2.0 * std::numbers::pi),
+        cost.contact_steps_per_second, cost.contact_stable_steps_per_second);
+    if (cost.contact_resonant_omega > 0.0)
+      fmt::print(", {:.4g} for a resonant motion of {:.6g} rad/s at h omega ~ {:.3g}",
+                 cost.contact_resonant_omega / cost.contact_h_omega, cost.contact_resonant_omega,
+                 cost.contact_h_omega);
+    fmt::print("); rocking takes more\n");
+  }
   // the impact regime: the contact duration against the modal periods (theory §21)
   if (n > 0) {
     // the compliant contact's own duration: half the period of the body bouncing on both springs

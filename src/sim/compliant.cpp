@@ -2,6 +2,7 @@
 #include "compliant.hpp"
 
 #include <Eigen/Core>
+#include <Eigen/Eigenvalues>
 #include <Eigen/LU>
 #include <algorithm>
 #include <array>
@@ -144,6 +145,7 @@ class CompliantSim final : private GuardProbe {
   }
 
   SimulationResult run(const InitialState& init);
+  Eigen::VectorXcd rest_eigenvalues(int pivot, const InitialState& at);
 
  private:
   // ---- the state: (x_c, y_c, theta, q), their rates, then the accumulated input work, damping
@@ -681,6 +683,7 @@ class CompliantSim final : private GuardProbe {
 
   bool advance(double& t, State& x);
   void place_at_rest(const InitialState& init, State& x);
+  State initial_state(const InitialState& init, int pivot);
   void finish(double t, const State& x);
 
   CompliantAudit* audit_;
@@ -771,8 +774,11 @@ void CompliantSim<MaxN>::place_at_rest(const InitialState& init, State& x) {
   residual(x, r);  // leaves the anchors at the final place
 }
 
+// the initial state: on both corners' springs at rest (pivot 0) or on the pivot's, pressed by the
+// whole weight; the corners' states and anchors set accordingly
 template <int MaxN>
-SimulationResult CompliantSim<MaxN>::run(const InitialState& init) {
+typename CompliantSim<MaxN>::State CompliantSim<MaxN>::initial_state(const InitialState& init,
+                                                                     int pivot) {
   State x(size());
   x.setZero();
   const VectorX q0 = init.q.size() == n_ ? init.q : VectorX(body_.static_deformation());
@@ -780,11 +786,7 @@ SimulationResult CompliantSim<MaxN>::run(const InitialState& init) {
   if (init.q_dot.size() == n_) x.segment(iv() + 3, n_) = init.q_dot;
   x(2) = init.theta;
   x(iv() + 2) = init.theta_dot;
-  t_end_ = opt_.t_end >= 0.0 ? opt_.t_end : motion_.duration();
   unpack(x);
-  int pivot = 0;
-  if (init.theta > 0.0 || (init.theta == 0.0 && init.theta_dot > 0.0)) pivot = 1;
-  if (init.theta < 0.0 || (init.theta == 0.0 && init.theta_dot < 0.0)) pivot = 2;
   if (pivot == 0) {
     // both corners on their springs, at the static penetration
     const double delta = static_penetration(cc_.k, cc_.p, 0.5 * mg_);
@@ -809,6 +811,44 @@ SimulationResult CompliantSim<MaxN>::run(const InitialState& init) {
     unpack(x);
     k.anchor = dyn_.corner_x(pivot, s, c, q_, x(0));
   }
+  return x;
+}
+
+// the eigenvalues of the equations of motion linearized by central differences at rest, on both
+// corners (pivot 0) or on one, its corners sticking, without base motion: the coordinates and
+// their rates, not the accumulators. The steps are a thousandth of the static penetration (and
+// of the corresponding rates), where the linear law is exact and the clips are far
+template <int MaxN>
+Eigen::VectorXcd CompliantSim<MaxN>::rest_eigenvalues(int pivot, const InitialState& at) {
+  const State x0 = initial_state(at, pivot);
+  const int dim = 2 * (3 + n_);
+  const double delta = static_penetration(cc_.k, cc_.p, 0.5 * mg_);
+  const double omega_v = std::sqrt(2.0 * cc_.k_secant / m_);
+  Eigen::MatrixXd jac(dim, dim);
+  State xp(size()), xm(size()), fp(size()), fm(size());
+  for (int j = 0; j < dim; ++j) {
+    const int coord = j % (3 + n_);
+    double eps = 1e-3 * delta * (coord < 2 ? 1.0 : 1.0 / h_);
+    if (j >= 3 + n_) eps *= omega_v;
+    xp = x0;
+    xm = x0;
+    xp(j) += eps;
+    xm(j) -= eps;
+    rhs(0.0, xp, fp);
+    rhs(0.0, xm, fm);
+    jac.col(j) = (fp.head(dim) - fm.head(dim)) / (2.0 * eps);
+  }
+  const Eigen::EigenSolver<Eigen::MatrixXd> es(jac, false);
+  return es.eigenvalues();
+}
+
+template <int MaxN>
+SimulationResult CompliantSim<MaxN>::run(const InitialState& init) {
+  int pivot = 0;
+  if (init.theta > 0.0 || (init.theta == 0.0 && init.theta_dot > 0.0)) pivot = 1;
+  if (init.theta < 0.0 || (init.theta == 0.0 && init.theta_dot < 0.0)) pivot = 2;
+  State x = initial_state(init, pivot);
+  t_end_ = opt_.t_end >= 0.0 ? opt_.t_end : motion_.duration();
   kinetic0_ = kinetic_energy(x);
   potential0_ = potential_energy(x);
   contact0_ = contact_energy(x);
@@ -968,6 +1008,14 @@ SimulationResult simulate_compliant(const Body& body, const GroundMotion& motion
   // a stack-bounded state up to 16 modes, heap beyond
   if (body.modes() <= 16) return CompliantSim<16>(body, motion, opt, audit).run(init);
   return CompliantSim<Eigen::Dynamic>(body, motion, opt, audit).run(init);
+}
+
+Eigen::VectorXcd compliant_rest_eigenvalues(const Body& body, const SimulationOptions& opt,
+                                            int pivot, const InitialState& at) {
+  const GroundMotion still = GroundMotion::none(1.0);
+  if (body.modes() <= 16)
+    return CompliantSim<16>(body, still, opt, nullptr).rest_eigenvalues(pivot, at);
+  return CompliantSim<Eigen::Dynamic>(body, still, opt, nullptr).rest_eigenvalues(pivot, at);
 }
 
 }  // namespace flexrock::detail

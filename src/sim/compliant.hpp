@@ -20,6 +20,8 @@
 // from which corners press and which slip.
 #pragma once
 
+#include <Eigen/Core>
+
 #include "flexrock/sim/simulate.hpp"
 
 namespace flexrock::detail {
@@ -37,6 +39,12 @@ struct CompliantAudit {
 SimulationResult simulate_compliant(const Body& body, const GroundMotion& motion,
                                     const InitialState& init, const SimulationOptions& opt,
                                     CompliantAudit* audit = nullptr);
+
+/// The eigenvalues of the compliant contact's equations of motion (coordinates and rates: 2 (3 + n)
+/// of them) linearized by differences at rest on both corners (`pivot` 0) or on one (1, 2), the
+/// corners sticking, without base motion (docs/theory.md, "Compliant contact").
+Eigen::VectorXcd compliant_rest_eigenvalues(const Body& body, const SimulationOptions& opt,
+                                            int pivot, const InitialState& at = {});
 
 /// The spring-dashpot constants of each tipping point for `body` under `opt`.
 CornerContact corner_contact(const Body& body, const SimulationOptions& opt);

@@ -8,6 +8,7 @@
 #include <limits>
 #include <numbers>
 
+#include "compliant.hpp"
 #include "flexrock/core/format.hpp"
 #include "flexrock/integrate/dop853.hpp"
 #include "flexrock/integrate/dopri5.hpp"
@@ -61,6 +62,59 @@ std::string hz(double omega) {
   return f >= 1e3 ? format_number(f / 1e3, 3) + " kHz" : format_number(f, 3) + " Hz";
 }
 
+// the compliant contact's DOPRI5 steps: its fast motions are the body's bounce and sway on the
+// corners' springs, coupled to the structure's modes and heavily damped by the dashpots (real
+// eigenvalues, often far above the springs' own omega_v). DOPRI5 must keep h lambda in its
+// stability region for each, wherever it stands (the switch to the Rosenbrock method is keyed on
+// the springs' own rate, not these coupled ones); it must also resolve, at rtol, a motion that
+// a base motion drives to resonance (damping ratio below 1/sqrt(2)), as the rigid estimate does
+void compliant_step_cost(const Body& body, const SimulationOptions& options, StepCost& c) {
+  c.contact_h_omega =
+      std::min(std::pow(options.rtol / kDopri5ErrorConstant, 0.2), kDopri5ImaginaryStability);
+  double h_stable = std::numeric_limits<double>::infinity();
+  for (int pivot = 0; pivot <= 2; ++pivot) {
+    for (const std::complex<double>& mu :
+         detail::compliant_rest_eigenvalues(body, options, pivot)) {
+      const double r = std::abs(mu);
+      c.contact_omega = std::max(c.contact_omega, r);
+      h_stable = std::min(h_stable, dopri5_stable_step(mu));
+      if (mu.imag() != 0.0 && -mu.real() < r / std::numbers::sqrt2)
+        c.contact_resonant_omega = std::max(c.contact_resonant_omega, r);
+    }
+  }
+  c.contact_stable_steps_per_second = std::isfinite(h_stable) ? 1.0 / h_stable : 0.0;
+  c.contact_steps_per_second =
+      std::max({c.contact_stable_steps_per_second, c.contact_resonant_omega / c.contact_h_omega,
+                1.0 / options.max_step});
+}
+
+// the compliant contact's: its rate is a floor, at rest as while rocking
+std::string compliant_step_cost_warning(const StepCost& c, double duration, long max_steps) {
+  const double rate = c.contact_steps_per_second;
+  const bool over = duration > 0.0 && rate * duration > static_cast<double>(max_steps);
+  const bool slow = rate > kSlowStepsPerSecond;
+  if (!over && !slow) return "";
+  std::string w =
+      "stiff compliant contact: the body on its corners' springs and dashpots has a "
+      "motion of " +
+      format_number(c.contact_omega, 3) + " rad/s (" + hz(c.contact_omega) +
+      "), and Dopri5 needs at least " + format_number(rate, 3) + " steps per simulated second";
+  if (over) {
+    w += "; the " + format_number(duration, 4) + " s would take at least " +
+         format_number(rate * duration, 3) +
+         " steps, above max_steps = " + std::to_string(max_steps) +
+         " (the run would stop within about " +
+         format_number(static_cast<double>(max_steps) / rate, 3) +
+         " s): raise [solver] max_steps, soften contact_stiffness, or use the impulsive contact";
+  } else {
+    w += ": a long run is slow (soften contact_stiffness, or use the impulsive contact)";
+  }
+  // the estimate is the stability bound's: rocking, accuracy at atol on the fast motions can hold
+  // the steps several times shorter
+  w += "; a rocking body takes more (docs/theory.md, \"Compliant contact: step cost\")";
+  return w;
+}
+
 }  // namespace
 
 StepCost estimate_step_cost(const Body& body, const SimulationOptions& options) {
@@ -76,6 +130,9 @@ StepCost estimate_step_cost(const Body& body, const SimulationOptions& options) 
                      : std::min(std::pow(options.rtol / kDopri5ErrorConstant, 0.2), stable);
   c.rocking_min_steps_per_second = c.rocking_omega / stable;
   c.rocking_steps_per_second = std::max(c.rocking_omega / c.h_omega, 1.0 / options.max_step);
+  if (options.contact_model == ContactModel::kCompliant &&
+      options.contact_integrator != ContactIntegrator::kImplicit && options.contact_stiffness > 0.0)
+    compliant_step_cost(body, options, c);
   return c;
 }
 
@@ -97,6 +154,7 @@ double rocking_stable_step(const Body& body, int edge, ExplicitMethod method) {
 }
 
 std::string step_cost_warning(const StepCost& c, double duration, long max_steps) {
+  if (c.contact_steps_per_second > 0.0) return compliant_step_cost_warning(c, duration, max_steps);
   const double rate = c.rocking_steps_per_second;
   const bool over = duration > 0.0 && rate * duration > static_cast<double>(max_steps);
   const bool slow = rate > kSlowStepsPerSecond;

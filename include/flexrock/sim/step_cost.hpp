@@ -44,10 +44,23 @@ struct StepCost {
   // and no fewer than 1/max_step)
   double rocking_min_steps_per_second = 0.0;
   double rocking_steps_per_second = 0.0;
+  // the compliant contact (contact_model = compliant, integrated by DOPRI5 or switching; zero
+  // otherwise): the equations of the body on its corners' springs and dashpots, linearized at rest
+  // on both corners and on one (docs/theory.md, "Compliant contact: step cost")
+  double contact_omega = 0.0;  // [rad/s] their largest |eigenvalue|
+  // [rad/s] the largest |eigenvalue| of a motion damped below 1/sqrt(2), which a base motion
+  // drives to resonance (0: none)
+  double contact_resonant_omega = 0.0;
+  double contact_h_omega = 0.0;  // [-] DOPRI5's h omega at rtol
+  // steps per simulated second: DOPRI5's stability on every eigenvalue; at least (the larger of
+  // that, accuracy on the resonant motions and 1/max_step)
+  double contact_stable_steps_per_second = 0.0;
+  double contact_steps_per_second = 0.0;
 };
 
-/// The step cost of `body` at `options` (rtol, max_step, high_order_rocking); cheap: one
-/// eigenproblem per edge.
+/// The step cost of `body` at `options` (rtol, max_step, high_order_rocking; for the compliant
+/// contact its constants and integrator); cheap: one eigenproblem per edge (and two for the
+/// compliant contact).
 StepCost estimate_step_cost(const Body& body, const SimulationOptions& options = {});
 
 /// The explicit method's stability bound [s] while `body` rocks on `edge` (1 or 2): the longest
@@ -64,7 +77,9 @@ double rocking_stable_step(const Body& body, int edge,
 inline constexpr double kSlowStepsPerSecond = 1e6;
 
 /// A warning, in words with figures, when a run of `duration` seconds that rocks throughout is
-/// expected to exceed `max_steps` or to be very slow (kSlowStepsPerSecond); empty otherwise.
+/// expected to exceed `max_steps` or to be very slow (kSlowStepsPerSecond); empty otherwise. For
+/// the compliant contact the rate is its own (contact_steps_per_second), a floor: a run needs at
+/// least that many steps, at rest or rocking.
 std::string step_cost_warning(const StepCost& cost, double duration, long max_steps);
 
 }  // namespace flexrock
