@@ -111,11 +111,14 @@ def test_ctrl_c_stops_a_python_sweep_and_the_rerun_has_the_same_bytes(tmp_path):
     code = f"import flexrock as fr; fr.sweep_manifest({str(m)!r}, {str(out)!r}, threads=1)"
     seconds, err, rc, at_signal = _interrupt(code, journal, out, 3)
     assert rc != 0 and "KeyboardInterrupt" in err, err
-    # between runs: what is added after the signal is the run in progress and those that ended
-    # in the 20 ms before the pool looks for signals again (runs of about 25 ms here), a few of
-    # the 200, not the rest of them
+    # between runs: what is added after the signal is the run in progress and those that end
+    # before the pool looks for signals again (every 20 ms) and the process exits, a few of the
+    # 200, not the rest of them. How many depends on the machine's speed (runs of 5 to 25 ms),
+    # so the bound is a quarter of the runs left, far below the rest that a sweep running on
+    # journals (all 200 before Ctrl-C was heeded)
     done = _journal_rows(journal)
-    assert 3 <= at_signal <= done <= at_signal + 10 < 200, (at_signal, done, seconds)
+    assert 3 <= at_signal <= done <= at_signal + max(10, (200 - at_signal) // 4) < 200, (
+        at_signal, done, seconds)
     assert not out.exists()
     # a new session goes on from the journal
     s = fr.SweepSession(fr.load_sweep_manifest(str(m)), str(out))
@@ -136,7 +139,9 @@ def test_ctrl_c_stops_a_python_spectrum_and_the_rerun_has_the_same_bytes(tmp_pat
     seconds, err, rc, at_signal = _interrupt(code, journal, out, 3)
     assert rc != 0 and "KeyboardInterrupt" in err, err
     done = _journal_rows(journal)
-    assert 3 <= at_signal <= done <= at_signal + 10 < 100 + 10, (at_signal, done, seconds)
+    # as for the sweep: a quarter of the 100 cells left at most, not the rest of them
+    assert 3 <= at_signal <= done <= at_signal + max(10, (100 - at_signal) // 4) < 100, (
+        at_signal, done, seconds)
     assert not out.exists() and not out_b.exists()
     fr.spectrum_file(spec, out, out_b, threads=2)
     assert out.read_bytes() == ref.read_bytes() and out_b.read_bytes() == ref_b.read_bytes()
