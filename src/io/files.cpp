@@ -45,6 +45,10 @@ std::string kind_of(mode_t mode) {
 
 }  // namespace
 
+std::string binary_data(const std::string& path, std::size_t offset) {
+  return path + ": binary data (NUL byte at offset " + std::to_string(offset) + ")";
+}
+
 std::string read_input_file(const std::string& path, const std::string& what,
                             std::uint64_t max_bytes) {
   const std::string expected = "; expected a " + what + " file";
@@ -81,9 +85,8 @@ std::string read_input_file(const std::string& path, const std::string& what,
     // binary file is refused at its first block, not after it was read whole)
     const auto* nul = static_cast<const char*>(std::memchr(buf, '\0', static_cast<std::size_t>(n)));
     if (nul) {
-      throw InputError(path + ": binary data (NUL byte at offset " +
-                       std::to_string(text.size() + static_cast<std::size_t>(nul - buf)) +
-                       "), expected a text " + what + " file");
+      throw InputError(binary_data(path, text.size() + static_cast<std::size_t>(nul - buf)) +
+                       ", expected a text " + what + " file");
     }
     if (!reserved) {
       // the size once the first block said text or binary: a large binary file is named as such

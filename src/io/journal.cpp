@@ -15,6 +15,7 @@
 #include <utility>
 
 #include "flexrock/core/error.hpp"
+#include "flexrock/io/files.hpp"
 #include "flexrock/io/study_files.hpp"
 
 namespace flexrock::io {
@@ -58,9 +59,8 @@ std::string read_all(int fd, const std::string& path) {
       const std::string_view block(buf, static_cast<std::size_t>(n));
       const std::size_t nul = block.substr(0, block.find('\n')).find('\0');
       if (nul != std::string_view::npos) {
-        throw InputError(path + ": binary data (NUL byte at offset " +
-                         std::to_string(text.size() + nul) +
-                         "), expected a text flexrock journal: move it away; flexrock keeps a "
+        throw InputError(binary_data(path, text.size() + nul) +
+                         ", expected a text flexrock journal: move it away; flexrock keeps a "
                          "study's finished runs in a file of this name");
       }
     }

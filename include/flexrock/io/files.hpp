@@ -31,6 +31,10 @@ inline constexpr std::uint64_t kMaxTomlFileBytes = std::uint64_t{16} << 20;
 std::string read_input_file(const std::string& path, const std::string& what,
                             std::uint64_t max_bytes = kMaxDataFileBytes);
 
+/// "<path>: binary data (NUL byte at offset N)": how every text input (records, tables, case
+/// files, journals) names a file that holds a NUL byte; the caller says what was expected.
+std::string binary_data(const std::string& path, std::size_t offset);
+
 /// True when `a` and `b` are, or will be, the same file: the same inode when both exist (hard and
 /// symbolic links too), else the same canonical path (the existing part of each path resolved,
 /// the rest taken as written). Never throws.
