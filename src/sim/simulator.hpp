@@ -164,7 +164,17 @@ class Simulator final : private GuardProbe {
   double crossing(int slot, double tl, double tr, double gl, double gr) override;
 
   // ---- the loop
+  // Same-instant transitions are a loop, not a recursion: a reset changes the mode and asks for
+  // its entry (request_entry), and enter_mode starts the new mode, whose entry state may call for
+  // another reset at once, until none does. The chain is bounded: more than kSameInstantEntries
+  // entries within 1e-9 s of each other stop the run (Zeno behaviour).
+  static constexpr int kSameInstantEntries = 64;
   bool enter_mode(double t, State& x);
+  bool start_mode(double t, State& x);  // one entry: the mode's stepper, then its guards at t
+  bool request_entry() {
+    entry_pending_ = true;
+    return true;
+  }
   void configure_rocking_integrator();
   bool advance(double& t, State& x);
   // `buf`: scratch for the stepper's dense output (a vector of the stepper's state)
@@ -238,7 +248,7 @@ class Simulator final : private GuardProbe {
   bool land(double t, State& x, int e, bool rigid);
   bool overturned(double t, State& x);
   // `momentum` [N s]: M (|v_c| before + after), the scale of the impulse's rounding
-  bool after_impulse(double t, State& x, const Event& ev, double th, double momentum);
+  bool after_impulse(double t, const Event& ev, double th, double momentum);
   bool start_slip(double t, State& x);
   // an uplift onto e from sticking full contact at t (state in q_, qd_) has a continuation: the
   // pivot's friction holds, or with the pivot sliding the body still turns up (theory §20)
@@ -404,6 +414,7 @@ class Simulator final : private GuardProbe {
   double impact_loss_ = 0.0, chatter_loss_ = 0.0;
   double zeno_time_ = -1.0;
   int same_time_events_ = 0;
+  bool entry_pending_ = false;  // a reset changed the mode at t: enter_mode starts it next
 };
 
 // ------------------------------------------------------------------------------------------------
@@ -493,7 +504,10 @@ SimulationResult Simulator<N, MaxN>::run(const InitialState& init) {
   bool running = enter_mode(t, x);
   if (opt_.output_dt > 0.0) emit_row(t, x);
   next_output_ = 1;
-  while (running && t < t_end_) running = advance(t, x);
+  while (running && t < t_end_) {
+    running = advance(t, x);
+    if (running && entry_pending_) running = enter_mode(t, x);  // an event fired: its new mode
+  }
   finish(t, x);
   return std::move(res_);
 }
@@ -770,14 +784,27 @@ double Simulator<N, MaxN>::crossing(int slot, double tl, double tr, double gl, d
 // ---- the loop
 // ------------------------------------------------------------------------------------
 
-// starts the current mode at (t, x); false when the run ends here. A guard already at or below
-// zero on entry fires at once (an uplift or lift-off that the entry state already calls for).
+// enters the current mode at (t, x) and every mode the resets at that instant lead to; false when
+// the run ends here
 template <int N, int MaxN>
 bool Simulator<N, MaxN>::enter_mode(double t, State& x) {
-  // every reset ends here, those a mode's entry state calls for at once included: contact
-  // changes piling up at one instant would loop forever, so they stop the run
+  bool running = true;
+  do {
+    entry_pending_ = false;
+    running = start_mode(t, x);
+  } while (running && entry_pending_);
+  return running;
+}
+
+// starts the current mode at (t, x); false when the run ends here. A guard already at or below
+// zero on entry fires at once (an uplift or lift-off that the entry state already calls for): its
+// reset requests the next entry.
+template <int N, int MaxN>
+bool Simulator<N, MaxN>::start_mode(double t, State& x) {
+  // every reset's new mode starts here, those a mode's entry state calls for at once included:
+  // contact changes piling up at one instant would loop forever, so they stop the run
   if (t - zeno_time_ < 1e-9 * std::max(1.0, t)) {
-    if (++same_time_events_ > 64) {
+    if (++same_time_events_ > kSameInstantEntries) {
       return stop(t, "contact changes accumulate at t = " + short_number(t) +
                          " s without time advancing (Zeno behaviour) in " + to_string(mode_) +
                          (opt_.chatter_ratio <= 0.0 ? " with the chatter cut-off disabled "
@@ -2167,7 +2194,7 @@ bool Simulator<N, MaxN>::uplift(double t, State& x, int e) {
   // a slide that began at this instant has not yet any slip velocity: it too starts at zero
   if (sliding() && x(isv()) == 0.0)
     zero_start_[static_cast<std::size_t>(guard_slot(mode_, Guard::kSlipStop))] = true;
-  return enter_mode(t, x);
+  return request_entry();
 }
 
 template <int N, int MaxN>
@@ -2260,7 +2287,7 @@ bool Simulator<N, MaxN>::impact(double t, State& x) {
     zero_start_[static_cast<std::size_t>(guard_slot(mode_, Guard::kImpact))] = true;
   if (res_.extremes.impacts > opt_.max_impacts)
     return stop(t, "impact limit reached (" + std::to_string(opt_.max_impacts) + ")");
-  return enter_mode(t, x);
+  return request_entry();
 }
 
 // the floor stops pressing: the body flies, with no impulse (theory "Flight", lift-off map)
@@ -2290,7 +2317,7 @@ bool Simulator<N, MaxN>::lift_off(double t, State& x) {
     // the episode's largest pull goes into this event as the floor pulls (fold_pull)
     tension_event_ = static_cast<long>(res_.events.size()) - 1;
     ++res_.extremes.tension_episodes;
-    return enter_mode(t, x);
+    return request_entry();
   }
   Eigen::Vector2d r, v;
   dyn_.cg_from_pivot(e, sn, cs, q_, x(ithd()), qd_, r, v);
@@ -2315,7 +2342,7 @@ bool Simulator<N, MaxN>::lift_off(double t, State& x) {
     zero_start_[static_cast<std::size_t>(guard_slot(mode_, Guard::kLandingEdge1))] = true;
   if (mode_spec(from).pivot != 1)
     zero_start_[static_cast<std::size_t>(guard_slot(mode_, Guard::kLandingEdge2))] = true;
-  return enter_mode(t, x);
+  return request_entry();
 }
 
 // tipping point e lands after a flight: the plastic corner impact (theory "Landing"); at theta = 0
@@ -2417,7 +2444,7 @@ bool Simulator<N, MaxN>::land(double t, State& x, int e, bool rigid) {
     tension_event_ = -1;
   }
   count_impact(ev, impulse(1), ev.energy_loss, chatter);
-  return after_impulse(t, x, ev, th, dyn_.mass() * (v_c.norm() + v_after.norm()));
+  return after_impulse(t, ev, th, dyn_.mass() * (v_c.norm() + v_after.norm()));
 }
 
 template <int N, int MaxN>
@@ -2493,7 +2520,7 @@ bool Simulator<N, MaxN>::start_slip(double t, State& x) {
     zero_start_[static_cast<std::size_t>(guard_slot(mode_, Guard::kImpact))] = true;
     zero_start_[static_cast<std::size_t>(guard_slot(mode_, Guard::kPeak))] = true;
   }
-  return enter_mode(t, x);
+  return request_entry();
 }
 
 template <int N, int MaxN>
@@ -2543,7 +2570,7 @@ bool Simulator<N, MaxN>::stick(double t, State& x) {
     zero_start_[static_cast<std::size_t>(guard_slot(mode_, Guard::kImpact))] = true;
     zero_start_[static_cast<std::size_t>(guard_slot(mode_, Guard::kPeak))] = true;
   }
-  return enter_mode(t, x);
+  return request_entry();
 }
 
 // Moreau's impact law for one contact, plastic normally, with Coulomb friction on the impulse
@@ -2709,14 +2736,13 @@ bool Simulator<N, MaxN>::friction_impact(double t, State& x, int e, const Eigen:
     fe.friction_demand = sticking_demand;
     rec_.event(fe);
   }
-  return after_impulse(t, x, ev, th, m * (v_c.norm() + v_after.norm()));
+  return after_impulse(t, ev, th, m * (v_c.norm() + v_after.norm()));
 }
 
 // the end of a landing or an impact with friction, recorded as `ev` at tilt th: a tensile impulse
 // is said, and the new mode starts (theta = 0 and rocking: the impact guard starts at zero)
 template <int N, int MaxN>
-bool Simulator<N, MaxN>::after_impulse(double t, State& x, const Event& ev, double th,
-                                       double momentum) {
+bool Simulator<N, MaxN>::after_impulse(double t, const Event& ev, double th, double momentum) {
   // (a grazing landing's impulse vanishes: its sign within the rounding of M (v+ - v-) says
   // nothing, and such a landing pulls on nothing)
   if (ev.impulse_y < -kTensileRounding * momentum) {
@@ -2734,7 +2760,7 @@ bool Simulator<N, MaxN>::after_impulse(double t, State& x, const Event& ev, doub
     zero_start_[static_cast<std::size_t>(guard_slot(mode_, Guard::kImpact))] = true;
   if (res_.extremes.impacts > opt_.max_impacts)
     return stop(t, "impact limit reached (" + std::to_string(opt_.max_impacts) + ")");
-  return enter_mode(t, x);
+  return request_entry();
 }
 
 template <int N, int MaxN>
