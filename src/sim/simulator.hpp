@@ -17,6 +17,7 @@
 #include <numbers>
 #include <string>
 #include <type_traits>
+#include <variant>
 
 #include "automaton.hpp"
 #include "contact_propagator.hpp"
@@ -34,6 +35,7 @@
 #include "rocking_series.hpp"
 #include "series_guards.hpp"
 #include "step_extremes.hpp"
+#include "steppers.hpp"
 
 namespace flexrock::detail {
 
@@ -97,6 +99,20 @@ class Simulator final : private GuardProbe {
   SimulationResult run(const InitialState& init);
 
  private:
+  // the steppers step through the loop's equations, guards and recorder (steppers.hpp)
+  template <class>
+  friend struct StillStepper;
+  template <int, int, class>
+  friend struct ExactStepper;
+  template <class>
+  friend struct SeriesStepper;
+  template <class>
+  friend struct ArcStepper;
+  template <class>
+  friend struct RockingStepper;
+  template <class, int>
+  friend struct OdeStepper;
+
   // ---- state layout
   int iq() const { return 1; }
   int ithd() const { return n_ + 1; }
@@ -159,7 +175,8 @@ class Simulator final : private GuardProbe {
   void rocking_guards(int e, const State& x, GuardSample& s) const;
   // evaluate() on the closed-form arc where sin(phi), cos(phi) are known (the peak, the floor):
   // the reaction as the arc's function of phi, with no sincos of theta
-  void arc_sample(double t, const State& x, double sp, double cp, GuardSample& s) const;
+  void arc_sample(double t, const State& x, double sp, double cp, GuardSample& s) const
+      requires(N == 0);
   double guard_value(int slot, double t) override;
   double crossing(int slot, double tl, double tr, double gl, double gr) override;
 
@@ -177,49 +194,63 @@ class Simulator final : private GuardProbe {
   }
   void configure_rocking_integrator();
   bool advance(double& t, State& x);
+  // the steppers' starts and steps (steppers.hpp calls them through the dispatch)
+  void start_series(double t, const State& x) requires(N == 0);
+  void start_rocking(double t, const State& x);
+  template <class Ode>
+  void start_ode(Ode& ode, double t, const State& x);
+  template <class Ode>
+  bool advance_ode(Ode& ode, double& t, State& x);
+  template <class Ode>
+  auto ode_rhs(Ode& ode);
+  bool advance_rocking(double& t, State& x);
+  bool advance_exact(double& t, State& x) requires(N != 0);
+  bool advance_series_step(double& t, State& x) requires(N == 0);
   // `buf`: scratch for the stepper's dense output (a vector of the stepper's state)
   template <class Stepper, class System, class Buffer>
   bool advance_with(Stepper& integ, System&& sys, Buffer& buf, double& t, State& x);
   template <class Stepper, class System>
   bool end_step(Stepper& integ, System&& sys, int slot_hit, double t_hit, const GuardSample& s_end,
                 double& t, State& x);
-  bool advance_still(double& t, State& x);
+  bool advance_still(double& t, State& x) requires(N == 0);
   // a rigid body's rocking by its series with the guards bounded over the whole step
-  bool series_bounded() const;
-  bool advance_series(double& t, State& x);
+  bool series_bounded() const requires(N == 0);
+  bool advance_series(double& t, State& x) requires(N == 0);
   // a rigid body rocking freely on a floor at rest, by its closed form (arc_): true where it
   // applies at (t, x) and the arc has started
-  bool start_arc(double t, const ContactState& x);
-  bool advance_arc(double& t, State& x);
+  bool start_arc(double t, const ContactState& x) requires(N == 0);
+  bool advance_arc(double& t, State& x) requires(N == 0);
   // the shear's, the moment's and the friction demand's extremes over the arc's last step
-  void arc_extremes(double t0, double t1);
-  // the series' reaction polynomials sp_fi_, sp_fj_, sp_moment_ on a step of length h
-  void reaction_polynomials(double h);
+  void arc_extremes(double t0, double t1) requires(N == 0);
+  // the series' reaction polynomials series_.sp_fi, series_.sp_fj, series_.sp_moment on a step of
+  // length h
+  void reaction_polynomials(double h) requires(N == 0);
   // `reaction`: whether reaction_polynomials ran on this step (it runs here where needed)
   // `range`: the reaction's enclosure over the whole step
   void series_extremes(double t0, double tau_end, bool event, const ReactionRange& range,
-                       bool& reaction);
+                       bool& reaction) requires(N == 0);
   // counts a step toward max_steps: false (the run stops) past them
   bool count_step(double t);
   // the stepper could not take a step from t: the run stops, saying why
   bool step_collapsed(double t);
-  double scan_record(double t);
-  bool can_walk(double t) const;
-  bool advance_walk(double& t, State& x);
+  double scan_record(double t) requires(N == 0);
+  bool can_walk(double t) const requires(N != 0);
+  bool advance_walk(double& t, State& x) requires(N != 0);
   using Excursion = typename ContactPropagator<N, MaxN, State>::Excursion;
-  Excursion walk_excursion(double w) const;
-  bool guards_clear(const GuardSample& sa, const GuardSample& sb, const Excursion& e) const;
-  bool walk_quiet(double ax, double ay0, double ay1) const;
+  Excursion walk_excursion(double w) const requires(N != 0);
+  bool guards_clear(const GuardSample& sa, const GuardSample& sb, const Excursion& e) const
+      requires(N != 0);
+  bool walk_quiet(double ax, double ay0, double ay1) const requires(N != 0);
   struct ReactionReach {
     bool shear = false, moment = false, demand = false;
     bool pull = false;  // the floor's pull on a held pivot (tension_)
   };
   ReactionReach reaction_reach(double fi_top, double moment_top, double fj_lo, double fj_hi) const;
   int walk_search(double tp0, double a, double b, const GuardSample& sa, const GuardSample& sb,
-                  int depth, double& a_out, double& b_out);
-  void emit_walk_rows(double tp0, double tp1);
+                  int depth, double& a_out, double& b_out) requires(N != 0);
+  void emit_walk_rows(double tp0, double tp1) requires(N != 0);
   void locate_extremes(double tp0, double h, const GuardSample& sa, const GuardSample& sb,
-                       const Excursion& e);
+                       const Excursion& e) requires(N != 0);
   template <class Jet>
   double largest_near(Jet&& jet, double tau, double lo, double hi);
   // the quantities of locate_extremes at the last step's observed point p (time t, guards s, u the
@@ -235,7 +266,7 @@ class Simulator final : private GuardProbe {
   static double friction_demand(const GuardSample& s) {
     return detail::friction_demand(s.fi, s.fj);
   }
-  std::array<double, 3> guard_jet(int k, double tau);
+  std::array<double, 3> guard_jet(int k, double tau) requires(N != 0);
   bool step_guards(int samples, double t1, double& t_hit, int& slot_hit);
   void state_at(double t, State& out) const;
 
@@ -321,8 +352,6 @@ class Simulator final : private GuardProbe {
   const Body body_;
   Mat to_user_, from_user_;  // Phi and Phi^-1 = Phi^T mu
   mutable Vec qu_, qdu_;     // u of the last observation, u_dot of the last history row
-  Vec ua_, ub_;              // scratch: u at a walk's piece's start and end
-  std::array<Vec, 5> qjet_;  // scratch: q and its first four derivatives in a walk's piece
   Dyn dyn_;
   const GroundMotion& motion_;
   SimulationOptions opt_;
@@ -331,51 +360,52 @@ class Simulator final : private GuardProbe {
   int samples_ = 4;
   // rocking, and full contact when not stepped exactly: DOPRI5, and the Rosenbrock method while a
   // flexible body's stiffest rocking motion would hold the explicit step (theory, "Stiff rocking")
-  StiffSwitching<ContactState> integ_;
-  std::array<double, 2> rocking_h_stable_{-1.0, -1.0};  // [s] per edge, once known (< 0: not yet)
-  RockingSeries<ContactState> series_integ_;  // a rigid body's rocking under a record or none
-  FreeRockingArc<ContactState> arc_;          // the same on a floor at rest, in closed form
-  Dopri5<FlightState> flight_integ_;
-  Dopri5<SlideState> slide_integ_;
-  mutable SlideState slide_buf_;
   Vec qdd1_;  // scratch: q_ddot at a unit slip acceleration
   mutable ContactState dense_buf_;
-  mutable FlightState flight_buf_;
-  State prop_buf_;  // scratch: the exact propagator's dense output
-  ContactPropagator<N, MaxN, State> prop_;
   SimulationResult res_;
   Recorder rec_;
   ContactMode mode_ = ContactMode::kFullContact;
-  // what steps the current mode's motion, chosen once in enter_mode
-  enum class Stepping {
-    kStill,    // a rigid body in full contact: the state is x_still_, nothing integrates
-    kExact,    // a flexible body in full contact under a record or none: prop_
-    kSeries,   // a rigid body rocking under a record or none: series_integ_
-    kArc,      // a rigid body rocking freely on a floor at rest: arc_, in closed form
-    kRocking,  // any other sticking contact mode (rocking, or full contact under pulses): integ_
-    kFlight,   // flight_integ_
-    kSlide,    // a sliding mode: slide_integ_
-  };
-  Stepping stepping_ = Stepping::kRocking;
-  Stepping choose_stepping() const;
+  // what steps the current mode's motion, chosen once in enter_mode (steppers.hpp): a loop holds
+  // the steppers its body size can run, and no other
+  using Rocking = RockingStepper<ContactState>;
+  using Flight = OdeStepper<FlightState, 0>;
+  using Slide = OdeStepper<SlideState, 1>;
+  using Still = std::conditional_t<N == 0, StillStepper<State>, AbsentStepper>;
+  using Series = std::conditional_t<N == 0, SeriesStepper<ContactState>, AbsentStepper>;
+  using Arc = std::conditional_t<N == 0, ArcStepper<ContactState>, AbsentStepper>;
+  using Exact = std::conditional_t<N == 0, AbsentStepper, ExactStepper<N, MaxN, State>>;
+  using ActiveStepper =
+      std::conditional_t<N == 0, std::variant<Still*, Series*, Arc*, Rocking*, Flight*, Slide*>,
+                         std::variant<Exact*, Rocking*, Flight*, Slide*>>;
+  Rocking rocking_;
+  Flight flight_;
+  Slide slide_;
+  [[no_unique_address]] Still still_;
+  [[no_unique_address]] Series series_;
+  [[no_unique_address]] Arc arc_;
+  [[no_unique_address]] Exact exact_;
+  ActiveStepper stepper_;
+  // the one dispatch to the current mode's stepper
+  template <class F>
+  decltype(auto) on_stepper(F&& f) {
+    return std::visit([&](auto* s) -> decltype(auto) { return f(*s); }, stepper_);
+  }
+  template <class F>
+  decltype(auto) on_stepper(F&& f) const {
+    return std::visit([&](const auto* s) -> decltype(auto) { return f(*s); }, stepper_);
+  }
+  ActiveStepper choose_stepper();
   double stepped_until() const;  // [s] the end of the last step taken (of the still span)
   GroundMotion::Cursor rhs_cursor_, event_cursor_, break_cursor_;
   Vec q_, qd_, qdd_;
   State xr_;
-  // the series step's guards and observed quantities as polynomials in tau (advance_series)
-  StepPolynomial sp_impact_, sp_overturn_, sp_peak_, sp_fi_, sp_fj_, sp_moment_, sp_work_;
   std::array<GuardSample, kMaxSamples + 1> samples_buf_;  // guards at this step's samples
   std::array<State, kMaxSamples + 1> sample_states_;      // the states there (sized once)
   GuardSample s0_;
   std::size_t scan_index_ = 0;  // the record sample the last scan stopped at
   double scan_from_ = 0.0;      // [s] the last sample the scan passed with no event
-  State x_still_;
-  State xw_, xe_;             // the walk's state at its piece's start and end
-  double fine_until_ = -1.0;  // [s] the walk resumes once the stepped propagation reaches it
   // [s] the stepped propagation's next step ends here: a bracket the walk found a crossing in
   double step_stop_ = std::numeric_limits<double>::infinity();
-  std::vector<int> wanted_;             // the walk's extremes search: the quantities sought
-  std::vector<double> best_, best_at_;  // their largest values found, and where [s]
   // a step's observed points (its start, its samples before any event, the event) and the
   // quantities of locate_extremes there (|u_j|, |F_I|, |moment|, friction demand, pull)
   static constexpr int NQ = N == Eigen::Dynamic ? Eigen::Dynamic : N + 4;
@@ -386,8 +416,6 @@ class Simulator final : private GuardProbe {
   std::array<bool, kMaxSamples + 2> point_pressing_{};  // F_J >= kPressingFraction at the points
   std::array<double, kMaxSamples + 2> point_fj_{};      // F_J over M g at the points
   Quantities point_extreme_;                   // scratch: the extremes so far, in the same units
-  std::array<double, 4> walk_forcing_{};       // the piece's max |a_x|, |a_y|, |a_x'|, |a_y'|
-  double still_t1_ = 0.0;                      // [s] end of the span checked last while still
   std::array<bool, kMaxGuards> zero_start_{};  // guards known to turn positive from zero
   std::array<double, 2> overturn_limit_{};     // [rad] on edge 1 (theta > 0) and edge 2
   double offset_ = 0.0;              // [m] horizontal offset of the base centre while in contact
@@ -430,15 +458,11 @@ Simulator<N, MaxN>::Simulator(const Body& body, const GroundMotion& motion,
       opt_(opt),
       n_(body.modes()),
       samples_(std::clamp(opt.event_samples, 1, kMaxSamples)),
-      series_integ_(motion),
-      prop_(dyn_, motion, samples_, opt.max_step, opt.exact_full_contact),
-      rec_(res_, body.params().mass, body.g(), body.params().height, body.modes()) {
-  prop_.output_basis(to_user_);
+      rec_(res_, body.params().mass, body.g(), body.params().height, body.modes()),
+      series_(motion),
+      exact_(dyn_, motion, samples_, opt.max_step, opt.exact_full_contact) {
   qu_.resize(n_);
   qdu_.resize(n_);
-  ua_.resize(n_);
-  ub_.resize(n_);
-  for (Vec& v : qjet_) v.setZero(n_);
   q_.resize(n_);
   qd_.resize(n_);
   qdd_.resize(n_);
@@ -464,15 +488,21 @@ Simulator<N, MaxN>::Simulator(const Body& body, const GroundMotion& motion,
   ctl_.max_step = opt.max_step;
   for (State& xk : sample_states_) xk.setZero(2 * n_ + 11);
   dense_buf_.setZero(2 * n_ + 4);
-  slide_buf_.setZero(2 * n_ + 7);
+  slide_.buf.setZero(2 * n_ + 7);
   xr_.setZero(2 * n_ + 11);  // written through put(): sized once, as on the heap path
-  flight_buf_.setZero(2 * n_ + 8);
-  prop_buf_.setZero(2 * n_ + 11);
-  xw_.setZero(2 * n_ + 11);
-  xe_.setZero(2 * n_ + 11);
-  wanted_.assign(static_cast<std::size_t>(n_ + 4), 0);
-  best_.assign(static_cast<std::size_t>(n_ + 4), 0.0);
-  best_at_.assign(static_cast<std::size_t>(n_ + 4), 0.0);
+  flight_.buf.setZero(2 * n_ + 8);
+  if constexpr (N != 0) {
+    exact_.prop.output_basis(to_user_);
+    exact_.ua.resize(n_);
+    exact_.ub.resize(n_);
+    for (Vec& v : exact_.qjet) v.setZero(n_);
+    exact_.buf.setZero(2 * n_ + 11);
+    exact_.xw.setZero(2 * n_ + 11);
+    exact_.xe.setZero(2 * n_ + 11);
+    exact_.wanted.assign(static_cast<std::size_t>(n_ + 4), 0);
+    exact_.best.assign(static_cast<std::size_t>(n_ + 4), 0.0);
+    exact_.best_at.assign(static_cast<std::size_t>(n_ + 4), 0.0);
+  }
   for (Quantities& v : point_vals_) v.setZero(n_ + 4);
   point_extreme_.setZero(n_ + 4);
 }
@@ -742,11 +772,11 @@ void Simulator<N, MaxN>::rocking_guards(int e, const State& x, GuardSample& s) c
 
 template <int N, int MaxN>
 void Simulator<N, MaxN>::arc_sample(double t, const State& x, double sp, double cp,
-                                    GuardSample& s) const {
+                                    GuardSample& s) const requires(N == 0) {
   s.t = t;
-  s.fi = arc_.fi(sp, cp);
-  s.fj = arc_.press(cp);
-  s.moment = arc_.signed_moment(sp, cp);
+  s.fi = arc_.arc.fi(sp, cp);
+  s.fj = arc_.arc.press(cp);
+  s.moment = arc_.arc.signed_moment(sp, cp);
   rocking_guards(edge(), x, s);
 }
 
@@ -762,20 +792,22 @@ double Simulator<N, MaxN>::guard_value(int slot, double t) {
 // step: their crossings are found on the polynomial; every other guard by TOMS 748
 template <int N, int MaxN>
 double Simulator<N, MaxN>::crossing(int slot, double tl, double tr, double gl, double gr) {
-  if (stepping_ == Stepping::kSeries) {
+  if constexpr (N == 0) {
+    if (!std::holds_alternative<Series*>(stepper_))
+      return locate_crossing(slot, tl, tr, gl, gr, *this);
     const Guard g = mode_spec(mode_).guards[static_cast<std::size_t>(slot)];
     const double sg = edge_sign(edge());
-    const double* c = series_integ_.theta_coefficients();
-    const double* dc = series_integ_.theta_rate_coefficients();  // k c[k]
-    const int degree = series_integ_.order();                    // theta's; theta_dot's is one less
+    const double* c = series_.integ.theta_coefficients();
+    const double* dc = series_.integ.theta_rate_coefficients();  // k c[k]
+    const int degree = series_.integ.order();                    // theta's; theta_dot's is one less
     if (g == Guard::kImpact)
-      return polynomial_crossing(c, dc, degree, sg, series_integ_.t0(), tl, tr, gl, gr);
+      return polynomial_crossing(c, dc, degree, sg, series_.integ.t0(), tl, tr, gl, gr);
     if (g == Guard::kPeak) {
       // theta_dot's coefficients d[k] = dc[k + 1], and k d[k]
       const double* d = dc + 1;
       std::array<double, RockingSeries<ContactState>::kMaxOrder + 2> dd;
       for (int k = 1; k < degree; ++k) dd[static_cast<std::size_t>(k)] = k * d[k];
-      return polynomial_crossing(d, dd.data(), degree - 1, sg, series_integ_.t0(), tl, tr, gl, gr);
+      return polynomial_crossing(d, dd.data(), degree - 1, sg, series_.integ.t0(), tl, tr, gl, gr);
     }
   }
   return locate_crossing(slot, tl, tr, gl, gr, *this);
@@ -820,55 +852,17 @@ bool Simulator<N, MaxN>::start_mode(double t, State& x) {
     x(ithd()) = 0.0;
   }
   step_stop_ = std::numeric_limits<double>::infinity();
-  stepping_ = choose_stepping();
+  stepper_ = choose_stepper();
   // quadratures steer no step of a sticking contact mode; a slide's d, d_dot come after them
   ctl_.controlled = flying() ? 2 * n_ + 8 : (sliding() ? -1 : 2 * n_ + 2);
-  switch (stepping_) {
-    case Stepping::kStill:
-      x_still_ = x;
-      still_t1_ = t;
-      break;
-    case Stepping::kExact:
-      prop_.start(t, x);
-      break;
-    case Stepping::kFlight:
-      flight_buf_ = x.head(2 * n_ + 8);
-      flight_integ_.start(
-          [this](double tt, const FlightState& xx, FlightState& dd) { flight_rhs(tt, xx, dd); },
-          ctl_, t, flight_buf_);
-      break;
-    case Stepping::kSlide:
-      slide_buf_.head(2 * n_ + 4) = x.head(2 * n_ + 4);
-      slide_buf_.tail(3) = x.segment(isd(), 3);
-      slide_integ_.start(
-          [this](double tt, const SlideState& xx, SlideState& dd) { slide_rhs(tt, xx, dd); }, ctl_,
-          t, slide_buf_);
-      break;
-    case Stepping::kSeries: {
-      dense_buf_ = x.head(2 * n_ + 4);
-      if (start_arc(t, dense_buf_)) break;  // the arc needs no series
-      const int e = edge();
-      const double a = dyn_.alpha(e);
-      series_integ_.set_pivot(a, dyn_.g_over_h() / dyn_.inertia(a, q_),
-                              dyn_.mass() * dyn_.height() * dyn_.g(), dyn_.g());
-      series_integ_.start([](double, const ContactState&, ContactState&) {}, ctl_, t, dense_buf_);
-      break;
-    }
-    case Stepping::kArc:
-      break;  // chosen above, from kSeries
-    case Stepping::kRocking:
-      dense_buf_ = x.head(2 * n_ + 4);
-      configure_rocking_integrator();
-      integ_.start(
-          [this](double tt, const ContactState& xx, ContactState& dd) { contact_rhs(tt, xx, dd); },
-          ctl_, t, dense_buf_);
-      break;
-  }
+  on_stepper([&](auto& s) { s.start(*this, t, x); });
   // an arc from the floor (after an impact) knows its reaction there
-  if (stepping_ == Stepping::kArc && x(0) == 0.0)
-    arc_sample(t, x, arc_.floor_sin(), arc_.floor_cos(), s0_);
-  else
-    evaluate(t, x, s0_);
+  bool arc_from_floor = false;
+  if constexpr (N == 0) {
+    arc_from_floor = std::holds_alternative<Arc*>(stepper_) && x(0) == 0.0;
+    if (arc_from_floor) arc_sample(t, x, arc_.arc.floor_sin(), arc_.arc.floor_cos(), s0_);
+  }
+  if (!arc_from_floor) evaluate(t, x, s0_);
   observe(s0_, x);
   const ModeSpec& spec = mode_spec(mode_);
   for (int j = 0; j < spec.count; ++j) {
@@ -910,45 +904,78 @@ bool Simulator<N, MaxN>::start_mode(double t, State& x) {
   return true;
 }
 
-// the stepper of mode_: the cheapest that is exact or accurate for its equations
+// the stepper of mode_: the cheapest that is exact or accurate for its equations (theory §17)
 template <int N, int MaxN>
-auto Simulator<N, MaxN>::choose_stepping() const -> Stepping {
-  if (flying()) return Stepping::kFlight;
-  if (sliding()) return Stepping::kSlide;
-  if (mode_ == ContactMode::kFullContact) {
+auto Simulator<N, MaxN>::choose_stepper() -> ActiveStepper {
+  if (flying()) return &flight_;
+  if (sliding()) return &slide_;
+  if constexpr (N == 0) {
     // a rigid body in full contact does not move: no integration until it uplifts
-    if (n_ == 0) return Stepping::kStill;
+    if (mode_ == ContactMode::kFullContact) return &still_;
+    // the series needs a base acceleration it can expand between the steps' ends: a record's
+    // (linear), sinusoids' (a pulse's), or none
+    if (opt_.series_rocking &&
+        (motion_.is_sampled() || motion_.is_none() || motion_.is_sinusoidal()))
+      return &series_;
+  } else {
     // a flexible body in full contact under a record or none: exact steps between its samples
-    if (prop_.available()) return Stepping::kExact;
-    return Stepping::kRocking;
+    if (mode_ == ContactMode::kFullContact && exact_.prop.available()) return &exact_;
   }
-  // the series needs a base acceleration it can expand between the steps' ends: a record's
-  // (linear), sinusoids' (a pulse's), or none
-  if (N == 0 && opt_.series_rocking &&
-      (motion_.is_sampled() || motion_.is_none() || motion_.is_sinusoidal()))
-    return Stepping::kSeries;
-  return Stepping::kRocking;
+  return &rocking_;
+}
+
+// the rigid body's rocking: the closed-form arc where the floor is at rest, else the series
+template <int N, int MaxN>
+void Simulator<N, MaxN>::start_series(double t, const State& x) requires(N == 0) {
+  dense_buf_ = x.head(2 * n_ + 4);
+  if (start_arc(t, dense_buf_)) return;  // the arc needs no series
+  const int e = edge();
+  const double a = dyn_.alpha(e);
+  series_.integ.set_pivot(a, dyn_.g_over_h() / dyn_.inertia(a, q_),
+                          dyn_.mass() * dyn_.height() * dyn_.g(), dyn_.g());
+  series_.integ.start([](double, const ContactState&, ContactState&) {}, ctl_, t, dense_buf_);
+}
+
+template <int N, int MaxN>
+void Simulator<N, MaxN>::start_rocking(double t, const State& x) {
+  dense_buf_ = x.head(2 * n_ + 4);
+  configure_rocking_integrator();
+  rocking_.integ.start(
+      [this](double tt, const ContactState& xx, ContactState& dd) { contact_rhs(tt, xx, dd); },
+      ctl_, t, dense_buf_);
+}
+
+// flight and the sliding modes: DOPRI5 on the mode's own equations and state
+template <int N, int MaxN>
+template <class Ode>
+void Simulator<N, MaxN>::start_ode(Ode& ode, double t, const State& x) {
+  if constexpr (std::is_same_v<Ode, Flight>) {
+    ode.buf = x.head(2 * n_ + 8);
+  } else {
+    ode.buf.head(2 * n_ + 4) = x.head(2 * n_ + 4);
+    ode.buf.tail(3) = x.segment(isd(), 3);
+  }
+  ode.integ.start(ode_rhs(ode), ctl_, t, ode.buf);
+}
+
+template <int N, int MaxN>
+template <class Ode>
+bool Simulator<N, MaxN>::advance_ode(Ode& ode, double& t, State& x) {
+  return advance_with(ode.integ, ode_rhs(ode), ode.buf, t, x);
+}
+
+template <int N, int MaxN>
+template <class Ode>
+auto Simulator<N, MaxN>::ode_rhs(Ode&) {
+  if constexpr (std::is_same_v<Ode, Flight>)
+    return [this](double tt, const FlightState& xx, FlightState& dd) { flight_rhs(tt, xx, dd); };
+  else
+    return [this](double tt, const SlideState& xx, SlideState& dd) { slide_rhs(tt, xx, dd); };
 }
 
 template <int N, int MaxN>
 double Simulator<N, MaxN>::stepped_until() const {
-  switch (stepping_) {
-    case Stepping::kStill:
-      return still_t1_;
-    case Stepping::kExact:
-      return prop_.t1();
-    case Stepping::kFlight:
-      return flight_integ_.t1();
-    case Stepping::kSlide:
-      return slide_integ_.t1();
-    case Stepping::kSeries:
-      return series_integ_.t1();
-    case Stepping::kArc:
-      return arc_.t1();
-    case Stepping::kRocking:
-      break;
-  }
-  return integ_.t1();
+  return on_stepper([](const auto& s) { return s.stepped_until(); });
 }
 
 // a flexible body's rocking may be stiff: the explicit method's stability bound on the rocking
@@ -960,53 +987,46 @@ template <int N, int MaxN>
 void Simulator<N, MaxN>::configure_rocking_integrator() {
   const auto method = static_cast<StiffMethod>(opt_.rocking_integrator);
   if (n_ == 0 || !rocking()) {
-    integ_.configure(std::numeric_limits<double>::infinity(), StiffMethod::kExplicit);
+    rocking_.integ.configure(std::numeric_limits<double>::infinity(), StiffMethod::kExplicit);
     return;
   }
   const ExplicitMethod explicit_method =
       opt_.high_order_rocking ? ExplicitMethod::kDop853 : ExplicitMethod::kDopri5;
-  double& h = rocking_h_stable_[static_cast<std::size_t>(edge() - 1)];
+  double& h = rocking_.h_stable[static_cast<std::size_t>(edge() - 1)];
   if (h < 0.0 && method == StiffMethod::kAuto)
     h = rocking_stable_step(body_, edge(), explicit_method) / opt_.stiff_switch_scale;
-  integ_.configure(h, method, explicit_method);
+  rocking_.integ.configure(h, method, explicit_method);
 }
 
 // one accepted step plus whatever happens in it; false when the run ends
 template <int N, int MaxN>
 bool Simulator<N, MaxN>::advance(double& t, State& x) {
-  switch (stepping_) {
-    case Stepping::kStill:
-      return advance_still(t, x);
-    case Stepping::kExact:
-      // the exact propagator takes no right-hand side
-      if (t >= step_stop_) step_stop_ = std::numeric_limits<double>::infinity();
-      if (can_walk(t)) return advance_walk(t, x);
-      return advance_with(
-          prop_, [](double, const State&, State&) {}, prop_buf_, t, x);
-    case Stepping::kFlight: {
-      auto sys = [this](double tt, const FlightState& xx, FlightState& dd) {
-        flight_rhs(tt, xx, dd);
-      };
-      return advance_with(flight_integ_, sys, flight_buf_, t, x);
-    }
-    case Stepping::kSlide: {
-      auto sys = [this](double tt, const SlideState& xx, SlideState& dd) { slide_rhs(tt, xx, dd); };
-      return advance_with(slide_integ_, sys, slide_buf_, t, x);
-    }
-    case Stepping::kArc:
-      return advance_arc(t, x);
-    case Stepping::kSeries:
-      if (series_bounded()) return advance_series(t, x);
-      series_integ_.set_max_step(ctl_.max_step);
-      return advance_with(
-          series_integ_, [](double, const ContactState&, ContactState&) {}, dense_buf_, t, x);
-    case Stepping::kRocking:
-      break;
-  }
+  return on_stepper([&](auto& s) { return s.advance(*this, t, x); });
+}
+
+template <int N, int MaxN>
+bool Simulator<N, MaxN>::advance_rocking(double& t, State& x) {
   auto sys = [this](double tt, const ContactState& xx, ContactState& dd) {
     contact_rhs(tt, xx, dd);
   };
-  return advance_with(integ_, sys, dense_buf_, t, x);
+  return advance_with(rocking_.integ, sys, dense_buf_, t, x);
+}
+
+template <int N, int MaxN>
+bool Simulator<N, MaxN>::advance_exact(double& t, State& x) requires(N != 0) {
+  // the exact propagator takes no right-hand side
+  if (t >= step_stop_) step_stop_ = std::numeric_limits<double>::infinity();
+  if (can_walk(t)) return advance_walk(t, x);
+  return advance_with(
+      exact_.prop, [](double, const State&, State&) {}, exact_.buf, t, x);
+}
+
+template <int N, int MaxN>
+bool Simulator<N, MaxN>::advance_series_step(double& t, State& x) requires(N == 0) {
+  if (series_bounded()) return advance_series(t, x);
+  series_.integ.set_max_step(ctl_.max_step);
+  return advance_with(
+      series_.integ, [](double, const ContactState&, ContactState&) {}, dense_buf_, t, x);
 }
 
 // the earliest crossing of a resetting guard among the step's samples, after recording the
@@ -1151,59 +1171,60 @@ bool Simulator<N, MaxN>::end_step(Stepper& integ, System&& sys, int slot_hit, do
 // lift-off function that does not start armed (and a step whose lift-off the bound cannot rule out
 // is taken again with samples).
 template <int N, int MaxN>
-bool Simulator<N, MaxN>::series_bounded() const {
+bool Simulator<N, MaxN>::series_bounded() const requires(N == 0) {
   if (std::isfinite(opt_.friction_coefficient) || hold_tension_) return false;
   const auto lift = static_cast<std::size_t>(guard_slot(mode_, Guard::kLiftOff));
   return tension_ || (!zero_start_[lift] && s0_.v[lift] > 0.0);
 }
 
 template <int N, int MaxN>
-bool Simulator<N, MaxN>::advance_series(double& t, State& x) {
+bool Simulator<N, MaxN>::advance_series(double& t, State& x) requires(N == 0) {
   const double t_stop = std::min({t_end_, motion_.next_breakpoint(t, break_cursor_), step_stop_});
   if (!count_step(t)) return false;
   auto none = [](double, const ContactState&, ContactState&) {};
-  series_integ_.set_max_step(std::numeric_limits<double>::infinity());
-  if (series_integ_.step(none, t_stop) != RockingSeries<ContactState>::Status::kAccepted)
+  series_.integ.set_max_step(std::numeric_limits<double>::infinity());
+  if (series_.integ.step(none, t_stop) != RockingSeries<ContactState>::Status::kAccepted)
     return step_collapsed(t);
-  const double t0 = series_integ_.t0(), t1 = series_integ_.t1(), h = t1 - t0;
+  const double t0 = series_.integ.t0(), t1 = series_.integ.t1(), h = t1 - t0;
   if (opt_.progress) opt_.progress->store(t1, std::memory_order_relaxed);
   const int e = edge();
   const double sg = edge_sign(e);
   // the guards' polynomials: s theta (impact), limit - s theta (overturn), s theta_dot (peak);
   // lift-off's, F_J, below
-  const double* th = series_integ_.theta_coefficients();
-  const double* dth = series_integ_.theta_rate_coefficients();  // k c[k]
-  const int degree = series_integ_.order();
-  sp_impact_.degree = sp_overturn_.degree = degree;
-  sp_peak_.degree = degree - 1;
+  const double* th = series_.integ.theta_coefficients();
+  const double* dth = series_.integ.theta_rate_coefficients();  // k c[k]
+  const int degree = series_.integ.order();
+  series_.sp_impact.degree = series_.sp_overturn.degree = degree;
+  series_.sp_peak.degree = degree - 1;
   for (int k = 0; k <= degree; ++k) {
     const auto i = static_cast<std::size_t>(k);
-    sp_impact_.c[i] = sg * th[k];
-    sp_overturn_.c[i] = -sg * th[k];
-    if (k < degree) sp_peak_.c[i] = sg * dth[k + 1];
+    series_.sp_impact.c[i] = sg * th[k];
+    series_.sp_overturn.c[i] = -sg * th[k];
+    if (k < degree) series_.sp_peak.c[i] = sg * dth[k + 1];
   }
-  sp_overturn_.c[0] += overturn_limit_[static_cast<std::size_t>(e - 1)];
+  series_.sp_overturn.c[0] += overturn_limit_[static_cast<std::size_t>(e - 1)];
   // where the floor's pressing cannot be shown to hold throughout (a lift-off may come), the
   // step is taken again with the guards sampled, as any step of a friction-limited run: the
   // reaction's enclosure settles most steps; its series (O(order^2)) only the rest
   bool reaction = false;  // the reaction's series formed on this step (reaction_polynomials)
-  const ReactionRange range = series_integ_.reaction_range(dyn_.g_over_h(), h);
+  const ReactionRange range = series_.integ.reaction_range(dyn_.g_over_h(), h);
   if (!tension_ && !(range.fj_lo > 0.0)) {
     reaction_polynomials(h);
     reaction = true;
-    if (!(sp_fj_.c[0] - sp_fj_.excursion(h) > sp_fj_.margin) &&
-        !(bernstein_piece(sp_fj_, 0.0, h, sp_fj_.c[0]).min() > sp_fj_.margin)) {
+    if (!(series_.sp_fj.c[0] - series_.sp_fj.excursion(h) > series_.sp_fj.margin) &&
+        !(bernstein_piece(series_.sp_fj, 0.0, h, series_.sp_fj.c[0]).min() >
+          series_.sp_fj.margin)) {
       --res_.steps;
-      dense_buf_ = series_integ_.x0();
-      series_integ_.start(none, ctl_, t0, dense_buf_);
-      series_integ_.set_max_step(ctl_.max_step);
-      return advance_with(series_integ_, none, dense_buf_, t, x);
+      dense_buf_ = series_.integ.x0();
+      series_.integ.start(none, ctl_, t0, dense_buf_);
+      series_.integ.set_max_step(ctl_.max_step);
+      return advance_with(series_.integ, none, dense_buf_, t, x);
     }
   }
   // the guards at the step's end, exactly (the next step's start)
   GuardSample& se = samples_buf_[1];
   State& xe = sample_states_[1];
-  put(series_integ_.x1(), xe);
+  put(series_.integ.x1(), xe);
   evaluate(t1, xe, se);
   // how guard k stands at the step's start
   auto start_of = [&](std::size_t k) {
@@ -1223,10 +1244,10 @@ bool Simulator<N, MaxN>::advance_series(double& t, State& x) {
     int found = 0;
     switch (guard) {
       case Guard::kImpact:
-        found = polynomial_bracket(sp_impact_, 0.0, h, start, b);
+        found = polynomial_bracket(series_.sp_impact, 0.0, h, start, b);
         break;
       case Guard::kOverturn:
-        found = polynomial_bracket(sp_overturn_, 0.0, h, start, b);
+        found = polynomial_bracket(series_.sp_overturn, 0.0, h, start, b);
         break;
       case Guard::kLiftOff:
         // lift-off needs the floor to stop pressing: ruled out where the reaction's Bernstein
@@ -1252,7 +1273,7 @@ bool Simulator<N, MaxN>::advance_series(double& t, State& x) {
     GuardStart start = start_of(static_cast<std::size_t>(peak_slot));
     double a = 0.0;
     CrossingBracket b;
-    while (a < tau_end && polynomial_bracket(sp_peak_, a, tau_end, start, b) > 0) {
+    while (a < tau_end && polynomial_bracket(series_.sp_peak, a, tau_end, start, b) > 0) {
       const double tp = crossing(peak_slot, t0 + b.tl, t0 + b.tr, b.gl, b.gr);
       if (!(tp - t0 > a) || tp > t0 + tau_end) break;
       record(tp);
@@ -1262,7 +1283,7 @@ bool Simulator<N, MaxN>::advance_series(double& t, State& x) {
   }
   series_extremes(t0, tau_end, slot_hit >= 0, range, reaction);
   if (slot_hit < 0) observe(se, xe);
-  if (!end_step(series_integ_, none, slot_hit, t_hit, se, t, x)) return false;
+  if (!end_step(series_.integ, none, slot_hit, t_hit, se, t, x)) return false;
   // where the floor has come to rest (a record's or a pulse's end, start_arc), the rest of the arc
   // in closed form
   if (slot_hit < 0) {
@@ -1278,50 +1299,50 @@ bool Simulator<N, MaxN>::advance_series(double& t, State& x) {
 // with at least kPressingFraction of the weight throughout (no lift-off; F_J is a quadratic in
 // cos(phi) on the arc). Elsewhere the series steps it, as it does near those limits.
 template <int N, int MaxN>
-bool Simulator<N, MaxN>::start_arc(double t, const ContactState& x) {
+bool Simulator<N, MaxN>::start_arc(double t, const ContactState& x) requires(N == 0) {
   if (n_ != 0 || !opt_.closed_form_free_rocking || t < quiet_from_ ||
       std::isfinite(opt_.friction_coefficient) || hold_tension_)
     return false;
   const int e = edge();
   const double a = dyn_.alpha(e);
-  arc_.set_pivot(a, dyn_.inertia(a, q_), dyn_.g_over_h());
-  if (!arc_.start(t, x, edge_sign(e))) return false;
+  arc_.arc.set_pivot(a, dyn_.inertia(a, q_), dyn_.g_over_h());
+  if (!arc_.arc.start(t, x, edge_sign(e))) return false;
   // F_J over the whole arc, cos(phi) from cos(alpha_t) = 1/c to cos(phi_m) = cm
-  if (!(arc_.least_press(arc_.floor_cos(), arc_.energy_cosine()) >= kPressingFraction))
+  if (!(arc_.arc.least_press(arc_.arc.floor_cos(), arc_.arc.energy_cosine()) >= kPressingFraction))
     return false;
-  stepping_ = Stepping::kArc;
+  stepper_ = &arc_;
   return true;
 }
 
 // One step of the closed form: to the impact, or to the run's end. The peak inside is recorded;
 // the extremes are the step's ends' and its interior critical points' (arc_extremes).
 template <int N, int MaxN>
-bool Simulator<N, MaxN>::advance_arc(double& t, State& x) {
+bool Simulator<N, MaxN>::advance_arc(double& t, State& x) requires(N == 0) {
   const double t_stop = std::min({t_end_, motion_.next_breakpoint(t, break_cursor_), step_stop_});
   if (!count_step(t)) return false;
-  arc_.step(t_stop);
-  const double t0 = arc_.t0(), t1 = arc_.t1();
+  arc_.arc.step(t_stop);
+  const double t0 = arc_.arc.t0(), t1 = arc_.arc.t1();
   if (opt_.progress) opt_.progress->store(t1, std::memory_order_relaxed);
-  const double tp = arc_.peak_time();
+  const double tp = arc_.arc.peak_time();
   if (tp > t0 && tp <= t1 && guard_slot(mode_, Guard::kPeak) >= 0) {
     GuardSample s;
     state_at(tp, xr_);
-    arc_sample(tp, xr_, arc_.sin_phi_m(), arc_.energy_cosine(), s);
+    arc_sample(tp, xr_, arc_.arc.sin_phi_m(), arc_.arc.energy_cosine(), s);
     record_sample(s, xr_);
   }
   // the step's end, before the reset where the impact ends it (a point of the motion too)
   GuardSample& se = samples_buf_[1];
   State& xe = sample_states_[1];
-  put(arc_.x1(), xe);
-  const bool impact = t1 == arc_.impact_time();
+  put(arc_.arc.x1(), xe);
+  const bool impact = t1 == arc_.arc.impact_time();
   if (impact)
-    arc_sample(t1, xe, arc_.floor_sin(), arc_.floor_cos(), se);
+    arc_sample(t1, xe, arc_.arc.floor_sin(), arc_.arc.floor_cos(), se);
   else
     evaluate(t1, xe, se);
   observe(se, xe);
   arc_extremes(t0, t1);
   auto none = [](double, const ContactState&, ContactState&) {};
-  return end_step(arc_, none, impact ? guard_slot(mode_, Guard::kImpact) : -1, t1, se, t, x);
+  return end_step(arc_.arc, none, impact ? guard_slot(mode_, Guard::kImpact) : -1, t1, se, t, x);
 }
 
 // On the arc the reaction depends on phi = alpha_t - |theta| alone (theta_dot^2 by the energy):
@@ -1333,15 +1354,15 @@ bool Simulator<N, MaxN>::advance_arc(double& t, State& x) {
 // extreme. The friction demand |F_I|/F_J is bounded by max |F_I| over min F_J and searched in phi
 // only where that bound could raise it.
 template <int N, int MaxN>
-void Simulator<N, MaxN>::arc_extremes(double t0, double t1) {
+void Simulator<N, MaxN>::arc_extremes(double t0, double t1) requires(N == 0) {
   if (!(t1 > t0)) return;
   const Extremes& ex = res_.extremes;
   const double sg = edge_sign(edge());
-  const double cm = arc_.energy_cosine(), at = arc_.alpha_t();
-  const double ph0 = at - sg * arc_.x0()(0), ph1 = at - sg * arc_.x1()(0);
-  const double tp = arc_.peak_time();
+  const double cm = arc_.arc.energy_cosine(), at = arc_.arc.alpha_t();
+  const double ph0 = at - sg * arc_.arc.x0()(0), ph1 = at - sg * arc_.arc.x1()(0);
+  const double tp = arc_.arc.peak_time();
   const bool peak = tp > t0 && tp < t1;
-  const double lo = peak ? at - arc_.peak_tilt() : std::min(ph0, ph1);
+  const double lo = peak ? at - arc_.arc.peak_tilt() : std::min(ph0, ph1);
   const double hi = std::max(ph0, ph1);
   const double mg = dyn_.mass() * dyn_.g(), mgh = mg * dyn_.height();
   // sin(phi) and cos(phi) at the ends: at the peak and on the floor these are known
@@ -1350,33 +1371,33 @@ void Simulator<N, MaxN>::arc_extremes(double t0, double t1) {
     double s, c;
   };
   auto trig = [](double ph) { return Trig{std::sin(ph), std::cos(ph)}; };
-  const Trig tlo = peak ? Trig{arc_.sin_phi_m(), cm} : trig(lo);
-  const Trig thi = hi == at ? Trig{arc_.floor_sin(), arc_.floor_cos()} : trig(hi);
-  auto at_phi = [&](double ph) { observe_at(arc_.time_of(ph)); };
+  const Trig tlo = peak ? Trig{arc_.arc.sin_phi_m(), cm} : trig(lo);
+  const Trig thi = hi == at ? Trig{arc_.arc.floor_sin(), arc_.arc.floor_cos()} : trig(hi);
+  auto at_phi = [&](double ph) { observe_at(arc_.arc.time_of(ph)); };
   // phi within (lo, hi), by its cosine: cos falls on (0, pi/2)
   auto inside = [&](double cp) { return cp < tlo.c && cp > thi.c; };
   // F_I: d/dphi sin (3 cos - 2 cm) = 6 cos^2 - 2 cm cos - 3, one root in (0, pi/2)
-  double fi_max = std::max(arc_.shear(tlo.s, tlo.c), arc_.shear(thi.s, thi.c));
+  double fi_max = std::max(arc_.arc.shear(tlo.s, tlo.c), arc_.arc.shear(thi.s, thi.c));
   const double c_fi = (cm + std::sqrt(cm * cm + 18.0)) / 6.0;
   if (inside(c_fi)) {
-    const double fi = arc_.shear(std::sqrt(1.0 - c_fi * c_fi), c_fi);
+    const double fi = arc_.arc.shear(std::sqrt(1.0 - c_fi * c_fi), c_fi);
     fi_max = std::max(fi_max, fi);
     if (mg * fi > ex.max_base_shear) at_phi(std::acos(c_fi));
   }
   // the moment: its derivative cos (beta/c - lambda beta) - sin (1/c + 2 lambda) vanishes once
-  const double ph_mo = arc_.phi_moment();
+  const double ph_mo = arc_.arc.phi_moment();
   if (ph_mo > lo && ph_mo < hi) {
     const Trig t = trig(ph_mo);
-    if (mgh * arc_.moment(t.s, t.c) > ex.max_overturning_moment) at_phi(ph_mo);
+    if (mgh * arc_.arc.moment(t.s, t.c) > ex.max_overturning_moment) at_phi(ph_mo);
   }
   // the friction demand
-  const double fj_min = arc_.least_press(thi.c, tlo.c);
+  const double fj_min = arc_.arc.least_press(thi.c, tlo.c);
   const double r = ex.max_friction_demand;
   if (fj_min >= kPressingFraction && fi_max / fj_min <= r) return;
   auto demand = [&](double ph) {
     const Trig t = trig(ph);
-    const double f = arc_.press(t.c);
-    return f >= kPressingFraction ? arc_.shear(t.s, t.c) / f : 0.0;
+    const double f = arc_.arc.press(t.c);
+    return f >= kPressingFraction ? arc_.arc.shear(t.s, t.c) / f : 0.0;
   };
   const double ph_r = lo + polynomial_argmax([&](double d) { return demand(lo + d); }, hi - lo);
   if (demand(ph_r) > r) at_phi(ph_r);
@@ -1384,13 +1405,13 @@ void Simulator<N, MaxN>::arc_extremes(double t0, double t1) {
 
 // the floor reaction's and the overturning moment's series on a series step of length h
 template <int N, int MaxN>
-void Simulator<N, MaxN>::reaction_polynomials(double h) {
-  series_integ_.reaction_series(dyn_.g_over_h(), sp_fi_.c.data(), sp_fj_.c.data(),
-                                sp_moment_.c.data());
+void Simulator<N, MaxN>::reaction_polynomials(double h) requires(N == 0) {
+  series_.integ.reaction_series(dyn_.g_over_h(), series_.sp_fi.c.data(), series_.sp_fj.c.data(),
+                                series_.sp_moment.c.data());
   // the reaction's series is known to theta's power: its last two terms at h, doubled, stand for
   // the rest
-  for (StepPolynomial* p : {&sp_fi_, &sp_fj_, &sp_moment_}) {
-    p->degree = series_integ_.order();
+  for (StepPolynomial* p : {&series_.sp_fi, &series_.sp_fj, &series_.sp_moment}) {
+    p->degree = series_.integ.order();
     double hk = 1.0, tail = 0.0;
     for (int k = 0; k <= p->degree; ++k, hk *= h)
       if (k + 1 >= p->degree) tail += std::abs(p->c[static_cast<std::size_t>(k)]) * hk;
@@ -1405,7 +1426,8 @@ void Simulator<N, MaxN>::reaction_polynomials(double h) {
 // loop; where an event ends it, the state just before the reset is one of the motion's too.
 template <int N, int MaxN>
 void Simulator<N, MaxN>::series_extremes(double t0, double tau_end, bool event,
-                                         const ReactionRange& range, bool& reaction) {
+                                         const ReactionRange& range,
+                                         bool& reaction) requires(N == 0) {
   if (!(tau_end > 0.0)) return;
   const Extremes& ex = res_.extremes;
   const double mg = dyn_.mass() * dyn_.g(), mgh = mg * dyn_.height();
@@ -1431,22 +1453,23 @@ void Simulator<N, MaxN>::series_extremes(double t0, double tau_end, bool event,
   if (tension_) {
     // the floor pulls on the held pivot: its largest pull and the time it pulls, on F_J's series
     if (!reaction) {
-      reaction_polynomials(series_integ_.t1() - series_integ_.t0());
+      reaction_polynomials(series_.integ.t1() - series_.integ.t0());
       reaction = true;
     }
     constexpr int kParts = 16;
     std::array<double, kParts + 1> ts{}, fs{};
     for (int k = 0; k <= kParts; ++k) {
       ts[static_cast<std::size_t>(k)] = tau_end * k / kParts;
-      fs[static_cast<std::size_t>(k)] = sp_fj_.value(ts[static_cast<std::size_t>(k)]);
+      fs[static_cast<std::size_t>(k)] = series_.sp_fj.value(ts[static_cast<std::size_t>(k)]);
     }
-    res_.extremes.tension_time += time_negative(ts.data(), fs.data(), kParts + 1,
-                                                [&](double tau) { return sp_fj_.value(tau); });
-    if (reach.pull) at(polynomial_argmax([&](double tau) { return -sp_fj_.value(tau); }, tau_end));
+    res_.extremes.tension_time += time_negative(
+        ts.data(), fs.data(), kParts + 1, [&](double tau) { return series_.sp_fj.value(tau); });
+    if (reach.pull)
+      at(polynomial_argmax([&](double tau) { return -series_.sp_fj.value(tau); }, tau_end));
   }
   if (reach.shear || reach.moment || reach.demand) {
     if (!reaction) {
-      reaction_polynomials(series_integ_.t1() - series_integ_.t0());
+      reaction_polynomials(series_.integ.t1() - series_.integ.t0());
       reaction = true;
     }
     // F_I's and F_J's Bernstein forms serve the shear and the friction demand: formed once, where
@@ -1455,23 +1478,25 @@ void Simulator<N, MaxN>::series_extremes(double t0, double tau_end, bool event,
     bool formed = false;
     auto form = [&] {
       if (formed) return;
-      bi = bernstein_piece(sp_fi_, 0.0, tau_end, sp_fi_.c[0]);
-      bj = bernstein_piece(sp_fj_, 0.0, tau_end, sp_fj_.c[0]);
+      bi = bernstein_piece(series_.sp_fi, 0.0, tau_end, series_.sp_fi.c[0]);
+      bj = bernstein_piece(series_.sp_fj, 0.0, tau_end, series_.sp_fj.c[0]);
       formed = true;
     };
-    if (mg * sp_fi_.abs_bound(tau_end) > ex.max_base_shear) {
+    if (mg * series_.sp_fi.abs_bound(tau_end) > ex.max_base_shear) {
       form();
-      if (mg * (bi.max_abs() + sp_fi_.margin) > ex.max_base_shear)
-        at(polynomial_argmax([&](double tau) { return std::abs(sp_fi_.value(tau)); }, tau_end));
+      if (mg * (bi.max_abs() + series_.sp_fi.margin) > ex.max_base_shear)
+        at(polynomial_argmax([&](double tau) { return std::abs(series_.sp_fi.value(tau)); },
+                             tau_end));
     }
-    if (exceeds(sp_moment_, mgh, ex.max_overturning_moment))
-      at(polynomial_argmax([&](double tau) { return std::abs(sp_moment_.value(tau)); }, tau_end));
+    if (exceeds(series_.sp_moment, mgh, ex.max_overturning_moment))
+      at(polynomial_argmax([&](double tau) { return std::abs(series_.sp_moment.value(tau)); },
+                           tau_end));
     // F_I over F_J within the largest demand r so far: by the coefficients' bounds, else where
     // |F_I| - r F_J <= 0 throughout by Bernstein's (linear in the coefficients)
-    const double fj_swing = sp_fj_.excursion(tau_end) + sp_fj_.margin;
-    const double fj_lo = sp_fj_.c[0] - fj_swing, fj_hi = sp_fj_.c[0] + fj_swing;
+    const double fj_swing = series_.sp_fj.excursion(tau_end) + series_.sp_fj.margin;
+    const double fj_lo = series_.sp_fj.c[0] - fj_swing, fj_hi = series_.sp_fj.c[0] + fj_swing;
     bool within = fj_hi < kPressingFraction ||
-                  (fj_lo >= kPressingFraction && sp_fi_.abs_bound(tau_end) / fj_lo <= r);
+                  (fj_lo >= kPressingFraction && series_.sp_fi.abs_bound(tau_end) / fj_lo <= r);
     if (!within) {
       form();
       double worst = -std::numeric_limits<double>::infinity();
@@ -1479,30 +1504,32 @@ void Simulator<N, MaxN>::series_extremes(double t0, double tau_end, bool event,
         const auto k = static_cast<std::size_t>(i);
         worst = std::max(worst, std::abs(bi.b[k]) - r * bj.b[k]);
       }
-      within = worst + sp_fi_.margin + r * sp_fj_.margin <= 0.0;
+      within = worst + series_.sp_fi.margin + r * series_.sp_fj.margin <= 0.0;
     }
     if (!within)
       at(polynomial_argmax(
           [&](double tau) {
-            const double f = sp_fj_.value(tau);
-            return f >= kPressingFraction ? std::abs(sp_fi_.value(tau)) / f : 0.0;
+            const double f = series_.sp_fj.value(tau);
+            return f >= kPressingFraction ? std::abs(series_.sp_fi.value(tau)) / f : 0.0;
           },
           tau_end));
   }
-  sp_work_.degree = series_integ_.order() - 1;
-  const double* w = series_integ_.work_coefficients();
-  for (int k = 0; k <= sp_work_.degree; ++k) sp_work_.c[static_cast<std::size_t>(k)] = w[k];
-  if (exceeds(sp_work_, 1.0, rec_.energy_scale()))
-    at(polynomial_argmax([&](double tau) { return std::abs(sp_work_.value(tau)); }, tau_end));
+  series_.sp_work.degree = series_.integ.order() - 1;
+  const double* w = series_.integ.work_coefficients();
+  for (int k = 0; k <= series_.sp_work.degree; ++k)
+    series_.sp_work.c[static_cast<std::size_t>(k)] = w[k];
+  if (exceeds(series_.sp_work, 1.0, rec_.energy_scale()))
+    at(polynomial_argmax([&](double tau) { return std::abs(series_.sp_work.value(tau)); },
+                         tau_end));
 }
 
 // a flexible body in full contact under a sampled record, walked piece by piece from a record
 // sample (docs/theory.md, "Exact propagation in full contact"): true when the walk can start at t
 template <int N, int MaxN>
-bool Simulator<N, MaxN>::can_walk(double t) const {
-  if (stepping_ != Stepping::kExact || !opt_.full_contact_walk || !motion_.is_sampled())
+bool Simulator<N, MaxN>::can_walk(double t) const requires(N != 0) {
+  if (!std::holds_alternative<Exact*>(stepper_) || !opt_.full_contact_walk || !motion_.is_sampled())
     return false;
-  if (t < fine_until_ - 1e-12 * std::max(1.0, t)) return false;
+  if (t < exact_.fine_until - 1e-12 * std::max(1.0, t)) return false;
   if (tension_ || hold_tension_) return false;
   const ModeSpec& spec = mode_spec(mode_);
   for (int j = 0; j < spec.count; ++j) {
@@ -1524,7 +1551,7 @@ bool Simulator<N, MaxN>::can_walk(double t) const {
 // (locate_extremes). A quiet piece (walk_quiet: bounds on the values themselves clear every guard
 // and extreme) is not evaluated at its end at all.
 template <int N, int MaxN>
-bool Simulator<N, MaxN>::advance_walk(double& t, State& x) {
+bool Simulator<N, MaxN>::advance_walk(double& t, State& x) requires(N != 0) {
   const std::vector<double>& ts = motion_.times();
   const std::vector<double>& hx = motion_.horizontal();
   const std::vector<double>& vy = motion_.vertical();
@@ -1534,16 +1561,16 @@ bool Simulator<N, MaxN>::advance_walk(double& t, State& x) {
   if (i >= ts.size()) i = ts.size() - 1;
   while (i > 0 && ts[i] > t) --i;
   while (i + 1 < ts.size() && ts[i + 1] <= t) ++i;
-  prop_.walk_start(x);
-  xw_ = x;
+  exact_.prop.walk_start(x);
+  exact_.xw = x;
   GuardSample& sa = samples_buf_[0];
   GuardSample& sb = samples_buf_[1];
   sa = s0_;
   bool sa_due = false;  // sa is not yet evaluated at the piece's start (after a quiet piece)
-  const double cap = prop_.walk_cap();
+  const double cap = exact_.prop.walk_cap();
   for (; i + 1 < ts.size() && ts[i + 1] <= t_end_; ++i) {
     if (!count_step(t)) {
-      x = xw_;
+      x = exact_.xw;
       return false;
     }
     const double tb = ts[i + 1], span = ts[i + 1] - ts[i];
@@ -1560,31 +1587,31 @@ bool Simulator<N, MaxN>::advance_walk(double& t, State& x) {
       const double h = tp1 - tp0;
       const BaseAcceleration a0{hx[i] + slope.x * (tp0 - ts[i]),
                                 vertical ? vy[i] + slope.y * (tp0 - ts[i]) : 0.0};
-      prop_.walk_piece(h, a0, slope);
-      xe_ = xw_;
-      prop_.walk_state(xe_);
+      exact_.prop.walk_piece(h, a0, slope);
+      exact_.xe = exact_.xw;
+      exact_.prop.walk_state(exact_.xe);
       // the forcing over the piece (over g; a_y = 1 + Y''/g): max |a_x|, a_y at its ends
       const double ax = std::max(std::abs(a0.x), std::abs(a0.x + slope.x * h)) / g;
       const double ay0 = 1.0 + a0.y / g, ay1 = 1.0 + (a0.y + slope.y * h) / g;
       if (walk_quiet(ax, ay0, ay1)) {
         // no guard near zero and no extreme within reach anywhere in the piece: its end is not
         // evaluated (the energies' scale still follows the ends)
-        rec_.observe_energy(xe_(iw()), xe_(id()));
+        rec_.observe_energy(exact_.xe(iw()), exact_.xe(id()));
         emit_walk_rows(tp0, tp1);
-        xw_ = xe_;
+        exact_.xw = exact_.xe;
         sa_due = true;
         t = tp1;
         if (opt_.progress) opt_.progress->store(t, std::memory_order_relaxed);
         continue;
       }
       if (sa_due) {
-        evaluate(tp0, xw_, sa);
+        evaluate(tp0, exact_.xw, sa);
         sa_due = false;
       }
-      evaluate(tp1, xe_, sb);
+      evaluate(tp1, exact_.xe, sb);
       // the guards' excursion between the piece's ends
-      walk_forcing_ = {ax, std::max(std::abs(ay0), std::abs(ay1)), std::abs(slope.x) / g,
-                       std::abs(slope.y) / g};
+      exact_.forcing = {ax, std::max(std::abs(ay0), std::abs(ay1)), std::abs(slope.x) / g,
+                        std::abs(slope.y) / g};
       const Excursion c = walk_excursion(h);
       if (!guards_clear(sa, sb, c)) {
         // a crossing may lie in this piece: halve it until the bound clears every part or a
@@ -1593,60 +1620,61 @@ bool Simulator<N, MaxN>::advance_walk(double& t, State& x) {
         const int found = walk_search(tp0, 0.0, h, sa, sb, 40, ba, bb);
         if (found != 0) {
           scan_index_ = i;
-          fine_until_ = tb;
+          exact_.fine_until = tb;
           if (found == 1 && ba > 0.0) {
             // the stepped propagation from the bracket's start, its first step ending at the
             // bracket's end (where a guard is <= 0): it locates the crossing there
-            prop_.walk_start(xw_);
-            prop_.walk_piece(ba, a0, slope, false);
-            x = xw_;
-            prop_.walk_state(x);
+            exact_.prop.walk_start(exact_.xw);
+            exact_.prop.walk_piece(ba, a0, slope, false);
+            x = exact_.xw;
+            exact_.prop.walk_state(x);
             t = tp0 + ba;
             evaluate(t, x, s0_);
             // the extremes before the bracket, located as in a whole piece
-            xe_ = x;
+            exact_.xe = x;
             locate_extremes(tp0, ba, sa, s0_, walk_excursion(ba));
           } else {
-            x = xw_;
+            x = exact_.xw;
             s0_ = sa;
           }
           if (found == 1) step_stop_ = tp0 + bb;
-          prop_.start(t, x);
+          exact_.prop.start(t, x);
           return true;
         }
       }
       locate_extremes(tp0, h, sa, sb, c);
       emit_walk_rows(tp0, tp1);
-      observe(sb, xe_);
-      xw_ = xe_;
+      observe(sb, exact_.xe);
+      exact_.xw = exact_.xe;
       sa = sb;
       t = tp1;
       if (opt_.progress) opt_.progress->store(t, std::memory_order_relaxed);
     }
   }
   scan_index_ = i;
-  x = xw_;
-  if (sa_due) evaluate(t, xw_, sa);
+  x = exact_.xw;
+  if (sa_due) evaluate(t, exact_.xw, sa);
   s0_ = sa;
   release_latches(s0_);
-  prop_.start(t, x);
+  exact_.prop.start(t, x);
   // the rest (past the record's last sample within t_end) goes to the stepped propagation
-  fine_until_ = t_end_;
+  exact_.fine_until = t_end_;
   return true;
 }
 
 // the excursion bounds over any part of length w of the walk's piece, under its forcing
 template <int N, int MaxN>
-typename Simulator<N, MaxN>::Excursion Simulator<N, MaxN>::walk_excursion(double w) const {
-  const auto& f = walk_forcing_;
-  return prop_.walk_excursion(w, f[0], f[1], f[2], f[3]);
+typename Simulator<N, MaxN>::Excursion Simulator<N, MaxN>::walk_excursion(double w) const
+    requires(N != 0) {
+  const auto& f = exact_.forcing;
+  return exact_.prop.walk_excursion(w, f[0], f[1], f[2], f[3]);
 }
 
 // the full-contact guards over a part of the walk's piece with values sa, sb at its ends cannot
 // cross there: each stays above min(f(a), f(b)) - E > 0 (E: its excursion bound on that part)
 template <int N, int MaxN>
 bool Simulator<N, MaxN>::guards_clear(const GuardSample& sa, const GuardSample& sb,
-                                      const Excursion& e) const {
+                                      const Excursion& e) const requires(N != 0) {
   constexpr ContactMode m = ContactMode::kFullContact;
   const double mu = opt_.friction_coefficient;
   auto clear = [&](std::size_t j, double excursion) {
@@ -1664,8 +1692,8 @@ bool Simulator<N, MaxN>::guards_clear(const GuardSample& sa, const GuardSample& 
 // U_2 = alpha_2 F_J - R(0) are >= alpha_k min F_J - max|R(0)|), and every reported quantity
 // within its extreme so far
 template <int N, int MaxN>
-bool Simulator<N, MaxN>::walk_quiet(double ax, double ay0, double ay1) const {
-  const auto r = prop_.walk_reach(ax, std::min(ay0, ay1), std::max(ay0, ay1));
+bool Simulator<N, MaxN>::walk_quiet(double ax, double ay0, double ay1) const requires(N != 0) {
+  const auto r = exact_.prop.walk_reach(ax, std::min(ay0, ay1), std::max(ay0, ay1));
   const double margin = 1e-12 * (1.0 + r.fj_hi + r.moment);
   if (!(r.fj_lo > margin && dyn_.alpha1() * r.fj_lo - r.moment > margin &&
         dyn_.alpha2() * r.fj_lo - r.moment > margin))
@@ -1676,7 +1704,7 @@ bool Simulator<N, MaxN>::walk_quiet(double ax, double ay0, double ay1) const {
   if (reach.shear || reach.moment || reach.demand || reach.pull) return false;
   const Extremes& ex = res_.extremes;
   for (int j = 0; j < n_; ++j)
-    if (prop_.walk_q_reach(j) > ex.max_abs_q(j)) return false;
+    if (exact_.prop.walk_q_reach(j) > ex.max_abs_q(j)) return false;
   return true;
 }
 
@@ -1703,7 +1731,7 @@ typename Simulator<N, MaxN>::ReactionReach Simulator<N, MaxN>::reaction_reach(do
 template <int N, int MaxN>
 int Simulator<N, MaxN>::walk_search(double tp0, double a, double b, const GuardSample& sa,
                                     const GuardSample& sb, int depth, double& a_out,
-                                    double& b_out) {
+                                    double& b_out) requires(N != 0) {
   if (guards_clear(sa, sb, walk_excursion(b - a))) return 0;
   const ModeSpec& spec = mode_spec(mode_);
   for (int j = 0; j < spec.count; ++j) {
@@ -1720,31 +1748,31 @@ int Simulator<N, MaxN>::walk_search(double tp0, double a, double b, const GuardS
   }
   const double mid = 0.5 * (a + b);
   GuardSample sm;
-  xr_ = xw_;
-  prop_.walk_dense(mid, xr_);
+  xr_ = exact_.xw;
+  exact_.prop.walk_dense(mid, xr_);
   evaluate(tp0 + mid, xr_, sm);
   const int left = walk_search(tp0, a, mid, sa, sm, depth - 1, a_out, b_out);
   if (left != 0) return left;
   return walk_search(tp0, mid, b, sm, sb, depth - 1, a_out, b_out);
 }
 
-// the rows due in the walk's piece [tp0, tp1] (state xw_ at tp0, xe_ at tp1): one at the piece's
-// end from its state, others from the propagator's exact steps over the piece
+// the rows due in the walk's piece [tp0, tp1] (state exact_.xw at tp0, exact_.xe at tp1): one at
+// the piece's end from its state, others from the propagator's exact steps over the piece
 template <int N, int MaxN>
-void Simulator<N, MaxN>::emit_walk_rows(double tp0, double tp1) {
+void Simulator<N, MaxN>::emit_walk_rows(double tp0, double tp1) requires(N != 0) {
   if (opt_.output_dt <= 0.0) return;
   const double to = static_cast<double>(next_output_) * opt_.output_dt;
   if (to > tp1 || to > t_end_ * (1.0 + 1e-14)) return;
   if (to >= tp1 - 1e-12 * std::max(1.0, tp1)) {
-    emit_row(to, xe_);
+    emit_row(to, exact_.xe);
     ++next_output_;
     return;
   }
-  prop_.start(tp0, xw_);
+  exact_.prop.start(tp0, exact_.xw);
   auto none = [](double, const State&, State&) {};
-  while (prop_.t1() < tp1) {
-    prop_.step(none, tp1);
-    emit_rows_until(prop_.t1());
+  while (exact_.prop.t1() < tp1) {
+    exact_.prop.step(none, tp1);
+    emit_rows_until(exact_.prop.t1());
   }
 }
 
@@ -1754,15 +1782,16 @@ void Simulator<N, MaxN>::emit_walk_rows(double tp0, double tp1) {
 // its own value), so the extremes stay values the motion reaches
 template <int N, int MaxN>
 void Simulator<N, MaxN>::locate_extremes(double tp0, double h, const GuardSample& sa,
-                                         const GuardSample& sb, const Excursion& e) {
+                                         const GuardSample& sb,
+                                         const Excursion& e) requires(N != 0) {
   const Extremes& ex = res_.extremes;
   // which quantities might exceed their extreme within the piece: -1 none, j < n: q_j,
   // n: shear, n + 1: moment, n + 2: friction demand, n + 3: the floor's pull on a held pivot
-  std::vector<int>& wanted = wanted_;
+  std::vector<int>& wanted = exact_.wanted;
   int count = 0;
   // u_j could exceed its extreme within the excursion bound over a length w of a value `top`
   auto deformation_reach = [&](int j, double top, double w) {
-    return top + prop_.walk_q_excursion(j, w) > ex.max_abs_q(j);
+    return top + exact_.prop.walk_q_excursion(j, w) > ex.max_abs_q(j);
   };
   // the reaction's range over the points seen: the piece's ends, then its kept points too
   double fi_top = std::max(std::abs(sa.fi), std::abs(sb.fi));
@@ -1772,10 +1801,10 @@ void Simulator<N, MaxN>::locate_extremes(double tp0, double h, const GuardSample
   auto range_reach = [&](const Excursion& r) {
     return reaction_reach(fi_top + r.fi, moment_top + r.moment, fj_lo - r.fj, fj_hi + r.fj);
   };
-  ua_.noalias() = Dyn::mv(to_user_, xw_.segment(iq(), n_));
-  ub_.noalias() = Dyn::mv(to_user_, xe_.segment(iq(), n_));
+  exact_.ua.noalias() = Dyn::mv(to_user_, exact_.xw.segment(iq(), n_));
+  exact_.ub.noalias() = Dyn::mv(to_user_, exact_.xe.segment(iq(), n_));
   for (int j = 0; j < n_; ++j)
-    if (deformation_reach(j, std::max(std::abs(ua_(j)), std::abs(ub_(j))), h))
+    if (deformation_reach(j, std::max(std::abs(exact_.ua(j)), std::abs(exact_.ub(j))), h))
       wanted[static_cast<std::size_t>(count++)] = j;
   const ReactionReach reach = range_reach(e);
   if (reach.shear) wanted[static_cast<std::size_t>(count++)] = n_;
@@ -1788,17 +1817,17 @@ void Simulator<N, MaxN>::locate_extremes(double tp0, double h, const GuardSample
   const bool guards = wanted[static_cast<std::size_t>(count - 1)] >= n_;
   GuardSample s;
   auto visit = [&](double tau) {
-    prop_.walk_dense(tau, xr_);
+    exact_.prop.walk_dense(tau, xr_);
     if (!guards) return;
     evaluate(tp0 + tau, xr_, s);
     observe(s, xr_);
   };
   // the quantity `k` of the point visited last
   auto quantity = [&](int k) { return point_quantity(k, s, xr_); };
-  xr_ = xw_;
+  xr_ = exact_.xw;
   constexpr int kPoints = ContactPropagator<N, MaxN, State>::kPoints;
-  std::vector<double>& best = best_;
-  std::vector<double>& at = best_at_;
+  std::vector<double>& best = exact_.best;
+  std::vector<double>& at = exact_.best_at;
   std::fill(best.begin(), best.end(), -1.0);
   for (int p = 1; p < kPoints; ++p) {
     const double tau = h * p / kPoints;
@@ -1833,12 +1862,13 @@ void Simulator<N, MaxN>::locate_extremes(double tp0, double h, const GuardSample
     const double lo = std::max(0.0, tau - h / kPoints), hi = std::min(h, tau + h / kPoints);
     if (k < n_) {
       rec_.observe_deformation(k, best[static_cast<std::size_t>(q)]);
-      if (!deformation_reach(
-              k, std::max({best[static_cast<std::size_t>(q)], std::abs(ua_(k)), std::abs(ub_(k))}),
-              part))
+      if (!deformation_reach(k,
+                             std::max({best[static_cast<std::size_t>(q)], std::abs(exact_.ua(k)),
+                                       std::abs(exact_.ub(k))}),
+                             part))
         continue;
       auto jet = [&](double t) {
-        const std::array<double, 3> u = prop_.walk_q_jet(t, k);
+        const std::array<double, 3> u = exact_.prop.walk_q_jet(t, k);
         rec_.observe_deformation(k, std::abs(u[0]));
         return u;
       };
@@ -1979,9 +2009,10 @@ double Simulator<N, MaxN>::largest_near(Jet&& jet, double tau, double lo, double
 // (ContactPropagator::walk_q_derivatives), the base acceleration linear in the piece, and F_I/F_J
 // by the quotient rule.
 template <int N, int MaxN>
-std::array<double, 3> Simulator<N, MaxN>::guard_jet(int k, double tau) {
-  prop_.walk_q_derivatives(tau, qjet_);
-  const auto r = dyn_.full_contact_reaction_rates(qjet_, prop_.walk_base(tau), prop_.walk_slope());
+std::array<double, 3> Simulator<N, MaxN>::guard_jet(int k, double tau) requires(N != 0) {
+  exact_.prop.walk_q_derivatives(tau, exact_.qjet);
+  const auto r = dyn_.full_contact_reaction_rates(exact_.qjet, exact_.prop.walk_base(tau),
+                                                  exact_.prop.walk_slope());
   if (k == n_) return r.fi;
   if (k == n_ + 1) return r.moment;
   if (k == n_ + 3) return {-r.fj[0], -r.fj[1], -r.fj[2]};
@@ -1996,7 +2027,7 @@ std::array<double, 3> Simulator<N, MaxN>::guard_jet(int k, double tau) {
 // each sample finds every crossing and the state jumps from sample to sample; an analytic motion
 // is checked at event_samples points per max_step.
 template <int N, int MaxN>
-bool Simulator<N, MaxN>::advance_still(double& t, State& x) {
+bool Simulator<N, MaxN>::advance_still(double& t, State& x) requires(N == 0) {
   // each span checked counts as a step toward max_steps
   if (!count_step(t)) return false;
   double ta = t, tb = t;
@@ -2016,13 +2047,13 @@ bool Simulator<N, MaxN>::advance_still(double& t, State& x) {
   if (motion_.is_sampled() && scan_from_ > ta) {
     // the scan passed samples with no event on them: start from the last of them
     ta = scan_from_;
-    evaluate(ta, x_still_, smp[0]);
+    evaluate(ta, still_.x, smp[0]);
   }
   for (int k = 1; k <= samples; ++k) {
     const double tk = k == samples ? tb : ta + (tb - ta) * k / samples;
-    evaluate(tk, x_still_, smp[static_cast<std::size_t>(k)]);
+    evaluate(tk, still_.x, smp[static_cast<std::size_t>(k)]);
   }
-  still_t1_ = tb;
+  still_.t1 = tb;
   if (opt_.progress) opt_.progress->store(tb, std::memory_order_relaxed);
   double t_hit = 0.0;
   int slot_hit = -1;
@@ -2031,7 +2062,7 @@ bool Simulator<N, MaxN>::advance_still(double& t, State& x) {
   for (int k = 1; k <= samples; ++k) {
     const auto kk = static_cast<std::size_t>(k);
     if (smp[kk].t >= t_hit) break;
-    observe(smp[kk], x_still_);
+    observe(smp[kk], still_.x);
     ++points;
   }
   if (tension_) {
@@ -2039,7 +2070,7 @@ bool Simulator<N, MaxN>::advance_still(double& t, State& x) {
     std::array<double, kMaxSamples + 2> ts{}, fs{};
     GuardSample s;
     auto fj_at = [&](double tt) {
-      evaluate(tt, x_still_, s);
+      evaluate(tt, still_.x, s);
       return s.fj;
     };
     for (int p = 0; p < points; ++p) {
@@ -2062,7 +2093,7 @@ bool Simulator<N, MaxN>::advance_still(double& t, State& x) {
   }
   emit_rows_until(t_hit);
   t = t_hit;
-  x = x_still_;
+  x = still_.x;
   return fire(slot_hit, t, x);
 }
 
@@ -2070,7 +2101,7 @@ bool Simulator<N, MaxN>::advance_still(double& t, State& x) {
 // reactions into the extremes; returns the end of the first span that may hold a crossing (a
 // sample where some guard is <= 0), or the end time. scan_from_ is the span's start.
 template <int N, int MaxN>
-double Simulator<N, MaxN>::scan_record(double t) {
+double Simulator<N, MaxN>::scan_record(double t) requires(N == 0) {
   const std::vector<double>& ts = motion_.times();
   const std::vector<double>& hx = motion_.horizontal();
   const std::vector<double>& vy = motion_.vertical();
@@ -2106,34 +2137,7 @@ double Simulator<N, MaxN>::scan_record(double t) {
 // the state at t within the last step (or the still state)
 template <int N, int MaxN>
 void Simulator<N, MaxN>::state_at(double t, State& out) const {
-  switch (stepping_) {
-    case Stepping::kStill:
-      out = x_still_;
-      return;
-    case Stepping::kExact:
-      prop_.dense(t, out);
-      return;
-    case Stepping::kFlight:
-      flight_integ_.dense(t, flight_buf_);
-      put(flight_buf_, out);
-      return;
-    case Stepping::kSlide:
-      slide_integ_.dense(t, slide_buf_);
-      put(slide_buf_, out);
-      return;
-    case Stepping::kSeries:
-      series_integ_.dense(t, dense_buf_);
-      put(dense_buf_, out);
-      return;
-    case Stepping::kArc:
-      arc_.dense(t, dense_buf_);
-      put(dense_buf_, out);
-      return;
-    case Stepping::kRocking:
-      integ_.dense(t, dense_buf_);
-      put(dense_buf_, out);
-      return;
-  }
+  on_stepper([&](const auto& s) { s.state_at(*this, t, out); });
 }
 
 // ---- resets
@@ -2925,10 +2929,10 @@ void Simulator<N, MaxN>::finish(double t, const State& x) {
                                e.impact_loss + e.chatter_loss + e.friction_loss);
   e.scale = std::max({rec_.energy_scale(), std::abs(energy0_ - pot), std::abs(kin), kinetic0_,
                       impact_loss_ + chatter_loss_ + e.friction_loss});
-  res_.rejected_steps =
-      integ_.rejected_steps() + flight_integ_.rejected_steps() + slide_integ_.rejected_steps();
-  res_.rhs_evaluations =
-      integ_.rhs_evaluations() + flight_integ_.rhs_evaluations() + slide_integ_.rhs_evaluations();
+  res_.rejected_steps = rocking_.integ.rejected_steps() + flight_.integ.rejected_steps() +
+                        slide_.integ.rejected_steps();
+  res_.rhs_evaluations = rocking_.integ.rhs_evaluations() + flight_.integ.rhs_evaluations() +
+                         slide_.integ.rhs_evaluations();
   if (res_.status == Status::kCompleted) res_.message = "completed";
 }
 

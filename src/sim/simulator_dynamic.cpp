@@ -4,6 +4,12 @@
 #include "simulator.hpp"
 
 namespace flexrock::detail {
-template class Simulator<Eigen::Dynamic, 16>;
-template class Simulator<Eigen::Dynamic, Eigen::Dynamic>;
+// only the entry points: the members they reach are compiled with them, and no other (a
+// rigid body's loop has no record walk, a flexible body's no series, arc or still path)
+template Simulator<Eigen::Dynamic, 16>::Simulator(const Body&, const GroundMotion&,
+                                                  const SimulationOptions&);
+template SimulationResult Simulator<Eigen::Dynamic, 16>::run(const InitialState&);
+template Simulator<Eigen::Dynamic, Eigen::Dynamic>::Simulator(const Body&, const GroundMotion&,
+                                                              const SimulationOptions&);
+template SimulationResult Simulator<Eigen::Dynamic, Eigen::Dynamic>::run(const InitialState&);
 }  // namespace flexrock::detail

@@ -3,5 +3,8 @@
 #include "simulator.hpp"
 
 namespace flexrock::detail {
-template class Simulator<3, 3>;
+// only the entry points: the members they reach are compiled with them, and no other (a
+// rigid body's loop has no record walk, a flexible body's no series, arc or still path)
+template Simulator<3, 3>::Simulator(const Body&, const GroundMotion&, const SimulationOptions&);
+template SimulationResult Simulator<3, 3>::run(const InitialState&);
 }  // namespace flexrock::detail

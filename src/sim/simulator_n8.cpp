@@ -3,5 +3,8 @@
 #include "simulator.hpp"
 
 namespace flexrock::detail {
-template class Simulator<8, 8>;
+// only the entry points: the members they reach are compiled with them, and no other (a
+// rigid body's loop has no record walk, a flexible body's no series, arc or still path)
+template Simulator<8, 8>::Simulator(const Body&, const GroundMotion&, const SimulationOptions&);
+template SimulationResult Simulator<8, 8>::run(const InitialState&);
 }  // namespace flexrock::detail
