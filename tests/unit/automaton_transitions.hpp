@@ -77,11 +77,13 @@ inline SimulationResult run_scenario(const Scenario& s, double finer = 1.0) {
   return simulate(scenario_body(s), scenario_motion(s), init, opt);
 }
 
-/// One transition a run shows: the mode it left, the guard that fired, and the event.
+/// One transition a run shows: the mode it left, the guard that fired, the event, and the mode
+/// it led to where the history shows it (the row after the event, no other change between).
 struct Seen {
   ContactMode from;
   detail::Guard guard;
   Event event;
+  std::optional<ContactMode> to;
 };
 
 /// Event kinds that end a mode (a reset that selects the next one).
@@ -156,9 +158,51 @@ inline std::vector<Seen> transitions(const SimulationResult& r) {
     if (!clear) continue;
     const auto from = static_cast<ContactMode>(h.phase[row]);
     const auto g = guard_of(from, e);
-    if (g) out.push_back({from, *g, e});
+    if (!g) continue;
+    // the first row strictly after the event, unless another change comes first
+    std::optional<ContactMode> to;
+    const auto after = std::upper_bound(h.time.begin(), h.time.end(), e.time);
+    if (after != h.time.end()) {
+      const auto next = static_cast<std::size_t>(after - h.time.begin());
+      bool alone = true;
+      for (std::size_t j = i + 1; j < r.events.size() && alone; ++j)
+        if (r.events[j].time <= h.time[next] && changes_mode(r.events[j].kind)) alone = false;
+      if (alone) to = static_cast<ContactMode>(h.phase[next]);
+    }
+    out.push_back({from, *g, e, to});
   }
   return out;
+}
+
+/// Whether a transition from `from` by guard `g` may lead to `to`: the "next mode" column of
+/// docs/theory.md §17, written here from the table's words (pivot 0: full contact, 1 or 2: that
+/// edge, -1: flight; slip 0: sticking, +1 / -1: sliding).
+inline bool leads_where_the_table_says(ContactMode from, detail::Guard g, ContactMode to) {
+  using detail::Guard;
+  const detail::ModeSpec& a = detail::mode_spec(from);
+  const detail::ModeSpec& b = detail::mode_spec(to);
+  switch (g) {
+    case Guard::kUpliftEdge1:  // rocking on edge 1, the slip kept
+      return b.pivot == 1 && b.slip == a.slip;
+    case Guard::kUpliftEdge2:
+      return b.pivot == 2 && b.slip == a.slip;
+    case Guard::kLiftOff:
+      return to == ContactMode::kFlight;
+    case Guard::kFrictionLimit:  // the same contact, sliding
+      return b.pivot == a.pivot && b.slip != 0;
+    case Guard::kImpact:  // the other edge, or both (sticking or sliding)
+      return b.pivot == 0 || (b.pivot > 0 && b.pivot != a.pivot);
+    case Guard::kLandingEdge1:  // a corner or both down, sticking or sliding
+    case Guard::kLandingEdge2:
+      return b.pivot >= 0;
+    case Guard::kSlipStop:  // the same contact, sticking or sliding the other way
+      return b.pivot == a.pivot && (b.slip == 0 || b.slip == -a.slip);
+    case Guard::kPeak:  // recorded only
+      return to == from;
+    case Guard::kOverturn:  // terminal: no mode follows
+      return false;
+  }
+  return false;
 }
 
 }  // namespace flexrock::test
