@@ -51,3 +51,7 @@ target_include_directories(flexrock_free_rocking_arc_tests PRIVATE ${PROJECT_SOU
 target_include_directories(flexrock_rocking_series_tests PRIVATE ${PROJECT_SOURCE_DIR}/src)
 flexrock_add_test(flexrock_series_guards_tests SOURCES unit/series_guards_test.cpp LABEL unit)
 target_include_directories(flexrock_series_guards_tests PRIVATE ${PROJECT_SOURCE_DIR}/src)
+# every transition of the contact automaton fires (its table, src/sim/automaton.hpp)
+flexrock_add_test(flexrock_automaton_transitions_tests SOURCES unit/automaton_transitions_test.cpp
+                  LABEL unit)
+target_include_directories(flexrock_automaton_transitions_tests PRIVATE ${PROJECT_SOURCE_DIR}/src)
