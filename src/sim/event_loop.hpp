@@ -1,0 +1,443 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// The loop: entering a mode (the same-instant transitions as a loop), choosing and starting its
+// stepper, the one dispatch to it, the sampled step of the integrators with its guards and
+// extremes, and the state within the last step. Part of the event loop (simulator.hpp), included at
+// its end.
+#pragma once
+
+#include "simulator.hpp"
+
+namespace flexrock::detail {
+
+// enters the current mode at (t, x) and every mode the resets at that instant lead to; false when
+// the run ends here
+template <int N, int MaxN>
+bool Simulator<N, MaxN>::enter_mode(double t, State& x) {
+  bool running = true;
+  do {
+    entry_pending_ = false;
+    running = start_mode(t, x);
+  } while (running && entry_pending_);
+  return running;
+}
+
+// starts the current mode at (t, x); false when the run ends here. A guard already at or below
+// zero on entry fires at once (an uplift or lift-off that the entry state already calls for): its
+// reset requests the next entry.
+template <int N, int MaxN>
+bool Simulator<N, MaxN>::start_mode(double t, State& x) {
+  // every reset's new mode starts here, those a mode's entry state calls for at once included:
+  // contact changes piling up at one instant would loop forever, so they stop the run
+  if (t - zeno_time_ < 1e-9 * std::max(1.0, t)) {
+    if (++same_time_events_ > kSameInstantEntries) {
+      return stop(t, "contact changes accumulate at t = " + short_number(t) +
+                         " s without time advancing (Zeno behaviour) in " + to_string(mode_) +
+                         (opt_.chatter_ratio <= 0.0 ? " with the chatter cut-off disabled "
+                                                      "(chatter_ratio = 0); set chatter_ratio > 0"
+                                                    : ""));
+    }
+  } else {
+    zeno_time_ = t;
+    same_time_events_ = 0;
+  }
+  if (full_contact()) {
+    x(0) = 0.0;
+    x(ithd()) = 0.0;
+  }
+  step_stop_ = std::numeric_limits<double>::infinity();
+  stepper_ = choose_stepper();
+  // quadratures steer no step of a sticking contact mode; a slide's d, d_dot come after them
+  ctl_.controlled = flying() ? 2 * n_ + 8 : (sliding() ? -1 : 2 * n_ + 2);
+  on_stepper([&](auto& s) { s.start(*this, t, x); });
+  // an arc from the floor (after an impact) knows its reaction there
+  bool arc_from_floor = false;
+  if constexpr (N == 0) {
+    arc_from_floor = std::holds_alternative<Arc*>(stepper_) && x(0) == 0.0;
+    if (arc_from_floor) arc_sample(t, x, arc_.arc.floor_sin(), arc_.arc.floor_cos(), s0_);
+  }
+  if (!arc_from_floor) evaluate(t, x, s0_);
+  observe(s0_, x);
+  const ModeSpec& spec = mode_spec(mode_);
+  for (int j = 0; j < spec.count; ++j) {
+    const auto k = static_cast<std::size_t>(j);
+    if (zero_start_[k] && s0_.v[k] != 0.0) zero_start_[k] = false;
+  }
+  auto at_or_below = [&](Guard g) {
+    const int j = guard_slot(mode_, g);
+    return j >= 0 && !zero_start_[static_cast<std::size_t>(j)] &&
+           s0_.v[static_cast<std::size_t>(j)] <= 0.0;
+  };
+  const int lift = guard_slot(mode_, Guard::kLiftOff);
+  if (lift < 0) hold_tension_ = false;
+  if (lift < 0 || (s0_.v[static_cast<std::size_t>(lift)] > 0.0 && !hold_tension_)) tension_ = false;
+  if (at_or_below(Guard::kOverturn)) return overturned(t, x);
+  if (!tension_ && at_or_below(Guard::kLiftOff)) return lift_off(t, x);
+  // an uplift is tried before a slip (theory §20): rocking on a sticking pivot if its friction
+  // holds, else rocking with the pivot sliding if that turns the body up, else sliding flat
+  if (full_contact() && !suppress_uplift_at_start_) {
+    const bool up1 = at_or_below(Guard::kUpliftEdge1), up2 = at_or_below(Guard::kUpliftEdge2);
+    if (up1 || up2) {
+      const int e = up1 && (!up2 || s0_.v[0] <= s0_.v[1]) ? 1 : 2;
+      if (!sliding() && !uplift_holds(t, e)) {
+        suppress_uplift_at_start_ = true;  // the body slides flat instead
+        return start_slip(t, x);
+      }
+      return uplift(t, x, e);
+    }
+  }
+  suppress_uplift_at_start_ = false;
+  if (at_or_below(Guard::kFrictionLimit)) return start_slip(t, x);
+  if (at_or_below(Guard::kSlipStop)) return stick(t, x);
+  if (flying()) {
+    for (int e : {1, 2}) {
+      if (at_or_below(e == 1 ? Guard::kLandingEdge1 : Guard::kLandingEdge2))
+        return land(t, x, e, rigid_law_);
+    }
+  }
+  return true;
+}
+
+// the stepper of mode_: the cheapest that is exact or accurate for its equations (theory §17)
+template <int N, int MaxN>
+auto Simulator<N, MaxN>::choose_stepper() -> ActiveStepper {
+  if (flying()) return &flight_;
+  if (sliding()) return &slide_;
+  if constexpr (N == 0) {
+    // a rigid body in full contact does not move: no integration until it uplifts
+    if (mode_ == ContactMode::kFullContact) return &still_;
+    // the series needs a base acceleration it can expand between the steps' ends: a record's
+    // (linear), sinusoids' (a pulse's), or none
+    if (opt_.series_rocking &&
+        (motion_.is_sampled() || motion_.is_none() || motion_.is_sinusoidal()))
+      return &series_;
+  } else {
+    // a flexible body in full contact under a record: exact steps between its samples (the
+    // propagator is available for a sampled motion only)
+    if (mode_ == ContactMode::kFullContact && exact_.prop.available()) return &exact_;
+  }
+  return &rocking_;
+}
+
+// the rigid body's rocking: the closed-form arc where the floor is at rest, else the series
+template <int N, int MaxN>
+void Simulator<N, MaxN>::start_series(double t, const State& x) requires(N == 0) {
+  dense_buf_ = x.head(2 * n_ + 4);
+  if (start_arc(t, dense_buf_)) return;  // the arc needs no series
+  const int e = edge();
+  const double a = dyn_.alpha(e);
+  series_.integ.set_pivot(a, dyn_.g_over_h() / dyn_.inertia(a, q_),
+                          dyn_.mass() * dyn_.height() * dyn_.g(), dyn_.g());
+  series_.integ.start([](double, const ContactState&, ContactState&) {}, ctl_, t, dense_buf_);
+}
+
+template <int N, int MaxN>
+void Simulator<N, MaxN>::start_rocking(double t, const State& x) {
+  dense_buf_ = x.head(2 * n_ + 4);
+  configure_rocking_integrator();
+  rocking_.integ.start(
+      [this](double tt, const ContactState& xx, ContactState& dd) { contact_rhs(tt, xx, dd); },
+      ctl_, t, dense_buf_);
+}
+
+// flight and the sliding modes: DOPRI5 on the mode's own equations and state
+template <int N, int MaxN>
+template <class Ode>
+void Simulator<N, MaxN>::start_ode(Ode& ode, double t, const State& x) {
+  if constexpr (std::is_same_v<Ode, Flight>) {
+    ode.buf = x.head(2 * n_ + 8);
+  } else {
+    ode.buf.head(2 * n_ + 4) = x.head(2 * n_ + 4);
+    ode.buf.tail(3) = x.segment(isd(), 3);
+  }
+  ode.integ.start(ode_rhs(ode), ctl_, t, ode.buf);
+}
+
+template <int N, int MaxN>
+template <class Ode>
+bool Simulator<N, MaxN>::advance_ode(Ode& ode, double& t, State& x) {
+  return advance_with(ode.integ, ode_rhs(ode), ode.buf, t, x);
+}
+
+template <int N, int MaxN>
+template <class Ode>
+auto Simulator<N, MaxN>::ode_rhs(Ode&) {
+  if constexpr (std::is_same_v<Ode, Flight>)
+    return [this](double tt, const FlightState& xx, FlightState& dd) { flight_rhs(tt, xx, dd); };
+  else
+    return [this](double tt, const SlideState& xx, SlideState& dd) { slide_rhs(tt, xx, dd); };
+}
+
+template <int N, int MaxN>
+double Simulator<N, MaxN>::stepped_until() const {
+  return on_stepper([](const auto& s) { return s.stepped_until(); });
+}
+
+// a flexible body's rocking may be stiff: the explicit method's stability bound on the rocking
+// equations about the pivot (once per edge and run) lets the stepper see when stability, not
+// accuracy, holds its step. Its explicit method is DOP853 (high_order_rocking): the modes'
+// oscillation, resolved to rtol, sets the step, and the 8th order takes about a quarter of
+// DOPRI5's steps for that. Full contact and a rigid body keep DOPRI5.
+template <int N, int MaxN>
+void Simulator<N, MaxN>::configure_rocking_integrator() {
+  const auto method = static_cast<StiffMethod>(opt_.rocking_integrator);
+  if (n_ == 0 || !rocking()) {
+    rocking_.integ.configure(std::numeric_limits<double>::infinity(), StiffMethod::kExplicit);
+    return;
+  }
+  const ExplicitMethod explicit_method =
+      opt_.high_order_rocking ? ExplicitMethod::kDop853 : ExplicitMethod::kDopri5;
+  double& h = rocking_.h_stable[static_cast<std::size_t>(edge() - 1)];
+  if (h < 0.0 && method == StiffMethod::kAuto)
+    h = rocking_stable_step(body_, edge(), explicit_method) / opt_.stiff_switch_scale;
+  rocking_.integ.configure(h, method, explicit_method);
+}
+
+// one accepted step plus whatever happens in it; false when the run ends
+template <int N, int MaxN>
+bool Simulator<N, MaxN>::advance(double& t, State& x) {
+  return on_stepper([&](auto& s) { return s.advance(*this, t, x); });
+}
+
+template <int N, int MaxN>
+bool Simulator<N, MaxN>::advance_rocking(double& t, State& x) {
+  auto sys = [this](double tt, const ContactState& xx, ContactState& dd) {
+    contact_rhs(tt, xx, dd);
+  };
+  return advance_with(rocking_.integ, sys, dense_buf_, t, x);
+}
+
+template <int N, int MaxN>
+bool Simulator<N, MaxN>::advance_exact(double& t, State& x) requires(N != 0) {
+  // the exact propagator takes no right-hand side
+  if (t >= step_stop_) step_stop_ = std::numeric_limits<double>::infinity();
+  if (can_walk(t)) return advance_walk(t, x);
+  return advance_with(
+      exact_.prop, [](double, const State&, State&) {}, exact_.buf, t, x);
+}
+
+template <int N, int MaxN>
+bool Simulator<N, MaxN>::advance_series_step(double& t, State& x) requires(N == 0) {
+  if (series_bounded()) return advance_series(t, x);
+  series_.integ.set_max_step(ctl_.max_step);
+  return advance_with(
+      series_.integ, [](double, const ContactState&, ContactState&) {}, dense_buf_, t, x);
+}
+
+// the earliest crossing of a resetting guard among the step's samples, after recording the
+// non-resetting ones before it; false when none
+template <int N, int MaxN>
+bool Simulator<N, MaxN>::step_guards(int samples, double t1, double& t_hit, int& slot_hit) {
+  const ModeSpec& spec = mode_spec(mode_);
+  t_hit = std::numeric_limits<double>::infinity();
+  slot_hit = -1;
+  std::array<double, kMaxGuards> when;
+  when.fill(std::numeric_limits<double>::infinity());
+  for (int j = 0; j < spec.count; ++j) {
+    const auto k = static_cast<std::size_t>(j);
+    const GuardSpec& g = guard_spec(spec.guards[k]);
+    if (g.guard == Guard::kPeak && !rocking()) continue;
+    if (g.guard == Guard::kLiftOff && tension_) continue;
+    // without a friction limit its guard is the constant 1 (evaluate): it never crosses
+    if (g.guard == Guard::kFrictionLimit && !std::isfinite(opt_.friction_coefficient)) continue;
+    when[k] = first_crossing(j, samples_buf_.data(), samples, zero_start_[k], g.fires_if_unresolved,
+                             *this);
+    if (g.reset != Reset::kRecord && when[k] < t_hit) {
+      t_hit = when[k];
+      slot_hit = j;
+    }
+  }
+  for (int j = 0; j < spec.count; ++j) {
+    const auto k = static_cast<std::size_t>(j);
+    if (guard_spec(spec.guards[k]).reset == Reset::kRecord && when[k] <= std::min(t_hit, t1))
+      record(when[k]);
+  }
+  return slot_hit >= 0;
+}
+
+template <int N, int MaxN>
+bool Simulator<N, MaxN>::count_step(double t) {
+  if (++res_.steps <= opt_.max_steps) return true;
+  return stop(t,
+              "step limit reached (" + std::to_string(opt_.max_steps) + " steps; raise max_steps)");
+}
+
+template <int N, int MaxN>
+bool Simulator<N, MaxN>::step_collapsed(double t) {
+  // the step limit is relative (min_step x max(1 s, t)); while rocking the usual cause is
+  // impacts accumulating with the chatter cut-off disabled, so the message says so
+  const double h_min = ctl_.min_step * std::max(1.0, std::abs(t));
+  const std::string cause =
+      rocking() && opt_.chatter_ratio <= 0.0
+          ? "impacts accumulating while rocking with the chatter cut-off disabled "
+            "(chatter_ratio = 0); set chatter_ratio > 0"
+          : "the equations became too stiff or singular; loosen rtol/atol or check the body";
+  return stop(t, "integration step collapsed below " + short_number(h_min) + " s near t = " +
+                     short_number(t) + " s in " + to_string(mode_) + " (" + cause + ")");
+}
+
+// the step of `integ` (the integrator, or the exact propagator in full contact)
+template <int N, int MaxN>
+template <class Stepper, class System, class Buffer>
+bool Simulator<N, MaxN>::advance_with(Stepper& integ, System&& sys, Buffer& buf, double& t,
+                                      State& x) {
+  const double t_stop = std::min({t_end_, motion_.next_breakpoint(t, break_cursor_), step_stop_});
+  if (!count_step(t)) return false;
+  const auto status = integ.step(sys, t_stop);
+  if (status != std::remove_cv_t<decltype(status)>::kAccepted) return step_collapsed(t);
+  if (slide_inconsistent_)
+    return stop(t, "no consistent slide near t = " + short_number(t) + " s in " + to_string(mode_) +
+                       ": Coulomb friction with this coefficient would need the floor to push the "
+                       "slip forward (Painleve's paradox; docs/theory.md, \"Sliding\")");
+  const double t0 = integ.t0(), t1 = integ.t1();
+  if (opt_.progress) opt_.progress->store(t1, std::memory_order_relaxed);
+  // sample the guards across the step, keeping the states for the extremes
+  auto& smp = samples_buf_;
+  smp[0] = s0_;
+  for (int k = 1; k <= samples_; ++k) {
+    const double tk = k == samples_ ? t1 : t0 + (t1 - t0) * k / samples_;
+    State& xk = sample_states_[static_cast<std::size_t>(k)];
+    if (k == samples_) {
+      put(integ.x1(), xk);
+    } else {
+      integ.dense(tk, buf);
+      put(buf, xk);
+    }
+    evaluate(tk, xk, smp[static_cast<std::size_t>(k)]);
+  }
+  double t_hit = 0.0;
+  int slot_hit = -1;
+  const bool hit = step_guards(samples_, t1, t_hit, slot_hit);
+  // extremes from the samples that precede any state change and from the state just before it,
+  // then located between them
+  if (n_ > 0) qu_.noalias() = Dyn::mv(to_user_, x.segment(iq(), n_));
+  keep_point(0, t0, s0_, qu_);
+  int points = 1;
+  for (int k = 1; k <= samples_; ++k) {
+    const auto kk = static_cast<std::size_t>(k);
+    if (smp[kk].t >= t_hit) break;
+    observe(smp[kk], sample_states_[kk]);  // leaves u in qu_
+    keep_point(points++, smp[kk].t, smp[kk], qu_);
+  }
+  if (hit && t_hit > point_t_[static_cast<std::size_t>(points - 1)]) {
+    GuardSample before;
+    state_at(t_hit, xr_);
+    evaluate(t_hit, xr_, before);
+    observe(before, xr_);
+    keep_point(points++, t_hit, before, qu_);
+  }
+  locate_step_extremes(points);
+  // an analytic motion may jump at a breakpoint: start the next step from its right limit
+  if (!hit && t1 == t_stop && t1 < t_end_ && !motion_.is_sampled())
+    integ.refresh_derivative(sys, std::nextafter(t1, t_end_));
+  return end_step(integ, sys, slot_hit, t_hit, smp[static_cast<std::size_t>(samples_)], t, x);
+}
+
+// a step's end: with no event (slot_hit < 0) the state moves to the step's end, whose guards are
+// s_end; else the step is cut at the event, which fires
+template <int N, int MaxN>
+template <class Stepper, class System>
+bool Simulator<N, MaxN>::end_step(Stepper& integ, System&& sys, int slot_hit, double t_hit,
+                                  const GuardSample& s_end, double& t, State& x) {
+  if (slot_hit < 0) {
+    emit_rows_until(integ.t1());
+    t = integ.t1();
+    put(integ.x1(), x);
+    s0_ = s_end;
+    zero_start_.fill(false);
+    release_latches(s0_);
+    return true;
+  }
+  // land exactly on the event and act on it
+  const bool inside = t_hit > integ.t0();
+  if (inside) integ.restep_to(sys, t_hit);
+  emit_rows_until(t_hit);
+  t = t_hit;
+  put(inside ? integ.x1() : integ.x0(), x);
+  return fire(slot_hit, t, x);
+}
+
+template <int N, int MaxN>
+void Simulator<N, MaxN>::keep_point(int p, double t, const GuardSample& s, const Vec& u) {
+  const auto pp = static_cast<std::size_t>(p);
+  point_t_[pp] = t;
+  Quantities& v = point_vals_[pp];
+  if constexpr (N == Eigen::Dynamic)
+    v.head(n_) = u.array().abs();
+  else if constexpr (N != 0)
+    v.template head<N>() = u.array().abs();
+  v(n_) = std::abs(s.fi);
+  v(n_ + 1) = std::abs(s.moment);
+  v(n_ + 2) = friction_demand(s);
+  v(n_ + 3) = pull_of(s);
+  point_pressing_[pp] = s.fj >= kPressingFraction;
+  point_fj_[pp] = s.fj;
+}
+
+template <int N, int MaxN>
+inline double Simulator<N, MaxN>::point_quantity(int k, const GuardSample& s,
+                                                 const State& x) const {
+  if (k < n_) {
+    if constexpr (N != 0) return std::abs(to_user_.row(k).dot(x.segment(iq(), n_)));
+  }
+  if (k == n_) return std::abs(s.fi);
+  if (k == n_ + 1) return std::abs(s.moment);
+  if (k == n_ + 2) return friction_demand(s);
+  return pull_of(s);
+}
+
+template <int N, int MaxN>
+double Simulator<N, MaxN>::step_quantity(int k, double t) {
+  state_at(t, xr_);
+  GuardSample s;
+  if (k >= n_) evaluate(t, xr_, s);  // a deformation needs the state alone
+  return point_quantity(k, s, xr_);
+}
+
+// A step's quantities (|u_j|, |F_I|, |moment|, friction demand) peak between its observed points:
+// located by locate_peaks_between (step_extremes.hpp), each value through the guards' own
+// evaluation and each peak observed (evaluate() there, every quantity folded)
+template <int N, int MaxN>
+void Simulator<N, MaxN>::locate_step_extremes(int points) {
+  // the time the floor pulls on the held pivot, its sign changes between the points located
+  if (tension_) {
+    GuardSample s;
+    res_.extremes.tension_time +=
+        time_negative(point_t_.data(), point_fj_.data(), points, [&](double t) {
+          state_at(t, xr_);
+          evaluate(t, xr_, s);
+          return s.fj;
+        });
+  }
+  // the friction demand counts only while the floor presses with kPressingFraction of the weight,
+  // and rises toward that limit before the floor lets go: its peak lies at the switch
+  for (int p = 1; p < points; ++p) {
+    const auto pp = static_cast<std::size_t>(p);
+    const bool pressed_before = point_pressing_[pp - 1];
+    if (pressed_before == point_pressing_[pp]) continue;
+    GuardSample s;
+    observe_at(bisect_switch(point_t_[pp - 1], point_t_[pp], pressed_before, [&](double t) {
+      state_at(t, xr_);
+      evaluate(t, xr_, s);
+      return s.fj >= kPressingFraction;
+    }));
+  }
+  if (points < 3) return;
+  const Extremes& ex = res_.extremes;
+  const double mg = dyn_.mass() * dyn_.g(), mgh = mg * dyn_.height();
+  if constexpr (N != 0) point_extreme_.head(n_) = ex.max_abs_q.array();
+  point_extreme_(n_) = ex.max_base_shear / mg;
+  point_extreme_(n_ + 1) = ex.max_overturning_moment / mgh;
+  point_extreme_(n_ + 2) = ex.max_friction_demand;
+  point_extreme_(n_ + 3) = ex.max_pivot_pull / mg;
+  locate_peaks_between(
+      point_t_.data(), point_vals_.data(), points, point_extreme_,
+      [this](int k, double t) { return step_quantity(k, t); }, [this](double t) { observe_at(t); });
+}
+
+// the state at t within the last step (or the still state)
+template <int N, int MaxN>
+void Simulator<N, MaxN>::state_at(double t, State& out) const {
+  on_stepper([&](const auto& s) { s.state_at(*this, t, out); });
+}
+
+}  // namespace flexrock::detail
