@@ -486,8 +486,7 @@ int StudyCommands::Impl::run_fragility() {
     states.push_back({outcome, outcome, level});
   }
   if (!(confidence > 0.0 && confidence < 1.0)) {
-    throw InputError("--confidence: expected a number in (0, 1), got " +
-                     std::to_string(confidence));
+    throw InputError("--confidence: expected a number in (0, 1), got " + format_number(confidence));
   }
   // a multiple-stripe analysis: the stripes are the sweep's levels
   if (analysis == "msa") {
