@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "bindings.hpp"
+#include "flexrock/core/enum_names.hpp"
 #include "flexrock/core/error.hpp"
 #include "flexrock/excitation/intensity.hpp"
 #include "flexrock/io/study_files.hpp"
@@ -69,17 +70,13 @@ auto interruptible(int threads, Work work) {
   return done.get();
 }
 
-const char* type_name(io::ColumnType t) {
-  switch (t) {
-    case io::ColumnType::kInteger:
-      return "integer";
-    case io::ColumnType::kReal:
-      return "real";
-    case io::ColumnType::kText:
-      break;
-  }
-  return "text";
-}
+constexpr EnumName<io::ColumnType> kColumnTypeNames[] = {
+    {io::ColumnType::kInteger, "integer"},
+    {io::ColumnType::kReal, "real"},
+    {io::ColumnType::kText, "text"},
+};
+
+const char* type_name(io::ColumnType t) { return name_of(kColumnTypeNames, t, "text"); }
 
 // rows as numpy arrays, one per column of a study's table, of the column's type: int64, float64
 // (a value the CSV leaves empty, not finite, is nan) or str objects

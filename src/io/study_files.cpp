@@ -70,12 +70,7 @@ double real(const Value& v) { return std::get<double>(v); }
 const std::string& text(const Value& v) { return std::get<std::string>(v); }
 
 std::optional<study::Outcome> outcome_named(std::string_view name) {
-  // every value of the enumeration, so that a new outcome needs no change here
-  for (int k = 0; k < 64; ++k) {
-    const auto o = static_cast<study::Outcome>(k);
-    if (name == study::to_string(o)) return o;
-  }
-  return std::nullopt;
+  return value_named(study::kOutcomeNames, name);
 }
 
 std::optional<Status> status_named(std::string_view name) {
@@ -86,11 +81,7 @@ std::optional<Status> status_named(std::string_view name) {
 }
 
 std::optional<study::Regime> regime_named(std::string_view name) {
-  for (const auto r : {study::Regime::kNone, study::Regime::kSliding, study::Regime::kRocking,
-                       study::Regime::kSlidingRocking}) {
-    if (name == study::to_string(r)) return r;
-  }
-  return std::nullopt;
+  return value_named(study::kRegimeNames, name);
 }
 
 study::Outcome outcome_value(const Value& v) {

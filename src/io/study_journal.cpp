@@ -272,13 +272,12 @@ JournalCheck spectrum_journal_check(const study::SpectrumResult& grid, bool norm
       return "its first fields are not those of the boundary of column " + std::to_string(j) +
              " (" + expected + ")";
     }
-    const std::string_view kind = f[bf.kind];
-    const bool none = kind == "none";
-    if (!none && kind != "found" && kind != "below_grid") {
-      return "unknown kind \"" + std::string(kind) + "\"";
-    }
+    using Kind = study::OverturnBoundary::Kind;
+    const std::optional<Kind> kind = value_named(study::kBoundaryKindNames, f[bf.kind]);
+    if (!kind) return "unknown kind \"" + std::string(f[bf.kind]) + "\"";
+    const bool none = *kind == Kind::kNone;
     for (const std::size_t k : {bf.min, bf.safe, bf.min_si, bf.min_norm}) {
-      const bool empty_ok = none || (k == bf.safe && kind == "below_grid");
+      const bool empty_ok = none || (k == bf.safe && *kind == Kind::kBelowGrid);
       if (!(is_number(f[k]) || (empty_ok && f[k].empty()))) {
         return "field " + std::to_string(k + 1) + " is not a number";
       }

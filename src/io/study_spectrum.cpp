@@ -318,14 +318,9 @@ const BoundaryColumn kBoundaryColumns[] = {
      ColumnType::kText,
      [](const BoundaryContext&, const Boundary& b) -> Value { return study::to_string(b.kind); },
      [](Boundary& b, const Value& v) {
-       for (const auto k :
-            {Boundary::Kind::kFound, Boundary::Kind::kBelowGrid, Boundary::Kind::kNone}) {
-         if (text(v) == study::to_string(k)) {
-           b.kind = k;
-           return;
-         }
-       }
-       throw InputError("unknown kind \"" + text(v) + "\"");
+       const std::optional<Boundary::Kind> k = value_named(study::kBoundaryKindNames, text(v));
+       if (!k) throw InputError("unknown kind \"" + text(v) + "\"");
+       b.kind = *k;
      }},
     {"min_overturning", "grid",
      "the upper end of the bracket: an amplitude shown to overturn, as the grid holds it "

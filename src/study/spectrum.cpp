@@ -134,18 +134,6 @@ const PulseKind& spectrum_kind(const std::string& type) {
 }
 }  // namespace
 
-const char* to_string(OverturnBoundary::Kind k) {
-  switch (k) {
-    case OverturnBoundary::Kind::kFound:
-      return "found";
-    case OverturnBoundary::Kind::kBelowGrid:
-      return "below_grid";
-    case OverturnBoundary::Kind::kNone:
-      return "none";
-  }
-  return "unknown";
-}
-
 double pulse_length(const std::string& type, double omega_p) {
   return spectrum_kind(type).length(omega_p);
 }
