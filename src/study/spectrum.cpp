@@ -9,6 +9,7 @@
 
 #include "flexrock/core/error.hpp"
 #include "flexrock/core/format.hpp"
+#include "flexrock/excitation/intensity.hpp"
 #include "flexrock/excitation/pulses.hpp"
 #include "flexrock/study/sweep.hpp"
 
@@ -218,9 +219,9 @@ SpectrumResult record_spectrum_grid(const Body& body, const RecordSpectrumSpec& 
   } catch (const InputError& e) {
     throw InputError(std::string("spectrum: [solver] ") + e.what());
   }
-  double peak = 0.0;  // the scaled record must stay finite
-  for (const double a : spec.motion.horizontal()) peak = std::max(peak, std::abs(a));
-  for (const double a : spec.motion.vertical()) peak = std::max(peak, std::abs(a));
+  // the scaled record must stay finite
+  const BaseAcceleration pk = peak_acceleration(spec.motion);
+  const double peak = std::max(pk.x, pk.y);
   FLEXROCK_THROW_UNLESS(
       std::isfinite(peak * spec.scales.back()),
       "spectrum: scales: the record scaled by " + format_number(spec.scales.back()) + " overflows");

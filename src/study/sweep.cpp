@@ -239,10 +239,8 @@ void validate(const SweepSpec& spec) {
     FLEXROCK_THROW_UNLESS(r.motion.duration() > 0.0,
                           "sweep: record '" + r.name + "': expected a record lasting > 0 s");
     im.push_back(record_intensity(spec, r.motion));
-    double p = 0.0;
-    for (const double a : r.motion.horizontal()) p = std::max(p, std::abs(a));
-    for (const double a : r.motion.vertical()) p = std::max(p, std::abs(a));
-    peak.push_back(p);
+    const BaseAcceleration p = peak_acceleration(r.motion);
+    peak.push_back(std::max(p.x, p.y));
     if (spec.scale_kind == ScaleKind::kTargetPga) {
       FLEXROCK_THROW_UNLESS(
           im.back().pga > 0.0,
