@@ -85,8 +85,43 @@ CsvTable read_csv_table(const std::string& path) {
   return t;
 }
 
+const FragilityOutcomeInfo& fragility_outcome(FragilityOutcome outcome) {
+  for (const FragilityOutcomeInfo& o : kFragilityOutcomes) {
+    if (o.outcome == outcome) return o;
+  }
+  FLEXROCK_DEMAND(false);
+  return kFragilityOutcomes[0];
+}
+
+const FragilityOutcomeInfo* find_fragility_outcome(std::string_view name) {
+  for (const FragilityOutcomeInfo& o : kFragilityOutcomes) {
+    if (name == o.name) return &o;
+  }
+  return nullptr;
+}
+
+namespace {
+
+// the measures every sweep writes: kind, name, column, unit
+struct FixedMeasure {
+  FragilityMeasureKind kind;
+  const char* name;
+  const char* column;
+  const char* unit;
+};
+constexpr FixedMeasure kFixedMeasures[] = {
+    {FragilityMeasureKind::kPga, "pga", "pga_m_per_s2", "m/s^2"},
+    {FragilityMeasureKind::kPgaG, "pga_g", "pga_g", "g"},
+    {FragilityMeasureKind::kPgv, "pgv", "pgv_m_per_s", "m/s"},
+    {FragilityMeasureKind::kScale, "scale", "scale", "-"},
+    {FragilityMeasureKind::kRequestedLevel, "requested_level", "requested_level", "-"},
+};
+
+}  // namespace
+
 std::vector<std::string> fragility_measures() {
-  std::vector<std::string> v = {"pga", "pga_g", "pgv", "scale", "requested_level"};
+  std::vector<std::string> v;
+  for (const FixedMeasure& m : kFixedMeasures) v.emplace_back(m.name);
   for (const IntensityMeasure& m : intensity_measures()) {
     if (m.always_written) continue;
     v.push_back(m.needs_period ? std::string(m.name) + ":T[:zeta]" : std::string(m.name));
@@ -94,59 +129,62 @@ std::vector<std::string> fragility_measures() {
   return v;
 }
 
-std::string fragility_im_column(const std::string& im) {
-  static const std::pair<const char*, const char*> kFixed[] = {
-      {"pga", "pga_m_per_s2"},
-      {"pga_g", "pga_g"},
-      {"pgv", "pgv_m_per_s"},
-      {"scale", "scale"},
-      {"requested_level", "requested_level"}};
-  for (const auto& [name, column] : kFixed) {
-    if (im == name) return column;
+FragilityMeasure fragility_measure(const std::string& im) {
+  FragilityMeasure out;
+  out.name = im;
+  for (const FixedMeasure& m : kFixedMeasures) {
+    if (im == m.name) {
+      out.kind = m.kind;
+      out.column = m.column;
+      out.unit = m.unit;
+      return out;
+    }
   }
-  auto bad = [&](const std::string& why) -> std::string {
+  auto bad = [&](const std::string& why) {
     throw InputError("fragility: intensity measure '" + im + "': " + why +
                      "expected one of: " + join(fragility_measures()));
   };
-  study::MeasureRequest m;
   try {
-    m = study::measure_request(im);
+    out.request = study::measure_request(im);
   } catch (const InputError& e) {
     bad(std::string(e.what()) + "; ");
   }
-  const IntensityMeasure* k = find_intensity_measure(m.name);
+  const IntensityMeasure* k = find_intensity_measure(out.request.name);
   if (k->always_written) bad("");
-  return study::measure_column(m);
+  out.kind = FragilityMeasureKind::kIntensity;
+  out.column = study::measure_column(out.request);
+  out.unit = k->unit;
+  return out;
 }
 
-std::vector<FragilityData> fragility_data(const CsvTable& t, const FragilityQuery& q) {
-  check_sweep_table(t);
-  const std::string im_col = fragility_im_column(q.im);
+std::string fragility_im_column(const std::string& im) { return fragility_measure(im).column; }
+
+namespace {
+
+// the observations of a checked table: `outcome` null for a name no row of kFragilityOutcomes
+// has (`outcome_name`), refused after the measure's column is found
+std::vector<FragilityData> observations(const CsvTable& t, const FragilityMeasure& m,
+                                        const FragilityOutcomeInfo* outcome,
+                                        const std::string& outcome_name, double level,
+                                        const std::string& body_name) {
+  const std::string& im_col = m.column;
   if (std::find(t.columns.begin(), t.columns.end(), im_col) == t.columns.end()) {
-    throw InputError(t.source + ":1: intensity measure '" + q.im + "' needs the column '" + im_col +
+    throw InputError(t.source + ":1: intensity measure '" + m.name + "' needs the column '" +
+                     im_col +
                      "', which this sweep did not write: name it in the manifest's [intensity] "
                      "table (docs/studies.md) and run the sweep again");
   }
-  std::string out_col;
-  if (q.outcome == "overturned") {
-    out_col = "overturned";
-  } else if (q.outcome == "uplift") {
-    out_col = "outcome";
-  } else if (q.outcome == "theta") {
-    out_col = "max_theta_over_alpha";
-  } else if (q.outcome == "energy") {
-    out_col = "energy_lost_J";
-  } else if (q.outcome == "offset" || q.outcome == "residual_offset") {
-    out_col = q.outcome == "offset" ? "max_offset_m" : "final_offset_m";
-    if (std::find(t.columns.begin(), t.columns.end(), out_col) == t.columns.end()) {
-      throw InputError(t.source + ":1: outcome '" + q.outcome + "' needs the column '" + out_col +
-                       "', which a sweep writes only with a finite friction coefficient "
-                       "(docs/studies.md); this file has none");
-    }
-  } else {
-    throw InputError(
-        "fragility: outcome '" + q.outcome +
-        "': expected one of: overturned, uplift, theta, energy, offset, residual_offset");
+  if (!outcome) {
+    std::vector<std::string> names;
+    for (const FragilityOutcomeInfo& o : kFragilityOutcomes) names.emplace_back(o.name);
+    throw InputError("fragility: outcome '" + outcome_name + "': expected one of: " + join(names));
+  }
+  const std::string out_col = outcome->column;
+  if (outcome->sliding &&
+      std::find(t.columns.begin(), t.columns.end(), out_col) == t.columns.end()) {
+    throw InputError(t.source + ":1: outcome '" + outcome_name + "' needs the column '" + out_col +
+                     "', which a sweep writes only with a finite friction coefficient "
+                     "(docs/studies.md); this file has none");
   }
   const std::size_t cr = static_cast<std::size_t>(
       std::find(t.columns.begin(), t.columns.end(), "record") - t.columns.begin());
@@ -165,7 +203,7 @@ std::vector<FragilityData> fragility_data(const CsvTable& t, const FragilityQuer
   std::vector<FragilityData> out;
   for (std::size_t r = 0; r < t.rows.size(); ++r) {
     const std::string& body = t.rows[r][cb];
-    if (!q.body.empty() && body != q.body) continue;
+    if (!body_name.empty() && body != body_name) continue;
     auto it = std::find_if(out.begin(), out.end(),
                            [&](const FragilityData& d) { return d.body == body; });
     if (it == out.end()) {
@@ -174,22 +212,23 @@ std::vector<FragilityData> fragility_data(const CsvTable& t, const FragilityQuer
     }
     // not classified: the run could not go on (`contact_lost`: rows written before the engine
     // followed flight)
-    const std::string& outcome = t.rows[r][cs];
-    if (outcome == "stopped" || outcome == "contact_lost") {
+    const std::string& run_outcome = t.rows[r][cs];
+    if (run_outcome == study::to_string(study::Outcome::kStopped) ||
+        run_outcome == "contact_lost") {
       ++it->excluded;
       continue;
     }
     const double x = number(r, ci);
     int y = 0;
-    if (q.outcome == "overturned") {
+    if (outcome->outcome == FragilityOutcome::kOverturned) {
       y = number(r, co) != 0.0 ? 1 : 0;
-    } else if (q.outcome == "uplift") {
+    } else if (outcome->outcome == FragilityOutcome::kUplift) {
       // every class but no_uplift left full contact (rocked, or overturned)
-      y = outcome != "no_uplift" ? 1 : 0;
+      y = run_outcome != study::to_string(study::Outcome::kNoUplift) ? 1 : 0;
     } else {
       // an overturned body exceeds every tilt, energy and offset level; a residual offset counts
       // either way
-      y = (number(r, cv) != 0.0 || std::abs(number(r, co)) > q.level) ? 1 : 0;
+      y = (number(r, cv) != 0.0 || std::abs(number(r, co)) > level) ? 1 : 0;
     }
     it->im.push_back(x);
     it->failed.push_back(y);
@@ -198,9 +237,24 @@ std::vector<FragilityData> fragility_data(const CsvTable& t, const FragilityQuer
   if (out.empty()) {
     throw InputError(
         t.source + ": " +
-        (q.body.empty() ? std::string("no rows") : "no rows of body '" + q.body + "'"));
+        (body_name.empty() ? std::string("no rows") : "no rows of body '" + body_name + "'"));
   }
   return out;
+}
+
+}  // namespace
+
+std::vector<FragilityData> fragility_data(const CsvTable& t, const FragilityQuery& q) {
+  check_sweep_table(t);
+  return observations(t, fragility_measure(q.im), find_fragility_outcome(q.outcome), q.outcome,
+                      q.level, q.body);
+}
+
+std::vector<FragilityData> fragility_data(const CsvTable& t, const FragilityMeasure& measure,
+                                          const DamageState& state, const std::string& body) {
+  check_sweep_table(t);
+  const FragilityOutcomeInfo& o = fragility_outcome(state.outcome);
+  return observations(t, measure, &o, o.name, state.level, body);
 }
 
 namespace {
@@ -279,23 +333,24 @@ std::string fragility_state_row(const FragilityData& d, const study::FragilityFi
 
 DamageState damage_state(const std::string& text) {
   const std::size_t colon = text.find(':');
+  // "expected overturned, uplift, theta:X (...), ... or residual_offset:X (...), X a number > 0"
+  std::string expected = "expected ";
+  for (const FragilityOutcomeInfo& o : kFragilityOutcomes) {
+    if (&o != kFragilityOutcomes)
+      expected += &o == std::end(kFragilityOutcomes) - 1 ? " or " : ", ";
+    expected += o.state_doc;
+  }
+  expected += ", X a number > 0";
+  const FragilityOutcomeInfo* o = find_fragility_outcome(text.substr(0, colon));
+  if (!o) throw InputError("--state '" + text + "': " + expected);
   DamageState s;
   s.label = text;
-  s.outcome = text.substr(0, colon);
-  const bool levelled = s.outcome == "theta" || s.outcome == "energy" || s.outcome == "offset" ||
-                        s.outcome == "residual_offset";
-  const std::string expected =
-      "expected overturned, uplift, theta:X (max theta/alpha > X), energy:X (energy lost > X J), "
-      "offset:X (peak sliding offset > X m) or residual_offset:X (|residual offset| > X m), X a "
-      "number > 0";
-  if (!levelled && !(s.outcome == "overturned" || s.outcome == "uplift")) {
-    throw InputError("--state '" + text + "': " + expected);
+  s.outcome = o->outcome;
+  if (o->levelled != (colon != std::string::npos)) {
+    throw InputError("--state '" + text + "': " +
+                     (o->levelled ? "a level is missing; " : "takes no level; ") + expected);
   }
-  if (levelled != (colon != std::string::npos)) {
-    throw InputError("--state '" + text +
-                     "': " + (levelled ? "a level is missing; " : "takes no level; ") + expected);
-  }
-  if (levelled) {
+  if (o->levelled) {
     const std::string level = text.substr(colon + 1);
     const auto r = std::from_chars(level.data(), level.data() + level.size(), s.level);
     if (level.empty() || r.ec != std::errc() || r.ptr != level.data() + level.size() ||
