@@ -1372,6 +1372,23 @@ def body_kinds() -> list[BodyKind]:
     list of BodyKind
     """
 
+def boundary_arrays(result: SpectrumResult, normalized: bool = ..., g: float = ...) -> dict:
+    """The boundary CSV's columns as numpy arrays of their types, from the result itself (no
+    CSV text): int64, float64 (nan where the CSV is empty) and str objects.
+
+    Parameters
+    ----------
+    result : SpectrumResult
+    normalized : bool
+        The grid's axes (``min_overturning`` in a_p/(g tan alpha), else in m/s^2).
+    g : float
+        [m/s^2]
+
+    Returns
+    -------
+    dict of str to numpy.ndarray
+    """
+
 def boundary_columns() -> list[str]:
     """Columns of the minimum-overturning CSV.
 

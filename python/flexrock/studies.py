@@ -315,13 +315,13 @@ def spectrum_table(result: SpectrumResult, g: float = 9.80665) -> dict:
     Returns
     -------
     dict of str to numpy.ndarray
-        The columns of ``flexrock spectrum`` (``a_p_m_per_s2``, ``omega_p_rad_per_s``, ...);
+        The columns of ``flexrock spectrum`` (``a_p_m_per_s2``, ``omega_p_rad_per_s``, ...),
+        typed by the column table: int64 indices and counts, float64 reals (nan where the CSV
+        is empty), str objects;
         for a spectrum asked for in other units, also those: ``a_p_g`` [g] or
         ``a_p_cm_per_s2``, and ``f_p_hz`` [Hz].
     """
-    from . import _parse_csv
-
-    cols = _parse_csv(_flexrock.spectrum_csv(result, g))
+    cols = _flexrock.spectrum_arrays(result, g)  # typed by the column table, no CSV text
     return _with_units(cols, result, {"a_p_m_per_s2": "a_p"}, {"omega_p_rad_per_s": "f_p"})
 
 
@@ -338,13 +338,11 @@ def boundary_table(result: SpectrumResult, g: float = 9.80665) -> dict:
     -------
     dict of str to numpy.ndarray
         The columns of the boundary CSV (``min_overturning_m_per_s2``, ``omega_p_rad_per_s``,
-        ...); for a spectrum asked for in other units, also ``min_overturning_g`` [g] and
-        ``f_p_hz`` [Hz].
+        ...), typed as in spectrum_table; for a spectrum asked for in other units, also
+        ``min_overturning_g`` [g] and ``f_p_hz`` [Hz].
     """
-    from . import _parse_csv
-
     normalized = getattr(result, "_flexrock_units", None) is None
-    cols = _parse_csv(_flexrock.boundary_csv(result, normalized, g))
+    cols = _flexrock.boundary_arrays(result, normalized, g)  # typed, no CSV text
     return _with_units(
         cols, result, {"min_overturning_m_per_s2": "min_overturning"}, {"omega_p_rad_per_s": "f_p"}
     )

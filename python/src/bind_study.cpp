@@ -122,6 +122,12 @@ py::dict spectrum_arrays(const study::SpectrumResult& res, double g) {
                       [&](std::size_t i) { return io::spectrum_values(res, res.cells[i], g); });
 }
 
+py::dict boundary_arrays(const study::SpectrumResult& res, bool normalized, double g) {
+  return typed_arrays(io::boundary_column_info(), res.boundary.size(), [&](std::size_t i) {
+    return io::boundary_values(res, res.boundary[i], normalized, g);
+  });
+}
+
 }  // namespace
 
 void bind_study(py::module_& m) {
@@ -898,6 +904,22 @@ Returns
 dict of str to numpy.ndarray
     int64 for indices and counts, float64 for reals (nan where the CSV leaves the field empty),
     object (str) for names and classes.)doc");
+  m.def("boundary_arrays", &boundary_arrays, py::arg("result"), py::arg("normalized") = true,
+        py::arg("g") = 9.80665,
+        R"doc(The boundary CSV's columns as numpy arrays of their types, from the result itself (no
+CSV text): int64, float64 (nan where the CSV is empty) and str objects.
+
+Parameters
+----------
+result : SpectrumResult
+normalized : bool
+    The grid's axes (``min_overturning`` in a_p/(g tan alpha), else in m/s^2).
+g : float
+    [m/s^2]
+
+Returns
+-------
+dict of str to numpy.ndarray)doc");
   m.def(
       "spectrum_arrays", &spectrum_arrays, py::arg("result"), py::arg("g") = 9.80665,
       R"doc(The cells of a spectrum as numpy arrays, one per column of its CSV, typed by the column

@@ -386,6 +386,21 @@ std::vector<std::string> boundary_columns() {
   return v;
 }
 
+std::vector<ColumnInfo> boundary_column_info() {
+  std::vector<ColumnInfo> v;
+  for (const BoundaryColumn& c : kBoundaryColumns) v.push_back({c.name, c.unit, c.type});
+  return v;
+}
+
+std::vector<FieldValue> boundary_values(const study::SpectrumResult& res,
+                                        const study::OverturnBoundary& b, bool normalized,
+                                        double g) {
+  const BoundaryContext x = boundary_context(res, b, normalized, g);
+  std::vector<FieldValue> v;
+  for (const BoundaryColumn& col : kBoundaryColumns) v.push_back(col.get(x, b));
+  return v;
+}
+
 std::string boundary_row(const study::SpectrumResult& res, const study::OverturnBoundary& b,
                          bool normalized, double g) {
   const BoundaryContext x = boundary_context(res, b, normalized, g);

@@ -136,6 +136,12 @@ std::vector<ColumnInfo> sweep_column_info(const study::SweepSpec& spec);
 std::vector<FieldValue> sweep_values(const study::SweepSpec& spec, const study::SweepRow& row);
 /// The columns of the spectrum CSV (spectrum_columns(sliding)) with units and types.
 std::vector<ColumnInfo> spectrum_column_info(bool sliding = false);
+/// Columns of the boundary CSV, and the fields of a column's boundary, one per column (as
+/// boundary_row writes them).
+std::vector<ColumnInfo> boundary_column_info();
+std::vector<FieldValue> boundary_values(const study::SpectrumResult& result,
+                                        const study::OverturnBoundary& b, bool normalized,
+                                        double g);
 /// The fields of a cell, one per column of spectrum_column_info(result.sliding).
 std::vector<FieldValue> spectrum_values(const study::SpectrumResult& result,
                                         const study::SpectrumCell& cell, double g);
