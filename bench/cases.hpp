@@ -87,16 +87,7 @@ inline Case case_d_cantilever(int n = 4, double rtol = 1e-8) {
   opt.rtol = rtol;
   opt.atol = 1e-2 * rtol;
   BodyParameters p = uniform_cantilever(6.0, 1.2, 800.0, 1.3e7, std::max(n, 1), 2000.0, 0.02);
-  if (n == 0) {
-    p.mu.resize(0, 0);
-    p.kappa.resize(0, 0);
-    p.gamma.resize(0, 0);
-    p.psi_x.resize(0);
-    p.psi_y.resize(0);
-    p.delta.resize(0);
-    p.beta.resize(0);
-    p.damping = Damping{};
-  }
+  if (n == 0) p = taken_rigid(p);
   return {Body(p), kobe_05g(), InitialState{}, opt};
 }
 

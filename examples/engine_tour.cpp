@@ -64,13 +64,7 @@ int main(int argc, char** argv) {
       },
       10.0);
   report("Tank (2 Hz oscillator on a slab), 0.06 g at resonance", simulate(flexible, shaking));
-  BodyParameters rigid_tank = tank;
-  rigid_tank.mu.resize(0, 0);
-  rigid_tank.kappa.resize(0, 0);
-  rigid_tank.gamma.resize(0, 0);
-  for (VectorX* v : {&rigid_tank.psi_x, &rigid_tank.psi_y, &rigid_tank.delta, &rigid_tank.beta})
-    v->resize(0);
-  rigid_tank.damping = Damping{};
+  const BodyParameters rigid_tank = taken_rigid(tank);
   std::printf("  (taken rigid it would need %.3f g to uplift)\n\n", Body(rigid_tank).alpha1());
   report("Same tank taken rigid, same shaking", simulate(Body(rigid_tank), shaking));
   return 0;

@@ -1,6 +1,6 @@
 # SPDX-License-Identifier: BSD-3-Clause
 flexrock_add_test(flexrock_model_tests SOURCES unit/body_test.cpp unit/impact_test.cpp unit/sin_cos_test.cpp
-                  unit/flight_test.cpp unit/sliding_test.cpp LABEL unit)
+                  unit/flight_test.cpp unit/sliding_test.cpp unit/taken_rigid_test.cpp LABEL unit)
 flexrock_add_test(flexrock_integrate_tests SOURCES unit/dopri5_test.cpp unit/dop853_test.cpp
                   unit/rosenbrock4_test.cpp LABEL unit)
 flexrock_add_test(flexrock_rigid_validation_tests SOURCES validation/rigid_block_test.cpp LABEL validation)
@@ -40,7 +40,8 @@ flexrock_add_test(flexrock_step_extremes_tests SOURCES unit/step_extremes_test.c
                   LIBS flexrock::io LABEL unit)
 # replaces global operator new to count allocations: its own executable
 flexrock_add_test(flexrock_allocation_tests SOURCES unit/no_allocation_test.cpp LABEL unit)
-flexrock_add_test(flexrock_excitation_motion_tests SOURCES unit/ground_motion_test.cpp LABEL unit)
+flexrock_add_test(flexrock_excitation_motion_tests SOURCES unit/ground_motion_test.cpp
+                  unit/peak_acceleration_test.cpp LABEL unit)
 flexrock_add_test(flexrock_contact_propagation_tests SOURCES unit/contact_propagation_test.cpp LABEL unit)
 # also the closed-form exponential of a mode (src/sim)
 target_include_directories(flexrock_contact_propagation_tests PRIVATE ${PROJECT_SOURCE_DIR}/src)

@@ -27,6 +27,7 @@
 #include "flexrock/core/format.hpp"
 #include "flexrock/excitation/intensity.hpp"
 #include "flexrock/io/files.hpp"
+#include "flexrock/io/fragility_session.hpp"
 #include "flexrock/io/journal.hpp"
 #include "flexrock/io/outputs.hpp"
 #include "flexrock/io/study_files.hpp"
@@ -208,12 +209,6 @@ auto with_progress(bool show, std::size_t total, std::atomic<std::size_t>& compl
 
 std::string default_output(const std::string& input, const std::string& suffix) {
   return fs::path(input).stem().string() + suffix;
-}
-
-std::string join_columns(const std::vector<std::string>& v) {
-  std::string s;
-  for (std::size_t i = 0; i < v.size(); ++i) s += (i ? "," : "") + v[i];
-  return s;
 }
 
 // the outcome of every cell, counted
@@ -461,110 +456,52 @@ int StudyCommands::Impl::run_fragility() {
   }
   const int points = static_cast<int>(curve_points);
   io::check_distinct_files({{"sweep CSV", input}}, {{"output", output}, {"curve", curve_output}});
-  const io::CsvTable table = io::read_csv_table(input);
-  // the damage states: those of --state, in the order given (least severe first), or the one
-  // of --outcome and --level
-  std::vector<io::DamageState> states;
-  for (const std::string& text : state_texts) states.push_back(io::damage_state(text));
-  const bool several = !states.empty();
-  if (several) {
-    if (fragility->count("--outcome") || fragility->count("--level")) {
-      throw InputError(
-          "--state: give the damage states either with --state or with --outcome "
-          "and --level, not both");
-    }
-    for (std::size_t a = 0; a < states.size(); ++a) {
-      for (std::size_t b = 0; b < a; ++b) {
-        if (states[a].outcome == states[b].outcome && states[a].level == states[b].level)
-          throw InputError("--state '" + states[a].label + "': given twice");
-      }
-    }
-  } else {
-    if (outcome != "overturned" && outcome != "uplift" && !(level > 0.0)) {
-      throw InputError("--level: expected a number > 0 with --outcome " + outcome);
-    }
-    states.push_back({outcome, outcome, level});
+  io::CsvTable table = io::read_csv_table(input);
+  // the options; the session checks them, reads the observations and fits
+  io::FragilityOptions o;
+  for (const std::string& text : state_texts) o.states.push_back(io::damage_state(text));
+  if (!o.states.empty() && (fragility->count("--outcome") || fragility->count("--level"))) {
+    throw InputError(
+        "--state: give the damage states either with --state or with --outcome "
+        "and --level, not both");
   }
-  if (!(confidence > 0.0 && confidence < 1.0)) {
-    throw InputError("--confidence: expected a number in (0, 1), got " +
-                     std::to_string(confidence));
-  }
-  // a multiple-stripe analysis: the stripes are the sweep's levels
-  if (analysis == "msa") {
-    if (fragility->count("--im") && im != "requested_level") {
-      throw InputError(
-          "--analysis msa: the stripes are the sweep's requested levels (target "
-          "intensity measures, or factors); --im " +
-          im + " is not one value per stripe: leave --im out");
-    }
-    im = "requested_level";
-  }
-  auto fit_data = [&](const io::FragilityData& d) {
-    if (analysis == "msa") return study::fit_stripes(study::stripes_of(d.im, d.failed), confidence);
-    if (analysis == "ida") {
-      return study::fit_capacity_intervals(study::capacity_intervals(d.im, d.failed, d.record),
-                                           confidence);
-    }
-    return study::fit_lognormal(d.im, d.failed, confidence);
-  };
-  // per state, per body: the observations and the fit
-  std::vector<std::vector<io::FragilityData>> data;
-  std::vector<std::vector<study::FragilityFit>> fits;
-  for (const io::DamageState& st : states) {
-    io::FragilityQuery q;
-    q.im = im;
-    q.outcome = st.outcome;
-    q.level = st.level;
-    q.body = body_name;
-    data.push_back(io::fragility_data(table, q));
-    fits.emplace_back();
-    for (const io::FragilityData& d : data.back()) {
-      try {
-        fits.back().push_back(fit_data(d));
-      } catch (const InputError& e) {
-        throw InputError(input + ": body '" + d.body + "'" +
-                         (several ? ", state '" + st.label + "'" : std::string()) + ": " +
-                         e.what());
-      }
-    }
-  }
+  o.outcome = io::find_fragility_outcome(outcome)->outcome;  // CLI11 checked the name
+  o.level = level;
+  o.confidence = confidence;
+  o.analysis = *value_named(io::kFragilityAnalysisNames, analysis);
+  o.im = im;
+  o.im_given = fragility->count("--im") > 0;
+  o.body = body_name;
+  const io::FragilitySession session(std::move(table), std::move(o));
+  const std::vector<io::DamageState>& states = session.states();
+  const std::string& im_name = session.measure().name;
+  const std::string& unit = session.unit();
+  const double conf = session.options().confidence;
+  // what fails, as the fit is titled: "overturning", "max theta/alpha > 0.5", ...
   auto what = [](const io::DamageState& st) {
-    const std::string& o = st.outcome;
-    const double x = st.level;
-    return o == "overturned" ? std::string("overturning")
-           : o == "uplift"   ? std::string("uplift")
-           : o == "theta"    ? fmt::format("max theta/alpha > {}", x)
-           : o == "energy"   ? fmt::format("energy lost > {} J", x)
-           : o == "offset"   ? fmt::format("peak sliding offset > {} m", x)
-                             : fmt::format("residual offset > {} m", x);
+    const io::FragilityOutcomeInfo& info = io::fragility_outcome(st.outcome);
+    return info.levelled ? fmt::format("{}{}{}", info.what, st.level, info.unit)
+                         : std::string(info.what);
   };
-  std::string unit = im == "pga" ? "m/s^2" : im == "pga_g" ? "g" : im == "pgv" ? "m/s" : "-";
-  if (im.starts_with("sa:")) unit = "m/s^2";
-  if (const IntensityMeasure* m = find_intensity_measure(im)) unit = m->unit;
-  if (im == "requested_level" && !table.rows.empty()) {
-    const std::size_t c = std::find(table.columns.begin(), table.columns.end(), "requested_units") -
-                          table.columns.begin();
-    if (c < table.columns.size()) unit = table.rows.front()[c];
-  }
-  // every state has the same bodies in the same order (the rows' first appearance)
-  const std::size_t bodies = data.front().size();
-  for (std::size_t k = 0; k < bodies; ++k) {
+  const std::vector<io::FragilityOrderNote> notes = session.order_notes();
+  for (std::size_t k = 0; k < session.bodies(); ++k) {
     for (std::size_t s = 0; s < states.size(); ++s) {
-      const io::FragilityData& d = data[s][k];
-      const study::FragilityFit& f = fits[s][k];
+      const io::FragilityData& d = session.data(s, k);
+      const study::FragilityFit& f = session.fit(s, k);
       const std::string left_out =
           d.excluded ? fmt::format(", {} runs stopped or lost contact: left out", d.excluded) : "";
-      if (analysis == "ida") {
+      if (session.options().analysis == io::FragilityAnalysis::kCapacities) {
         fmt::print(
             "{}: P({} | {}) = Phi(ln(x/theta)/beta), capacities of {} records ({} failed "
             "within the levels, {} truncated at their highest{})\n",
-            d.body, what(states[s]), im, f.samples, f.failures, f.samples - f.failures, left_out);
+            d.body, what(states[s]), im_name, f.samples, f.failures, f.samples - f.failures,
+            left_out);
       } else {
         fmt::print("{}: P({} | {}) = Phi(ln(x/theta)/beta), {} runs ({} with the outcome{})\n",
-                   d.body, what(states[s]), im, f.samples, f.failures, left_out);
+                   d.body, what(states[s]), im_name, f.samples, f.failures, left_out);
       }
-      if (analysis == "msa") {
-        for (const study::Stripe& st : study::stripes_of(d.im, d.failed)) {
+      if (session.options().analysis == io::FragilityAnalysis::kStripes) {
+        for (const study::Stripe& st : session.stripes(s, k)) {
           fmt::print("  stripe {:.6g} {}: {} of {} runs failed ({:.3f}; fit {:.3f})\n", st.im, unit,
                      st.failures, st.runs,
                      static_cast<double>(st.failures) / static_cast<double>(st.runs),
@@ -572,47 +509,31 @@ int StudyCommands::Impl::run_fragility() {
         }
       }
       fmt::print("  theta = {:.5g} {}  [{:.5g}, {:.5g}] ({:.0f}% bounds)\n", f.theta, unit,
-                 f.theta_lower, f.theta_upper, 100.0 * confidence);
+                 f.theta_lower, f.theta_upper, 100.0 * conf);
       fmt::print("  beta  = {:.5g}  [{:.5g}, {:.5g}]\n", f.beta, f.beta_lower, f.beta_upper);
     }
-    // the states are given least severe first: a more severe state's curve must lie below
-    for (std::size_t s = 1; s < states.size(); ++s) {
-      const study::FragilityFit &a = fits[s - 1][k], &b = fits[s][k];
-      const double lo =
-          std::min(*std::min_element(data[s - 1][k].im.begin(), data[s - 1][k].im.end()),
-                   *std::min_element(data[s][k].im.begin(), data[s][k].im.end()));
-      const double hi =
-          std::max(*std::max_element(data[s - 1][k].im.begin(), data[s - 1][k].im.end()),
-                   *std::max_element(data[s][k].im.begin(), data[s][k].im.end()));
-      if (b.theta < a.theta) {
+    for (const io::FragilityOrderNote& n : notes) {
+      if (n.body != k) continue;
+      const io::DamageState &a = states[n.state - 1], &b = states[n.state];
+      if (n.medians_cross) {
         fmt::print(
             "  warning: the fitted medians cross: {} (theta = {:.5g}) is below {} (theta "
             "= {:.5g}), given before it as the less severe state\n",
-            states[s].label, b.theta, states[s - 1].label, a.theta);
+            b.label, session.fit(n.state, k).theta, a.label, session.fit(n.state - 1, k).theta);
       }
-      const double x = study::crossing_intensity(a, b);
-      if (std::isfinite(x) && x >= lo && x <= hi) {
+      if (!std::isnan(n.crossing)) {
         fmt::print(
             "  note: the curves of {} and {} cross at {} = {:.5g} {}, inside the data "
             "range: above it the {} is the likelier\n",
-            states[s - 1].label, states[s].label, im, x, unit,
-            a.beta < b.beta ? "latter" : "former");
+            a.label, b.label, im_name, n.crossing, unit,
+            n.latter_likelier_above ? "latter" : "former");
       }
     }
   }
+  const bool several = session.several();
   try {
     if (!output.empty()) {
-      io::write_atomically(output, [&](std::ostream& out) {
-        out << join_columns(several ? io::fragility_state_columns() : io::fragility_columns())
-            << '\n';
-        for (std::size_t k = 0; k < bodies; ++k) {
-          for (std::size_t s = 0; s < states.size(); ++s) {
-            out << (several ? io::fragility_state_row(data[s][k], fits[s][k], states[s].label)
-                            : io::fragility_row(data[s][k], fits[s][k]))
-                << '\n';
-          }
-        }
-      });
+      io::write_atomically(output, [&](std::ostream& out) { session.write_fits(out); });
       if (!quiet) fmt::print("wrote {}\n", output);
     }
     if (!curve_output.empty()) {
@@ -622,16 +543,15 @@ int StudyCommands::Impl::run_fragility() {
           if (several && &c == kCurveColumns) out << ",state";
         }
         out << '\n';
-        for (std::size_t k = 0; k < bodies; ++k) {
+        for (std::size_t k = 0; k < session.bodies(); ++k) {
           for (std::size_t s = 0; s < states.size(); ++s) {
-            const io::FragilityData& d = data[s][k];
-            const double lo = *std::min_element(d.im.begin(), d.im.end());
-            const double hi = *std::max_element(d.im.begin(), d.im.end());
+            const io::FragilityData& d = session.data(s, k);
+            const auto [lo, hi] = session.range(k, s, s);
             for (int i = 0; i < points; ++i) {
               const double x =
                   points == 1 ? lo : lo + (hi - lo) * i / static_cast<double>(points - 1);
               for (const CurveColumn& c : kCurveColumns) {
-                out << (&c == kCurveColumns ? "" : ",") << c.field(d, fits[s][k], x);
+                out << (&c == kCurveColumns ? "" : ",") << c.field(d, session.fit(s, k), x);
                 if (several && &c == kCurveColumns) out << ',' << states[s].label;
               }
               out << '\n';

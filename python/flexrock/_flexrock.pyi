@@ -217,6 +217,17 @@ class CsvTable:
     @property
     def source(self) -> str: ...
 
+class DamageState:
+    """A damage state: an outcome and its level."""
+    def __init__(self, outcome: FragilityOutcome, level: float = ..., label: str = ...) -> None: ...
+    def __repr__(self) -> str: ...
+    @property
+    def label(self) -> str: ...
+    @property
+    def level(self) -> float: ...
+    @property
+    def outcome(self) -> FragilityOutcome: ...
+
 class Damping:
     """Material damping of the deformation modes."""
     def __init__(self) -> None: ...
@@ -403,6 +414,21 @@ class Extremes:
     @property
     def tension_time(self) -> float: ...
 
+class FragilityAnalysis:
+    runs: ClassVar[FragilityAnalysis]
+    msa: ClassVar[FragilityAnalysis]
+    ida: ClassVar[FragilityAnalysis]
+    __members__: ClassVar[dict[str, FragilityAnalysis]]
+    def __init__(self, value: int) -> None: ...
+    def __eq__(self, other: object) -> bool: ...
+    def __hash__(self) -> int: ...
+    def __index__(self) -> int: ...
+    def __int__(self) -> int: ...
+    @property
+    def name(self) -> str: ...
+    @property
+    def value(self) -> int: ...
+
 class FragilityData:
     @property
     def body(self) -> str: ...
@@ -449,12 +475,95 @@ class FragilityFit:
     @property
     def theta_upper(self) -> float: ...
 
+class FragilityMeasure:
+    """An intensity measure of a fit: kind, sweep column, unit."""
+    @property
+    def column(self) -> str: ...
+    @property
+    def kind(self) -> FragilityMeasureKind: ...
+    @property
+    def name(self) -> str: ...
+    @property
+    def unit(self) -> str: ...
+
+class FragilityMeasureKind:
+    pga: ClassVar[FragilityMeasureKind]
+    pga_g: ClassVar[FragilityMeasureKind]
+    pgv: ClassVar[FragilityMeasureKind]
+    scale: ClassVar[FragilityMeasureKind]
+    requested_level: ClassVar[FragilityMeasureKind]
+    intensity: ClassVar[FragilityMeasureKind]
+    __members__: ClassVar[dict[str, FragilityMeasureKind]]
+    def __init__(self, value: int) -> None: ...
+    def __eq__(self, other: object) -> bool: ...
+    def __hash__(self) -> int: ...
+    def __index__(self) -> int: ...
+    def __int__(self) -> int: ...
+    @property
+    def name(self) -> str: ...
+    @property
+    def value(self) -> int: ...
+
+class FragilityOrderNote:
+    """Two damage states of a body out of order."""
+    @property
+    def body(self) -> int: ...
+    @property
+    def crossing(self) -> float: ...
+    @property
+    def latter_likelier_above(self) -> bool: ...
+    @property
+    def medians_cross(self) -> bool: ...
+    @property
+    def state(self) -> int: ...
+
+class FragilityOutcome:
+    overturned: ClassVar[FragilityOutcome]
+    uplift: ClassVar[FragilityOutcome]
+    theta: ClassVar[FragilityOutcome]
+    energy: ClassVar[FragilityOutcome]
+    offset: ClassVar[FragilityOutcome]
+    residual_offset: ClassVar[FragilityOutcome]
+    __members__: ClassVar[dict[str, FragilityOutcome]]
+    def __init__(self, value: int) -> None: ...
+    def __eq__(self, other: object) -> bool: ...
+    def __hash__(self) -> int: ...
+    def __index__(self) -> int: ...
+    def __int__(self) -> int: ...
+    @property
+    def name(self) -> str: ...
+    @property
+    def value(self) -> int: ...
+
 class FragilityQuery:
     def __init__(self) -> None: ...
     body: str
     im: str
     level: float
     outcome: str
+
+class FragilitySession:
+    """The fits of every damage state and body of a sweep CSV,
+    as ``flexrock fragility`` makes them (the same checks, observations, fits and fit CSV).
+    """
+    def __init__(self, path: str, im: str = ..., im_given: bool = ..., states: list[DamageState] = ..., outcome: FragilityOutcome = ..., level: float = ..., analysis: FragilityAnalysis = ..., body: str = ..., confidence: float = ...) -> None: ...
+    @property
+    def bodies(self) -> int: ...
+    def data(self, state: int, body: int) -> FragilityData: ...
+    def fit(self, state: int, body: int) -> FragilityFit: ...
+    def fit_csv(self) -> str:
+        """The fit CSV's text, as ``flexrock fragility -o`` writes it."""
+    @property
+    def measure(self) -> FragilityMeasure: ...
+    def order_notes(self) -> list[FragilityOrderNote]: ...
+    @property
+    def several(self) -> bool: ...
+    @property
+    def states(self) -> list[DamageState]: ...
+    def stripes(self, state: int, body: int) -> list[tuple[float, int, int]]:
+        """The stripes of a body's observations: (IM, runs, failures) per level."""
+    @property
+    def unit(self) -> str: ...
 
 class GroundMotion:
     """Base accelerations [m/s^2]: sampled (linear between samples) or analytic."""
@@ -1263,6 +1372,23 @@ def body_kinds() -> list[BodyKind]:
     list of BodyKind
     """
 
+def boundary_arrays(result: SpectrumResult, normalized: bool = ..., g: float = ...) -> dict:
+    """The boundary CSV's columns as numpy arrays of their types, from the result itself (no
+    CSV text): int64, float64 (nan where the CSV is empty) and str objects.
+
+    Parameters
+    ----------
+    result : SpectrumResult
+    normalized : bool
+        The grid's axes (``min_overturning`` in a_p/(g tan alpha), else in m/s^2).
+    g : float
+        [m/s^2]
+
+    Returns
+    -------
+    dict of str to numpy.ndarray
+    """
+
 def boundary_columns() -> list[str]:
     """Columns of the minimum-overturning CSV.
 
@@ -1438,6 +1564,19 @@ def cycloidal_pulse_c(a_p: float, omega_p: float, duration: float, n: int = ...,
     GroundMotion
     """
 
+def damage_state(text: str) -> DamageState:
+    """A damage state as ``flexrock fragility --state`` reads it.
+
+    Parameters
+    ----------
+    text : str
+        overturned, uplift, theta:X, energy:X, offset:X or residual_offset:X (X > 0).
+
+    Returns
+    -------
+    DamageState
+    """
+
 def event_columns() -> list[str]:
     """Column names of the event log.
 
@@ -1563,6 +1702,19 @@ def fragility_data(table: CsvTable, query: FragilityQuery) -> list[FragilityData
     -------
     list of FragilityData
         Rows whose outcome is stopped or contact_lost are left out and counted (``excluded``).
+    """
+
+def fragility_measure(name: str) -> FragilityMeasure:
+    """The intensity measure of a fit so named (``flexrock fragility --im``).
+
+    Parameters
+    ----------
+    name : str
+        pga, pga_g, pgv, scale, requested_level or a measure of the sweep's [intensity] table.
+
+    Returns
+    -------
+    FragilityMeasure
     """
 
 def fragility_probability(fit: FragilityFit, x: numpy.typing.NDArray[numpy.float64]) -> object:

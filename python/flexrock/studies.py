@@ -315,13 +315,13 @@ def spectrum_table(result: SpectrumResult, g: float = 9.80665) -> dict:
     Returns
     -------
     dict of str to numpy.ndarray
-        The columns of ``flexrock spectrum`` (``a_p_m_per_s2``, ``omega_p_rad_per_s``, ...);
+        The columns of ``flexrock spectrum`` (``a_p_m_per_s2``, ``omega_p_rad_per_s``, ...),
+        typed by the column table: int64 indices and counts, float64 reals (nan where the CSV
+        is empty), str objects;
         for a spectrum asked for in other units, also those: ``a_p_g`` [g] or
         ``a_p_cm_per_s2``, and ``f_p_hz`` [Hz].
     """
-    from . import _parse_csv
-
-    cols = _parse_csv(_flexrock.spectrum_csv(result, g))
+    cols = _flexrock.spectrum_arrays(result, g)  # typed by the column table, no CSV text
     return _with_units(cols, result, {"a_p_m_per_s2": "a_p"}, {"omega_p_rad_per_s": "f_p"})
 
 
@@ -338,13 +338,11 @@ def boundary_table(result: SpectrumResult, g: float = 9.80665) -> dict:
     -------
     dict of str to numpy.ndarray
         The columns of the boundary CSV (``min_overturning_m_per_s2``, ``omega_p_rad_per_s``,
-        ...); for a spectrum asked for in other units, also ``min_overturning_g`` [g] and
-        ``f_p_hz`` [Hz].
+        ...), typed as in spectrum_table; for a spectrum asked for in other units, also
+        ``min_overturning_g`` [g] and ``f_p_hz`` [Hz].
     """
-    from . import _parse_csv
-
     normalized = getattr(result, "_flexrock_units", None) is None
-    cols = _parse_csv(_flexrock.boundary_csv(result, normalized, g))
+    cols = _flexrock.boundary_arrays(result, normalized, g)  # typed, no CSV text
     return _with_units(
         cols, result, {"min_overturning_m_per_s2": "min_overturning"}, {"omega_p_rad_per_s": "f_p"}
     )
@@ -629,22 +627,81 @@ def fragility(im: Sequence[float], failed: Sequence[int], confidence: float = 0.
     return fit_lognormal([float(x) for x in im], [int(f) for f in failed], confidence)
 
 
+def fragility_session(
+    path: str,
+    im: Optional[str] = None,
+    outcome: str = "overturned",
+    level: float = 0.0,
+    body: str = "",
+    *,
+    states: Sequence[str] = (),
+    analysis: str = "runs",
+    confidence: float = 0.95,
+):
+    """Fits a sweep CSV as ``flexrock fragility`` does: the same checks, observations, fits and
+    fit CSV, every damage state and body at once.
+
+    Parameters
+    ----------
+    path : str or os.PathLike
+        A sweep CSV.
+    im : str, optional
+        Intensity measure (``--im``): pga [m/s^2] (the default), pga_g [g], pgv [m/s], scale
+        [-], requested_level, or one of the sweep's [intensity] table (pgd, arias, cav, d5_95,
+        pgv_over_pga, sa:T[:zeta]). ``analysis="msa"`` takes the requested levels.
+    outcome : {"overturned", "uplift", "theta", "energy", "offset", "residual_offset"}
+        Failure (``--outcome``), with ``level`` for the last four.
+    level : float
+        Threshold of theta [-], energy [J], offset or residual_offset [m].
+    body : str
+        Only this body (default: each).
+    states : sequence of str
+        A family of damage states fitted at once (``--state``, least severe first:
+        "uplift", "theta:0.5", ...); not with ``outcome`` or ``level``.
+    analysis : {"runs", "msa", "ida"}
+        Every run an observation, a multiple-stripe analysis, or each record's capacity.
+    confidence : float
+        Level of the bounds, in (0, 1).
+
+    Returns
+    -------
+    FragilitySession
+        ``states``, ``bodies``, ``data(state, body)`` (a FragilityData), ``fit(state, body)``
+        (a FragilityFit), ``stripes``, ``order_notes()``, ``unit``, ``measure`` and
+        ``fit_csv()`` (the bytes of ``flexrock fragility -o``). Errors name the options as the
+        command line does (``--state``, ``--level``, ``--im``).
+    """
+    if states and (outcome != "overturned" or level != 0.0):
+        raise ValueError("--state: give the damage states either with --state or with --outcome "
+                         "and --level, not both")
+    kinds = {o.name: o for o in FragilityOutcome.__members__.values()}
+    if outcome not in kinds:
+        raise ValueError(f"outcome {outcome!r}: expected one of: {', '.join(kinds)}")
+    analyses = FragilityAnalysis.__members__
+    if analysis not in analyses:
+        raise ValueError(f"analysis {analysis!r}: expected one of: {', '.join(analyses)}")
+    return FragilitySession(
+        os.fspath(path), im=im if im is not None else "pga", im_given=im is not None,
+        states=[damage_state(s) for s in states], outcome=kinds[outcome], level=float(level),
+        analysis=analyses[analysis], body=body, confidence=float(confidence))
+
+
 def fragility_from_sweep(
     path: str, im: str = "pga", outcome: str = "overturned", level: float = 0.0, body: str = ""
 ):
-    """Fits a sweep CSV as ``flexrock fragility`` does.
+    """Fits a sweep CSV as ``flexrock fragility`` does, one damage state (see fragility_session
+    for several, stripes and capacities).
 
     Parameters
     ----------
     path : str
         A sweep CSV.
-    im : {"pga", "pga_g", "pgv", "scale", "requested_level"}
-        Intensity measure: PGA [m/s^2] or [g], PGV [m/s], the scale factor [-] or the level as
-        the manifest requested it.
-    outcome : {"overturned", "theta", "energy"}
-        Failure: overturning, max theta/alpha > ``level``, energy lost > ``level`` [J].
+    im : str
+        Intensity measure, as fragility_session takes it.
+    outcome : {"overturned", "uplift", "theta", "energy", "offset", "residual_offset"}
+        Failure, with ``level`` for the last four.
     level : float
-        Threshold of "theta" [-] or "energy" [J].
+        Threshold of theta [-], energy [J], offset or residual_offset [m].
     body : str
         Only this body (default: each).
 
@@ -654,14 +711,24 @@ def fragility_from_sweep(
         One per body; rows whose outcome is ``stopped`` or ``contact_lost`` are left out and
         counted in ``FragilityData.excluded``.
     """
-    q = FragilityQuery()
-    q.im, q.outcome, q.level, q.body = im, outcome, level, body
-    table = _flexrock.read_csv_table(os.fspath(path))
-    return [(d, fit_lognormal(d.im, d.failed)) for d in _flexrock.fragility_data(table, q)]
+    s = fragility_session(path, im, outcome, level, body)
+    return [(s.data(0, k), s.fit(0, k)) for k in range(s.bodies)]
 
 
 _NOT_API = ("annotations", "os", "Iterable", "Mapping", "Optional", "Sequence", "Tuple", "Union")
 __all__ = [n for n in dir() if not n.startswith("_") and n not in _NOT_API]
-__all__ += ["FragilityQuery", "FragilityData", "read_csv_table", "fragility_data"]
+__all__ += ["FragilityQuery", "FragilityData", "read_csv_table", "fragility_data",
+            "FragilitySession", "FragilityOutcome", "FragilityAnalysis", "DamageState",
+            "damage_state", "fragility_measure", "FragilityMeasure", "FragilityMeasureKind",
+            "FragilityOrderNote"]
 read_csv_table = _flexrock.read_csv_table
 fragility_data = _flexrock.fragility_data
+FragilitySession = _flexrock.FragilitySession
+FragilityOutcome = _flexrock.FragilityOutcome
+FragilityAnalysis = _flexrock.FragilityAnalysis
+DamageState = _flexrock.DamageState
+damage_state = _flexrock.damage_state
+fragility_measure = _flexrock.fragility_measure
+FragilityMeasure = _flexrock.FragilityMeasure
+FragilityMeasureKind = _flexrock.FragilityMeasureKind
+FragilityOrderNote = _flexrock.FragilityOrderNote

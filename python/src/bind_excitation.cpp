@@ -13,37 +13,14 @@
 #include "bindings.hpp"
 #include "flexrock/core/types.hpp"
 #include "flexrock/excitation/ground_motion.hpp"
+#include "flexrock/excitation/intensity.hpp"
 #include "flexrock/excitation/pulses.hpp"
 
 namespace py = pybind11;
 
 namespace flexrock::python {
 
-namespace {
-
-// the largest |horizontal| and |vertical| acceleration [m/s^2]: over the samples, or, for an
-// analytic motion, at 20001 even times and every breakpoint (where pulses start and end)
-std::pair<double, double> peaks(const GroundMotion& m) {
-  double px = 0.0, py = 0.0;
-  auto take = [&](double t) {
-    const BaseAcceleration a = m.at(t);
-    px = std::max(px, std::abs(a.x));
-    py = std::max(py, std::abs(a.y));
-  };
-  if (m.is_sampled()) {
-    for (double t : m.times()) take(t);
-    return {px, py};
-  }
-  const int n = 20000;
-  for (int i = 0; i <= n; ++i) take(m.duration() * i / n);
-  GroundMotion::Cursor c;
-  for (double t = m.next_breakpoint(-1.0, c); std::isfinite(t); t = m.next_breakpoint(t, c)) {
-    take(t);
-  }
-  return {px, py};
-}
-
-}  // namespace
+namespace {}  // namespace
 
 void bind_excitation(py::module_& m) {
   // dynamic_attr: the Python package notes how a motion was made, for the summary
@@ -74,7 +51,7 @@ void bind_excitation(py::module_& m) {
       .def("__repr__", [](const GroundMotion& g) {
         // has_vertical() is true for every analytic motion (its function may shake vertically):
         // whether it does is told by the vertical peak
-        const auto [px, py] = peaks(g);
+        const auto [px, py] = peak_acceleration(g);
         std::ostringstream o;
         o.precision(4);
         o << "<GroundMotion ";

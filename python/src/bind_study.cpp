@@ -14,11 +14,14 @@
 #include <memory>
 #include <sstream>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "bindings.hpp"
+#include "flexrock/core/enum_names.hpp"
 #include "flexrock/core/error.hpp"
 #include "flexrock/excitation/intensity.hpp"
+#include "flexrock/io/fragility_session.hpp"
 #include "flexrock/io/study_files.hpp"
 #include "flexrock/io/study_session.hpp"
 #include "flexrock/study/fragility.hpp"
@@ -69,17 +72,13 @@ auto interruptible(int threads, Work work) {
   return done.get();
 }
 
-const char* type_name(io::ColumnType t) {
-  switch (t) {
-    case io::ColumnType::kInteger:
-      return "integer";
-    case io::ColumnType::kReal:
-      return "real";
-    case io::ColumnType::kText:
-      break;
-  }
-  return "text";
-}
+constexpr EnumName<io::ColumnType> kColumnTypeNames[] = {
+    {io::ColumnType::kInteger, "integer"},
+    {io::ColumnType::kReal, "real"},
+    {io::ColumnType::kText, "text"},
+};
+
+const char* type_name(io::ColumnType t) { return name_of(kColumnTypeNames, t, "text"); }
 
 // rows as numpy arrays, one per column of a study's table, of the column's type: int64, float64
 // (a value the CSV leaves empty, not finite, is nan) or str objects
@@ -123,17 +122,19 @@ py::dict spectrum_arrays(const study::SpectrumResult& res, double g) {
                       [&](std::size_t i) { return io::spectrum_values(res, res.cells[i], g); });
 }
 
+py::dict boundary_arrays(const study::SpectrumResult& res, bool normalized, double g) {
+  return typed_arrays(io::boundary_column_info(), res.boundary.size(), [&](std::size_t i) {
+    return io::boundary_values(res, res.boundary[i], normalized, g);
+  });
+}
+
 }  // namespace
 
 void bind_study(py::module_& m) {
   using namespace flexrock::study;
 
-  py::enum_<Outcome>(m, "Outcome")
-      .value("no_uplift", Outcome::kNoUplift)
-      .value("rocking", Outcome::kRocking)
-      .value("overturned_after_impacts", Outcome::kOverturnedAfterImpacts)
-      .value("overturned_without_impact", Outcome::kOverturnedWithoutImpact)
-      .value("stopped", Outcome::kStopped);
+  py::enum_<Outcome> outcomes(m, "Outcome");
+  for (const EnumName<Outcome>& row : kOutcomeNames) outcomes.value(row.name, row.value);
   py::enum_<Regime>(m, "Regime", "What the base did: slid and/or uplifted (finite friction).")
       .value("none", Regime::kNone)
       .value("sliding", Regime::kSliding)
@@ -903,6 +904,22 @@ Returns
 dict of str to numpy.ndarray
     int64 for indices and counts, float64 for reals (nan where the CSV leaves the field empty),
     object (str) for names and classes.)doc");
+  m.def("boundary_arrays", &boundary_arrays, py::arg("result"), py::arg("normalized") = true,
+        py::arg("g") = 9.80665,
+        R"doc(The boundary CSV's columns as numpy arrays of their types, from the result itself (no
+CSV text): int64, float64 (nan where the CSV is empty) and str objects.
+
+Parameters
+----------
+result : SpectrumResult
+normalized : bool
+    The grid's axes (``min_overturning`` in a_p/(g tan alpha), else in m/s^2).
+g : float
+    [m/s^2]
+
+Returns
+-------
+dict of str to numpy.ndarray)doc");
   m.def(
       "spectrum_arrays", &spectrum_arrays, py::arg("result"), py::arg("g") = 9.80665,
       R"doc(The cells of a spectrum as numpy arrays, one per column of its CSV, typed by the column
@@ -1050,7 +1067,9 @@ CsvTable)doc");
       .def_readonly("failed", &io::FragilityData::failed)
       .def_readonly("excluded", &io::FragilityData::excluded)
       .def_readonly("record", &io::FragilityData::record);
-  m.def("fragility_data", &io::fragility_data, py::arg("table"), py::arg("query"),
+  m.def("fragility_data",
+        py::overload_cast<const io::CsvTable&, const io::FragilityQuery&>(&io::fragility_data),
+        py::arg("table"), py::arg("query"),
         R"doc(The (IM, failed) observations of each body of a sweep CSV.
 
 Parameters
@@ -1064,6 +1083,117 @@ Returns
 -------
 list of FragilityData
     Rows whose outcome is stopped or contact_lost are left out and counted (``excluded``).)doc");
+  // the fragility session: typed damage states, measures and analyses, as flexrock fragility
+  py::enum_<io::FragilityOutcome> fo(m, "FragilityOutcome",
+                                     "What a fragility fit counts as failure (--outcome).");
+  for (const io::FragilityOutcomeInfo& o : io::kFragilityOutcomes) fo.value(o.name, o.outcome);
+  py::class_<io::DamageState>(m, "DamageState", "A damage state: an outcome and its level.")
+      .def(py::init([](io::FragilityOutcome outcome, double level, std::string label) {
+             if (label.empty()) label = io::fragility_outcome(outcome).name;
+             return io::DamageState{label, outcome, level};
+           }),
+           py::arg("outcome"), py::arg("level") = 0.0, py::arg("label") = "")
+      .def_readonly("label", &io::DamageState::label)
+      .def_readonly("outcome", &io::DamageState::outcome)
+      .def_readonly("level", &io::DamageState::level)
+      .def("__repr__", [](const io::DamageState& s) { return "<DamageState " + s.label + ">"; });
+  m.def("damage_state", &io::damage_state, py::arg("text"),
+        R"doc(A damage state as ``flexrock fragility --state`` reads it.
+
+Parameters
+----------
+text : str
+    overturned, uplift, theta:X, energy:X, offset:X or residual_offset:X (X > 0).
+
+Returns
+-------
+DamageState)doc");
+  py::enum_<io::FragilityMeasureKind>(m, "FragilityMeasureKind")
+      .value("pga", io::FragilityMeasureKind::kPga)
+      .value("pga_g", io::FragilityMeasureKind::kPgaG)
+      .value("pgv", io::FragilityMeasureKind::kPgv)
+      .value("scale", io::FragilityMeasureKind::kScale)
+      .value("requested_level", io::FragilityMeasureKind::kRequestedLevel)
+      .value("intensity", io::FragilityMeasureKind::kIntensity);
+  py::class_<io::FragilityMeasure>(m, "FragilityMeasure",
+                                   "An intensity measure of a fit: kind, sweep column, unit.")
+      .def_readonly("kind", &io::FragilityMeasure::kind)
+      .def_readonly("name", &io::FragilityMeasure::name)
+      .def_readonly("column", &io::FragilityMeasure::column)
+      .def_readonly("unit", &io::FragilityMeasure::unit);
+  m.def("fragility_measure", &io::fragility_measure, py::arg("name"),
+        R"doc(The intensity measure of a fit so named (``flexrock fragility --im``).
+
+Parameters
+----------
+name : str
+    pga, pga_g, pgv, scale, requested_level or a measure of the sweep's [intensity] table.
+
+Returns
+-------
+FragilityMeasure)doc");
+  py::enum_<io::FragilityAnalysis> fa(m, "FragilityAnalysis",
+                                      "How observations become a fit (--analysis).");
+  for (const EnumName<io::FragilityAnalysis>& row : io::kFragilityAnalysisNames)
+    fa.value(row.name, row.value);
+  py::class_<io::FragilityOrderNote>(m, "FragilityOrderNote",
+                                     "Two damage states of a body out of order.")
+      .def_readonly("body", &io::FragilityOrderNote::body)
+      .def_readonly("state", &io::FragilityOrderNote::state)
+      .def_readonly("medians_cross", &io::FragilityOrderNote::medians_cross)
+      .def_readonly("crossing", &io::FragilityOrderNote::crossing)
+      .def_readonly("latter_likelier_above", &io::FragilityOrderNote::latter_likelier_above);
+  py::class_<io::FragilitySession>(m, "FragilitySession",
+                                   R"doc(The fits of every damage state and body of a sweep CSV,
+as ``flexrock fragility`` makes them (the same checks, observations, fits and fit CSV).)doc")
+      .def(py::init([](const std::string& path, const std::string& im, bool im_given,
+                       std::vector<io::DamageState> states, io::FragilityOutcome outcome,
+                       double level, io::FragilityAnalysis analysis, const std::string& body,
+                       double confidence) {
+             io::FragilityOptions o;
+             o.im = im;
+             o.im_given = im_given;
+             o.states = std::move(states);
+             o.outcome = outcome;
+             o.level = level;
+             o.analysis = analysis;
+             o.body = body;
+             o.confidence = confidence;
+             return std::make_unique<io::FragilitySession>(path, std::move(o));
+           }),
+           py::arg("path"), py::arg("im") = "pga", py::arg("im_given") = false,
+           py::arg("states") = std::vector<io::DamageState>{},
+           py::arg("outcome") = io::FragilityOutcome::kOverturned, py::arg("level") = 0.0,
+           py::arg("analysis") = io::FragilityAnalysis::kRuns, py::arg("body") = "",
+           py::arg("confidence") = 0.95)
+      .def_property_readonly("measure", &io::FragilitySession::measure)
+      .def_property_readonly("unit", &io::FragilitySession::unit)
+      .def_property_readonly("states", &io::FragilitySession::states)
+      .def_property_readonly("several", &io::FragilitySession::several)
+      .def_property_readonly("bodies", &io::FragilitySession::bodies)
+      .def("data", &io::FragilitySession::data, py::arg("state"), py::arg("body"),
+           py::return_value_policy::copy)
+      .def("fit", &io::FragilitySession::fit, py::arg("state"), py::arg("body"),
+           py::return_value_policy::copy)
+      .def(
+          "stripes",
+          [](const io::FragilitySession& s, std::size_t state, std::size_t body) {
+            std::vector<std::tuple<double, std::size_t, std::size_t>> out;
+            for (const Stripe& st : s.stripes(state, body))
+              out.emplace_back(st.im, st.runs, st.failures);
+            return out;
+          },
+          py::arg("state"), py::arg("body"),
+          "The stripes of a body's observations: (IM, runs, failures) per level.")
+      .def("order_notes", &io::FragilitySession::order_notes)
+      .def(
+          "fit_csv",
+          [](const io::FragilitySession& s) {
+            std::ostringstream out;
+            s.write_fits(out);
+            return out.str();
+          },
+          "The fit CSV's text, as ``flexrock fragility -o`` writes it.");
   m.def("fragility_columns", &io::fragility_columns,
         R"doc(Columns of the fit CSV of ``flexrock fragility``.
 

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "flexrock/core/error.hpp"
+#include "flexrock/core/format.hpp"
 
 namespace flexrock {
 
@@ -56,7 +57,7 @@ GroundMotion GroundMotion::sampled(std::vector<double> time, std::vector<double>
 GroundMotion GroundMotion::uniform(double dt, std::vector<double> horizontal,
                                    std::vector<double> vertical, double start) {
   FLEXROCK_THROW_UNLESS(std::isfinite(dt) && dt > 0.0,
-                        "ground motion: time step dt must be positive, got " + std::to_string(dt));
+                        "ground motion: time step dt must be positive, got " + format_number(dt));
   std::vector<double> time(horizontal.size());
   for (std::size_t i = 0; i < time.size(); ++i) time[i] = start + static_cast<double>(i) * dt;
   GroundMotion m = sampled(std::move(time), std::move(horizontal), std::move(vertical));
@@ -69,7 +70,7 @@ GroundMotion GroundMotion::uniform(double dt, std::vector<double> horizontal,
 GroundMotion GroundMotion::analytic(Function f, double duration, std::vector<double> breakpoints) {
   FLEXROCK_THROW_UNLESS(static_cast<bool>(f), "ground motion: analytic function is empty");
   FLEXROCK_THROW_UNLESS(std::isfinite(duration) && duration >= 0.0,
-                        "ground motion: duration must be >= 0, got " + std::to_string(duration));
+                        "ground motion: duration must be >= 0, got " + format_number(duration));
   GroundMotion m;
   m.f_ = std::move(f);
   m.duration_ = duration;
@@ -97,7 +98,7 @@ GroundMotion GroundMotion::with_sinusoids(std::vector<SinusoidPiece> pieces) con
                               std::isfinite(p.phase) && p.begin >= 0.0 && p.end > p.begin &&
                               p.end <= duration_,
                           "ground motion: a sinusoidal piece must be finite and lie within [0, " +
-                              std::to_string(duration_) + "] s with end > begin");
+                              format_number(duration_) + "] s with end > begin");
     p.amplitude *= scale_;  // as the motion's function is scaled
     m.breaks_.push_back(p.begin);
     m.breaks_.push_back(p.end);
@@ -177,8 +178,8 @@ double GroundMotion::next_breakpoint(double t, Cursor& c) const {
 }
 
 GroundMotion GroundMotion::scaled(double factor) const {
-  FLEXROCK_THROW_UNLESS(std::isfinite(factor), "ground motion: scale factor must be finite, got " +
-                                                   std::to_string(factor));
+  FLEXROCK_THROW_UNLESS(std::isfinite(factor),
+                        "ground motion: scale factor must be finite, got " + format_number(factor));
   GroundMotion m = *this;
   // samples are scaled in place, so horizontal() and vertical() give what the body feels
   if (m.time_.empty()) {

@@ -100,6 +100,25 @@ double sinc(double x) { return std::abs(x) < 1e-8 ? 1.0 - x * x / 6.0 : std::sin
 
 }  // namespace
 
+BaseAcceleration peak_acceleration(const GroundMotion& m) {
+  BaseAcceleration peak;
+  auto take = [&](double t) {
+    const BaseAcceleration a = m.at(t);
+    peak.x = std::max(peak.x, std::abs(a.x));
+    peak.y = std::max(peak.y, std::abs(a.y));
+  };
+  if (m.is_sampled()) {
+    for (double t : m.times()) take(t);
+    return peak;
+  }
+  const int n = 20000;
+  for (int i = 0; i <= n; ++i) take(m.duration() * i / n);
+  GroundMotion::Cursor c;
+  for (double t = m.next_breakpoint(-1.0, c); std::isfinite(t); t = m.next_breakpoint(t, c))
+    take(t);
+  return peak;
+}
+
 double peak_ground_acceleration(const std::vector<double>& a) {
   double peak = 0.0;
   for (double x : a) peak = std::max(peak, std::abs(x));

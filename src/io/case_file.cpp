@@ -369,16 +369,7 @@ BodyParameters read_body(Reader& r, std::string& type, bool& rigid, std::vector<
   }
   r.finish("for body type '" + type + "'");
   if (read) *read = body_keys_read(r, kind);
-  if (rigid) {
-    p.mu.resize(0, 0);
-    p.kappa.resize(0, 0);
-    p.gamma.resize(0, 0);
-    p.psi_x.resize(0);
-    p.psi_y.resize(0);
-    p.delta.resize(0);
-    p.beta.resize(0);
-    p.damping = Damping{};
-  }
+  if (rigid) p = taken_rigid(p);
   // validate once here, so that the error names the case file
   try {
     Body body(p);

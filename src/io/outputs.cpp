@@ -28,6 +28,7 @@
 #include <system_error>
 
 #include "flexrock/core/format.hpp"
+#include "flexrock/excitation/intensity.hpp"
 #include "flexrock/io/files.hpp"
 #include "flexrock/version.hpp"
 
@@ -313,27 +314,6 @@ Json jvec(const VectorX& v) {
   Json a = Json::array();
   for (Eigen::Index i = 0; i < v.size(); ++i) a.push_back(jnum(v(i)));
   return a;
-}
-
-// largest |a| of a motion: over its samples, or sampled finely with its breakpoints
-std::pair<double, double> peak_acceleration(const GroundMotion& m) {
-  double px = 0.0, py = 0.0;
-  auto take = [&](double t) {
-    const BaseAcceleration a = m.at(t);
-    px = std::max(px, std::abs(a.x));
-    py = std::max(py, std::abs(a.y));
-  };
-  if (m.is_sampled()) {
-    for (double t : m.times()) take(t);
-    return {px, py};
-  }
-  const int n = 20000;
-  for (int i = 0; i <= n; ++i) take(m.duration() * i / n);
-  GroundMotion::Cursor c;
-  for (double t = m.next_breakpoint(-1.0, c); std::isfinite(t); t = m.next_breakpoint(t, c)) {
-    take(t);
-  }
-  return {px, py};
 }
 
 Json component_json(const ExcitationComponent& e) {

@@ -334,31 +334,18 @@ bool all_blank(const std::vector<Line>& lines) {
 
 }  // namespace
 
-double to_si_factor(AccelUnit unit) {
-  switch (unit) {
-    case AccelUnit::kG:
-      return kStandardGravity;
-    case AccelUnit::kMetersPerSecond2:
-      return 1.0;
-    case AccelUnit::kCentimetersPerSecond2:
-      return 0.01;
+// the row of a unit in kAccelUnits
+const AccelUnitInfo& accel_unit_info(AccelUnit unit) {
+  for (const AccelUnitInfo& u : kAccelUnits) {
+    if (u.unit == unit) return u;
   }
   FLEXROCK_DEMAND(false);
-  return 0.0;
+  return kAccelUnits[0];
 }
 
-std::string_view unit_name(AccelUnit unit) {
-  switch (unit) {
-    case AccelUnit::kG:
-      return "g";
-    case AccelUnit::kMetersPerSecond2:
-      return "m/s^2";
-    case AccelUnit::kCentimetersPerSecond2:
-      return "cm/s^2";
-  }
-  FLEXROCK_DEMAND(false);
-  return "";
-}
+double to_si_factor(AccelUnit unit) { return accel_unit_info(unit).to_si; }
+
+std::string_view unit_name(AccelUnit unit) { return accel_unit_info(unit).name; }
 
 std::size_t Record::peak_index() const {
   std::size_t k = 0;

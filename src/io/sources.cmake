@@ -27,6 +27,9 @@ endif()
 target_link_libraries(flexrock_io PRIVATE $<BUILD_INTERFACE:nlohmann_json::nlohmann_json>)
 
 # study files (spectrum specs, sweep manifests and journals, fragility input): flexrock::io
-target_sources(flexrock_io PRIVATE io/study_files.cpp io/journal.cpp io/uncertain_tables.cpp
+target_sources(flexrock_io PRIVATE io/study_files.cpp io/study_suites.cpp io/study_spectrum.cpp
+                                   io/study_sweep.cpp io/study_journal.cpp
+                                   io/study_fragility_input.cpp io/fragility_session.cpp
+                                   io/journal.cpp io/uncertain_tables.cpp
                                    io/study_session.cpp)
 target_link_libraries(flexrock_io PUBLIC flexrock::study)

@@ -442,10 +442,7 @@ inline std::string resolve_path(const std::string& file, const std::string& p) {
 inline const std::vector<std::string>& accel_unit_names() {
   static const std::vector<std::string> names = [] {
     std::vector<std::string> v;
-    for (AccelUnit u :
-         {AccelUnit::kG, AccelUnit::kMetersPerSecond2, AccelUnit::kCentimetersPerSecond2}) {
-      v.emplace_back(unit_name(u));
-    }
+    for (const AccelUnitInfo& u : kAccelUnits) v.emplace_back(u.name);
     return v;
   }();
   return names;
@@ -453,9 +450,8 @@ inline const std::vector<std::string>& accel_unit_names() {
 
 // the unit of a name of accel_unit_names(); the reader's choice() has checked it
 inline AccelUnit accel_unit(const std::string& name) {
-  for (AccelUnit u :
-       {AccelUnit::kG, AccelUnit::kMetersPerSecond2, AccelUnit::kCentimetersPerSecond2}) {
-    if (name == unit_name(u)) return u;
+  for (const AccelUnitInfo& u : kAccelUnits) {
+    if (name == u.name) return u.unit;
   }
   throw InputError("expected an acceleration unit, one of: " + join(accel_unit_names()) +
                    "; got \"" + name + "\"");

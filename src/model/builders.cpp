@@ -118,6 +118,12 @@ BodyParameters rigid_block(double width, double height, double mass) {
                                (width * width + height * height) / (12.0 * h * h));
 }
 
+BodyParameters taken_rigid(const BodyParameters& body) {
+  BodyParameters p = BodyParameters::rigid(body.mass, body.height, body.b1, body.b2, body.zeta2);
+  p.gravity = body.gravity;
+  return p;
+}
+
 BodyParameters rigid_body(double mass, double inertia_cg, double height, double b1, double b2) {
   constexpr const char* kWhere = "rigid_body";
   require_positive(kWhere, "mass", mass, "[kg]");

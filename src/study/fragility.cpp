@@ -10,6 +10,7 @@
 #include <string>
 
 #include "flexrock/core/error.hpp"
+#include "flexrock/core/format.hpp"
 
 namespace flexrock::study {
 
@@ -74,7 +75,7 @@ void require_identified(const Eigen::Matrix2d& hess, const std::string& what,
                         what +
                             ": beta is not identified: the likelihood is flat (its information "
                             "matrix is singular, eigenvalues " +
-                            std::to_string(l(0)) + " and " + std::to_string(l(1)) +
+                            format_number(l(0), 6) + " and " + format_number(l(1), 6) +
                             "), so every beta fits these data equally; " + hint);
 }
 
@@ -112,7 +113,7 @@ FragilityFit fit_lognormal(const std::vector<double>& im, const std::vector<int>
     FLEXROCK_THROW_UNLESS(std::isfinite(im[i]) && im[i] > 0.0,
                           "fragility: observation " + std::to_string(i + 1) +
                               ": expected an intensity measure > 0 (finite), got " +
-                              std::to_string(im[i]));
+                              format_number(im[i]));
     FLEXROCK_THROW_UNLESS(failed[i] == 0 || failed[i] == 1,
                           "fragility: observation " + std::to_string(i + 1) +
                               ": expected an outcome 0 or 1, got " + std::to_string(failed[i]));
@@ -139,7 +140,7 @@ FragilityFit fit_lognormal(const std::vector<double>& im, const std::vector<int>
       zmax0 > zmin1,
       "fragility: the outcomes are perfectly separated by the intensity measure (every "
       "observation with outcome 0 has IM <= " +
-          std::to_string(std::exp(zmax0)) +
+          format_number(std::exp(zmax0), 6) +
           " <= every one with outcome 1): the maximum likelihood is at beta = 0, no finite "
           "estimate exists; add observations between the two groups");
   FLEXROCK_THROW_UNLESS(zmax1 > zmin0,
@@ -180,7 +181,7 @@ FragilityFit fit_lognormal(const std::vector<double>& im, const std::vector<int>
   FLEXROCK_THROW_UNLESS(b > 0.0,
                         "fragility: the fitted probability decreases with the intensity "
                         "measure (b = " +
-                            std::to_string(b) +
+                            format_number(b, 6) +
                             "): a lognormal fragility cannot describe these data");
   require_identified(h, "fragility",
                      "add runs at intensity measures between and around the present ones");
@@ -227,7 +228,7 @@ FragilityFit fit_stripes(const std::vector<Stripe>& stripes, double confidence) 
   for (std::size_t j = 0; j < stripes.size(); ++j) {
     const Stripe& s = stripes[j];
     const std::string where = "multiple-stripe fit: stripe " + std::to_string(j + 1) + " (IM " +
-                              std::to_string(s.im) + "): ";
+                              format_number(s.im) + "): ";
     FLEXROCK_THROW_UNLESS(std::isfinite(s.im) && s.im > 0.0,
                           where + "expected an intensity measure > 0");
     FLEXROCK_THROW_UNLESS(s.failures <= s.runs, where + "expected at most " +
@@ -314,7 +315,7 @@ FragilityFit fit_capacity_intervals(const std::vector<CapacityInterval>& c, doub
                               !std::isnan(x.upper) && (x.upper > 0.0),
                           "capacity fit: record " + std::to_string(i + 1) +
                               ": expected 0 <= lower <= upper, upper > 0, got (" +
-                              std::to_string(x.lower) + ", " + std::to_string(x.upper) + "]");
+                              format_number(x.lower) + ", " + format_number(x.upper) + "]");
     if (std::isfinite(x.upper)) {
       ++reached;
       sum += std::log(x.lower > 0.0 ? std::sqrt(x.lower * x.upper) : x.upper);
@@ -332,7 +333,7 @@ FragilityFit fit_capacity_intervals(const std::vector<CapacityInterval>& c, doub
   });
   FLEXROCK_THROW_UNLESS(!same && !(max_lower < min_upper),
                         "capacity fit: every record's capacity lies in (" +
-                            std::to_string(max_lower) + ", " + std::to_string(min_upper) +
+                            format_number(max_lower) + ", " + format_number(min_upper) +
                             "]: the maximum likelihood is at beta = 0, no finite estimate "
                             "exists; add levels in that range or more records");
   // Newton on y = (mu, s), s = ln beta (beta stays > 0); the Hessian by central differences of

@@ -6,36 +6,6 @@
 
 namespace flexrock::study {
 
-const char* to_string(Outcome o) {
-  switch (o) {
-    case Outcome::kNoUplift:
-      return "no_uplift";
-    case Outcome::kRocking:
-      return "rocking";
-    case Outcome::kOverturnedAfterImpacts:
-      return "overturned_after_impacts";
-    case Outcome::kOverturnedWithoutImpact:
-      return "overturned_without_impact";
-    case Outcome::kStopped:
-      return "stopped";
-  }
-  return "unknown";
-}
-
-const char* to_string(Regime r) {
-  switch (r) {
-    case Regime::kNone:
-      return "none";
-    case Regime::kSliding:
-      return "sliding";
-    case Regime::kRocking:
-      return "rocking";
-    case Regime::kSlidingRocking:
-      return "sliding_rocking";
-  }
-  return "unknown";
-}
-
 RunSummary summarize(const Body& body, const SimulationResult& r) {
   RunSummary s;
   const Extremes& x = r.extremes;

@@ -8,6 +8,8 @@
 #include <string>
 
 #include "flexrock/core/error.hpp"
+#include "flexrock/core/format.hpp"
+#include "flexrock/excitation/intensity.hpp"
 #include "flexrock/excitation/pulses.hpp"
 #include "flexrock/study/sweep.hpp"
 
@@ -28,7 +30,7 @@ void check_grid(const std::vector<double>& v, const char* name, bool increasing)
   for (std::size_t i = 0; i < v.size(); ++i) {
     FLEXROCK_THROW_UNLESS(std::isfinite(v[i]) && v[i] > 0.0,
                           std::string("spectrum: ") + name + "[" + std::to_string(i) +
-                              "]: expected a finite number > 0, got " + std::to_string(v[i]));
+                              "]: expected a finite number > 0, got " + format_number(v[i]));
     if (increasing && i > 0) {
       FLEXROCK_THROW_UNLESS(v[i] > v[i - 1], std::string("spectrum: ") + name +
                                                  ": expected strictly increasing values (at " +
@@ -43,7 +45,7 @@ void check_common(double free_periods, double tolerance) {
   FLEXROCK_THROW_UNLESS(
       std::isfinite(tolerance) && tolerance >= kMinBisectionTolerance && tolerance < 1.0,
       "spectrum: bisection_tolerance: expected a number in [1e-12, 1), got " +
-          std::to_string(tolerance) +
+          format_number(tolerance) +
           " (a narrower bracket is below what the simulations resolve and than doubles hold)");
 }
 
@@ -133,18 +135,6 @@ const PulseKind& spectrum_kind(const std::string& type) {
 }
 }  // namespace
 
-const char* to_string(OverturnBoundary::Kind k) {
-  switch (k) {
-    case OverturnBoundary::Kind::kFound:
-      return "found";
-    case OverturnBoundary::Kind::kBelowGrid:
-      return "below_grid";
-    case OverturnBoundary::Kind::kNone:
-      return "none";
-  }
-  return "unknown";
-}
-
 double pulse_length(const std::string& type, double omega_p) {
   return spectrum_kind(type).length(omega_p);
 }
@@ -184,9 +174,9 @@ SpectrumResult spectrum_grid(const Body& body, const SpectrumSpec& spec) {
   for (std::size_t j = 0; j < cols; ++j) {
     const double omega = spec.frequencies[j] * w_unit;
     const double duration = pulse_length(spec.pulse, omega) + free_span(body, spec.free_periods);
-    const std::string where = "spectrum: frequency " + std::to_string(spec.frequencies[j]);
+    const std::string where = "spectrum: frequency " + format_number(spec.frequencies[j]);
     FLEXROCK_THROW_UNLESS(std::isfinite(omega) && std::isfinite(duration),
-                          where + ": the pulse and free motion last " + std::to_string(duration) +
+                          where + ": the pulse and free motion last " + format_number(duration) +
                               " s; expected a finite duration");
     try {
       validate_options(body, {}, run_options(spec.solver, duration));
@@ -222,19 +212,19 @@ SpectrumResult record_spectrum_grid(const Body& body, const RecordSpectrumSpec& 
   FLEXROCK_THROW_UNLESS(spec.motion.duration() > 0.0, "spectrum: the record is empty");
   const double duration = spec.motion.duration() + free_span(body, spec.free_periods);
   FLEXROCK_THROW_UNLESS(std::isfinite(duration), "spectrum: the record and free motion last " +
-                                                     std::to_string(duration) +
+                                                     format_number(duration) +
                                                      " s; expected a finite duration");
   try {
     validate_options(body, {}, run_options(spec.solver, duration));
   } catch (const InputError& e) {
     throw InputError(std::string("spectrum: [solver] ") + e.what());
   }
-  double peak = 0.0;  // the scaled record must stay finite
-  for (const double a : spec.motion.horizontal()) peak = std::max(peak, std::abs(a));
-  for (const double a : spec.motion.vertical()) peak = std::max(peak, std::abs(a));
-  FLEXROCK_THROW_UNLESS(std::isfinite(peak * spec.scales.back()),
-                        "spectrum: scales: the record scaled by " +
-                            std::to_string(spec.scales.back()) + " overflows");
+  // the scaled record must stay finite
+  const BaseAcceleration pk = peak_acceleration(spec.motion);
+  const double peak = std::max(pk.x, pk.y);
+  FLEXROCK_THROW_UNLESS(
+      std::isfinite(peak * spec.scales.back()),
+      "spectrum: scales: the record scaled by " + format_number(spec.scales.back()) + " overflows");
   SpectrumResult res;
   res.tan_alpha = body.alpha1();
   res.alpha = body.tipping_angle(1);

@@ -62,7 +62,7 @@ void check_request(const MeasureRequest& m) {
     require_spectral_period(m.period, "intensity measure sa");
     FLEXROCK_THROW_UNLESS(
         m.zeta >= 0.0 && m.zeta < 1.0,
-        "intensity measure sa: expected a damping ratio in [0, 1), got " + std::to_string(m.zeta));
+        "intensity measure sa: expected a damping ratio in [0, 1), got " + format_number(m.zeta));
   }
 }
 
@@ -206,7 +206,7 @@ void validate(const SweepSpec& spec) {
     FLEXROCK_THROW_UNLESS(std::isfinite(spec.scales[i]) && spec.scales[i] > 0.0,
                           "sweep: scales[" + std::to_string(i) +
                               "]: expected a finite number > 0, got " +
-                              std::to_string(spec.scales[i]));
+                              format_number(spec.scales[i]));
   }
   FLEXROCK_THROW_UNLESS(spec.levels.empty() || spec.levels.size() == spec.scales.size(),
                         "sweep: levels: expected one requested level per scale (" +
@@ -239,10 +239,8 @@ void validate(const SweepSpec& spec) {
     FLEXROCK_THROW_UNLESS(r.motion.duration() > 0.0,
                           "sweep: record '" + r.name + "': expected a record lasting > 0 s");
     im.push_back(record_intensity(spec, r.motion));
-    double p = 0.0;
-    for (const double a : r.motion.horizontal()) p = std::max(p, std::abs(a));
-    for (const double a : r.motion.vertical()) p = std::max(p, std::abs(a));
-    peak.push_back(p);
+    const BaseAcceleration p = peak_acceleration(r.motion);
+    peak.push_back(std::max(p.x, p.y));
     if (spec.scale_kind == ScaleKind::kTargetPga) {
       FLEXROCK_THROW_UNLESS(
           im.back().pga > 0.0,
@@ -259,7 +257,7 @@ void validate(const SweepSpec& spec) {
   for (const SweepRun& run : sweep_runs(spec)) {
     const SweepRecord& rec = spec.records[run.record];
     const std::string where = "sweep: body '" + spec.bodies[run.body].name + "', record '" +
-                              rec.name + "', scale " + std::to_string(spec.scales[run.scale_index]);
+                              rec.name + "', scale " + format_number(spec.scales[run.scale_index]);
     // a sampled body is made and checked for every run, as the run will make it
     const std::vector<double> sample =
         design.dimensions() > 0 ? design.values(sample_index(spec, run)) : std::vector<double>{};
@@ -279,10 +277,10 @@ void validate(const SweepSpec& spec) {
             std::isfinite(row.scale * peak[run.record]) && std::isfinite(row.pgv) &&
             std::all_of(row.measures.begin(), row.measures.end(),
                         [](double x) { return std::isfinite(x); }),
-        where + ": the scaled record overflows (factor " + std::to_string(row.scale) + ")");
+        where + ": the scaled record overflows (factor " + format_number(row.scale) + ")");
     FLEXROCK_THROW_UNLESS(std::isfinite(row.duration),
                           where + ": free_periods x 2 pi/p gives a run of " +
-                              std::to_string(row.duration) + " s; expected a finite duration");
+                              format_number(row.duration) + " s; expected a finite duration");
     // the solver options do not depend on the scale (unless sampled): check them once per body
     // and record
     if (run.scale_index == 0 || !sample.empty()) {

@@ -79,18 +79,6 @@ const UncertainKindInfo* find_uncertain_kind(std::string_view name) {
   return nullptr;
 }
 
-const char* to_string(Distribution d) {
-  switch (d) {
-    case Distribution::kUniform:
-      return "uniform";
-    case Distribution::kNormal:
-      return "normal";
-    case Distribution::kLognormal:
-      return "lognormal";
-  }
-  return "?";
-}
-
 namespace {
 
 using boost::math::normal_distribution;

@@ -356,7 +356,7 @@ json flexible() {
     base.width = 0.6;  // b/h = 0.15
     const Body ref = base.body();
     const auto& pr = ref.params();
-    const Body rigid(BodyParameters::rigid(pr.mass, pr.height, pr.b1, pr.b2, pr.zeta2));
+    const Body rigid(taken_rigid(pr));
     const double p = rigid.rocking_frequency(), alpha = rigid.alpha1();
     json curves = json::array();
     for (double f : {0.0, 5.0, 2.0, 1.0}) {
@@ -391,7 +391,7 @@ json flexible() {
     base.zeta = 0.0;
     const Body ref = base.body();
     const auto& pr = ref.params();
-    const Body rigid(BodyParameters::rigid(pr.mass, pr.height, pr.b1, pr.b2, pr.zeta2));
+    const Body rigid(taken_rigid(pr));
     const double p = rigid.rocking_frequency();
     struct Landing {
       double loss = -1.0;                 // [J] energy lost at the first landing
@@ -453,7 +453,7 @@ json foundation() {
     const Body body = c.flexible ? os.body() : block(0.15, 1.0);
     // p and alpha of the rigid body with the same mass distribution
     const auto& pr = body.params();
-    const Body rigid(BodyParameters::rigid(pr.mass, pr.height, pr.b1, pr.b2, pr.zeta2));
+    const Body rigid(taken_rigid(pr));
     const double p = rigid.rocking_frequency(), alpha = std::atan(rigid.alpha1());
     const double wp = c.omega_ratio * p;
     SimulationOptions o = tight(p);

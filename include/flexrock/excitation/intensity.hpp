@@ -13,7 +13,15 @@
 #include <string_view>
 #include <vector>
 
+#include "flexrock/excitation/ground_motion.hpp"
+
 namespace flexrock {
+
+/// The largest |Xddot| and |Yddot| of a motion [m/s^2]: over the samples of a sampled motion;
+/// for an analytic one at 20001 even times over [0, duration] and at every breakpoint (where
+/// pulses start, end and kink). The one statement of a motion's peak (summary JSON, Python,
+/// the studies' overflow checks).
+BaseAcceleration peak_acceleration(const GroundMotion& motion);
 
 /// Largest |a| over the samples [units of `a`].
 double peak_ground_acceleration(const std::vector<double>& a);

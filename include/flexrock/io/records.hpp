@@ -14,6 +14,7 @@
 #include <string_view>
 #include <vector>
 
+#include "flexrock/core/types.hpp"
 #include "flexrock/excitation/ground_motion.hpp"
 
 namespace flexrock::io {
@@ -23,6 +24,18 @@ enum class AccelUnit {
   kG,                      // standard gravity, 9.80665 m/s^2
   kMetersPerSecond2,       // m/s^2
   kCentimetersPerSecond2,  // cm/s^2 (gal)
+};
+
+/// Every unit with its name in files and its size: the one statement of both.
+struct AccelUnitInfo {
+  AccelUnit unit;
+  const char* name;  // in files and messages
+  double to_si;      // [m/s^2] one unit
+};
+inline constexpr AccelUnitInfo kAccelUnits[] = {
+    {AccelUnit::kG, "g", kStandardGravity},
+    {AccelUnit::kMetersPerSecond2, "m/s^2", 1.0},
+    {AccelUnit::kCentimetersPerSecond2, "cm/s^2", 0.01},
 };
 
 /// Metres per second squared in one `unit` (g: kStandardGravity).

@@ -11,6 +11,7 @@
 #include <iosfwd>
 #include <map>
 #include <string>
+#include <string_view>
 #include <variant>
 #include <vector>
 
@@ -135,6 +136,12 @@ std::vector<ColumnInfo> sweep_column_info(const study::SweepSpec& spec);
 std::vector<FieldValue> sweep_values(const study::SweepSpec& spec, const study::SweepRow& row);
 /// The columns of the spectrum CSV (spectrum_columns(sliding)) with units and types.
 std::vector<ColumnInfo> spectrum_column_info(bool sliding = false);
+/// Columns of the boundary CSV, and the fields of a column's boundary, one per column (as
+/// boundary_row writes them).
+std::vector<ColumnInfo> boundary_column_info();
+std::vector<FieldValue> boundary_values(const study::SpectrumResult& result,
+                                        const study::OverturnBoundary& b, bool normalized,
+                                        double g);
 /// The fields of a cell, one per column of spectrum_column_info(result.sliding).
 std::vector<FieldValue> spectrum_values(const study::SpectrumResult& result,
                                         const study::SpectrumCell& cell, double g);
@@ -173,7 +180,62 @@ struct CsvTable {
 /// fields as the header. Throws InputError with file:line.
 CsvTable read_csv_table(const std::string& path);
 
-/// What a fragility fit of a sweep CSV counts as failure.
+/// What a fragility fit counts as failure (a damage state's outcome).
+enum class FragilityOutcome {
+  kOverturned,      // the run overturned
+  kUplift,          // it left full contact: any outcome class but no_uplift
+  kTheta,           // max theta/alpha > level [-]
+  kEnergy,          // energy lost > level [J]
+  kOffset,          // peak sliding offset > level [m]
+  kResidualOffset,  // |residual sliding offset| > level [m]
+};
+
+/// One row per outcome: its name (--outcome, --state), the sweep column it reads, whether it
+/// takes a level, whether the column is one of the sliding ones (a sweep with finite friction),
+/// and its --state form for messages.
+struct FragilityOutcomeInfo {
+  FragilityOutcome outcome;
+  const char* name;
+  const char* column;
+  bool levelled;          // failure: the column's value above the level (or overturned)
+  bool sliding;           // the column exists only with a finite friction coefficient
+  const char* state_doc;  // "theta:X (max theta/alpha > X)"
+  const char* what;       // what fails, as the fit is titled: "overturning", "energy lost > "
+  const char* unit;       // after the level of a levelled outcome: "", " J", " m"
+};
+inline constexpr FragilityOutcomeInfo kFragilityOutcomes[] = {
+    {FragilityOutcome::kOverturned, "overturned", "overturned", false, false, "overturned",
+     "overturning", ""},
+    {FragilityOutcome::kUplift, "uplift", "outcome", false, false, "uplift", "uplift", ""},
+    {FragilityOutcome::kTheta, "theta", "max_theta_over_alpha", true, false,
+     "theta:X (max theta/alpha > X)", "max theta/alpha > ", ""},
+    {FragilityOutcome::kEnergy, "energy", "energy_lost_J", true, false,
+     "energy:X (energy lost > X J)", "energy lost > ", " J"},
+    {FragilityOutcome::kOffset, "offset", "max_offset_m", true, true,
+     "offset:X (peak sliding offset > X m)", "peak sliding offset > ", " m"},
+    {FragilityOutcome::kResidualOffset, "residual_offset", "final_offset_m", true, true,
+     "residual_offset:X (|residual offset| > X m)", "residual offset > ", " m"},
+};
+/// The row of an outcome, and of a name (nullptr if none).
+const FragilityOutcomeInfo& fragility_outcome(FragilityOutcome outcome);
+const FragilityOutcomeInfo* find_fragility_outcome(std::string_view name);
+
+/// The kind of a fit's intensity measure: a column every sweep writes, or one of the sweep's
+/// [intensity] table.
+enum class FragilityMeasureKind { kPga, kPgaG, kPgv, kScale, kRequestedLevel, kIntensity };
+
+/// An intensity measure of a fit, typed: what it is, the sweep column it reads and its unit.
+struct FragilityMeasure {
+  FragilityMeasureKind kind = FragilityMeasureKind::kPga;
+  std::string name = "pga";             // as given: "pga", "pga_g", "sa:0.5", ...
+  std::string column = "pga_m_per_s2";  // the sweep CSV column
+  std::string unit = "m/s^2";           // requested_level: "-" (the file's requested_units)
+  study::MeasureRequest request;        // kIntensity: the measure, its period and damping
+};
+/// The measure so named (fragility_measures()); throws InputError listing the names.
+FragilityMeasure fragility_measure(const std::string& name);
+
+/// What a fragility fit of a sweep CSV counts as failure, by names (see FragilityOutcome).
 struct FragilityQuery {
   std::string im = "pga";              // fragility_measures(): "pga" [m/s^2], "pga_g" [g], "pgv"
                                        // [m/s], "scale" [-], "pgd" [m], "sa:0.5" [m/s^2], ...
@@ -225,12 +287,16 @@ std::string fragility_row(const FragilityData& data, const study::FragilityFit& 
 /// "uplift" (any class but no_uplift), or "theta:X", "energy:X", "offset:X",
 /// "residual_offset:X" (the FragilityQuery outcome of that name with level X > 0).
 struct DamageState {
-  std::string label;    // as given, e.g. "theta:0.5": the fit CSV's state column
-  std::string outcome;  // FragilityQuery::outcome
-  double level = 0.0;   // FragilityQuery::level (0 for overturned and uplift)
+  std::string label;                                         // as given, e.g. "theta:0.5"
+  FragilityOutcome outcome = FragilityOutcome::kOverturned;  // what fails
+  double level = 0.0;  // threshold of a levelled outcome (0 for overturned and uplift)
 };
 /// Parses a damage state; throws InputError saying what is expected.
 DamageState damage_state(const std::string& text);
+/// The observations of fragility_data for a typed measure and damage state (`body` empty: every
+/// body).
+std::vector<FragilityData> fragility_data(const CsvTable& table, const FragilityMeasure& measure,
+                                          const DamageState& state, const std::string& body);
 /// The fit CSV of several damage states: the columns above with `state` after `body`, and a
 /// line of it.
 std::vector<std::string> fragility_state_columns();

@@ -17,6 +17,10 @@ namespace flexrock {
 /// Uniform rigid rectangular block of full `width` and full `height` [m], mass [kg].
 BodyParameters rigid_block(double width, double height, double mass);
 
+/// The same body taken as rigid (a case file's `rigid = true`): M, h, b1, b2, zeta^2 and g kept,
+/// every modal term (mu, kappa, gamma, psi, delta, beta, damping) dropped.
+BodyParameters taken_rigid(const BodyParameters& body);
+
 /// General rigid body: mass M [kg], rotary inertia about the c.g. I_cg [kg m^2], c.g. height h
 /// and distances b1, b2 [m] from the c.g. to the tipping points.
 BodyParameters rigid_body(double mass, double inertia_cg, double height, double b1, double b2);

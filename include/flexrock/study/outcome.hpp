@@ -4,6 +4,7 @@
 // overturned without impact (their mode 2).
 #pragma once
 
+#include "flexrock/core/enum_names.hpp"
 #include "flexrock/model/body.hpp"
 #include "flexrock/sim/simulate.hpp"
 
@@ -17,9 +18,15 @@ enum class Outcome {
   kStopped,                  // the run could not go on (step collapse, limits): see the message
 };
 
-/// Stable lower-case name: "no_uplift", "rocking", "overturned_after_impacts",
-/// "overturned_without_impact", "stopped".
-const char* to_string(Outcome o);
+/// The stable lower-case names of the outcomes, as the study CSVs write them.
+inline constexpr EnumName<Outcome> kOutcomeNames[] = {
+    {Outcome::kNoUplift, "no_uplift"},
+    {Outcome::kRocking, "rocking"},
+    {Outcome::kOverturnedAfterImpacts, "overturned_after_impacts"},
+    {Outcome::kOverturnedWithoutImpact, "overturned_without_impact"},
+    {Outcome::kStopped, "stopped"},
+};
+inline const char* to_string(Outcome o) { return name_of(kOutcomeNames, o); }
 
 /// What the base did during a run (finite friction only): whether it slid and whether the body
 /// uplifted (rocked or left the floor). An overturned body keeps its outcome; this says how it got
@@ -31,8 +38,14 @@ enum class Regime {
   kSlidingRocking,  // both (in one mode, rocking on a sliding pivot, or in turn)
 };
 
-/// Stable lower-case name: "none", "sliding", "rocking", "sliding_rocking".
-const char* to_string(Regime r);
+/// The stable lower-case names of the regimes, as the study CSVs write them.
+inline constexpr EnumName<Regime> kRegimeNames[] = {
+    {Regime::kNone, "none"},
+    {Regime::kSliding, "sliding"},
+    {Regime::kRocking, "rocking"},
+    {Regime::kSlidingRocking, "sliding_rocking"},
+};
+inline const char* to_string(Regime r) { return name_of(kRegimeNames, r); }
 
 /// The solver options a study starts from: the engine's, whose overturning rule (|theta| = pi/2)
 /// is that of every entry point. Under a pulse or record that reverses, a body past its static

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "flexrock/core/enum_names.hpp"
 #include "flexrock/excitation/ground_motion.hpp"
 #include "flexrock/model/body.hpp"
 #include "flexrock/sim/simulate.hpp"
@@ -80,7 +81,13 @@ struct OverturnBoundary {
   bool resumed = false;  // known before the call (SpectrumResume): not bisected, not set here
 };
 
-const char* to_string(OverturnBoundary::Kind k);  // "found", "below_grid", "none"
+/// The names of the boundary kinds, as the boundary CSV writes them.
+inline constexpr EnumName<OverturnBoundary::Kind> kBoundaryKindNames[] = {
+    {OverturnBoundary::Kind::kFound, "found"},
+    {OverturnBoundary::Kind::kBelowGrid, "below_grid"},
+    {OverturnBoundary::Kind::kNone, "none"},
+};
+inline const char* to_string(OverturnBoundary::Kind k) { return name_of(kBoundaryKindNames, k); }
 
 struct SpectrumResult {
   double alpha = 0.0;               // [rad] tipping angle of edge 1 (atan(b1/h) for a rigid body)

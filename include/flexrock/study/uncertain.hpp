@@ -13,6 +13,7 @@
 #include <string_view>
 #include <vector>
 
+#include "flexrock/core/enum_names.hpp"
 #include "flexrock/model/body.hpp"
 #include "flexrock/sim/simulate.hpp"
 
@@ -59,7 +60,12 @@ enum class Distribution {
   kNormal,     // a = mean, b = standard deviation
   kLognormal,  // a = median, b = beta, the standard deviation of ln x
 };
-const char* to_string(Distribution d);
+inline constexpr EnumName<Distribution> kDistributionNames[] = {
+    {Distribution::kUniform, "uniform"},
+    {Distribution::kNormal, "normal"},
+    {Distribution::kLognormal, "lognormal"},
+};
+inline const char* to_string(Distribution d) { return name_of(kDistributionNames, d, "?"); }
 
 struct UncertainParameter {
   UncertainKind kind = UncertainKind::kFriction;
