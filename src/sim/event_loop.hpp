@@ -15,9 +15,9 @@ template <int N, int MaxN>
 bool Simulator<N, MaxN>::enter_mode(double t, State& x) {
   bool running = true;
   do {
-    entry_pending_ = false;
+    latch_.entry_pending = false;
     running = start_mode(t, x);
-  } while (running && entry_pending_);
+  } while (running && latch_.entry_pending);
   return running;
 }
 
@@ -28,8 +28,8 @@ template <int N, int MaxN>
 bool Simulator<N, MaxN>::start_mode(double t, State& x) {
   // every reset's new mode starts here, those a mode's entry state calls for at once included:
   // contact changes piling up at one instant would loop forever, so they stop the run
-  if (t - zeno_time_ < 1e-9 * std::max(1.0, t)) {
-    if (++same_time_events_ > kSameInstantEntries) {
+  if (t - ledger_.zeno_time < 1e-9 * std::max(1.0, t)) {
+    if (++ledger_.same_time_events > kSameInstantEntries) {
       return stop(t, "contact changes accumulate at t = " + short_number(t) +
                          " s without time advancing (Zeno behaviour) in " + to_string(mode_) +
                          (opt_.chatter_ratio <= 0.0 ? " with the chatter cut-off disabled "
@@ -37,8 +37,8 @@ bool Simulator<N, MaxN>::start_mode(double t, State& x) {
                                                     : ""));
     }
   } else {
-    zeno_time_ = t;
-    same_time_events_ = 0;
+    ledger_.zeno_time = t;
+    ledger_.same_time_events = 0;
   }
   if (full_contact()) {
     x(0) = 0.0;
@@ -60,38 +60,39 @@ bool Simulator<N, MaxN>::start_mode(double t, State& x) {
   const ModeSpec& spec = mode_spec(mode_);
   for (int j = 0; j < spec.count; ++j) {
     const auto k = static_cast<std::size_t>(j);
-    if (zero_start_[k] && s0_.v[k] != 0.0) zero_start_[k] = false;
+    if (latch_.zero_start[k] && s0_.v[k] != 0.0) latch_.zero_start[k] = false;
   }
   auto at_or_below = [&](Guard g) {
     const int j = guard_slot(mode_, g);
-    return j >= 0 && !zero_start_[static_cast<std::size_t>(j)] &&
+    return j >= 0 && !latch_.zero_start[static_cast<std::size_t>(j)] &&
            s0_.v[static_cast<std::size_t>(j)] <= 0.0;
   };
   const int lift = guard_slot(mode_, Guard::kLiftOff);
-  if (lift < 0) hold_tension_ = false;
-  if (lift < 0 || (s0_.v[static_cast<std::size_t>(lift)] > 0.0 && !hold_tension_)) tension_ = false;
+  if (lift < 0) latch_.hold_tension = false;
+  if (lift < 0 || (s0_.v[static_cast<std::size_t>(lift)] > 0.0 && !latch_.hold_tension))
+    latch_.tension = false;
   if (at_or_below(Guard::kOverturn)) return overturned(t, x);
-  if (!tension_ && at_or_below(Guard::kLiftOff)) return lift_off(t, x);
+  if (!latch_.tension && at_or_below(Guard::kLiftOff)) return lift_off(t, x);
   // an uplift is tried before a slip (theory §20): rocking on a sticking pivot if its friction
   // holds, else rocking with the pivot sliding if that turns the body up, else sliding flat
-  if (full_contact() && !suppress_uplift_at_start_) {
+  if (full_contact() && !latch_.suppress_uplift_at_start) {
     const bool up1 = at_or_below(Guard::kUpliftEdge1), up2 = at_or_below(Guard::kUpliftEdge2);
     if (up1 || up2) {
       const int e = up1 && (!up2 || s0_.v[0] <= s0_.v[1]) ? 1 : 2;
       if (!sliding() && !uplift_holds(t, e)) {
-        suppress_uplift_at_start_ = true;  // the body slides flat instead
+        latch_.suppress_uplift_at_start = true;  // the body slides flat instead
         return start_slip(t, x);
       }
       return uplift(t, x, e);
     }
   }
-  suppress_uplift_at_start_ = false;
+  latch_.suppress_uplift_at_start = false;
   if (at_or_below(Guard::kFrictionLimit)) return start_slip(t, x);
   if (at_or_below(Guard::kSlipStop)) return stick(t, x);
   if (flying()) {
     for (int e : {1, 2}) {
       if (at_or_below(e == 1 ? Guard::kLandingEdge1 : Guard::kLandingEdge2))
-        return land(t, x, e, rigid_law_);
+        return land(t, x, e, setup_.rigid_law);
     }
   }
   return true;
@@ -125,7 +126,7 @@ void Simulator<N, MaxN>::start_series(double t, const State& x) requires(N == 0)
   if (start_arc(t, dense_buf_)) return;  // the arc needs no series
   const int e = edge();
   const double a = dyn_.alpha(e);
-  series_.integ.set_pivot(a, dyn_.g_over_h() / dyn_.inertia(a, q_),
+  series_.integ.set_pivot(a, dyn_.g_over_h() / dyn_.inertia(a, scratch_.q),
                           dyn_.mass() * dyn_.height() * dyn_.g(), dyn_.g());
   series_.integ.start([](double, const ContactState&, ContactState&) {}, ctl_, t, dense_buf_);
 }
@@ -236,11 +237,11 @@ bool Simulator<N, MaxN>::step_guards(int samples, double t1, double& t_hit, int&
     const auto k = static_cast<std::size_t>(j);
     const GuardSpec& g = guard_spec(spec.guards[k]);
     if (g.guard == Guard::kPeak && !rocking()) continue;
-    if (g.guard == Guard::kLiftOff && tension_) continue;
+    if (g.guard == Guard::kLiftOff && latch_.tension) continue;
     // without a friction limit its guard is the constant 1 (evaluate): it never crosses
     if (g.guard == Guard::kFrictionLimit && !std::isfinite(opt_.friction_coefficient)) continue;
-    when[k] = first_crossing(j, samples_buf_.data(), samples, zero_start_[k], g.fires_if_unresolved,
-                             *this);
+    when[k] = first_crossing(j, points_.samples.data(), samples, latch_.zero_start[k],
+                             g.fires_if_unresolved, *this);
     if (g.reset != Reset::kRecord && when[k] < t_hit) {
       t_hit = when[k];
       slot_hit = j;
@@ -280,22 +281,23 @@ template <int N, int MaxN>
 template <class Stepper, class System, class Buffer>
 bool Simulator<N, MaxN>::advance_with(Stepper& integ, System&& sys, Buffer& buf, double& t,
                                       State& x) {
-  const double t_stop = std::min({t_end_, motion_.next_breakpoint(t, break_cursor_), step_stop_});
+  const double t_stop =
+      std::min({setup_.t_end, motion_.next_breakpoint(t, cursor_.brk), step_stop_});
   if (!count_step(t)) return false;
   const auto status = integ.step(sys, t_stop);
   if (status != std::remove_cv_t<decltype(status)>::kAccepted) return step_collapsed(t);
-  if (slide_inconsistent_)
+  if (latch_.slide_inconsistent)
     return stop(t, "no consistent slide near t = " + short_number(t) + " s in " + to_string(mode_) +
                        ": Coulomb friction with this coefficient would need the floor to push the "
                        "slip forward (Painleve's paradox; docs/theory.md, \"Sliding\")");
   const double t0 = integ.t0(), t1 = integ.t1();
   if (opt_.progress) opt_.progress->store(t1, std::memory_order_relaxed);
   // sample the guards across the step, keeping the states for the extremes
-  auto& smp = samples_buf_;
+  auto& smp = points_.samples;
   smp[0] = s0_;
   for (int k = 1; k <= samples_; ++k) {
     const double tk = k == samples_ ? t1 : t0 + (t1 - t0) * k / samples_;
-    State& xk = sample_states_[static_cast<std::size_t>(k)];
+    State& xk = points_.states[static_cast<std::size_t>(k)];
     if (k == samples_) {
       put(integ.x1(), xk);
     } else {
@@ -309,26 +311,26 @@ bool Simulator<N, MaxN>::advance_with(Stepper& integ, System&& sys, Buffer& buf,
   const bool hit = step_guards(samples_, t1, t_hit, slot_hit);
   // extremes from the samples that precede any state change and from the state just before it,
   // then located between them
-  if (n_ > 0) qu_.noalias() = Dyn::mv(to_user_, x.segment(iq(), n_));
-  keep_point(0, t0, s0_, qu_);
+  if (n_ > 0) scratch_.qu.noalias() = Dyn::mv(to_user_, x.segment(iq(), n_));
+  keep_point(0, t0, s0_, scratch_.qu);
   int points = 1;
   for (int k = 1; k <= samples_; ++k) {
     const auto kk = static_cast<std::size_t>(k);
     if (smp[kk].t >= t_hit) break;
-    observe(smp[kk], sample_states_[kk]);  // leaves u in qu_
-    keep_point(points++, smp[kk].t, smp[kk], qu_);
+    observe(smp[kk], points_.states[kk]);  // leaves u in scratch_.qu
+    keep_point(points++, smp[kk].t, smp[kk], scratch_.qu);
   }
-  if (hit && t_hit > point_t_[static_cast<std::size_t>(points - 1)]) {
+  if (hit && t_hit > points_.t[static_cast<std::size_t>(points - 1)]) {
     GuardSample before;
-    state_at(t_hit, xr_);
-    evaluate(t_hit, xr_, before);
-    observe(before, xr_);
-    keep_point(points++, t_hit, before, qu_);
+    state_at(t_hit, scratch_.xr);
+    evaluate(t_hit, scratch_.xr, before);
+    observe(before, scratch_.xr);
+    keep_point(points++, t_hit, before, scratch_.qu);
   }
   locate_step_extremes(points);
   // an analytic motion may jump at a breakpoint: start the next step from its right limit
-  if (!hit && t1 == t_stop && t1 < t_end_ && !motion_.is_sampled())
-    integ.refresh_derivative(sys, std::nextafter(t1, t_end_));
+  if (!hit && t1 == t_stop && t1 < setup_.t_end && !motion_.is_sampled())
+    integ.refresh_derivative(sys, std::nextafter(t1, setup_.t_end));
   return end_step(integ, sys, slot_hit, t_hit, smp[static_cast<std::size_t>(samples_)], t, x);
 }
 
@@ -343,7 +345,7 @@ bool Simulator<N, MaxN>::end_step(Stepper& integ, System&& sys, int slot_hit, do
     t = integ.t1();
     put(integ.x1(), x);
     s0_ = s_end;
-    zero_start_.fill(false);
+    latch_.zero_start.fill(false);
     release_latches(s0_);
     return true;
   }
@@ -359,8 +361,8 @@ bool Simulator<N, MaxN>::end_step(Stepper& integ, System&& sys, int slot_hit, do
 template <int N, int MaxN>
 void Simulator<N, MaxN>::keep_point(int p, double t, const GuardSample& s, const Vec& u) {
   const auto pp = static_cast<std::size_t>(p);
-  point_t_[pp] = t;
-  Quantities& v = point_vals_[pp];
+  points_.t[pp] = t;
+  Quantities& v = points_.vals[pp];
   if constexpr (N == Eigen::Dynamic)
     v.head(n_) = u.array().abs();
   else if constexpr (N != 0)
@@ -369,8 +371,8 @@ void Simulator<N, MaxN>::keep_point(int p, double t, const GuardSample& s, const
   v(n_ + 1) = std::abs(s.moment);
   v(n_ + 2) = friction_demand(s);
   v(n_ + 3) = pull_of(s);
-  point_pressing_[pp] = s.fj >= kPressingFraction;
-  point_fj_[pp] = s.fj;
+  points_.pressing[pp] = s.fj >= kPressingFraction;
+  points_.fj[pp] = s.fj;
 }
 
 template <int N, int MaxN>
@@ -387,10 +389,10 @@ inline double Simulator<N, MaxN>::point_quantity(int k, const GuardSample& s,
 
 template <int N, int MaxN>
 double Simulator<N, MaxN>::step_quantity(int k, double t) {
-  state_at(t, xr_);
+  state_at(t, scratch_.xr);
   GuardSample s;
-  if (k >= n_) evaluate(t, xr_, s);  // a deformation needs the state alone
-  return point_quantity(k, s, xr_);
+  if (k >= n_) evaluate(t, scratch_.xr, s);  // a deformation needs the state alone
+  return point_quantity(k, s, scratch_.xr);
 }
 
 // A step's quantities (|u_j|, |F_I|, |moment|, friction demand) peak between its observed points:
@@ -399,12 +401,12 @@ double Simulator<N, MaxN>::step_quantity(int k, double t) {
 template <int N, int MaxN>
 void Simulator<N, MaxN>::locate_step_extremes(int points) {
   // the time the floor pulls on the held pivot, its sign changes between the points located
-  if (tension_) {
+  if (latch_.tension) {
     GuardSample s;
     res_.extremes.tension_time +=
-        time_negative(point_t_.data(), point_fj_.data(), points, [&](double t) {
-          state_at(t, xr_);
-          evaluate(t, xr_, s);
+        time_negative(points_.t.data(), points_.fj.data(), points, [&](double t) {
+          state_at(t, scratch_.xr);
+          evaluate(t, scratch_.xr, s);
           return s.fj;
         });
   }
@@ -412,25 +414,25 @@ void Simulator<N, MaxN>::locate_step_extremes(int points) {
   // and rises toward that limit before the floor lets go: its peak lies at the switch
   for (int p = 1; p < points; ++p) {
     const auto pp = static_cast<std::size_t>(p);
-    const bool pressed_before = point_pressing_[pp - 1];
-    if (pressed_before == point_pressing_[pp]) continue;
+    const bool pressed_before = points_.pressing[pp - 1];
+    if (pressed_before == points_.pressing[pp]) continue;
     GuardSample s;
-    observe_at(bisect_switch(point_t_[pp - 1], point_t_[pp], pressed_before, [&](double t) {
-      state_at(t, xr_);
-      evaluate(t, xr_, s);
+    observe_at(bisect_switch(points_.t[pp - 1], points_.t[pp], pressed_before, [&](double t) {
+      state_at(t, scratch_.xr);
+      evaluate(t, scratch_.xr, s);
       return s.fj >= kPressingFraction;
     }));
   }
   if (points < 3) return;
   const Extremes& ex = res_.extremes;
   const double mg = dyn_.mass() * dyn_.g(), mgh = mg * dyn_.height();
-  if constexpr (N != 0) point_extreme_.head(n_) = ex.max_abs_q.array();
-  point_extreme_(n_) = ex.max_base_shear / mg;
-  point_extreme_(n_ + 1) = ex.max_overturning_moment / mgh;
-  point_extreme_(n_ + 2) = ex.max_friction_demand;
-  point_extreme_(n_ + 3) = ex.max_pivot_pull / mg;
+  if constexpr (N != 0) points_.extreme.head(n_) = ex.max_abs_q.array();
+  points_.extreme(n_) = ex.max_base_shear / mg;
+  points_.extreme(n_ + 1) = ex.max_overturning_moment / mgh;
+  points_.extreme(n_ + 2) = ex.max_friction_demand;
+  points_.extreme(n_ + 3) = ex.max_pivot_pull / mg;
   locate_peaks_between(
-      point_t_.data(), point_vals_.data(), points, point_extreme_,
+      points_.t.data(), points_.vals.data(), points, points_.extreme,
       [this](int k, double t) { return step_quantity(k, t); }, [this](double t) { observe_at(t); });
 }
 

@@ -12,7 +12,7 @@ namespace flexrock::detail {
 // full contact (theory §4, theta = 0) and rocking (theory §4); writes every entry
 template <int N, int MaxN>
 void Simulator<N, MaxN>::contact_rhs(double t, const ContactState& x, ContactState& dx) {
-  const BaseAcceleration a = motion_.at(t, rhs_cursor_);
+  const BaseAcceleration a = motion_.at(t, cursor_.rhs);
   dx.resize(x.size());
   if (rocking()) {
     // from the state to its derivative in place, every shared sum formed once
@@ -29,29 +29,29 @@ void Simulator<N, MaxN>::contact_rhs(double t, const ContactState& x, ContactSta
     return;
   }
   unpack(x);
-  dyn_.full_contact_acceleration(q_, qd_, a, qdd_);
+  dyn_.full_contact_acceleration(scratch_.q, scratch_.qd, a, scratch_.qdd);
   dx(0) = 0.0;
-  dx.segment(iq(), n_) = qd_;
+  dx.segment(iq(), n_) = scratch_.qd;
   dx(ithd()) = 0.0;
-  dx.segment(iqd(), n_) = qdd_;
-  dx(iw()) = dyn_.input_power(0.0, 0.0, q_, 0.0, qd_, a);
-  dx(id()) = dyn_.damping_power(qd_);
+  dx.segment(iqd(), n_) = scratch_.qdd;
+  dx(iw()) = dyn_.input_power(0.0, 0.0, scratch_.q, 0.0, scratch_.qd, a);
+  dx(id()) = dyn_.damping_power(scratch_.qd);
 }
 
 // theory "Flight": the c.g. is ballistic relative to the base, the rest feels no gravity
 template <int N, int MaxN>
 void Simulator<N, MaxN>::flight_rhs(double t, const FlightState& x, FlightState& dx) {
-  const BaseAcceleration a = motion_.at(t, rhs_cursor_);
+  const BaseAcceleration a = motion_.at(t, cursor_.rhs);
   unpack(x);
   dx.resize(x.size());
   double thdd = 0.0;
-  dyn_.flight_acceleration(q_, x(ithd()), qd_, thdd, qdd_);
+  dyn_.flight_acceleration(scratch_.q, x(ithd()), scratch_.qd, thdd, scratch_.qdd);
   dx(0) = x(ithd());
-  dx.segment(iq(), n_) = qd_;
+  dx.segment(iq(), n_) = scratch_.qd;
   dx(ithd()) = thdd;
-  dx.segment(iqd(), n_) = qdd_;
+  dx.segment(iqd(), n_) = scratch_.qdd;
   dx(iw()) = dyn_.flight_input_power(cg_velocity(x), a);
-  dx(id()) = dyn_.damping_power(qd_);
+  dx(id()) = dyn_.damping_power(scratch_.qd);
   dx(ixc()) = x(ixc() + 2);
   dx(ixc() + 1) = x(ixc() + 3);
   dx(ixc() + 2) = -a.x;
@@ -70,24 +70,28 @@ double Simulator<N, MaxN>::slide_acceleration(double sn, double cs, double theta
   double thdd0 = 0.0, thdd1 = 0.0;
   if (rocking()) {
     const int e = edge();
-    dyn_.rocking_acceleration_sc(e, sn, cs, q_, theta_dot, qd_, a, thdd0, qdd_);
-    r0 = dyn_.rocking_reaction_sc(e, sn, cs, q_, theta_dot, qd_, thdd0, qdd_, a);
-    dyn_.rocking_acceleration_sc(e, sn, cs, q_, theta_dot, qd_, a1, thdd1, qdd1_);
-    r1 = dyn_.rocking_reaction_sc(e, sn, cs, q_, theta_dot, qd_, thdd1, qdd1_, a1);
+    dyn_.rocking_acceleration_sc(e, sn, cs, scratch_.q, theta_dot, scratch_.qd, a, thdd0,
+                                 scratch_.qdd);
+    r0 = dyn_.rocking_reaction_sc(e, sn, cs, scratch_.q, theta_dot, scratch_.qd, thdd0,
+                                  scratch_.qdd, a);
+    dyn_.rocking_acceleration_sc(e, sn, cs, scratch_.q, theta_dot, scratch_.qd, a1, thdd1,
+                                 scratch_.qdd1);
+    r1 = dyn_.rocking_reaction_sc(e, sn, cs, scratch_.q, theta_dot, scratch_.qd, thdd1,
+                                  scratch_.qdd1, a1);
   } else {
-    dyn_.full_contact_acceleration(q_, qd_, a, qdd_);
-    r0 = dyn_.full_contact_reaction(qdd_, a);
-    dyn_.full_contact_acceleration(q_, qd_, a1, qdd1_);
-    r1 = dyn_.full_contact_reaction(qdd1_, a1);
+    dyn_.full_contact_acceleration(scratch_.q, scratch_.qd, a, scratch_.qdd);
+    r0 = dyn_.full_contact_reaction(scratch_.qdd, a);
+    dyn_.full_contact_acceleration(scratch_.q, scratch_.qd, a1, scratch_.qdd1);
+    r1 = dyn_.full_contact_reaction(scratch_.qdd1, a1);
   }
   const double s = slip();
   const Eigen::Vector2d dr = r1 - r0;  // the reaction's change per m/s^2 of d_ddot
   // k > 0: friction opposing the slip decelerates it; k <= 0 has no consistent slide (Painleve)
-  const double k = dr(0) + s * mu_k_ * dr(1);
-  if (!(k > 0.0)) slide_inconsistent_ = true;
-  const double dd = -(r0(0) + s * mu_k_ * r0(1)) / k;
+  const double k = dr(0) + s * setup_.mu_k * dr(1);
+  if (!(k > 0.0)) latch_.slide_inconsistent = true;
+  const double dd = -(r0(0) + s * setup_.mu_k * r0(1)) / k;
   theta_ddot = thdd0 + dd * (thdd1 - thdd0);
-  qdd_ += dd * (qdd1_ - qdd_);
+  scratch_.qdd += dd * (scratch_.qdd1 - scratch_.qdd);
   reaction = r0 + dd * dr;
   return dd;
 }
@@ -96,7 +100,7 @@ double Simulator<N, MaxN>::slide_acceleration(double sn, double cs, double theta
 // the powers relative to the base: input -M a.(v_cm + d_dot I), friction dissipation -F_I d_dot
 template <int N, int MaxN>
 void Simulator<N, MaxN>::slide_rhs(double t, const SlideState& x, SlideState& dx) {
-  const BaseAcceleration a = motion_.at(t, rhs_cursor_);
+  const BaseAcceleration a = motion_.at(t, cursor_.rhs);
   unpack(x);
   dx.resize(x.size());
   double sn = 0.0, cs = 0.0;
@@ -107,11 +111,12 @@ void Simulator<N, MaxN>::slide_rhs(double t, const SlideState& x, SlideState& dx
   const double dd = slide_acceleration(sn, cs, x(ithd()), a, thdd, r);
   const double al = rocking() ? dyn_.alpha(edge()) : 0.0;
   dx(0) = rocking() ? x(ithd()) : 0.0;
-  dx.segment(iq(), n_) = qd_;
+  dx.segment(iq(), n_) = scratch_.qd;
   dx(ithd()) = thdd;
-  dx.segment(iqd(), n_) = qdd_;
-  dx(iw()) = dyn_.input_power_sc(al, sn, cs, q_, x(ithd()), qd_, a) - dyn_.mass() * a.x * v;
-  dx(id()) = dyn_.damping_power(qd_);
+  dx.segment(iqd(), n_) = scratch_.qdd;
+  dx(iw()) = dyn_.input_power_sc(al, sn, cs, scratch_.q, x(ithd()), scratch_.qd, a) -
+             dyn_.mass() * a.x * v;
+  dx(id()) = dyn_.damping_power(scratch_.qd);
   dx(jsd()) = v;
   dx(jsd() + 1) = dd;
   dx(jsd() + 2) = -dyn_.mass() * dyn_.g() * r(0) * v;
@@ -120,7 +125,8 @@ void Simulator<N, MaxN>::slide_rhs(double t, const SlideState& x, SlideState& dx
 template <int N, int MaxN>
 void Simulator<N, MaxN>::evaluate(double t, const State& x, GuardSample& s) {
   // after the motion's end (GroundMotion::quiet_from) the floor is at rest
-  const BaseAcceleration a = t > quiet_from_ ? BaseAcceleration{} : motion_.at(t, event_cursor_);
+  const BaseAcceleration a =
+      t > setup_.quiet_from ? BaseAcceleration{} : motion_.at(t, cursor_.event);
   unpack(x);
   s.t = t;
   // each value goes to its guard's slot in the mode's list, which the table fixes at compile time
@@ -129,12 +135,12 @@ void Simulator<N, MaxN>::evaluate(double t, const State& x, GuardSample& s) {
   switch (mode_) {
     case ContactMode::kFullContact: {
       constexpr ContactMode m = ContactMode::kFullContact;
-      dyn_.full_contact_acceleration(q_, qd_, a, qdd_);
-      const Eigen::Vector2d r = dyn_.full_contact_reaction(qdd_, a);
+      dyn_.full_contact_acceleration(scratch_.q, scratch_.qd, a, scratch_.qdd);
+      const Eigen::Vector2d r = dyn_.full_contact_reaction(scratch_.qdd, a);
       Eigen::Vector2d u;
       s.fi = r(0);
       s.fj = r(1);
-      s.moment = dyn_.contact_moments(q_, qdd_, a, u);
+      s.moment = dyn_.contact_moments(scratch_.q, scratch_.qdd, a, u);
       v[kSlot<m, Guard::kUpliftEdge1>] = u(0);
       v[kSlot<m, Guard::kUpliftEdge2>] = u(1);
       v[kSlot<m, Guard::kLiftOff>] = s.fj;
@@ -147,9 +153,10 @@ void Simulator<N, MaxN>::evaluate(double t, const State& x, GuardSample& s) {
       double thdd = 0.0;
       double sn = 0.0, cs = 0.0;
       sin_cos(x(0), sn, cs);
-      dyn_.rocking_acceleration_sc(e, sn, cs, q_, x(ithd()), qd_, a, thdd, qdd_);
-      const Eigen::Vector2d r =
-          dyn_.rocking_reaction_sc(e, sn, cs, q_, x(ithd()), qd_, thdd, qdd_, a);
+      dyn_.rocking_acceleration_sc(e, sn, cs, scratch_.q, x(ithd()), scratch_.qd, a, thdd,
+                                   scratch_.qdd);
+      const Eigen::Vector2d r = dyn_.rocking_reaction_sc(e, sn, cs, scratch_.q, x(ithd()),
+                                                         scratch_.qd, thdd, scratch_.qdd, a);
       s.fi = r(0);
       s.fj = r(1);
       // reaction at the pivot, moment about the c.g. projection: alpha h F_j(body)
@@ -169,7 +176,7 @@ void Simulator<N, MaxN>::evaluate(double t, const State& x, GuardSample& s) {
       Eigen::Vector2d u;
       s.fi = r(0);
       s.fj = r(1);
-      s.moment = dyn_.contact_moments(q_, qdd_, as, u);
+      s.moment = dyn_.contact_moments(scratch_.q, scratch_.qdd, as, u);
       v[kSlot<m, Guard::kUpliftEdge1>] = u(0);
       v[kSlot<m, Guard::kUpliftEdge2>] = u(1);
       v[kSlot<m, Guard::kLiftOff>] = s.fj;
@@ -196,7 +203,8 @@ void Simulator<N, MaxN>::evaluate(double t, const State& x, GuardSample& s) {
       s.fj = r(1);
       s.moment = dyn_.alpha(e) * (-r(0) * sn + r(1) * cs);
       v[kSlot<m, Guard::kImpact>] = sg * x(0);
-      v[kSlot<m, Guard::kOverturn>] = overturn_limit_[static_cast<std::size_t>(e - 1)] - sg * x(0);
+      v[kSlot<m, Guard::kOverturn>] =
+          setup_.overturn_limit[static_cast<std::size_t>(e - 1)] - sg * x(0);
       v[kSlot<m, Guard::kLiftOff>] = s.fj;
       v[kSlot<m, Guard::kSlipStop>] = slip() * x(isv());
       v[kSlot<m, Guard::kPeak>] = sg * x(ithd());
@@ -208,10 +216,12 @@ void Simulator<N, MaxN>::evaluate(double t, const State& x, GuardSample& s) {
       sin_cos(x(0), sn, cs);
       const double h = dyn_.height();
       s.fi = s.fj = s.moment = 0.0;
-      v[kSlot<m, Guard::kLandingEdge1>] = dyn_.corner_height(1, sn, cs, q_, x(ixc() + 1)) / h;
-      v[kSlot<m, Guard::kLandingEdge2>] = dyn_.corner_height(2, sn, cs, q_, x(ixc() + 1)) / h;
+      v[kSlot<m, Guard::kLandingEdge1>] =
+          dyn_.corner_height(1, sn, cs, scratch_.q, x(ixc() + 1)) / h;
+      v[kSlot<m, Guard::kLandingEdge2>] =
+          dyn_.corner_height(2, sn, cs, scratch_.q, x(ixc() + 1)) / h;
       v[kSlot<m, Guard::kOverturn>] =
-          std::min(overturn_limit_[0] - x(0), overturn_limit_[1] + x(0));
+          std::min(setup_.overturn_limit[0] - x(0), setup_.overturn_limit[1] + x(0));
       break;
     }
   }
@@ -225,7 +235,8 @@ void Simulator<N, MaxN>::rocking_guards(int e, const State& x, GuardSample& s) c
   const double sg = edge_sign(e), mu = opt_.friction_coefficient;
   auto& v = s.v;
   v[kSlot<m, Guard::kImpact>] = sg * x(0);
-  v[kSlot<m, Guard::kOverturn>] = overturn_limit_[static_cast<std::size_t>(e - 1)] - sg * x(0);
+  v[kSlot<m, Guard::kOverturn>] =
+      setup_.overturn_limit[static_cast<std::size_t>(e - 1)] - sg * x(0);
   v[kSlot<m, Guard::kLiftOff>] = s.fj;
   v[kSlot<m, Guard::kFrictionLimit>] = std::isfinite(mu) ? mu * s.fj - std::abs(s.fi) : 1.0;
   v[kSlot<m, Guard::kPeak>] = sg * x(ithd());
@@ -244,8 +255,8 @@ void Simulator<N, MaxN>::arc_sample(double t, const State& x, double sp, double 
 template <int N, int MaxN>
 double Simulator<N, MaxN>::guard_value(int slot, double t) {
   GuardSample s;
-  state_at(t, xr_);
-  evaluate(t, xr_, s);
+  state_at(t, scratch_.xr);
+  evaluate(t, scratch_.xr, s);
   return s.v[static_cast<std::size_t>(slot)];
 }
 
@@ -277,10 +288,10 @@ double Simulator<N, MaxN>::crossing(int slot, double tl, double tr, double gl, d
 // a non-resetting guard crossed at t: record it
 template <int N, int MaxN>
 void Simulator<N, MaxN>::record(double t) {
-  state_at(t, xr_);
+  state_at(t, scratch_.xr);
   GuardSample s;
-  evaluate(t, xr_, s);
-  record_sample(s, xr_);
+  evaluate(t, scratch_.xr, s);
+  record_sample(s, scratch_.xr);
 }
 
 template <int N, int MaxN>
@@ -296,13 +307,15 @@ void Simulator<N, MaxN>::record_sample(const GuardSample& s, const State& x) {
 template <int N, int MaxN>
 double Simulator<N, MaxN>::kinetic_energy(const State& x) {
   unpack(x);
-  if (flying()) return dyn_.flight_kinetic_energy(q_, x(ithd()), qd_, cg_velocity(x));
+  if (flying())
+    return dyn_.flight_kinetic_energy(scratch_.q, x(ithd()), scratch_.qd, cg_velocity(x));
   const double a = rocking() ? dyn_.alpha(edge()) : 0.0;
-  const double t_pivot = dyn_.kinetic_energy(a, q_, x(ithd()), qd_);
+  const double t_pivot = dyn_.kinetic_energy(a, scratch_.q, x(ithd()), scratch_.qd);
   if (!sliding()) return t_pivot;
   // theory §18: T = T_pivot + M d_dot v_cm,x + 1/2 M d_dot^2
   Eigen::Vector2d r, v;
-  dyn_.cg_from_pivot(edge(), std::sin(x(0)), std::cos(x(0)), q_, x(ithd()), qd_, r, v);
+  dyn_.cg_from_pivot(edge(), std::sin(x(0)), std::cos(x(0)), scratch_.q, x(ithd()), scratch_.qd, r,
+                     v);
   const double vd = x(isv());
   return t_pivot + dyn_.mass() * vd * (v(0) + 0.5 * vd);
 }
@@ -310,20 +323,21 @@ double Simulator<N, MaxN>::kinetic_energy(const State& x) {
 template <int N, int MaxN>
 double Simulator<N, MaxN>::potential_energy(const State& x) {
   unpack(x);
-  if (flying()) return dyn_.flight_potential_energy(x(ixc() + 1), q_);
+  if (flying()) return dyn_.flight_potential_energy(x(ixc() + 1), scratch_.q);
   const double a = rocking() ? dyn_.alpha(edge()) : 0.0;
-  return dyn_.potential_energy(a, x(0), q_);
+  return dyn_.potential_energy(a, x(0), scratch_.q);
 }
 
 // the horizontal offset of the base centre from where the body stood [m]
 template <int N, int MaxN>
 double Simulator<N, MaxN>::offset_of(const State& x) {
   if (sliding()) return x(isd());
-  if (!flying()) return offset_;
+  if (!flying()) return ledger_.offset;
   unpack(x);
   // the base centre is the tipping-point line's point at alpha = 0
   const double sn = std::sin(x(0)), cs = std::cos(x(0)), h = dyn_.height();
-  return x(ixc()) + h * (-cs * dyn_.psi_x().dot(q_) + sn * (1.0 + dyn_.psi_y().dot(q_)));
+  return x(ixc()) +
+         h * (-cs * dyn_.psi_x().dot(scratch_.q) + sn * (1.0 + dyn_.psi_y().dot(scratch_.q)));
 }
 
 template <int N, int MaxN>
@@ -334,8 +348,8 @@ inline Observation Simulator<N, MaxN>::observation(double t, const State& x, con
   o.theta = x(0);
   o.theta_dot = x(ithd());
   // u only: the extremes need no u_dot, which emit_row adds for a history row
-  if (n_ > 0) qu_.noalias() = Dyn::mv(to_user_, x.segment(iq(), n_));
-  o.q = qu_.data();
+  if (n_ > 0) scratch_.qu.noalias() = Dyn::mv(to_user_, x.segment(iq(), n_));
+  o.q = scratch_.qu.data();
   o.fi = s.fi;
   o.fj = s.fj;
   o.moment = s.moment;
@@ -344,8 +358,8 @@ inline Observation Simulator<N, MaxN>::observation(double t, const State& x, con
   if (flying()) {
     flight_heights(x, o);
   } else {
-    o.high = base_width_ * std::sin(std::abs(x(0)));
-    o.offset = sliding() ? x(isd()) : offset_;
+    o.high = setup_.base_width * std::sin(std::abs(x(0)));
+    o.offset = sliding() ? x(isd()) : ledger_.offset;
   }
   return o;
 }
@@ -354,8 +368,8 @@ template <int N, int MaxN>
 void Simulator<N, MaxN>::flight_heights(const State& x, Observation& o) {
   unpack(x);
   const double sn = std::sin(x(0)), cs = std::cos(x(0));
-  const double y1 = dyn_.corner_height(1, sn, cs, q_, x(ixc() + 1));
-  const double y2 = dyn_.corner_height(2, sn, cs, q_, x(ixc() + 1));
+  const double y1 = dyn_.corner_height(1, sn, cs, scratch_.q, x(ixc() + 1));
+  const double y2 = dyn_.corner_height(2, sn, cs, scratch_.q, x(ixc() + 1));
   o.lift = std::min(y1, y2);
   o.high = std::max(y1, y2);
   o.offset = offset_of(x);
@@ -365,11 +379,11 @@ template <int N, int MaxN>
 void Simulator<N, MaxN>::emit_rows_until(double t_cut) {
   if (opt_.output_dt <= 0.0) return;
   for (;;) {
-    const double to = static_cast<double>(next_output_) * opt_.output_dt;
-    if (to > t_cut || to > t_end_ * (1.0 + 1e-14)) break;
-    state_at(std::min(to, stepped_until()), xr_);
-    emit_row(to, xr_);
-    ++next_output_;
+    const double to = static_cast<double>(ledger_.next_output) * opt_.output_dt;
+    if (to > t_cut || to > setup_.t_end * (1.0 + 1e-14)) break;
+    state_at(std::min(to, stepped_until()), scratch_.xr);
+    emit_row(to, scratch_.xr);
+    ++ledger_.next_output;
   }
 }
 
@@ -377,10 +391,10 @@ template <int N, int MaxN>
 void Simulator<N, MaxN>::emit_row(double t, const State& x) {
   GuardSample s;
   evaluate(t, x, s);
-  const BaseAcceleration a = motion_.at(t, event_cursor_);
+  const BaseAcceleration a = motion_.at(t, cursor_.event);
   Observation o = observation(t, x, s);
-  if (n_ > 0) qdu_.noalias() = Dyn::mv(to_user_, x.segment(iqd(), n_));
-  o.q_dot = qdu_.data();
+  if (n_ > 0) scratch_.qdu.noalias() = Dyn::mv(to_user_, x.segment(iqd(), n_));
+  o.q_dot = scratch_.qdu.data();
   // the resultant's distance from the c.g. projection [m]: at the pivot while rocking
   double resultant = 0.0;
   if (rocking()) {
@@ -388,7 +402,8 @@ void Simulator<N, MaxN>::emit_row(double t, const State& x) {
   } else if (full_contact()) {
     resultant = dyn_.height() * s.moment / s.fj;
   }
-  rec_.row(o, a, kinetic_energy(x), potential_energy(x), resultant, impact_loss_ + chatter_loss_);
+  rec_.row(o, a, kinetic_energy(x), potential_energy(x), resultant,
+           ledger_.impact_loss + ledger_.chatter_loss);
 }
 
 template <int N, int MaxN>
@@ -399,9 +414,9 @@ void Simulator<N, MaxN>::finish(double t, const State& x) {
     emit_row(t, x);
   }
   if (flying() && res_.status != Status::kOverturned)
-    res_.extremes.flight_time += t - flight_start_;
+    res_.extremes.flight_time += t - ledger_.flight_start;
   if (sliding() && res_.status != Status::kOverturned)
-    res_.extremes.sliding_time += t - slide_start_;
+    res_.extremes.sliding_time += t - ledger_.slide_start;
   res_.final_phase = mode_;
   res_.final_theta = x(0);
   res_.final_theta_dot = x(ithd());
@@ -413,15 +428,16 @@ void Simulator<N, MaxN>::finish(double t, const State& x) {
   const double pot = potential_energy(x);
   e.input_work = x(iw());
   e.damping_loss = x(id());
-  e.impact_loss = impact_loss_;
-  e.chatter_loss = chatter_loss_;
+  e.impact_loss = ledger_.impact_loss;
+  e.chatter_loss = ledger_.chatter_loss;
   e.friction_loss = x(ifr());
-  e.kinetic_change = kin - kinetic0_;
-  e.potential_change = pot - (energy0_ - kinetic0_);
+  e.kinetic_change = kin - ledger_.kinetic0;
+  e.potential_change = pot - (ledger_.energy0 - ledger_.kinetic0);
   e.residual = e.input_work - (e.kinetic_change + e.potential_change + e.damping_loss +
                                e.impact_loss + e.chatter_loss + e.friction_loss);
-  e.scale = std::max({rec_.energy_scale(), std::abs(energy0_ - pot), std::abs(kin), kinetic0_,
-                      impact_loss_ + chatter_loss_ + e.friction_loss});
+  e.scale =
+      std::max({rec_.energy_scale(), std::abs(ledger_.energy0 - pot), std::abs(kin),
+                ledger_.kinetic0, ledger_.impact_loss + ledger_.chatter_loss + e.friction_loss});
   res_.rejected_steps = rocking_.integ.rejected_steps() + flight_.integ.rejected_steps() +
                         slide_.integ.rejected_steps();
   res_.rhs_evaluations = rocking_.integ.rhs_evaluations() + flight_.integ.rhs_evaluations() +

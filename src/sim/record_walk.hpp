@@ -16,11 +16,11 @@ bool Simulator<N, MaxN>::can_walk(double t) const requires(N != 0) {
   if (!std::holds_alternative<Exact*>(stepper_) || !opt_.full_contact_walk || !motion_.is_sampled())
     return false;
   if (t < exact_.fine_until - 1e-12 * std::max(1.0, t)) return false;
-  if (tension_ || hold_tension_) return false;
+  if (latch_.tension || latch_.hold_tension) return false;
   const ModeSpec& spec = mode_spec(mode_);
   for (int j = 0; j < spec.count; ++j) {
     const auto k = static_cast<std::size_t>(j);
-    if (zero_start_[k] || !(s0_.v[k] > 0.0)) return false;
+    if (latch_.zero_start[k] || !(s0_.v[k] > 0.0)) return false;
   }
   const std::vector<double>& ts = motion_.times();
   return t >= ts.front() && t < ts.back();
@@ -43,18 +43,18 @@ bool Simulator<N, MaxN>::advance_walk(double& t, State& x) requires(N != 0) {
   const std::vector<double>& vy = motion_.vertical();
   const bool vertical = vy.size() == ts.size();
   const double g = dyn_.g();
-  std::size_t i = scan_index_;
+  std::size_t i = scan_.index;
   if (i >= ts.size()) i = ts.size() - 1;
   while (i > 0 && ts[i] > t) --i;
   while (i + 1 < ts.size() && ts[i + 1] <= t) ++i;
   exact_.prop.walk_start(x);
   exact_.xw = x;
-  GuardSample& sa = samples_buf_[0];
-  GuardSample& sb = samples_buf_[1];
+  GuardSample& sa = points_.samples[0];
+  GuardSample& sb = points_.samples[1];
   sa = s0_;
   bool sa_due = false;  // sa is not yet evaluated at the piece's start (after a quiet piece)
   const double cap = exact_.prop.walk_cap();
-  for (; i + 1 < ts.size() && ts[i + 1] <= t_end_; ++i) {
+  for (; i + 1 < ts.size() && ts[i + 1] <= setup_.t_end; ++i) {
     if (!count_step(t)) {
       x = exact_.xw;
       return false;
@@ -105,7 +105,7 @@ bool Simulator<N, MaxN>::advance_walk(double& t, State& x) requires(N != 0) {
         double ba = 0.0, bb = h;
         const int found = walk_search(tp0, 0.0, h, sa, sb, 40, ba, bb);
         if (found != 0) {
-          scan_index_ = i;
+          scan_.index = i;
           exact_.fine_until = tb;
           if (found == 1 && ba > 0.0) {
             // the stepped propagation from the bracket's start, its first step ending at the
@@ -137,14 +137,14 @@ bool Simulator<N, MaxN>::advance_walk(double& t, State& x) requires(N != 0) {
       if (opt_.progress) opt_.progress->store(t, std::memory_order_relaxed);
     }
   }
-  scan_index_ = i;
+  scan_.index = i;
   x = exact_.xw;
   if (sa_due) evaluate(t, exact_.xw, sa);
   s0_ = sa;
   release_latches(s0_);
   exact_.prop.start(t, x);
   // the rest (past the record's last sample within t_end) goes to the stepped propagation
-  exact_.fine_until = t_end_;
+  exact_.fine_until = setup_.t_end;
   return true;
 }
 
@@ -208,7 +208,7 @@ typename Simulator<N, MaxN>::ReactionReach Simulator<N, MaxN>::reaction_reach(do
           mg * dyn_.height() * moment_top > ex.max_overturning_moment,
           fj_hi >= kPressingFraction &&
               !(fj_lo >= kPressingFraction && fi_top / fj_lo <= ex.max_friction_demand),
-          tension_ && -mg * fj_lo > ex.max_pivot_pull};
+          latch_.tension && -mg * fj_lo > ex.max_pivot_pull};
 }
 
 // [a, b] of the walk's piece from tp0 (guards sa, sb at its ends, every one > 0 at a), halved
@@ -234,9 +234,9 @@ int Simulator<N, MaxN>::walk_search(double tp0, double a, double b, const GuardS
   }
   const double mid = 0.5 * (a + b);
   GuardSample sm;
-  xr_ = exact_.xw;
-  exact_.prop.walk_dense(mid, xr_);
-  evaluate(tp0 + mid, xr_, sm);
+  scratch_.xr = exact_.xw;
+  exact_.prop.walk_dense(mid, scratch_.xr);
+  evaluate(tp0 + mid, scratch_.xr, sm);
   const int left = walk_search(tp0, a, mid, sa, sm, depth - 1, a_out, b_out);
   if (left != 0) return left;
   return walk_search(tp0, mid, b, sm, sb, depth - 1, a_out, b_out);
@@ -247,11 +247,11 @@ int Simulator<N, MaxN>::walk_search(double tp0, double a, double b, const GuardS
 template <int N, int MaxN>
 void Simulator<N, MaxN>::emit_walk_rows(double tp0, double tp1) requires(N != 0) {
   if (opt_.output_dt <= 0.0) return;
-  const double to = static_cast<double>(next_output_) * opt_.output_dt;
-  if (to > tp1 || to > t_end_ * (1.0 + 1e-14)) return;
+  const double to = static_cast<double>(ledger_.next_output) * opt_.output_dt;
+  if (to > tp1 || to > setup_.t_end * (1.0 + 1e-14)) return;
   if (to >= tp1 - 1e-12 * std::max(1.0, tp1)) {
     emit_row(to, exact_.xe);
-    ++next_output_;
+    ++ledger_.next_output;
     return;
   }
   exact_.prop.start(tp0, exact_.xw);
@@ -303,14 +303,14 @@ void Simulator<N, MaxN>::locate_extremes(double tp0, double h, const GuardSample
   const bool guards = wanted[static_cast<std::size_t>(count - 1)] >= n_;
   GuardSample s;
   auto visit = [&](double tau) {
-    exact_.prop.walk_dense(tau, xr_);
+    exact_.prop.walk_dense(tau, scratch_.xr);
     if (!guards) return;
-    evaluate(tp0 + tau, xr_, s);
-    observe(s, xr_);
+    evaluate(tp0 + tau, scratch_.xr, s);
+    observe(s, scratch_.xr);
   };
   // the quantity `k` of the point visited last
-  auto quantity = [&](int k) { return point_quantity(k, s, xr_); };
-  xr_ = exact_.xw;
+  auto quantity = [&](int k) { return point_quantity(k, s, scratch_.xr); };
+  scratch_.xr = exact_.xw;
   constexpr int kPoints = ContactPropagator<N, MaxN, State>::kPoints;
   std::vector<double>& best = exact_.best;
   std::vector<double>& at = exact_.best_at;

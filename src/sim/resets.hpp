@@ -11,7 +11,7 @@ namespace flexrock::detail {
 // a resetting guard of the current mode fired at (t, x); false when the run ends
 template <int N, int MaxN>
 bool Simulator<N, MaxN>::fire(int slot, double t, State& x) {
-  if (sliding()) offset_ = x(isd());  // events name where the base is
+  if (sliding()) ledger_.offset = x(isd());  // events name where the base is
   const GuardSpec& g = guard_spec(mode_spec(mode_).guards[static_cast<std::size_t>(slot)]);
   switch (g.reset) {
     case Reset::kUplift: {
@@ -20,7 +20,7 @@ bool Simulator<N, MaxN>::fire(int slot, double t, State& x) {
       GuardSample now;
       evaluate(t, x, now);
       const int lift = guard_slot(mode_, Guard::kLiftOff);
-      if (!tension_ && lift >= 0 && now.v[static_cast<std::size_t>(lift)] <= 0.0)
+      if (!latch_.tension && lift >= 0 && now.v[static_cast<std::size_t>(lift)] <= 0.0)
         return lift_off(t, x);
       return uplift(t, x, g.edge);
     }
@@ -31,7 +31,7 @@ bool Simulator<N, MaxN>::fire(int slot, double t, State& x) {
     case Reset::kOverturn:
       return overturned(t, x);
     case Reset::kLanding:
-      return land(t, x, g.edge, rigid_law_);
+      return land(t, x, g.edge, setup_.rigid_law);
     case Reset::kSlip:
       return start_slip(t, x);
     case Reset::kStick:
@@ -54,15 +54,15 @@ bool Simulator<N, MaxN>::uplift(double t, State& x, int e) {
   switch_mode(contact_mode(e, slip()), t, x);
   x(0) = 0.0;
   x(ithd()) = 0.0;
-  last_contact_change_ = t;
+  ledger_.last_contact_change = t;
   // theta = 0 and it must grow: the impact and peak functions start at zero, known to turn
   // positive
-  zero_start_.fill(false);
-  zero_start_[static_cast<std::size_t>(guard_slot(mode_, Guard::kImpact))] = true;
-  zero_start_[static_cast<std::size_t>(guard_slot(mode_, Guard::kPeak))] = true;
+  latch_.zero_start.fill(false);
+  latch_.zero_start[static_cast<std::size_t>(guard_slot(mode_, Guard::kImpact))] = true;
+  latch_.zero_start[static_cast<std::size_t>(guard_slot(mode_, Guard::kPeak))] = true;
   // a slide that began at this instant has not yet any slip velocity: it too starts at zero
   if (sliding() && x(isv()) == 0.0)
-    zero_start_[static_cast<std::size_t>(guard_slot(mode_, Guard::kSlipStop))] = true;
+    latch_.zero_start[static_cast<std::size_t>(guard_slot(mode_, Guard::kSlipStop))] = true;
   return request_entry();
 }
 
@@ -88,9 +88,9 @@ void Simulator<N, MaxN>::count_impact(const Event& impact, double impulse_y, dou
   if (chatter) {
     ++ex.chatter_cutoffs;
     res_.chatter_cut_off = true;
-    chatter_loss_ += loss;
+    ledger_.chatter_loss += loss;
   } else {
-    impact_loss_ += loss;
+    ledger_.impact_loss += loss;
   }
   ex.max_impulse = std::max(ex.max_impulse, impulse_y);
   ex.max_impact_energy_loss = std::max(ex.max_impact_energy_loss, loss);
@@ -112,21 +112,22 @@ bool Simulator<N, MaxN>::impact(double t, State& x) {
   const int landing = edge() == 1 ? 2 : 1;
   unpack(x);
   const double thd_minus = x(ithd());
-  const bool chatter = t - last_contact_change_ < chatter_interval_;
-  const auto out = resolve_impact(dyn_, landing, q_, thd_minus, qd_, rule_, chatter);
+  const bool chatter = t - ledger_.last_contact_change < setup_.chatter_interval;
+  const auto out =
+      resolve_impact(dyn_, landing, scratch_.q, thd_minus, scratch_.qd, setup_.rule, chatter);
   // with friction: a sliding pivot, or an impulse outside the friction cone, needs the impact law
   // with Coulomb friction (theory §19); the paper's law is its sticking case. A chatter cut-off of
   // a sticking pivot is a numerical device on a vanishing impulse whose ratio |I_x|/I_y says
   // nothing about sliding (§10): it stays the sticking both-edges stop.
-  if (std::isfinite(mu_s_) &&
+  if (std::isfinite(setup_.mu_s) &&
       (sliding() || (!chatter && !(out.impulse(1) > 0.0 &&
-                                   std::abs(out.impulse(0)) <= mu_s_ * out.impulse(1))))) {
+                                   std::abs(out.impulse(0)) <= setup_.mu_s * out.impulse(1))))) {
     Eigen::Vector2d r, v_c;
-    dyn_.cg_from_pivot(edge(), 0.0, 1.0, q_, thd_minus, qd_, r, v_c);
+    dyn_.cg_from_pivot(edge(), 0.0, 1.0, scratch_.q, thd_minus, scratch_.qd, r, v_c);
     if (sliding()) v_c(0) += x(isv());
     return friction_impact(t, x, landing, v_c, false, chatter,
                            chatter ? EventKind::kChatterCutoff : EventKind::kImpact, chatter,
-                           rigid_law_);
+                           setup_.rigid_law);
   }
   if (out.law_fallback) law_fallback(t, landing);
   Event ev = make_event(t,
@@ -149,11 +150,11 @@ bool Simulator<N, MaxN>::impact(double t, State& x) {
                   : (landing == 1 ? ContactMode::kRockingEdge1 : ContactMode::kRockingEdge2),
               t, x);
   // a degenerate excursion (no time since uplift) must not uplift again at once
-  if (out.both_edges && t == last_contact_change_) suppress_uplift_at_start_ = true;
-  last_contact_change_ = t;
-  zero_start_.fill(false);
+  if (out.both_edges && t == ledger_.last_contact_change) latch_.suppress_uplift_at_start = true;
+  ledger_.last_contact_change = t;
+  latch_.zero_start.fill(false);
   if (!out.both_edges)
-    zero_start_[static_cast<std::size_t>(guard_slot(mode_, Guard::kImpact))] = true;
+    latch_.zero_start[static_cast<std::size_t>(guard_slot(mode_, Guard::kImpact))] = true;
   if (res_.extremes.impacts > opt_.max_impacts)
     return stop(t, "impact limit reached (" + std::to_string(opt_.max_impacts) + ")");
   return request_entry();
@@ -168,28 +169,29 @@ bool Simulator<N, MaxN>::lift_off(double t, State& x) {
   // a free body must move its touching tipping points up: otherwise the sticking pivot is pulled
   // sideways as its force vanishes and the body could only leave it by sliding, which is not
   // modelled here; the floor is let pull (flagged) until it presses again (theory "Lift-off")
-  const BaseAcceleration a = motion_.at(t, event_cursor_);
+  const BaseAcceleration a = motion_.at(t, cursor_.event);
   const int pivot = mode_spec(mode_).pivot;
   // (a sliding pivot's friction vanishes with F_J: no such case, theory "Lift-off from a sliding
   // mode"; there the corner's free acceleration is zero to rounding and its sign says nothing)
   const bool dives =
-      !sliding() &&
-      ((pivot != 2 && dyn_.free_corner_acceleration(1, sn, cs, q_, x(ithd()), qd_, a) < 0.0) ||
-       (pivot != 1 && dyn_.free_corner_acceleration(2, sn, cs, q_, x(ithd()), qd_, a) < 0.0));
+      !sliding() && ((pivot != 2 && dyn_.free_corner_acceleration(1, sn, cs, scratch_.q, x(ithd()),
+                                                                  scratch_.qd, a) < 0.0) ||
+                     (pivot != 1 && dyn_.free_corner_acceleration(2, sn, cs, scratch_.q, x(ithd()),
+                                                                  scratch_.qd, a) < 0.0));
   if (dives) {
-    tension_ = true;
+    latch_.tension = true;
     res_.pivot_tension = true;
     Event ev = make_event(t, EventKind::kPivotTension, rocking() ? e : 0);
     ev.theta = x(0);
     ev.theta_dot_before = ev.theta_dot_after = x(ithd());
     rec_.event(ev);
     // the episode's largest pull goes into this event as the floor pulls (fold_pull)
-    tension_event_ = static_cast<long>(res_.events.size()) - 1;
+    latch_.tension_event = static_cast<long>(res_.events.size()) - 1;
     ++res_.extremes.tension_episodes;
     return request_entry();
   }
   Eigen::Vector2d r, v;
-  dyn_.cg_from_pivot(e, sn, cs, q_, x(ithd()), qd_, r, v);
+  dyn_.cg_from_pivot(e, sn, cs, scratch_.q, x(ithd()), scratch_.qd, r, v);
   const double d = offset_of(x);
   if (sliding()) v(0) += x(isv());  // the pivot's slip carries the c.g.
   x(ixc()) = d + dyn_.height() * dyn_.alpha(e) + r(0);
@@ -203,14 +205,14 @@ bool Simulator<N, MaxN>::lift_off(double t, State& x) {
   ++res_.extremes.lift_offs;
   const ContactMode from = mode_;
   switch_mode(ContactMode::kFlight, t, x);
-  flight_start_ = t;
-  last_contact_change_ = t;
+  ledger_.flight_start = t;
+  ledger_.last_contact_change = t;
   // the tipping points that touched the floor start at zero height and rise
-  zero_start_.fill(false);
+  latch_.zero_start.fill(false);
   if (mode_spec(from).pivot != 2)
-    zero_start_[static_cast<std::size_t>(guard_slot(mode_, Guard::kLandingEdge1))] = true;
+    latch_.zero_start[static_cast<std::size_t>(guard_slot(mode_, Guard::kLandingEdge1))] = true;
   if (mode_spec(from).pivot != 1)
-    zero_start_[static_cast<std::size_t>(guard_slot(mode_, Guard::kLandingEdge2))] = true;
+    latch_.zero_start[static_cast<std::size_t>(guard_slot(mode_, Guard::kLandingEdge2))] = true;
   return request_entry();
 }
 
@@ -222,31 +224,33 @@ bool Simulator<N, MaxN>::land(double t, State& x, int e, bool rigid) {
   const double th = x(0), thd_minus = x(ithd());
   const double sn = std::sin(th), cs = std::cos(th), h = dyn_.height();
   const Eigen::Vector2d v_c = cg_velocity(x);
-  if (std::isfinite(mu_s_)) {
-    res_.extremes.flight_time += t - flight_start_;
-    const bool chatter = t - last_contact_change_ < chatter_interval_;
+  if (std::isfinite(setup_.mu_s)) {
+    res_.extremes.flight_time += t - ledger_.flight_start;
+    const bool chatter = t - ledger_.last_contact_change < setup_.chatter_interval;
     if (chatter) {
-      tension_ = hold_tension_ = true;  // as below: grazing hops cannot accumulate
-      tension_event_ = -1;
+      latch_.tension = latch_.hold_tension = true;  // as below: grazing hops cannot accumulate
+      latch_.tension_event = -1;
     }
     return friction_impact(t, x, e, v_c, true, false,
                            chatter ? EventKind::kChatterCutoff : EventKind::kLanding, chatter,
                            rigid);
   }
   const int e_in = e;
-  const Eigen::Vector2d v_corner = dyn_.corner_velocity_body(e, sn, cs, q_, thd_minus, qd_, v_c);
+  const Eigen::Vector2d v_corner =
+      dyn_.corner_velocity_body(e, sn, cs, scratch_.q, thd_minus, scratch_.qd, v_c);
   double thd_plus = 0.0;
   Vec qd_plus(n_);
-  dyn_.corner_impact(e, q_, thd_minus, qd_, v_corner, thd_plus, qd_plus, rigid);
+  dyn_.corner_impact(e, scratch_.q, thd_minus, scratch_.qd, v_corner, thd_plus, qd_plus, rigid);
   bool flat = false;
   if (th == 0.0 && edge_sign(e) * thd_plus <= 0.0) {
     // level: the body rocks on the other tipping point if its map turns it up about that one,
     // else both land (both vertical impulses are then compressive; theory "Landing")
     const int o = e == 1 ? 2 : 1;
-    const Eigen::Vector2d v_other = dyn_.corner_velocity_body(o, sn, cs, q_, thd_minus, qd_, v_c);
+    const Eigen::Vector2d v_other =
+        dyn_.corner_velocity_body(o, sn, cs, scratch_.q, thd_minus, scratch_.qd, v_c);
     double thd_o = 0.0;
     Vec qd_o(n_);
-    dyn_.corner_impact(o, q_, thd_minus, qd_, v_other, thd_o, qd_o, rigid);
+    dyn_.corner_impact(o, scratch_.q, thd_minus, scratch_.qd, v_other, thd_o, qd_o, rigid);
     if (edge_sign(o) * thd_o > 0.0) {
       e = o;
       thd_plus = thd_o;
@@ -255,21 +259,21 @@ bool Simulator<N, MaxN>::land(double t, State& x, int e, bool rigid) {
       flat = true;
     }
   }
-  const double x_corner = dyn_.corner_x(e, sn, cs, q_, x(ixc()));
+  const double x_corner = dyn_.corner_x(e, sn, cs, scratch_.q, x(ixc()));
   if (flat) {
     // both edges on the floor: theta_dot = 0, the modal momenta are conserved (rigid_body: the
     // modal velocities)
     thd_plus = 0.0;
     if (rigid) {
-      qd_plus = qd_;
+      qd_plus = scratch_.qd;
     } else {
-      const Vec p = dyn_.flight_modal_momenta(e, q_, thd_minus, qd_, v_corner);
+      const Vec p = dyn_.flight_modal_momenta(e, scratch_.q, thd_minus, scratch_.qd, v_corner);
       qd_plus = dyn_.mu_inverse() * p;
     }
   }
   // the c.g. velocity after, for the impulse
   Eigen::Vector2d r, v_after;
-  dyn_.cg_from_pivot(e, sn, cs, q_, thd_plus, qd_plus, r, v_after);
+  dyn_.cg_from_pivot(e, sn, cs, scratch_.q, thd_plus, qd_plus, r, v_after);
   if (flat)
     v_after = dyn_.height() * Eigen::Vector2d(dyn_.psi_x().dot(qd_plus), dyn_.psi_y().dot(qd_plus));
   const Eigen::Vector2d impulse = dyn_.mass() * (v_after - v_c);
@@ -277,11 +281,11 @@ bool Simulator<N, MaxN>::land(double t, State& x, int e, bool rigid) {
   // construction: the jump's c.g. velocity and its motion about the c.g. (theory §16). The
   // rigid_body law is no projection: its loss is the difference of the energies, and where that
   // is a gain the paper's law takes the landing
-  const Vec dqd = qd_plus - qd_;
-  double loss = dyn_.flight_kinetic_energy(q_, thd_plus - thd_minus, dqd, v_after - v_c);
+  const Vec dqd = qd_plus - scratch_.qd;
+  double loss = dyn_.flight_kinetic_energy(scratch_.q, thd_plus - thd_minus, dqd, v_after - v_c);
   if (rigid) {
-    const double before = dyn_.flight_kinetic_energy(q_, thd_minus, qd_, v_c);
-    loss = before - dyn_.flight_kinetic_energy(q_, thd_plus, qd_plus, v_after);
+    const double before = dyn_.flight_kinetic_energy(scratch_.q, thd_minus, scratch_.qd, v_c);
+    loss = before - dyn_.flight_kinetic_energy(scratch_.q, thd_plus, qd_plus, v_after);
     if (loss < -kImpactEnergyRounding * before) {
       law_fallback(t, e_in);
       return land(t, x, e_in, false);
@@ -289,7 +293,7 @@ bool Simulator<N, MaxN>::land(double t, State& x, int e, bool rigid) {
   }
   x(ithd()) = thd_plus;
   x.segment(iqd(), n_) = qd_plus;
-  offset_ = x_corner - h * dyn_.alpha(e);
+  ledger_.offset = x_corner - h * dyn_.alpha(e);
   switch_mode(flat ? ContactMode::kFullContact
                    : (e == 1 ? ContactMode::kRockingEdge1 : ContactMode::kRockingEdge2),
               t, x);
@@ -302,15 +306,15 @@ bool Simulator<N, MaxN>::land(double t, State& x, int e, bool rigid) {
   ev.impulse_y = impulse(1);
   ev.friction_demand = impulse(1) > 0.0 ? std::abs(impulse(0)) / impulse(1)
                                         : std::numeric_limits<double>::infinity();
-  res_.extremes.flight_time += t - flight_start_;
+  res_.extremes.flight_time += t - ledger_.flight_start;
   // a flight shorter than the chatter interval is below what the model resolves (a tipping point
   // grazing the floor): the landing is a chatter cut-off, and the floor may pull until it presses
   // again, so that such hops cannot accumulate without end
-  const bool chatter = t - last_contact_change_ < chatter_interval_;
+  const bool chatter = t - ledger_.last_contact_change < setup_.chatter_interval;
   if (chatter) {
     ev.kind = EventKind::kChatterCutoff;
-    tension_ = true;
-    tension_event_ = -1;
+    latch_.tension = true;
+    latch_.tension_event = -1;
   }
   count_impact(ev, impulse(1), ev.energy_loss, chatter);
   return after_impulse(t, ev, th, dyn_.mass() * (v_c.norm() + v_after.norm()));
@@ -327,8 +331,8 @@ bool Simulator<N, MaxN>::overturned(double t, State& x) {
   observe(now, x);
   res_.extremes.overturn_time = t;
   res_.extremes.overturn_edge = side;
-  if (sliding()) res_.extremes.sliding_time += t - slide_start_;
-  if (flying()) res_.extremes.flight_time += t - flight_start_;
+  if (sliding()) res_.extremes.sliding_time += t - ledger_.slide_start;
+  if (flying()) res_.extremes.flight_time += t - ledger_.flight_start;
   Event ev = make_event(t, EventKind::kOverturn, side);
   ev.theta = x(0);
   ev.offset = offset_of(x);
@@ -343,14 +347,14 @@ void Simulator<N, MaxN>::switch_mode(ContactMode m, double t, State& x) {
   const bool was = sliding(), flew = flying();
   mode_ = m;
   if (was && !sliding()) {
-    res_.extremes.sliding_time += t - slide_start_;
-    offset_ = x(isd());
+    res_.extremes.sliding_time += t - ledger_.slide_start;
+    ledger_.offset = x(isd());
     x(isv()) = 0.0;
   } else if (!was && sliding()) {
-    slide_start_ = t;
-    if (!flew) x(isd()) = offset_;  // a landing sets offset_ first
+    ledger_.slide_start = t;
+    if (!flew) x(isd()) = ledger_.offset;  // a landing sets ledger_.offset first
   }
-  if (flew && sliding()) x(isd()) = offset_;
+  if (flew && sliding()) x(isd()) = ledger_.offset;
 }
 
 // the friction limit of a sticking contact mode is reached: the base slides the way the floor
@@ -370,42 +374,43 @@ bool Simulator<N, MaxN>::start_slip(double t, State& x) {
   ++res_.extremes.slips;
   x(isv()) = 0.0;
   switch_mode(contact_mode(mode_spec(mode_).pivot, s), t, x);
-  last_contact_change_ = t;
+  ledger_.last_contact_change = t;
   if (rocking() && x(0) == 0.0 && x(ithd()) == 0.0) {
     // just uplifted: with its pivot sliding the body must still turn up, else it slides flat
     unpack(x);
     double thdd = 0.0;
     Eigen::Vector2d r;
-    slide_acceleration(0.0, 1.0, 0.0, motion_.at(t, event_cursor_), thdd, r);
+    slide_acceleration(0.0, 1.0, 0.0, motion_.at(t, cursor_.event), thdd, r);
     if (!(edge_sign(edge()) * thdd > 0.0)) {
       switch_mode(contact_mode(0, s), t, x);
-      suppress_uplift_at_start_ = true;
+      latch_.suppress_uplift_at_start = true;
     }
   }
   // the slip velocity starts at zero and grows; an uplift at this instant leaves theta = 0
-  zero_start_.fill(false);
-  zero_start_[static_cast<std::size_t>(guard_slot(mode_, Guard::kSlipStop))] = true;
+  latch_.zero_start.fill(false);
+  latch_.zero_start[static_cast<std::size_t>(guard_slot(mode_, Guard::kSlipStop))] = true;
   if (rocking() && x(0) == 0.0) {
-    zero_start_[static_cast<std::size_t>(guard_slot(mode_, Guard::kImpact))] = true;
-    zero_start_[static_cast<std::size_t>(guard_slot(mode_, Guard::kPeak))] = true;
+    latch_.zero_start[static_cast<std::size_t>(guard_slot(mode_, Guard::kImpact))] = true;
+    latch_.zero_start[static_cast<std::size_t>(guard_slot(mode_, Guard::kPeak))] = true;
   }
   return request_entry();
 }
 
 template <int N, int MaxN>
 bool Simulator<N, MaxN>::uplift_holds(double t, int e) {
-  if (!std::isfinite(mu_s_)) return true;
+  if (!std::isfinite(setup_.mu_s)) return true;
   const ContactMode was = mode_;
-  const BaseAcceleration a = motion_.at(t, event_cursor_);
+  const BaseAcceleration a = motion_.at(t, cursor_.event);
   double thdd = 0.0;
-  dyn_.rocking_acceleration_sc(e, 0.0, 1.0, q_, 0.0, qd_, a, thdd, qdd_);
-  const Eigen::Vector2d r = dyn_.rocking_reaction_sc(e, 0.0, 1.0, q_, 0.0, qd_, thdd, qdd_, a);
-  if (mu_s_ * r(1) - std::abs(r(0)) > 0.0) return true;
+  dyn_.rocking_acceleration_sc(e, 0.0, 1.0, scratch_.q, 0.0, scratch_.qd, a, thdd, scratch_.qdd);
+  const Eigen::Vector2d r =
+      dyn_.rocking_reaction_sc(e, 0.0, 1.0, scratch_.q, 0.0, scratch_.qd, thdd, scratch_.qdd, a);
+  if (setup_.mu_s * r(1) - std::abs(r(0)) > 0.0) return true;
   mode_ = contact_mode(e, r(0) > 0.0 ? -1 : 1);
   Eigen::Vector2d rs;
-  const bool inconsistent = slide_inconsistent_;
+  const bool inconsistent = latch_.slide_inconsistent;
   slide_acceleration(0.0, 1.0, 0.0, a, thdd, rs);
-  slide_inconsistent_ = inconsistent;  // a probe, not the motion
+  latch_.slide_inconsistent = inconsistent;  // a probe, not the motion
   mode_ = was;
   return edge_sign(e) * thdd > 0.0;
 }
@@ -414,7 +419,7 @@ bool Simulator<N, MaxN>::uplift_holds(double t, int e) {
 // positive margin), else it slides the way the floor cannot hold (theory §18)
 template <int N, int MaxN>
 bool Simulator<N, MaxN>::stick(double t, State& x) {
-  offset_ = x(isd());
+  ledger_.offset = x(isd());
   x(isv()) = 0.0;
   const int pivot = mode_spec(mode_).pivot, was = slip();
   const double th = x(0);
@@ -429,15 +434,15 @@ bool Simulator<N, MaxN>::stick(double t, State& x) {
   ev.friction_demand =
       now.fj > 0.0 ? std::abs(now.fi) / now.fj : std::numeric_limits<double>::infinity();
   rec_.event(ev);
-  zero_start_.fill(false);
+  latch_.zero_start.fill(false);
   if (margin <= 0.0) {
     if (s != was) ++res_.extremes.slips;
     switch_mode(contact_mode(pivot, s), t, x);
-    zero_start_[static_cast<std::size_t>(guard_slot(mode_, Guard::kSlipStop))] = true;
+    latch_.zero_start[static_cast<std::size_t>(guard_slot(mode_, Guard::kSlipStop))] = true;
   }
   if (rocking() && th == 0.0) {
-    zero_start_[static_cast<std::size_t>(guard_slot(mode_, Guard::kImpact))] = true;
-    zero_start_[static_cast<std::size_t>(guard_slot(mode_, Guard::kPeak))] = true;
+    latch_.zero_start[static_cast<std::size_t>(guard_slot(mode_, Guard::kImpact))] = true;
+    latch_.zero_start[static_cast<std::size_t>(guard_slot(mode_, Guard::kPeak))] = true;
   }
   return request_entry();
 }
@@ -457,7 +462,7 @@ bool Simulator<N, MaxN>::friction_impact(double t, State& x, int e, const Eigen:
   if (!from_flight) x(0) = 0.0;  // a rocking impact is located at theta = 0 up to rounding
   const double th = x(0), thd_minus = x(ithd());
   const double sn = std::sin(th), cs = std::cos(th), h = dyn_.height(), m = dyn_.mass();
-  const double kinetic_before = dyn_.flight_kinetic_energy(q_, thd_minus, qd_, v_c);
+  const double kinetic_before = dyn_.flight_kinetic_energy(scratch_.q, thd_minus, scratch_.qd, v_c);
   const Eigen::Vector2d unit_body(cs, -sn);  // I in body components
   // one candidate: the post-impact rates and c.g. velocity at d_dot+ = 0 and per unit d_dot+
   struct Candidate {
@@ -466,22 +471,24 @@ bool Simulator<N, MaxN>::friction_impact(double t, State& x, int e, const Eigen:
     Eigen::Vector2d vc0, vc1;
   };
   auto single = [&](int c, Candidate& k) {
-    const Eigen::Vector2d v_corner = dyn_.corner_velocity_body(c, sn, cs, q_, thd_minus, qd_, v_c);
+    const Eigen::Vector2d v_corner =
+        dyn_.corner_velocity_body(c, sn, cs, scratch_.q, thd_minus, scratch_.qd, v_c);
     k.qd0.resize(n_);
     k.qd1.resize(n_);
-    dyn_.corner_impact(c, q_, thd_minus, qd_, v_corner, k.thd0, k.qd0, rigid);
-    dyn_.corner_impact(c, q_, 0.0, Vec::Zero(n_), -unit_body, k.thd1, k.qd1, rigid);
+    dyn_.corner_impact(c, scratch_.q, thd_minus, scratch_.qd, v_corner, k.thd0, k.qd0, rigid);
+    dyn_.corner_impact(c, scratch_.q, 0.0, Vec::Zero(n_), -unit_body, k.thd1, k.qd1, rigid);
     Eigen::Vector2d r;
-    dyn_.cg_from_pivot(c, sn, cs, q_, k.thd0, k.qd0, r, k.vc0);
-    dyn_.cg_from_pivot(c, sn, cs, q_, k.thd1, k.qd1, r, k.vc1);
+    dyn_.cg_from_pivot(c, sn, cs, scratch_.q, k.thd0, k.qd0, r, k.vc0);
+    dyn_.cg_from_pivot(c, sn, cs, scratch_.q, k.thd1, k.qd1, r, k.vc1);
     k.vc1(0) += 1.0;
   };
   auto both = [&](Candidate& k) {
     // theta = 0: the modal momenta p = mu q_dot + psi_x d_dot / h (over M h^2) are conserved
-    const Eigen::Vector2d v_corner = dyn_.corner_velocity_body(e, sn, cs, q_, thd_minus, qd_, v_c);
-    const Vec p = dyn_.flight_modal_momenta(e, q_, thd_minus, qd_, v_corner);
+    const Eigen::Vector2d v_corner =
+        dyn_.corner_velocity_body(e, sn, cs, scratch_.q, thd_minus, scratch_.qd, v_c);
+    const Vec p = dyn_.flight_modal_momenta(e, scratch_.q, thd_minus, scratch_.qd, v_corner);
     k.thd0 = k.thd1 = 0.0;
-    k.qd0 = rigid ? qd_ : Vec(dyn_.mu_inverse() * p);
+    k.qd0 = rigid ? scratch_.qd : Vec(dyn_.mu_inverse() * p);
     // rigid_body: the slip carries the body as a whole, the modes keep their rates
     k.qd1 = rigid ? Vec(Vec::Zero(n_)) : Vec(-(dyn_.mu_inverse() * dyn_.psi_x()) / h);
     k.vc0 = h * Eigen::Vector2d(dyn_.psi_x().dot(k.qd0), dyn_.psi_y().dot(k.qd0));
@@ -498,10 +505,10 @@ bool Simulator<N, MaxN>::friction_impact(double t, State& x, int e, const Eigen:
     Resolved z;
     const Eigen::Vector2d l0 = m * (c.vc0 - v_c), l1 = m * c.vc1;
     z.demand = l0(1) > 0.0 ? std::abs(l0(0)) / l0(1) : std::numeric_limits<double>::infinity();
-    if (l0(1) > 0.0 && std::abs(l0(0)) <= mu_s_ * l0(1)) return z;
+    if (l0(1) > 0.0 && std::abs(l0(0)) <= setup_.mu_s * l0(1)) return z;
     const double sg = l0(0) > 0.0 ? -1.0 : 1.0;
-    const double k_s = l1(0) + sg * mu_k_ * l1(1);
-    z.v = -(l0(0) + sg * mu_k_ * l0(1)) / k_s;
+    const double k_s = l1(0) + sg * setup_.mu_k * l1(1);
+    z.v = -(l0(0) + sg * setup_.mu_k * l0(1)) / k_s;
     z.slid = true;
     z.ok = k_s > 0.0;
     return z;
@@ -565,7 +572,8 @@ bool Simulator<N, MaxN>::friction_impact(double t, State& x, int e, const Eigen:
   const Vec qd_plus = k.qd0 + v_plus * k.qd1;
   const Eigen::Vector2d v_after = k.vc0 + v_plus * k.vc1;
   const Eigen::Vector2d impulse = m * (v_after - v_c);
-  const double loss = kinetic_before - dyn_.flight_kinetic_energy(q_, thd_plus, qd_plus, v_after);
+  const double loss =
+      kinetic_before - dyn_.flight_kinetic_energy(scratch_.q, thd_plus, qd_plus, v_after);
   if (rigid && loss < -kImpactEnergyRounding * kinetic_before) {
     law_fallback(t, e);
     return friction_impact(t, x, e, v_c, from_flight, flat, kind, chatter, false);
@@ -573,17 +581,17 @@ bool Simulator<N, MaxN>::friction_impact(double t, State& x, int e, const Eigen:
   // the contact point's place: the landing tipping point, or the base centre when flat
   const double d_now = offset_of(x);
   if (from_flight) {
-    const double x_corner = dyn_.corner_x(lands, sn, cs, q_, x(ixc()));
-    offset_ = x_corner - h * dyn_.alpha(lands);
+    const double x_corner = dyn_.corner_x(lands, sn, cs, scratch_.q, x(ixc()));
+    ledger_.offset = x_corner - h * dyn_.alpha(lands);
   } else {
-    offset_ = d_now;
+    ledger_.offset = d_now;
   }
   x(ithd()) = flat ? 0.0 : thd_plus;
   x.segment(iqd(), n_) = qd_plus;
   const int pivot = flat ? 0 : lands;
   const int s = !slid || v_plus == 0.0 ? 0 : (v_plus > 0.0 ? 1 : -1);
   switch_mode(contact_mode(pivot, s), t, x);
-  x(isd()) = offset_;
+  x(isd()) = ledger_.offset;
   x(isv()) = s != 0 ? v_plus : 0.0;
   Event ev = make_event(t, flat && kind == EventKind::kImpact ? EventKind::kRockingEnded : kind,
                         from_flight && flat ? 0 : lands);
@@ -623,10 +631,10 @@ bool Simulator<N, MaxN>::after_impulse(double t, const Event& ev, double th, dou
     ++ex.tensile_landings;
     ex.max_tensile_impulse = std::max(ex.max_tensile_impulse, -ev.impulse_y);
   }
-  last_contact_change_ = t;
-  zero_start_.fill(false);
+  ledger_.last_contact_change = t;
+  latch_.zero_start.fill(false);
   if (rocking() && th == 0.0)
-    zero_start_[static_cast<std::size_t>(guard_slot(mode_, Guard::kImpact))] = true;
+    latch_.zero_start[static_cast<std::size_t>(guard_slot(mode_, Guard::kImpact))] = true;
   if (res_.extremes.impacts > opt_.max_impacts)
     return stop(t, "impact limit reached (" + std::to_string(opt_.max_impacts) + ")");
   return request_entry();

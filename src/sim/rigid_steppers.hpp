@@ -18,14 +18,15 @@ namespace flexrock::detail {
 // is taken again with samples).
 template <int N, int MaxN>
 bool Simulator<N, MaxN>::series_bounded() const requires(N == 0) {
-  if (std::isfinite(opt_.friction_coefficient) || hold_tension_) return false;
+  if (std::isfinite(opt_.friction_coefficient) || latch_.hold_tension) return false;
   const auto lift = static_cast<std::size_t>(guard_slot(mode_, Guard::kLiftOff));
-  return tension_ || (!zero_start_[lift] && s0_.v[lift] > 0.0);
+  return latch_.tension || (!latch_.zero_start[lift] && s0_.v[lift] > 0.0);
 }
 
 template <int N, int MaxN>
 bool Simulator<N, MaxN>::advance_series(double& t, State& x) requires(N == 0) {
-  const double t_stop = std::min({t_end_, motion_.next_breakpoint(t, break_cursor_), step_stop_});
+  const double t_stop =
+      std::min({setup_.t_end, motion_.next_breakpoint(t, cursor_.brk), step_stop_});
   if (!count_step(t)) return false;
   auto none = [](double, const ContactState&, ContactState&) {};
   series_.integ.set_max_step(std::numeric_limits<double>::infinity());
@@ -48,13 +49,13 @@ bool Simulator<N, MaxN>::advance_series(double& t, State& x) requires(N == 0) {
     series_.sp_overturn.c[i] = -sg * th[k];
     if (k < degree) series_.sp_peak.c[i] = sg * dth[k + 1];
   }
-  series_.sp_overturn.c[0] += overturn_limit_[static_cast<std::size_t>(e - 1)];
+  series_.sp_overturn.c[0] += setup_.overturn_limit[static_cast<std::size_t>(e - 1)];
   // where the floor's pressing cannot be shown to hold throughout (a lift-off may come), the
   // step is taken again with the guards sampled, as any step of a friction-limited run: the
   // reaction's enclosure settles most steps; its series (O(order^2)) only the rest
   bool reaction = false;  // the reaction's series formed on this step (reaction_polynomials)
   const ReactionRange range = series_.integ.reaction_range(dyn_.g_over_h(), h);
-  if (!tension_ && !(range.fj_lo > 0.0)) {
+  if (!latch_.tension && !(range.fj_lo > 0.0)) {
     reaction_polynomials(h);
     reaction = true;
     if (!(series_.sp_fj.c[0] - series_.sp_fj.excursion(h) > series_.sp_fj.margin) &&
@@ -68,15 +69,15 @@ bool Simulator<N, MaxN>::advance_series(double& t, State& x) requires(N == 0) {
     }
   }
   // the guards at the step's end, exactly (the next step's start)
-  GuardSample& se = samples_buf_[1];
-  State& xe = sample_states_[1];
+  GuardSample& se = points_.samples[1];
+  State& xe = points_.states[1];
   put(series_.integ.x1(), xe);
   evaluate(t1, xe, se);
   // how guard k stands at the step's start
   auto start_of = [&](std::size_t k) {
-    return zero_start_[k]   ? GuardStart::kZero
-           : s0_.v[k] > 0.0 ? GuardStart::kArmed
-                            : GuardStart::kDisarmed;
+    return latch_.zero_start[k] ? GuardStart::kZero
+           : s0_.v[k] > 0.0     ? GuardStart::kArmed
+                                : GuardStart::kDisarmed;
   };
   // the first crossing of each resetting guard
   const ModeSpec& spec = mode_spec(mode_);
@@ -146,12 +147,12 @@ bool Simulator<N, MaxN>::advance_series(double& t, State& x) requires(N == 0) {
 // cos(phi) on the arc). Elsewhere the series steps it, as it does near those limits.
 template <int N, int MaxN>
 bool Simulator<N, MaxN>::start_arc(double t, const ContactState& x) requires(N == 0) {
-  if (n_ != 0 || !opt_.closed_form_free_rocking || t < quiet_from_ ||
-      std::isfinite(opt_.friction_coefficient) || hold_tension_)
+  if (n_ != 0 || !opt_.closed_form_free_rocking || t < setup_.quiet_from ||
+      std::isfinite(opt_.friction_coefficient) || latch_.hold_tension)
     return false;
   const int e = edge();
   const double a = dyn_.alpha(e);
-  arc_.arc.set_pivot(a, dyn_.inertia(a, q_), dyn_.g_over_h());
+  arc_.arc.set_pivot(a, dyn_.inertia(a, scratch_.q), dyn_.g_over_h());
   if (!arc_.arc.start(t, x, edge_sign(e))) return false;
   // F_J over the whole arc, cos(phi) from cos(alpha_t) = 1/c to cos(phi_m) = cm
   if (!(arc_.arc.least_press(arc_.arc.floor_cos(), arc_.arc.energy_cosine()) >= kPressingFraction))
@@ -164,7 +165,8 @@ bool Simulator<N, MaxN>::start_arc(double t, const ContactState& x) requires(N =
 // the extremes are the step's ends' and its interior critical points' (arc_extremes).
 template <int N, int MaxN>
 bool Simulator<N, MaxN>::advance_arc(double& t, State& x) requires(N == 0) {
-  const double t_stop = std::min({t_end_, motion_.next_breakpoint(t, break_cursor_), step_stop_});
+  const double t_stop =
+      std::min({setup_.t_end, motion_.next_breakpoint(t, cursor_.brk), step_stop_});
   if (!count_step(t)) return false;
   arc_.arc.step(t_stop);
   const double t0 = arc_.arc.t0(), t1 = arc_.arc.t1();
@@ -172,13 +174,13 @@ bool Simulator<N, MaxN>::advance_arc(double& t, State& x) requires(N == 0) {
   const double tp = arc_.arc.peak_time();
   if (tp > t0 && tp <= t1 && guard_slot(mode_, Guard::kPeak) >= 0) {
     GuardSample s;
-    state_at(tp, xr_);
-    arc_sample(tp, xr_, arc_.arc.sin_phi_m(), arc_.arc.energy_cosine(), s);
-    record_sample(s, xr_);
+    state_at(tp, scratch_.xr);
+    arc_sample(tp, scratch_.xr, arc_.arc.sin_phi_m(), arc_.arc.energy_cosine(), s);
+    record_sample(s, scratch_.xr);
   }
   // the step's end, before the reset where the impact ends it (a point of the motion too)
-  GuardSample& se = samples_buf_[1];
-  State& xe = sample_states_[1];
+  GuardSample& se = points_.samples[1];
+  State& xe = points_.states[1];
   put(arc_.arc.x1(), xe);
   const bool impact = t1 == arc_.arc.impact_time();
   if (impact)
@@ -296,7 +298,7 @@ void Simulator<N, MaxN>::series_extremes(double t0, double tau_end, bool event,
   // needed
   const ReactionReach reach = reaction_reach(std::max(std::abs(range.fi_lo), std::abs(range.fi_hi)),
                                              range.moment_abs, range.fj_lo, range.fj_hi);
-  if (tension_) {
+  if (latch_.tension) {
     // the floor pulls on the held pivot: its largest pull and the time it pulls, on F_J's series
     if (!reaction) {
       reaction_polynomials(series_.integ.t1() - series_.integ.t0());
@@ -382,19 +384,19 @@ bool Simulator<N, MaxN>::advance_still(double& t, State& x) requires(N == 0) {
   int samples = 1;
   if (motion_.is_sampled()) {
     tb = scan_record(t);
-  } else if (t >= quiet_from_) {
+  } else if (t >= setup_.quiet_from) {
     // the base acceleration is zero from here on (a pulse has ended): the body at rest stays so,
     // every guard constant and positive, so nothing can change any more
-    tb = t_end_;
+    tb = setup_.t_end;
   } else {
-    tb = std::min({t_end_, motion_.next_breakpoint(t, break_cursor_), t + opt_.max_step});
+    tb = std::min({setup_.t_end, motion_.next_breakpoint(t, cursor_.brk), t + opt_.max_step});
     samples = samples_;
   }
-  auto& smp = samples_buf_;
+  auto& smp = points_.samples;
   smp[0] = s0_;
-  if (motion_.is_sampled() && scan_from_ > ta) {
+  if (motion_.is_sampled() && scan_.from > ta) {
     // the scan passed samples with no event on them: start from the last of them
-    ta = scan_from_;
+    ta = scan_.from;
     evaluate(ta, still_.x, smp[0]);
   }
   for (int k = 1; k <= samples; ++k) {
@@ -413,7 +415,7 @@ bool Simulator<N, MaxN>::advance_still(double& t, State& x) requires(N == 0) {
     observe(smp[kk], still_.x);
     ++points;
   }
-  if (tension_) {
+  if (latch_.tension) {
     // the time the floor pulls on the held body, to the last sample before any event and on to it
     std::array<double, kMaxSamples + 2> ts{}, fs{};
     GuardSample s;
@@ -447,7 +449,7 @@ bool Simulator<N, MaxN>::advance_still(double& t, State& x) requires(N == 0) {
 
 // walks the record's samples after t while every guard stays positive there, folding their
 // reactions into the extremes; returns the end of the first span that may hold a crossing (a
-// sample where some guard is <= 0), or the end time. scan_from_ is the span's start.
+// sample where some guard is <= 0), or the end time. scan_.from is the span's start.
 template <int N, int MaxN>
 double Simulator<N, MaxN>::scan_record(double t) requires(N == 0) {
   const std::vector<double>& ts = motion_.times();
@@ -458,28 +460,28 @@ double Simulator<N, MaxN>::scan_record(double t) requires(N == 0) {
   const double a1 = dyn_.alpha1(), a2 = dyn_.alpha2();
   const double fc = opt_.friction_coefficient;
   const bool friction = std::isfinite(fc);
-  std::size_t i = scan_index_;
+  std::size_t i = scan_.index;
   while (i > 0 && ts[i - 1] > t) --i;
   while (i < ts.size() && ts[i] <= t) ++i;
-  scan_from_ = t;
+  scan_.from = t;
   double shear = 0.0, demand = 0.0;
   // uplift about edge 1 / edge 2, lift-off, friction margin, over M g (rigid body)
-  for (; i < ts.size() && ts[i] < t_end_; ++i) {
+  for (; i < ts.size() && ts[i] < setup_.t_end; ++i) {
     const double ax = hx[i] / g, ay = 1.0 + (vertical ? vy[i] / g : 0.0);
     const double u1 = a1 * ay - ax, u2 = a2 * ay + ax;
     if (!(u1 > 0.0 && u2 > 0.0 && ay > 0.0)) break;
     if (friction && !(fc * ay - std::abs(ax) > 0.0)) break;  // the base starts to slide
     shear = std::max(shear, std::abs(ax));
     if (ay >= kPressingFraction) demand = std::max(demand, std::abs(ax) / ay);
-    scan_from_ = ts[i];
+    scan_.from = ts[i];
   }
-  scan_index_ = i;
+  scan_.index = i;
   Extremes& ex = res_.extremes;
   const double mg = dyn_.mass() * g;
   ex.max_base_shear = std::max(ex.max_base_shear, mg * shear);
   ex.max_overturning_moment = std::max(ex.max_overturning_moment, mg * dyn_.height() * shear);
   ex.max_friction_demand = std::max(ex.max_friction_demand, demand);
-  return i < ts.size() ? std::min(ts[i], t_end_) : t_end_;
+  return i < ts.size() ? std::min(ts[i], setup_.t_end) : setup_.t_end;
 }
 
 }  // namespace flexrock::detail

@@ -143,8 +143,8 @@ class Simulator final : private GuardProbe {
 
   template <class X>
   void unpack(const X& x) {
-    q_ = x.segment(iq(), n_);
-    qd_ = x.segment(iqd(), n_);
+    scratch_.q = x.segment(iq(), n_);
+    scratch_.qd = x.segment(iqd(), n_);
   }
   // a stepper's state into a State: contact and flight states are its head; a slide state is its
   // head of 2n + 4 and the slip's three entries
@@ -169,8 +169,9 @@ class Simulator final : private GuardProbe {
   void contact_rhs(double t, const ContactState& x, ContactState& dx);
   void flight_rhs(double t, const FlightState& x, FlightState& dx);
   void slide_rhs(double t, const SlideState& x, SlideState& dx);
-  // d_ddot [m/s^2] of the current sliding mode at (q_, qd_), with theta_ddot, q_ddot (in qdd_) and
-  // the reaction over M g; a' = a + d_ddot I is the sliding frame's acceleration (theory §18)
+  // d_ddot [m/s^2] of the current sliding mode at (scratch_.q, scratch_.qd), with theta_ddot,
+  // q_ddot (in scratch_.qdd) and the reaction over M g; a' = a + d_ddot I is the sliding frame's
+  // acceleration (theory §18)
   double slide_acceleration(double sn, double cs, double theta_dot, BaseAcceleration a,
                             double& theta_ddot, Eigen::Vector2d& reaction);
   // ---- guard functions of the current mode, in its slot order, with the floor reaction
@@ -193,7 +194,7 @@ class Simulator final : private GuardProbe {
   bool enter_mode(double t, State& x);
   bool start_mode(double t, State& x);  // one entry: the mode's stepper, then its guards at t
   bool request_entry() {
-    entry_pending_ = true;
+    latch_.entry_pending = true;
     return true;
   }
   void configure_rocking_integrator();
@@ -247,7 +248,7 @@ class Simulator final : private GuardProbe {
   bool walk_quiet(double ax, double ay0, double ay1) const requires(N != 0);
   struct ReactionReach {
     bool shear = false, moment = false, demand = false;
-    bool pull = false;  // the floor's pull on a held pivot (tension_)
+    bool pull = false;  // the floor's pull on a held pivot (latch_.tension)
   };
   ReactionReach reaction_reach(double fi_top, double moment_top, double fj_lo, double fj_hi) const;
   int walk_search(double tp0, double a, double b, const GuardSample& sa, const GuardSample& sb,
@@ -258,7 +259,7 @@ class Simulator final : private GuardProbe {
   template <class Jet>
   double largest_near(Jet&& jet, double tau, double lo, double hi);
   // the quantities of locate_extremes at the last step's observed point p (time t, guards s, u the
-  // deformation there), into point_t_ and point_vals_
+  // deformation there), into points_.t and points_.vals
   void keep_point(int p, double t, const GuardSample& s, const Vec& u);
   // the extremes of those quantities between the step's observed points 0..points-1, located
   // where the parabola through three neighbouring points peaks above the extreme so far
@@ -285,8 +286,9 @@ class Simulator final : private GuardProbe {
   // `momentum` [N s]: M (|v_c| before + after), the scale of the impulse's rounding
   bool after_impulse(double t, const Event& ev, double th, double momentum);
   bool start_slip(double t, State& x);
-  // an uplift onto e from sticking full contact at t (state in q_, qd_) has a continuation: the
-  // pivot's friction holds, or with the pivot sliding the body still turns up (theory §20)
+  // an uplift onto e from sticking full contact at t (state in scratch_.q, scratch_.qd) has a
+  // continuation: the pivot's friction holds, or with the pivot sliding the body still turns up
+  // (theory §20)
   bool uplift_holds(double t, int e);
   bool stick(double t, State& x);
   // the mode changes to m at t: the slip's bookkeeping (offset, time sliding)
@@ -304,9 +306,9 @@ class Simulator final : private GuardProbe {
   void count_impact(const Event& ev, double impulse_y, double loss, bool chatter);
   // after a step with no event: a pressing floor ends the pivot-tension hold
   void release_latches(const GuardSample& s) {
-    hold_tension_ = false;
+    latch_.hold_tension = false;
     const int lift = guard_slot(mode_, Guard::kLiftOff);
-    if (lift >= 0 && s.v[static_cast<std::size_t>(lift)] > 0.0) tension_ = false;
+    if (lift >= 0 && s.v[static_cast<std::size_t>(lift)] > 0.0) latch_.tension = false;
   }
   // an event at t on edge `e` (0: none) with the base centre's offset in contact
   Event make_event(double t, EventKind kind, int e) const {
@@ -314,7 +316,7 @@ class Simulator final : private GuardProbe {
     ev.time = t;
     ev.kind = kind;
     ev.edge = e;
-    ev.offset = offset_;
+    ev.offset = ledger_.offset;
     return ev;
   }
 
@@ -326,26 +328,26 @@ class Simulator final : private GuardProbe {
   double offset_of(const State& x);
   void observe(const GuardSample& s, const State& x) {
     rec_.observe(observation(s.t, x, s));
-    if (s.fj < 0.0 && tension_) fold_pull(s.fj);
+    if (s.fj < 0.0 && latch_.tension) fold_pull(s.fj);
   }
   // the floor pulls on a held pivot (F_J over M g, < 0): into the run's largest pull and the
   // episode's pivot_tension event
   void fold_pull(double fj) {
     const double f = fj * dyn_.mass() * dyn_.g();
     res_.extremes.max_pivot_pull = std::max(res_.extremes.max_pivot_pull, -f);
-    if (tension_event_ >= 0) {
-      Event& ev = res_.events[static_cast<std::size_t>(tension_event_)];
+    if (latch_.tension_event >= 0) {
+      Event& ev = res_.events[static_cast<std::size_t>(latch_.tension_event)];
       ev.force_estimate = std::min(ev.force_estimate, f);
     }
   }
   // the pull of a sample while the pivot is held (over M g, >= 0): a located quantity
-  double pull_of(const GuardSample& s) const { return tension_ && s.fj < 0.0 ? -s.fj : 0.0; }
+  double pull_of(const GuardSample& s) const { return latch_.tension && s.fj < 0.0 ? -s.fj : 0.0; }
   // the state at t within the last step, evaluated and observed (an extreme located there)
   void observe_at(double t) {
     GuardSample s;
-    state_at(t, xr_);
-    evaluate(t, xr_, s);
-    observe(s, xr_);
+    state_at(t, scratch_.xr);
+    evaluate(t, scratch_.xr, s);
+    observe(s, scratch_.xr);
   }
   void emit_rows_until(double t_cut);
   void emit_row(double t, const State& x);
@@ -355,7 +357,6 @@ class Simulator final : private GuardProbe {
   // it reports is the given body's, u = to_user_ q (docs/theory.md, "Modal coordinates")
   const Body body_;
   Mat to_user_, from_user_;  // Phi and Phi^-1 = Phi^T mu
-  mutable Vec qu_, qdu_;     // u of the last observation, u_dot of the last history row
   Dyn dyn_;
   const GroundMotion& motion_;
   SimulationOptions opt_;
@@ -364,7 +365,6 @@ class Simulator final : private GuardProbe {
   int samples_ = 4;
   // rocking, and full contact when not stepped exactly: DOPRI5, and the Rosenbrock method while a
   // flexible body's stiffest rocking motion would hold the explicit step (theory, "Stiff rocking")
-  Vec qdd1_;  // scratch: q_ddot at a unit slip acceleration
   mutable ContactState dense_buf_;
   SimulationResult res_;
   Recorder rec_;
@@ -400,53 +400,76 @@ class Simulator final : private GuardProbe {
   }
   ActiveStepper choose_stepper();
   double stepped_until() const;  // [s] the end of the last step taken (of the still span)
-  GroundMotion::Cursor rhs_cursor_, event_cursor_, break_cursor_;
-  Vec q_, qd_, qdd_;
-  State xr_;
-  std::array<GuardSample, kMaxSamples + 1> samples_buf_;  // guards at this step's samples
-  std::array<State, kMaxSamples + 1> sample_states_;      // the states there (sized once)
-  GuardSample s0_;
-  std::size_t scan_index_ = 0;  // the record sample the last scan stopped at
-  double scan_from_ = 0.0;      // [s] the last sample the scan passed with no event
-  // [s] the stepped propagation's next step ends here: a bracket the walk found a crossing in
-  double step_stop_ = std::numeric_limits<double>::infinity();
-  // a step's observed points (its start, its samples before any event, the event) and the
-  // quantities of locate_extremes there (|u_j|, |F_I|, |moment|, friction demand, pull)
+  // the motion's cursors: each reader of the base acceleration keeps its own place in the record
+  struct Cursors {
+    GroundMotion::Cursor rhs, event, brk;  // right-hand sides, guards, breakpoints
+  } cursor_;
+  // scratch of the equations and the observation (sized once)
+  struct Scratch {
+    Vec q, qd, qdd;       // q, q_dot, q_ddot of the state being evaluated
+    Vec qdd1;             // q_ddot at a unit slip acceleration
+    mutable Vec qu, qdu;  // u of the last observation, u_dot of the last history row
+    State xr;             // a state within the last step
+  } scratch_;
+  GuardSample s0_;  // the guards at the current step's start
+  // the guards and states at a step's samples, and the step's observed points (its start, its
+  // samples before any event, the event) with the quantities of locate_extremes there (|u_j|,
+  // |F_I|, |moment|, friction demand, pull)
   static constexpr int NQ = N == Eigen::Dynamic ? Eigen::Dynamic : N + 4;
   static constexpr int MaxNQ = MaxN == Eigen::Dynamic ? Eigen::Dynamic : MaxN + 4;
   using Quantities = Eigen::Array<double, NQ, 1, Eigen::ColMajor, MaxNQ, 1>;
-  std::array<double, kMaxSamples + 2> point_t_{};
-  std::array<Quantities, kMaxSamples + 2> point_vals_;
-  std::array<bool, kMaxSamples + 2> point_pressing_{};  // F_J >= kPressingFraction at the points
-  std::array<double, kMaxSamples + 2> point_fj_{};      // F_J over M g at the points
-  Quantities point_extreme_;                   // scratch: the extremes so far, in the same units
-  std::array<bool, kMaxGuards> zero_start_{};  // guards known to turn positive from zero
-  std::array<double, 2> overturn_limit_{};     // [rad] on edge 1 (theta > 0) and edge 2
-  double offset_ = 0.0;              // [m] horizontal offset of the base centre while in contact
-  ImpactRule rule_;                  // the impact law and its parameters
-  bool rigid_law_ = false;           // rule_ is rigid_body
-  double mu_s_ = 0.0, mu_k_ = 0.0;   // static and kinetic friction coefficients (inf: no limit)
-  double slide_start_ = 0.0;         // [s] when the current slide began
-  bool slide_inconsistent_ = false;  // a sliding mode had no consistent slip acceleration
-  bool tension_ = false;     // the floor pulls (pivot_tension): lift-off disarmed until it presses
-  long tension_event_ = -1;  // the index of the episode's pivot_tension event (-1: none)
-  // after a grazing landing with friction the floor is let pull through the modes entered at that
-  // instant (a slip that starts where the pivot force vanishes) until a step ends: else the body
-  // would lift off and land again without end
-  bool hold_tension_ = false;
-  bool suppress_uplift_at_start_ = false;
-  double chatter_interval_ = 0.0;
-  double base_width_ = 0.0;  // [m] b1 + b2
-  double last_contact_change_ = 0.0;
-  double flight_start_ = 0.0;
-  double t_end_ = 0.0;
-  double quiet_from_ = 0.0;  // the base acceleration is zero after this [s]
-  long next_output_ = 0;
-  double energy0_ = 0.0, kinetic0_ = 0.0;
-  double impact_loss_ = 0.0, chatter_loss_ = 0.0;
-  double zeno_time_ = -1.0;
-  int same_time_events_ = 0;
-  bool entry_pending_ = false;  // a reset changed the mode at t: enter_mode starts it next
+  struct StepPoints {
+    std::array<GuardSample, kMaxSamples + 1> samples;  // guards at this step's samples
+    std::array<State, kMaxSamples + 1> states;         // the states there (sized once)
+    std::array<double, kMaxSamples + 2> t{};
+    std::array<Quantities, kMaxSamples + 2> vals;
+    std::array<bool, kMaxSamples + 2> pressing{};  // F_J >= kPressingFraction at the points
+    std::array<double, kMaxSamples + 2> fj{};      // F_J over M g at the points
+    Quantities extreme;                            // scratch: the extremes so far, same units
+  } points_;
+  // where the record scans (the still path and the walk) have got to
+  struct RecordScan {
+    std::size_t index = 0;  // the record sample the last scan stopped at
+    double from = 0.0;      // [s] the last sample the scan passed with no event
+  } scan_;
+  // [s] the stepped propagation's next step ends here: a bracket the walk found a crossing in
+  double step_stop_ = std::numeric_limits<double>::infinity();
+  // what the run derives once from the body, the options and the motion
+  struct Setup {
+    std::array<double, 2> overturn_limit{};  // [rad] on edge 1 (theta > 0) and edge 2
+    ImpactRule rule;                         // the impact law and its parameters
+    bool rigid_law = false;                  // rule is rigid_body
+    double mu_s = 0.0, mu_k = 0.0;  // static and kinetic friction coefficients (inf: no limit)
+    double chatter_interval = 0.0;  // [s]
+    double base_width = 0.0;        // [m] b1 + b2
+    double t_end = 0.0;             // [s]
+    double quiet_from = 0.0;        // the base acceleration is zero after this [s]
+  } setup_;
+  // the latches: what a mode's entry or a reset leaves for the steps after it
+  struct Latches {
+    std::array<bool, kMaxGuards> zero_start{};  // guards known to turn positive from zero
+    bool slide_inconsistent = false;  // a sliding mode had no consistent slip acceleration
+    bool tension = false;     // the floor pulls (pivot_tension): lift-off disarmed until it presses
+    long tension_event = -1;  // the index of the episode's pivot_tension event (-1: none)
+    // after a grazing landing with friction the floor is let pull through the modes entered at
+    // that instant (a slip that starts where the pivot force vanishes) until a step ends: else the
+    // body would lift off and land again without end
+    bool hold_tension = false;
+    bool suppress_uplift_at_start = false;
+    bool entry_pending = false;  // a reset changed the mode at t: enter_mode starts it next
+  } latch_;
+  // the run's account: where the base is, when contact last changed, the energies, the outputs
+  struct Ledger {
+    double offset = 0.0;       // [m] horizontal offset of the base centre while in contact
+    double slide_start = 0.0;  // [s] when the current slide began
+    double last_contact_change = 0.0;
+    double flight_start = 0.0;
+    long next_output = 0;
+    double energy0 = 0.0, kinetic0 = 0.0;
+    double impact_loss = 0.0, chatter_loss = 0.0;
+    double zeno_time = -1.0;
+    int same_time_events = 0;
+  } ledger_;
 };
 
 template <int N, int MaxN>
@@ -463,35 +486,35 @@ Simulator<N, MaxN>::Simulator(const Body& body, const GroundMotion& motion,
       rec_(res_, body.params().mass, body.g(), body.params().height, body.modes()),
       series_(motion),
       exact_(dyn_, motion, samples_, opt.max_step, opt.exact_full_contact) {
-  qu_.resize(n_);
-  qdu_.resize(n_);
-  q_.resize(n_);
-  qd_.resize(n_);
-  qdd_.resize(n_);
-  qdd1_.resize(n_);
-  rule_.law = opt.impact_law;
-  rule_.restitution_factor = opt.restitution_factor;
-  rule_.ratio_edge1 = opt.restitution_ratio_edge1;
-  rule_.ratio_edge2 = opt.restitution_ratio_edge2;
-  rigid_law_ = opt.impact_law == ImpactLaw::kRigidBody;
-  mu_s_ = opt.friction_coefficient;
-  mu_k_ = std::min(opt.kinetic_friction_coefficient, opt.friction_coefficient);
+  scratch_.qu.resize(n_);
+  scratch_.qdu.resize(n_);
+  scratch_.q.resize(n_);
+  scratch_.qd.resize(n_);
+  scratch_.qdd.resize(n_);
+  scratch_.qdd1.resize(n_);
+  setup_.rule.law = opt.impact_law;
+  setup_.rule.restitution_factor = opt.restitution_factor;
+  setup_.rule.ratio_edge1 = opt.restitution_ratio_edge1;
+  setup_.rule.ratio_edge2 = opt.restitution_ratio_edge2;
+  setup_.rigid_law = opt.impact_law == ImpactLaw::kRigidBody;
+  setup_.mu_s = opt.friction_coefficient;
+  setup_.mu_k = std::min(opt.kinetic_friction_coefficient, opt.friction_coefficient);
   // shortest period among the pinned-base modes and the rigid rocking motion
   double shortest = 2.0 * std::numbers::pi / body.rocking_frequency();
   if (n_ > 0)
     shortest = std::min(shortest, 2.0 * std::numbers::pi / body.natural_frequencies().maxCoeff());
-  chatter_interval_ = opt.chatter_ratio * shortest;
-  base_width_ = body.params().b1 + body.params().b2;
+  setup_.chatter_interval = opt.chatter_ratio * shortest;
+  setup_.base_width = body.params().b1 + body.params().b2;
   const bool half_pi = opt.overturn == OverturnCriterion::kHalfPi;
-  overturn_limit_[0] = half_pi ? 0.5 * std::numbers::pi : body.tipping_angle(1);
-  overturn_limit_[1] = half_pi ? 0.5 * std::numbers::pi : body.tipping_angle(2);
+  setup_.overturn_limit[0] = half_pi ? 0.5 * std::numbers::pi : body.tipping_angle(1);
+  setup_.overturn_limit[1] = half_pi ? 0.5 * std::numbers::pi : body.tipping_angle(2);
   ctl_.rtol = opt.rtol;
   ctl_.atol = opt.atol;
   ctl_.max_step = opt.max_step;
-  for (State& xk : sample_states_) xk.setZero(2 * n_ + 11);
+  for (State& xk : points_.states) xk.setZero(2 * n_ + 11);
   dense_buf_.setZero(2 * n_ + 4);
   slide_.buf.setZero(2 * n_ + 7);
-  xr_.setZero(2 * n_ + 11);  // written through put(): sized once, as on the heap path
+  scratch_.xr.setZero(2 * n_ + 11);  // written through put(): sized once, as on the heap path
   flight_.buf.setZero(2 * n_ + 8);
   if constexpr (N != 0) {
     exact_.prop.output_basis(to_user_);
@@ -505,8 +528,8 @@ Simulator<N, MaxN>::Simulator(const Body& body, const GroundMotion& motion,
     exact_.best.assign(static_cast<std::size_t>(n_ + 4), 0.0);
     exact_.best_at.assign(static_cast<std::size_t>(n_ + 4), 0.0);
   }
-  for (Quantities& v : point_vals_) v.setZero(n_ + 4);
-  point_extreme_.setZero(n_ + 4);
+  for (Quantities& v : points_.vals) v.setZero(n_ + 4);
+  points_.extreme.setZero(n_ + 4);
 }
 
 template <int N, int MaxN>
@@ -523,11 +546,11 @@ SimulationResult Simulator<N, MaxN>::run(const InitialState& init) {
   } else if (init.theta < 0.0 || init.theta_dot < 0.0) {
     mode_ = ContactMode::kRockingEdge2;
   }
-  t_end_ = opt_.t_end >= 0.0 ? opt_.t_end : motion_.duration();
-  quiet_from_ = motion_.quiet_from();
-  energy0_ = kinetic_energy(x) + potential_energy(x);
-  kinetic0_ = kinetic_energy(x);
-  last_contact_change_ = -std::numeric_limits<double>::infinity();
+  setup_.t_end = opt_.t_end >= 0.0 ? opt_.t_end : motion_.duration();
+  setup_.quiet_from = motion_.quiet_from();
+  ledger_.energy0 = kinetic_energy(x) + potential_energy(x);
+  ledger_.kinetic0 = kinetic_energy(x);
+  ledger_.last_contact_change = -std::numeric_limits<double>::infinity();
 
   // a rocking run records two events an impact (the impact, the next peak): room for the first
   // 32 impacts spares the run the vector's first six reallocations
@@ -535,10 +558,11 @@ SimulationResult Simulator<N, MaxN>::run(const InitialState& init) {
   double t = 0.0;
   bool running = enter_mode(t, x);
   if (opt_.output_dt > 0.0) emit_row(t, x);
-  next_output_ = 1;
-  while (running && t < t_end_) {
+  ledger_.next_output = 1;
+  while (running && t < setup_.t_end) {
     running = advance(t, x);
-    if (running && entry_pending_) running = enter_mode(t, x);  // an event fired: its new mode
+    if (running && latch_.entry_pending)
+      running = enter_mode(t, x);  // an event fired: its new mode
   }
   finish(t, x);
   return std::move(res_);
