@@ -135,13 +135,13 @@ TEST(Simulate, RejectsBadOptionsWithMessages) {
   };
   SimulationOptions o;
   o.rtol = -1;
-  expect_throw(o, "rtol must be positive");
+  expect_throw(o, "rtol must be a number > 0");
   o = {};
   o.max_step = 0;
   expect_throw(o, "max_step");
   o = {};
   o.friction_coefficient = 0;
-  expect_throw(o, "friction_coefficient must be > 0");
+  expect_throw(o, "friction_coefficient must be a number > 0");
   o = {};
   o.event_samples = 0;
   expect_throw(o, "event_samples");
