@@ -99,11 +99,44 @@ void bind_sim(py::module_& m) {
       .def_readwrite("q", &InitialState::q, "[-] empty: the static deformation under gravity")
       .def_readwrite("q_dot", &InitialState::q_dot, "[1/s] empty: zero");
 
+  py::enum_<ContactIntegrator>(m, "ContactIntegrator",
+                               "How a stiff motion is integrated (SimulationMethods).")
+      .value("auto", ContactIntegrator::kAuto,
+             "DOPRI5 while accuracy sets the step, Rosenbrock "
+             "while stability would")
+      .value("explicit", ContactIntegrator::kExplicit, "DOPRI5 only")
+      .value("implicit", ContactIntegrator::kImplicit, "the Rosenbrock method only");
+  py::class_<SimulationMethods>(
+      m, "SimulationMethods",
+      "How the engine steps, for tests and comparisons only: each switch picks between two "
+      "methods that give the same answer within the tolerances, at different cost.")
+      .def(py::init<>())
+      .def_readwrite("exact_full_contact", &SimulationMethods::exact_full_contact,
+                     "a flexible body in full contact under a record: exact propagation; False: "
+                     "DOPRI5")
+      .def_readwrite("contact_integrator", &SimulationMethods::contact_integrator,
+                     "the compliant contact's integrator")
+      .def_readwrite("rocking_integrator", &SimulationMethods::rocking_integrator,
+                     "a flexible body's rocking integrator")
+      .def_readwrite("stiff_switch_scale", &SimulationMethods::stiff_switch_scale,
+                     "factor on the rate where the rocking integrator switches methods")
+      .def_readwrite("full_contact_walk", &SimulationMethods::full_contact_walk,
+                     "the exact full contact walks the record; False: sampled steps")
+      .def_readwrite("series_rocking", &SimulationMethods::series_rocking,
+                     "a rigid body's rocking by its Taylor series; False: DOPRI5")
+      .def_readwrite("high_order_rocking", &SimulationMethods::high_order_rocking,
+                     "a flexible body's rocking by DOP853; False: DOPRI5")
+      .def_readwrite("closed_form_free_rocking", &SimulationMethods::closed_form_free_rocking,
+                     "a rigid body's free rocking by the closed form of its arcs; False: its "
+                     "Taylor series");
+
   {
     // every [solver] key with an option of its own, from the table of solver keys
     py::class_<SimulationOptions> options(m, "SimulationOptions", "Solver options (SI units).");
     options.def(py::init<>())
-        .def_readwrite("output_dt", &SimulationOptions::output_dt, "[s] 0: no time history");
+        .def_readwrite("output_dt", &SimulationOptions::output_dt, "[s] 0: no time history")
+        .def_readwrite("methods", &SimulationOptions::methods,
+                       "how the engine steps, for tests and comparisons only");
     for (const SolverKey& k : kSolverKeys) {
       std::visit(
           [&](auto field) {

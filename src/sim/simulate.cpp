@@ -127,11 +127,12 @@ void check_options(const Body& body, const InitialState& init, const SimulationO
                             " with impact_law = restitution: give the measured ratio as "
                             "restitution_ratio instead (the factor applies to paper and "
                             "rigid_body)");
-  FLEXROCK_THROW_UNLESS(std::isfinite(o.stiff_switch_scale) && o.stiff_switch_scale > 0.0,
-                        "options: stiff_switch_scale must be positive and finite, got " +
-                            std::to_string(o.stiff_switch_scale) +
-                            " (a factor on the rate where the rocking integrator switches "
-                            "methods; 1 by default)");
+  FLEXROCK_THROW_UNLESS(
+      std::isfinite(o.methods.stiff_switch_scale) && o.methods.stiff_switch_scale > 0.0,
+      "options: stiff_switch_scale must be positive and finite, got " +
+          std::to_string(o.methods.stiff_switch_scale) +
+          " (a factor on the rate where the rocking integrator switches "
+          "methods; 1 by default)");
   FLEXROCK_THROW_UNLESS(
       kinetic_friction_coefficient_ok(o.kinetic_friction_coefficient, o.friction_coefficient),
       "options: kinetic_friction_coefficient (" + format_number(o.kinetic_friction_coefficient) +

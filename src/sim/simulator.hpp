@@ -420,7 +420,7 @@ Simulator<N, MaxN>::Simulator(const Body& body, const GroundMotion& motion,
       n_(body.modes()),
       samples_(std::clamp(opt.event_samples, 1, kMaxSamples)),
       series_integ_(motion),
-      prop_(dyn_, motion, samples_, opt.max_step, opt.exact_full_contact),
+      prop_(dyn_, motion, samples_, opt.max_step, opt.methods.exact_full_contact),
       rec_(res_, body.params().mass, body.g(), body.params().height, body.modes()) {
   prop_.output_basis(to_user_);
   qu_.resize(n_);
@@ -897,7 +897,7 @@ auto Simulator<N, MaxN>::choose_stepping() const -> Stepping {
   }
   // the series needs a base acceleration it can expand between the steps' ends: a record's
   // (linear), sinusoids' (a pulse's), or none
-  if (N == 0 && opt_.series_rocking &&
+  if (N == 0 && opt_.methods.series_rocking &&
       (motion_.is_sampled() || motion_.is_none() || motion_.is_sinusoidal()))
     return Stepping::kSeries;
   return Stepping::kRocking;
@@ -931,16 +931,16 @@ double Simulator<N, MaxN>::stepped_until() const {
 // DOPRI5's steps for that. Full contact and a rigid body keep DOPRI5.
 template <int N, int MaxN>
 void Simulator<N, MaxN>::configure_rocking_integrator() {
-  const auto method = static_cast<StiffMethod>(opt_.rocking_integrator);
+  const auto method = static_cast<StiffMethod>(opt_.methods.rocking_integrator);
   if (n_ == 0 || !rocking()) {
     integ_.configure(std::numeric_limits<double>::infinity(), StiffMethod::kExplicit);
     return;
   }
   const ExplicitMethod explicit_method =
-      opt_.high_order_rocking ? ExplicitMethod::kDop853 : ExplicitMethod::kDopri5;
+      opt_.methods.high_order_rocking ? ExplicitMethod::kDop853 : ExplicitMethod::kDopri5;
   double& h = rocking_h_stable_[static_cast<std::size_t>(edge() - 1)];
   if (h < 0.0 && method == StiffMethod::kAuto)
-    h = rocking_stable_step(body_, edge(), explicit_method) / opt_.stiff_switch_scale;
+    h = rocking_stable_step(body_, edge(), explicit_method) / opt_.methods.stiff_switch_scale;
   integ_.configure(h, method, explicit_method);
 }
 
@@ -1252,7 +1252,7 @@ bool Simulator<N, MaxN>::advance_series(double& t, State& x) {
 // cos(phi) on the arc). Elsewhere the series steps it, as it does near those limits.
 template <int N, int MaxN>
 bool Simulator<N, MaxN>::start_arc(double t, const ContactState& x) {
-  if (n_ != 0 || !opt_.closed_form_free_rocking || t < quiet_from_ ||
+  if (n_ != 0 || !opt_.methods.closed_form_free_rocking || t < quiet_from_ ||
       std::isfinite(opt_.friction_coefficient) || hold_tension_)
     return false;
   const int e = edge();
@@ -1473,7 +1473,7 @@ void Simulator<N, MaxN>::series_extremes(double t0, double tau_end, bool event,
 // sample (docs/theory.md, "Exact propagation in full contact"): true when the walk can start at t
 template <int N, int MaxN>
 bool Simulator<N, MaxN>::can_walk(double t) const {
-  if (stepping_ != Stepping::kExact || !opt_.full_contact_walk || !motion_.is_sampled())
+  if (stepping_ != Stepping::kExact || !opt_.methods.full_contact_walk || !motion_.is_sampled())
     return false;
   if (t < fine_until_ - 1e-12 * std::max(1.0, t)) return false;
   if (tension_ || hold_tension_) return false;

@@ -91,7 +91,7 @@ TEST(Simulate, EnergyBalanceThatDoesNotCloseIsFlagged) {
   EXPECT_LT(std::abs(ok.energy.residual), 1e-5 * ok.energy.scale);
   opt.rtol = opt.atol = 1e-3;
   // DOPRI5 rocking: the default DOP853 keeps this balance to 1e-5 of the scale even at 1e-3
-  opt.high_order_rocking = false;
+  opt.methods.high_order_rocking = false;
   const SimulationResult bad = simulate(body, m, {}, opt);
   EXPECT_EQ(bad.status, Status::kCompleted);
   EXPECT_GT(std::abs(bad.energy.residual), 1e-4 * bad.energy.scale + 1e-10 * mgh);
