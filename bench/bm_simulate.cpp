@@ -98,8 +98,8 @@ void run_stiff(benchmark::State& state, const Case& c) {
 void BM_E_StiffSlabKobe(benchmark::State& s) { run_stiff(s, case_e_stiff_slab()); }
 void BM_E_StiffSlabKobe_Explicit(benchmark::State& s) {
   Case c = case_e_stiff_slab();
-  c.opt.rocking_integrator = ContactIntegrator::kExplicit;
-  c.opt.high_order_rocking = false;
+  c.opt.methods.rocking_integrator = ContactIntegrator::kExplicit;
+  c.opt.methods.high_order_rocking = false;
   run_stiff(s, c);
 }
 

@@ -49,11 +49,11 @@ int main(int argc, char** argv) {
            : name == "d8" ? case_d_cantilever(8, rtol)
                           : case_d_cantilever(4, rtol);
   if (variant == "dopri5") {
-    c.opt.series_rocking = false;
-    c.opt.high_order_rocking = false;
+    c.opt.methods.series_rocking = false;
+    c.opt.methods.high_order_rocking = false;
   }
-  if (variant == "stepped") c.opt.full_contact_walk = false;
-  if (variant == "series") c.opt.closed_form_free_rocking = false;
+  if (variant == "stepped") c.opt.methods.full_contact_walk = false;
+  if (variant == "series") c.opt.methods.closed_form_free_rocking = false;
   std::vector<double> times;
   SimulationResult r;
   for (int i = 0; i < reps; ++i) {

@@ -5,6 +5,7 @@
 find_package(nlohmann_json 3.9 REQUIRED)
 flexrock_add_test(flexrock_case_file_tests
   SOURCES unit/case_file_test.cpp unit/outputs_test.cpp unit/fe_modal_files_test.cpp
+          unit/solver_keys_test.cpp
   LIBS flexrock::io nlohmann_json::nlohmann_json
   LABEL unit)
 

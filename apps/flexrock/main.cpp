@@ -591,7 +591,8 @@ int main(int argc, char** argv) {
   CLI::App* keys = app.add_subcommand(
       "keys",
       "Print the references of docs/case-file.md written from the library's tables: the "
-      "synthetic motion types and the time-history columns; and of docs/studies.md: the "
+      "synthetic motion types, the [solver] keys and the time-history columns; and of "
+      "docs/studies.md: the "
       "spectrum and sweep CSV columns");
   keys->add_flag("--markdown", markdown,
                  "as the Markdown table of docs/case-file.md (the default)");
@@ -615,9 +616,10 @@ int main(int argc, char** argv) {
     if (*check) return cmd_check(check_files, quiet);
     if (*params) return cmd_params(params_file);
     if (*keys) {
-      fmt::print("{}{}{}{}{}{}", io::body_key_reference(), io::pulse_key_reference(),
-                 io::time_history_column_reference(), io::event_column_reference(),
-                 io::study_column_reference(), cli::fragility_curve_column_reference());
+      fmt::print("{}{}{}{}{}{}{}", io::body_key_reference(), io::pulse_key_reference(),
+                 io::solver_key_reference(), io::time_history_column_reference(),
+                 io::event_column_reference(), io::study_column_reference(),
+                 cli::fragility_curve_column_reference());
       return 0;
     }
     if (studies.selected()) return studies.run();

@@ -195,6 +195,21 @@ class ContactForceLaw:
     @property
     def value(self) -> int: ...
 
+class ContactIntegrator:
+    auto: ClassVar[ContactIntegrator]
+    explicit: ClassVar[ContactIntegrator]
+    implicit: ClassVar[ContactIntegrator]
+    __members__: ClassVar[dict[str, ContactIntegrator]]
+    def __init__(self, value: int) -> None: ...
+    def __eq__(self, other: object) -> bool: ...
+    def __hash__(self) -> int: ...
+    def __index__(self) -> int: ...
+    def __int__(self) -> int: ...
+    @property
+    def name(self) -> str: ...
+    @property
+    def value(self) -> int: ...
+
 class ContactModel:
     impulsive: ClassVar[ContactModel]
     compliant: ClassVar[ContactModel]
@@ -1006,6 +1021,18 @@ class ScaleKind:
     @property
     def value(self) -> int: ...
 
+class SimulationMethods:
+    """How the engine steps, for tests and comparisons only: each switch picks between two methods that give the same answer within the tolerances, at different cost."""
+    def __init__(self) -> None: ...
+    closed_form_free_rocking: bool
+    contact_integrator: ContactIntegrator
+    exact_full_contact: bool
+    full_contact_walk: bool
+    high_order_rocking: bool
+    rocking_integrator: ContactIntegrator
+    series_rocking: bool
+    stiff_switch_scale: float
+
 class SimulationOptions:
     """Solver options (SI units)."""
     def __init__(self) -> None: ...
@@ -1026,6 +1053,7 @@ class SimulationOptions:
     max_impacts: int
     max_step: float
     max_steps: int
+    methods: SimulationMethods
     output_dt: float
     overturn: OverturnCriterion
     restitution_factor: float

@@ -5,10 +5,13 @@
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
+#include <type_traits>
+#include <variant>
 #include <vector>
 
 #include "bindings.hpp"
 #include "flexrock/sim/simulate.hpp"
+#include "flexrock/sim/solver_keys.hpp"
 
 namespace py = pybind11;
 
@@ -96,49 +99,53 @@ void bind_sim(py::module_& m) {
       .def_readwrite("q", &InitialState::q, "[-] empty: the static deformation under gravity")
       .def_readwrite("q_dot", &InitialState::q_dot, "[1/s] empty: zero");
 
-  py::class_<SimulationOptions>(m, "SimulationOptions", "Solver options (SI units).")
+  py::enum_<ContactIntegrator>(m, "ContactIntegrator",
+                               "How a stiff motion is integrated (SimulationMethods).")
+      .value("auto", ContactIntegrator::kAuto,
+             "DOPRI5 while accuracy sets the step, Rosenbrock "
+             "while stability would")
+      .value("explicit", ContactIntegrator::kExplicit, "DOPRI5 only")
+      .value("implicit", ContactIntegrator::kImplicit, "the Rosenbrock method only");
+  py::class_<SimulationMethods>(
+      m, "SimulationMethods",
+      "How the engine steps, for tests and comparisons only: each switch picks between two "
+      "methods that give the same answer within the tolerances, at different cost.")
       .def(py::init<>())
-      .def_readwrite("t_end", &SimulationOptions::t_end, "[s] < 0: the end of the motion")
-      .def_readwrite("rtol", &SimulationOptions::rtol)
-      .def_readwrite("atol", &SimulationOptions::atol)
-      .def_readwrite("max_step", &SimulationOptions::max_step, "[s]")
-      .def_readwrite("event_samples", &SimulationOptions::event_samples)
-      .def_readwrite("output_dt", &SimulationOptions::output_dt, "[s] 0: no time history")
-      .def_readwrite("overturn", &SimulationOptions::overturn)
-      .def_readwrite("chatter_ratio", &SimulationOptions::chatter_ratio)
-      .def_readwrite("restitution_factor", &SimulationOptions::restitution_factor,
-                     "factor on theta_dot+ of the paper and rigid_body laws")
-      .def_readwrite("impact_law", &SimulationOptions::impact_law)
-      .def_readwrite("restitution_ratio_edge1", &SimulationOptions::restitution_ratio_edge1,
-                     "restitution law: theta_dot+/theta_dot- landing on edge 1")
-      .def_readwrite("restitution_ratio_edge2", &SimulationOptions::restitution_ratio_edge2,
-                     "restitution law: theta_dot+/theta_dot- landing on edge 2")
-      .def_readwrite("impact_duration", &SimulationOptions::impact_duration,
-                     "[s] contact duration assumed for an impact's force estimate")
-      .def_readwrite("friction_coefficient", &SimulationOptions::friction_coefficient,
-                     "static Coulomb coefficient mu_s; inf: the floor holds (no sliding)")
-      .def_readwrite("kinetic_friction_coefficient",
-                     &SimulationOptions::kinetic_friction_coefficient,
-                     "kinetic coefficient mu_k <= mu_s while sliding; inf: equal to mu_s")
-      .def_readwrite("max_steps", &SimulationOptions::max_steps)
-      .def_readwrite("max_impacts", &SimulationOptions::max_impacts)
-      .def_readwrite("contact_model", &SimulationOptions::contact_model,
-                     "impulsive (a rigid floor) or compliant (spring-dashpots at the corners)")
-      .def_readwrite("contact_force_law", &SimulationOptions::contact_force_law,
-                     "compliant: linear or hunt_crossley")
-      .def_readwrite("contact_stiffness", &SimulationOptions::contact_stiffness,
-                     "[N/m^p] compliant: the spring of each tipping point")
-      .def_readwrite("contact_exponent", &SimulationOptions::contact_exponent,
-                     "hunt_crossley: p in F ~ delta^p")
-      .def_readwrite("contact_damping_ratio", &SimulationOptions::contact_damping_ratio,
-                     "linear: the dashpot as a damping ratio of the body on both springs")
-      .def_readwrite("contact_restitution", &SimulationOptions::contact_restitution,
-                     "restitution of a free bounce (linear: sets the damping; hunt_crossley: "
-                     "required); < 0: not given")
-      .def_readwrite(
-          "contact_tangential_stiffness", &SimulationOptions::contact_tangential_stiffness,
-          "[N/m] a sticking corner's horizontal spring at rest under half the weight, > 0; "
-          "-1: not given, the normal spring's secant stiffness");
+      .def_readwrite("exact_full_contact", &SimulationMethods::exact_full_contact,
+                     "a flexible body in full contact under a record: exact propagation; False: "
+                     "DOPRI5")
+      .def_readwrite("contact_integrator", &SimulationMethods::contact_integrator,
+                     "the compliant contact's integrator")
+      .def_readwrite("rocking_integrator", &SimulationMethods::rocking_integrator,
+                     "a flexible body's rocking integrator")
+      .def_readwrite("stiff_switch_scale", &SimulationMethods::stiff_switch_scale,
+                     "factor on the rate where the rocking integrator switches methods")
+      .def_readwrite("full_contact_walk", &SimulationMethods::full_contact_walk,
+                     "the exact full contact walks the record; False: sampled steps")
+      .def_readwrite("series_rocking", &SimulationMethods::series_rocking,
+                     "a rigid body's rocking by its Taylor series; False: DOPRI5")
+      .def_readwrite("high_order_rocking", &SimulationMethods::high_order_rocking,
+                     "a flexible body's rocking by DOP853; False: DOPRI5")
+      .def_readwrite("closed_form_free_rocking", &SimulationMethods::closed_form_free_rocking,
+                     "a rigid body's free rocking by the closed form of its arcs; False: its "
+                     "Taylor series");
+
+  {
+    // every [solver] key with an option of its own, from the table of solver keys
+    py::class_<SimulationOptions> options(m, "SimulationOptions", "Solver options (SI units).");
+    options.def(py::init<>())
+        .def_readwrite("output_dt", &SimulationOptions::output_dt, "[s] 0: no time history")
+        .def_readwrite("methods", &SimulationOptions::methods,
+                       "how the engine steps, for tests and comparisons only");
+    for (const SolverKey& k : kSolverKeys) {
+      std::visit(
+          [&](auto field) {
+            if constexpr (!std::is_same_v<decltype(field), std::monostate>)
+              options.def_readwrite(k.name, field, k.doc);
+          },
+          k.field);
+    }
+  }
 
   py::class_<Event>(m, "Event", "Something that happened; fields not meaningful are zero.")
       .def_readonly("time", &Event::time)

@@ -644,8 +644,7 @@ void read_initial(Reader& r, Case& c, const Body& body) {
 }
 
 void read_solver(Reader& r, SimulationOptions& o) {
-  o.t_end = r.nonnegative_or("t_end", -1.0, "[s]");
-  detail::read_solver_keys(r, o);
+  detail::read_solver_keys(r, o, /*case_file=*/true);
   r.finish();
 }
 
@@ -784,6 +783,23 @@ std::string pulse_key_reference() {
   s += "| `none` | no | (no amplitude, units, frequency) | no | no motion: free rocking; "
        "horizontal only |\n"
        "<!-- end: written by `flexrock keys --markdown` -->\n";
+  return s;
+}
+
+std::string solver_key_reference() {
+  std::string s =
+      "<!-- begin: written by `flexrock keys --markdown` from the table of solver keys "
+      "(include/flexrock/sim/solver_keys.hpp); edit the table, not these lines -->\n"
+      "| key | unit | default | meaning |\n"
+      "|---|---|---|---|\n";
+  for (const SolverKey& k : kSolverKeys) {
+    s.append("| `").append(k.name).append("` | ").append(k.unit);
+    s.append(*k.unit ? " | " : "| ").append(k.default_text).append(" | ");
+    // a bar in the meaning would end the cell
+    for (const char* c = k.doc; *c; ++c) s.append(*c == '|' ? "\\|" : std::string(1, *c));
+    s.append(" |\n");
+  }
+  s += "<!-- end: written by `flexrock keys --markdown` -->\n";
   return s;
 }
 

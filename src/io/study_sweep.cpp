@@ -60,10 +60,10 @@ SweepManifest load_sweep_manifest(const std::string& path) {
     check_name(b, "name", sb.name);
     if (!names.insert("body:" + sb.name).second)
       b.fail("name", "expected a unique body name, got \"" + sb.name + "\" twice");
-    // this body's Coulomb friction, in place of [solver]'s pair
-    const std::string fw = "a number > 0 [-] (or inf: no friction limit)";
+    // this body's Coulomb friction, in place of [solver]'s pair, by the same rules
+    const std::string fw = solver_rule_text(*find_solver_key("friction_coefficient"));
     if (const auto mu = b.number_opt("friction_coefficient", fw, true)) {
-      if (!(*mu > 0.0)) b.expected("friction_coefficient", fw);
+      if (!friction_coefficient_ok(*mu)) b.expected("friction_coefficient", fw);
       sb.friction_coefficient = *mu;
     }
     const std::string kw =
@@ -74,7 +74,7 @@ SweepManifest load_sweep_manifest(const std::string& path) {
                "expected friction_coefficient in the same [[body]] (a body's kinetic coefficient "
                "goes with its static one)");
       }
-      if (!(*mu > 0.0) || (std::isfinite(*mu) && !(*mu <= *sb.friction_coefficient)))
+      if (!kinetic_friction_coefficient_ok(*mu, *sb.friction_coefficient))
         b.expected("kinetic_friction_coefficient", kw);
       sb.kinetic_friction_coefficient = *mu;
     }

@@ -14,6 +14,8 @@
 #include <set>
 #include <string>
 #include <string_view>
+#include <type_traits>
+#include <variant>
 #include <vector>
 
 #include "flexrock/core/error.hpp"
@@ -22,9 +24,9 @@
 #include "flexrock/io/case_file.hpp"
 #include "flexrock/io/files.hpp"
 #include "flexrock/io/records.hpp"
-#include "flexrock/sim/contact_rules.hpp"
 #include "flexrock/sim/option_bounds.hpp"
 #include "flexrock/sim/simulate.hpp"
+#include "flexrock/sim/solver_keys.hpp"
 
 namespace flexrock::io::detail {
 
@@ -284,47 +286,19 @@ class TableReader {
   std::set<std::string> known_;
 };
 
-// the compliant contact's keys of a [solver] table (docs/theory.md, "Compliant contact"); each
-// but contact_model needs contact_model = "compliant"
-inline void read_contact_keys(TableReader& r, SimulationOptions& o) {
-  std::vector<std::string> models;
-  for (const ContactModelInfo& m : kContactModels) models.emplace_back(m.name);
-  const std::string model = r.choice("contact_model", models, to_string(o.contact_model));
-  for (const ContactModelInfo& m : kContactModels)
-    if (model == m.name) o.contact_model = m.model;
-  const bool compliant = o.contact_model == ContactModel::kCompliant;
-  auto only_compliant = [&](const char* key) {
-    if (r.has(key) && !compliant)
-      r.expected(key, std::string("no ") + key +
-                          ": it applies to contact_model = \"compliant\" (contact_model is \"" +
-                          model + "\")");
-  };
-  for (const char* key :
-       {"contact_stiffness", "contact_force_law", "contact_exponent", "contact_damping_ratio",
-        "contact_restitution", "contact_tangential_stiffness"})
-    only_compliant(key);
-  if (!compliant) return;
-  for (const ImpulsiveOnlyKey& k : kImpulsiveOnlyKeys)
-    if (r.has(k.key)) r.expected(k.key, std::string("no ") + k.key + ": " + kImpulsiveOnlyWhy);
-  if (r.has("restitution_ratio"))
-    r.expected("restitution_ratio", std::string("no restitution_ratio: ") + kImpulsiveOnlyWhy);
+// the rules among the compliant contact's keys of a [solver] table (docs/theory.md, "Compliant
+// contact"), their values read
+inline void read_compliant_rules(TableReader& r, SimulationOptions& o) {
   if (!r.has("contact_stiffness"))
     r.expected("contact_stiffness",
                "the spring of each tipping point [N/m, or N/m^p with hunt_crossley] with "
                "contact_model = \"compliant\", e.g. 1e8");
-  o.contact_stiffness = r.positive_or("contact_stiffness", o.contact_stiffness, "[N/m^p]");
-  std::vector<std::string> laws;
-  for (const ContactForceLawInfo& l : kContactForceLaws) laws.emplace_back(l.name);
-  const std::string law = r.choice("contact_force_law", laws, to_string(o.contact_force_law));
-  for (const ContactForceLawInfo& l : kContactForceLaws)
-    if (law == l.name) o.contact_force_law = l.law;
   const bool hc = o.contact_force_law == ContactForceLaw::kHuntCrossley;
-  if (hc) o.contact_exponent = 1.5;
   if (r.has("contact_exponent") && !hc)
     r.expected("contact_exponent",
                "no contact_exponent with contact_force_law = \"linear\" (p = 1; give "
                "contact_force_law = \"hunt_crossley\" for another exponent)");
-  o.contact_exponent = r.positive_or("contact_exponent", o.contact_exponent, "[-]");
+  if (hc && !r.has("contact_exponent")) o.contact_exponent = 1.5;
   if (!(o.contact_exponent >= 1.0 && o.contact_exponent <= 3.0))
     r.expected("contact_exponent", "a number in [1, 3] (1.5: Hertz)");
   if (!in_range(kContactForceAt1mmBound,
@@ -334,85 +308,93 @@ inline void read_contact_keys(TableReader& r, SimulationOptions& o) {
     r.expected("contact_damping_ratio",
                "either contact_damping_ratio or contact_restitution, not both, and no damping "
                "ratio with hunt_crossley (its damping follows from contact_restitution)");
-  o.contact_damping_ratio = r.bounded_or(kContactDampingRatioBound, o.contact_damping_ratio);
-  const std::string rw = hc ? "a number in (0, 1] (the restitution of a free bounce)"
-                            : "a number in [0, 1] (the restitution of a free bounce)";
-  if (const auto e = r.number_opt("contact_restitution", rw)) {
-    if (!(*e <= 1.0 && (hc ? *e > 0.0 : *e >= 0.0))) r.expected("contact_restitution", rw);
-    o.contact_restitution = *e;
-  } else if (hc) {
+  // hunt_crossley's damping needs a restitution above 0
+  const std::string rw = "a number in (0, 1] (the restitution of a free bounce)";
+  if (hc && r.has("contact_restitution") && !(o.contact_restitution > 0.0))
+    r.expected("contact_restitution", rw);
+  if (hc && !r.has("contact_restitution"))
     r.expected("contact_restitution", rw + " with contact_force_law = \"hunt_crossley\"");
-  }
-  // > 0: zero would be no tangential spring at all (omit the key for the default)
-  o.contact_tangential_stiffness = r.positive_or(
-      "contact_tangential_stiffness", o.contact_tangential_stiffness,
-      "[N/m] (omit it for the default, the normal spring's secant stiffness under half the "
-      "weight)");
 }
 
-// the solver keys of a [solver] table but t_end (case files and study files); the defaults are
-// those already in `o` (a study starts from overturning at pi/2)
-inline void read_solver_keys(TableReader& r, SimulationOptions& o) {
-  o.rtol = r.positive_or("rtol", o.rtol, "[-]");
-  if (o.rtol < 1e-14) r.expected("rtol", "a number >= 1e-14 (double precision)");
-  o.atol = r.positive_or("atol", o.atol, "[-]");
-  o.max_step = r.positive_or("max_step", o.max_step, "[s]");
-  o.event_samples = static_cast<int>(
-      r.integer_or("event_samples", o.event_samples, 1, "an integer >= 1 (points a step)"));
-  const std::string crit =
-      r.choice("overturn", {"static_instability", "half_pi"},
-               o.overturn == OverturnCriterion::kHalfPi ? "half_pi" : "static_instability");
-  o.overturn =
-      crit == "half_pi" ? OverturnCriterion::kHalfPi : OverturnCriterion::kStaticInstability;
-  o.chatter_ratio = r.nonnegative_or("chatter_ratio", o.chatter_ratio, "[-]");
-  o.restitution_factor = r.bounded_or(kRestitutionFactorBound, o.restitution_factor);
-  std::vector<std::string> laws;
-  for (const ImpactLawInfo& l : kImpactLaws) laws.emplace_back(l.name);
-  const std::string law = r.choice("impact_law", laws, to_string(o.impact_law));
-  for (const ImpactLawInfo& l : kImpactLaws)
-    if (law == l.name) o.impact_law = l.law;
+// one [solver] key by its row of kSolverKeys (sim/solver_keys.hpp): its value, checked by the
+// row's rule alone; the default is what `o` holds. read_solver_keys applies the rules among keys
+inline void read_solver_key(TableReader& r, const SolverKey& k, SimulationOptions& o) {
+  std::visit(
+      [&](auto field) {
+        using F = decltype(field);
+        if constexpr (std::is_same_v<F, std::monostate>) {
+          // a shorthand for other keys: checked here, applied by read_solver_keys
+          const std::string what = solver_rule_text(k);
+          const std::optional<double> v = r.number_opt(k.name, what);
+          if (v && !solver_value_ok(k, *v)) r.expected(k.name, what);
+        } else {
+          using T = std::remove_reference_t<decltype(o.*field)>;
+          if constexpr (std::is_same_v<T, double>) {
+            const std::string what = solver_rule_text(k);
+            const std::optional<double> v =
+                r.number_opt(k.name, what, k.rule == SolverRule::kCoefficient);
+            if (!v) return;
+            if (!solver_value_ok(k, *v)) r.expected(k.name, what);
+            o.*field = *v;
+          } else if constexpr (std::is_integral_v<T>) {
+            const std::string what = solver_rule_text(k);
+            const long v = r.integer_or(k.name, o.*field, 1, what);
+            if (!solver_value_ok(k, static_cast<double>(v))) r.expected(k.name, what);
+            o.*field = static_cast<T>(v);
+          } else {
+            std::vector<std::string> names;
+            for (const auto& c : solver_choices<T>()) names.emplace_back(c.first);
+            const std::string v = r.choice(k.name, names, solver_choice_name(o.*field));
+            for (const auto& c : solver_choices<T>())
+              if (v == c.first) o.*field = c.second;
+          }
+        }
+      },
+      k.field);
+}
+
+// the keys of a [solver] table, by the table of solver keys (t_end only in a case file: a study
+// sets each run's end itself), then the rules among them; the defaults are those already in `o`
+// (a study starts from overturning at pi/2)
+inline void read_solver_keys(TableReader& r, SimulationOptions& o, bool case_file = false) {
+  auto ours = [&](const SolverKey& k) { return case_file || k.scope != SolverScope::kCaseFile; };
+  for (const SolverKey& k : kSolverKeys)
+    if (ours(k)) read_solver_key(r, k, o);
+  // a key of another floor or impact law would be ignored: refused
+  const std::string model = to_string(o.contact_model), law = to_string(o.impact_law);
+  for (const SolverKey& k : kSolverKeys) {
+    if (!ours(k) || !r.has(k.name) || solver_key_applies(k, o)) continue;
+    const std::string no = std::string("no ") + k.name;
+    if (k.scope == SolverScope::kRestitutionLaw && o.impact_law != ImpactLaw::kRestitution)
+      r.expected(k.name, no + ": it applies to impact_law = \"restitution\" (impact_law is \"" +
+                             law + "\")");
+    if (k.scope == SolverScope::kCompliant)
+      r.expected(k.name, no +
+                             ": it applies to contact_model = \"compliant\" (contact_model is "
+                             "\"" +
+                             model + "\")");
+    r.expected(k.name, no + ": " + kImpulsiveOnlyWhy);
+  }
+  if (o.rtol < kMinRelativeTolerance) r.expected("rtol", "a number >= 1e-14 (double precision)");
   // the measured ratios theta_dot+/theta_dot- of the restitution law: one for both edges, or
   // one per landing edge
+  const std::optional<double> both = r.number_opt("restitution_ratio", "");
+  const bool edge1 = r.has("restitution_ratio_edge1"), edge2 = r.has("restitution_ratio_edge2");
+  if (both && !edge1) o.restitution_ratio_edge1 = *both;
+  if (both && !edge2) o.restitution_ratio_edge2 = *both;
   const bool restitution = o.impact_law == ImpactLaw::kRestitution;
-  auto ratio = [&](const char* key) {
-    const std::string rw = "a number in [0, 1] (theta_dot+/theta_dot- at an impact)";
-    const std::optional<double> v = r.number_opt(key, rw);
-    if (v && !(*v >= 0.0 && *v <= 1.0)) r.expected(key, rw);
-    if (v && !restitution)
-      r.expected(key, std::string("no ") + key +
-                          ": it applies to impact_law = \"restitution\" "
-                          "(impact_law is \"" +
-                          law + "\")");
-    return v;
-  };
-  const auto both = ratio("restitution_ratio");
-  const auto edge1 = ratio("restitution_ratio_edge1"), edge2 = ratio("restitution_ratio_edge2");
-  if (both) o.restitution_ratio_edge1 = o.restitution_ratio_edge2 = *both;
-  if (edge1) o.restitution_ratio_edge1 = *edge1;
-  if (edge2) o.restitution_ratio_edge2 = *edge2;
   if (restitution && !both && !(edge1 && edge2))
     r.expected("restitution_ratio",
                "the measured theta_dot+/theta_dot- in [0, 1] with impact_law = \"restitution\" "
                "(restitution_ratio for both edges, or restitution_ratio_edge1 and _edge2)");
-  if (o.impact_law == ImpactLaw::kRestitution && o.restitution_factor != 1.0)
+  if (restitution && o.restitution_factor != 1.0)
     r.expected("restitution_factor",
                "no restitution_factor with impact_law = \"restitution\" (give the measured "
                "ratio as restitution_ratio)");
-  o.impact_duration = r.bounded_or(kImpactDurationBound, o.impact_duration);
-  const std::string fw = "a number > 0 [-] (or inf: no friction limit)";
-  if (const auto mu = r.number_opt("friction_coefficient", fw, true)) {
-    if (!(*mu > 0.0)) r.expected("friction_coefficient", fw);
-    o.friction_coefficient = *mu;
-  }
-  const std::string kw = "a number > 0 [-], at most friction_coefficient (or inf: equal to it)";
-  if (const auto mu = r.number_opt("kinetic_friction_coefficient", kw, true)) {
-    if (!(*mu > 0.0) || (std::isfinite(*mu) && !(*mu <= o.friction_coefficient)))
-      r.expected("kinetic_friction_coefficient", kw);
-    o.kinetic_friction_coefficient = *mu;
-  }
-  o.max_steps = r.integer_or("max_steps", o.max_steps, 1, "an integer >= 1");
-  o.max_impacts = r.integer_or("max_impacts", o.max_impacts, 1, "an integer >= 1");
-  read_contact_keys(r, o);
+  if (!kinetic_friction_coefficient_ok(o.kinetic_friction_coefficient, o.friction_coefficient))
+    r.expected("kinetic_friction_coefficient",
+               solver_rule_text(*find_solver_key("kinetic_friction_coefficient")));
+  if (o.contact_model == ContactModel::kCompliant) read_compliant_rules(r, o);
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -114,7 +114,8 @@ class CompliantSim final : private GuardProbe {
         opt_(opt),
         n_(body.modes()),
         cc_(corner_contact(body, opt)),
-        integ_(3.3 / contact_rate(body, cc_), static_cast<StiffMethod>(opt.contact_integrator)),
+        integ_(3.3 / contact_rate(body, cc_),
+               static_cast<StiffMethod>(opt.methods.contact_integrator)),
         rec_(res_, body.params().mass, body.g(), body.params().height, body.modes()) {
     m_ = body.params().mass;
     g_ = body.g();

@@ -108,7 +108,7 @@ auto Simulator<N, MaxN>::choose_stepper() -> ActiveStepper {
     if (mode_ == ContactMode::kFullContact) return &still_;
     // the series needs a base acceleration it can expand between the steps' ends: a record's
     // (linear), sinusoids' (a pulse's), or none
-    if (opt_.series_rocking &&
+    if (opt_.methods.series_rocking &&
         (motion_.is_sampled() || motion_.is_none() || motion_.is_sinusoidal()))
       return &series_;
   } else {
@@ -180,16 +180,16 @@ double Simulator<N, MaxN>::stepped_until() const {
 // DOPRI5's steps for that. Full contact and a rigid body keep DOPRI5.
 template <int N, int MaxN>
 void Simulator<N, MaxN>::configure_rocking_integrator() {
-  const auto method = static_cast<StiffMethod>(opt_.rocking_integrator);
+  const auto method = static_cast<StiffMethod>(opt_.methods.rocking_integrator);
   if (n_ == 0 || !rocking()) {
     rocking_.integ.configure(std::numeric_limits<double>::infinity(), StiffMethod::kExplicit);
     return;
   }
   const ExplicitMethod explicit_method =
-      opt_.high_order_rocking ? ExplicitMethod::kDop853 : ExplicitMethod::kDopri5;
+      opt_.methods.high_order_rocking ? ExplicitMethod::kDop853 : ExplicitMethod::kDopri5;
   double& h = rocking_.h_stable[static_cast<std::size_t>(edge() - 1)];
   if (h < 0.0 && method == StiffMethod::kAuto)
-    h = rocking_stable_step(body_, edge(), explicit_method) / opt_.stiff_switch_scale;
+    h = rocking_stable_step(body_, edge(), explicit_method) / opt_.methods.stiff_switch_scale;
   rocking_.integ.configure(h, method, explicit_method);
 }
 

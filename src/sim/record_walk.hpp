@@ -13,7 +13,8 @@ namespace flexrock::detail {
 // sample (docs/theory.md, "Exact propagation in full contact"): true when the walk can start at t
 template <int N, int MaxN>
 bool Simulator<N, MaxN>::can_walk(double t) const requires(N != 0) {
-  if (!std::holds_alternative<Exact*>(stepper_) || !opt_.full_contact_walk || !motion_.is_sampled())
+  if (!std::holds_alternative<Exact*>(stepper_) || !opt_.methods.full_contact_walk ||
+      !motion_.is_sampled())
     return false;
   if (t < exact_.fine_until - 1e-12 * std::max(1.0, t)) return false;
   if (latch_.tension || latch_.hold_tension) return false;

@@ -147,7 +147,7 @@ bool Simulator<N, MaxN>::advance_series(double& t, State& x) requires(N == 0) {
 // cos(phi) on the arc). Elsewhere the series steps it, as it does near those limits.
 template <int N, int MaxN>
 bool Simulator<N, MaxN>::start_arc(double t, const ContactState& x) requires(N == 0) {
-  if (n_ != 0 || !opt_.closed_form_free_rocking || t < setup_.quiet_from ||
+  if (n_ != 0 || !opt_.methods.closed_form_free_rocking || t < setup_.quiet_from ||
       std::isfinite(opt_.friction_coefficient) || latch_.hold_tension)
     return false;
   const int e = edge();

@@ -6,15 +6,17 @@
 #include <initializer_list>
 #include <string>
 #include <string_view>
+#include <type_traits>
 #include <utility>
+#include <variant>
 #include <vector>
 
 #include "automaton.hpp"
 #include "compliant.hpp"
 #include "flexrock/core/error.hpp"
 #include "flexrock/core/format.hpp"
-#include "flexrock/sim/contact_rules.hpp"
 #include "flexrock/sim/option_bounds.hpp"
+#include "flexrock/sim/solver_keys.hpp"
 #include "simulator_instances.hpp"
 
 namespace flexrock {
@@ -77,69 +79,72 @@ const char* to_string(ContactMode m) { return detail::mode_spec(m).name; }
 
 namespace {
 
+// the readers and the engine refuse more samples than the engine's buffers hold
+static_assert(kEventSamplesBound.hi == detail::kMaxSamples);
+
 void check_options(const Body& body, const InitialState& init, const SimulationOptions& o) {
-  auto positive = [](double v, const char* name, const char* hint) {
-    FLEXROCK_THROW_UNLESS(std::isfinite(v) && v > 0.0, std::string("options: ") + name +
-                                                           " must be positive and finite, got " +
-                                                           std::to_string(v) + " (" + hint + ")");
-  };
-  positive(o.rtol, "rtol", "e.g. 1e-9");
-  positive(o.atol, "atol", "e.g. 1e-11");
-  positive(o.max_step, "max_step", "seconds, e.g. 0.01");
-  FLEXROCK_THROW_UNLESS(o.rtol >= 1e-14,
+  // each key's own rule and scope, as the readers apply them (solver_keys.hpp); a value at its
+  // default stands for "not given" (contact_restitution = -1, ...) and is not checked
+  const SimulationOptions defaults;
+  for (const SolverKey& k : kSolverKeys) {
+    if (k.scope == SolverScope::kCaseFile) continue;  // t_end < 0: the end of the motion
+    std::visit(
+        [&](auto field) {
+          if constexpr (!std::is_same_v<decltype(field), std::monostate>) {
+            if (o.*field == defaults.*field) return;
+            using T = std::remove_cvref_t<decltype(o.*field)>;
+            if constexpr (std::is_arithmetic_v<T>) {
+              const auto v = static_cast<double>(o.*field);
+              FLEXROCK_THROW_UNLESS(solver_value_ok(k, v), std::string("options: ") + k.name +
+                                                               " must be " + solver_rule_text(k) +
+                                                               ", got " + format_number(v));
+            }
+            // the engine takes a restitution ratio under any impulsive law (the paper's and
+            // rigid_body leave it unused); the readers refuse the key there
+            const bool applies = k.scope == SolverScope::kRestitutionLaw
+                                     ? o.contact_model == ContactModel::kImpulsive
+                                     : solver_key_applies(k, o);
+            if (applies) return;
+            FLEXROCK_THROW_UNLESS(k.scope != SolverScope::kCompliant,
+                                  std::string("options: ") + k.name +
+                                      " is set, but it applies to contact_model = compliant");
+            FLEXROCK_THROW_UNLESS(false, std::string("options: ") + k.name +
+                                             " is set with contact_model = compliant, but " +
+                                             kImpulsiveOnlyWhy);
+          }
+        },
+        k.field);
+  }
+  FLEXROCK_THROW_UNLESS(o.rtol >= kMinRelativeTolerance,
                         "options: rtol = " + std::to_string(o.rtol) +
                             " is below what double precision can deliver; use >= 1e-14");
-  FLEXROCK_THROW_UNLESS(o.event_samples >= 1 && o.event_samples <= detail::kMaxSamples,
-                        "options: event_samples must be in [1, " +
-                            std::to_string(detail::kMaxSamples) + "], got " +
-                            std::to_string(o.event_samples));
   FLEXROCK_THROW_UNLESS(
       std::isfinite(o.output_dt) && o.output_dt >= 0.0,
       "options: output_dt must be >= 0 (0: no time history), got " + std::to_string(o.output_dt));
   FLEXROCK_THROW_UNLESS(std::isfinite(o.t_end), "options: t_end must be finite");
-  FLEXROCK_THROW_UNLESS(
-      std::isfinite(o.chatter_ratio) && o.chatter_ratio >= 0.0,
-      "options: chatter_ratio must be >= 0, got " + std::to_string(o.chatter_ratio));
-  // the keys without a natural limit: the ranges of option_bounds.hpp, as the readers apply them
-  auto bounded = [](const OptionBound& b, double v) {
-    FLEXROCK_THROW_UNLESS(in_range(b, v), std::string("options: ") + b.key + " must be in " +
-                                              range_text(b) + " (" + b.why + "), got " +
-                                              format_number(v));
-  };
-  bounded(kRestitutionFactorBound, o.restitution_factor);
-  for (const double r : {o.restitution_ratio_edge1, o.restitution_ratio_edge2})
-    FLEXROCK_THROW_UNLESS(r >= 0.0 && r <= 1.0,
-                          "options: restitution_ratio_edge1/2 must be in [0, 1] "
-                          "(theta_dot+/theta_dot- at an impact; 0 ends rocking), got " +
-                              std::to_string(r));
   FLEXROCK_THROW_UNLESS(o.impact_law != ImpactLaw::kRestitution || o.restitution_factor == 1.0,
                         "options: restitution_factor = " + std::to_string(o.restitution_factor) +
                             " with impact_law = restitution: give the measured ratio as "
                             "restitution_ratio instead (the factor applies to paper and "
                             "rigid_body)");
-  bounded(kImpactDurationBound, o.impact_duration);
-  positive(o.stiff_switch_scale, "stiff_switch_scale",
-           "a factor on the rate where the rocking integrator switches methods; 1 by default");
-  FLEXROCK_THROW_UNLESS(!(o.friction_coefficient <= 0.0) && !std::isnan(o.friction_coefficient),
-                        "options: friction_coefficient must be > 0 (or infinite for none), got " +
-                            std::to_string(o.friction_coefficient));
   FLEXROCK_THROW_UNLESS(
-      !(o.kinetic_friction_coefficient <= 0.0) && !std::isnan(o.kinetic_friction_coefficient),
-      "options: kinetic_friction_coefficient must be > 0 (or infinite: equal to "
-      "the static one), got " +
-          std::to_string(o.kinetic_friction_coefficient));
-  FLEXROCK_THROW_UNLESS(!(o.kinetic_friction_coefficient > o.friction_coefficient) ||
-                            std::isinf(o.kinetic_friction_coefficient),
-                        "options: kinetic_friction_coefficient (" +
-                            std::to_string(o.kinetic_friction_coefficient) +
-                            ") must not exceed the static friction_coefficient (" +
-                            std::to_string(o.friction_coefficient) + ")");
-  const bool compliant = o.contact_model == ContactModel::kCompliant;
-  const bool hunt_crossley = o.contact_force_law == ContactForceLaw::kHuntCrossley;
-  if (compliant) {
-    positive(o.contact_stiffness, "contact_stiffness",
-             "N/m^p: the spring at each tipping point, e.g. 1e8 for steel on concrete under a "
-             "few tonnes");
+      std::isfinite(o.methods.stiff_switch_scale) && o.methods.stiff_switch_scale > 0.0,
+      "options: stiff_switch_scale must be positive and finite, got " +
+          std::to_string(o.methods.stiff_switch_scale) +
+          " (a factor on the rate where the rocking integrator switches "
+          "methods; 1 by default)");
+  FLEXROCK_THROW_UNLESS(
+      kinetic_friction_coefficient_ok(o.kinetic_friction_coefficient, o.friction_coefficient),
+      "options: kinetic_friction_coefficient (" + format_number(o.kinetic_friction_coefficient) +
+          ") must be > 0 and not exceed the static friction_coefficient (" +
+          format_number(o.friction_coefficient) + "), or be infinite: equal to it");
+  if (o.contact_model == ContactModel::kCompliant) {
+    const bool hunt_crossley = o.contact_force_law == ContactForceLaw::kHuntCrossley;
+    FLEXROCK_THROW_UNLESS(std::isfinite(o.contact_stiffness) && o.contact_stiffness > 0.0,
+                          "options: contact_stiffness must be positive and finite, got " +
+                              format_number(o.contact_stiffness) +
+                              " (N/m^p: the spring at each tipping point, e.g. 1e8 for steel on "
+                              "concrete under a few tonnes)");
     FLEXROCK_THROW_UNLESS(
         !hunt_crossley || (o.contact_exponent >= 1.0 && o.contact_exponent <= 3.0),
         "options: contact_exponent must be in [1, 3] (1.5: Hertz), got " +
@@ -147,41 +152,15 @@ void check_options(const Body& body, const InitialState& init, const SimulationO
     FLEXROCK_THROW_UNLESS(hunt_crossley || o.contact_exponent == 1.0,
                           "options: contact_exponent applies to contact_force_law = "
                           "hunt_crossley (the linear law has p = 1)");
-    bounded(kContactDampingRatioBound, o.contact_damping_ratio);
     FLEXROCK_THROW_UNLESS(in_range(kContactForceAt1mmBound,
                                    contact_force_at_1mm(o.contact_stiffness, o.contact_exponent)),
                           "options: contact_stiffness must be in " +
                               stiffness_range_text(o.contact_exponent) + ", got " +
                               format_number(o.contact_stiffness));
-    FLEXROCK_THROW_UNLESS(
-        o.contact_restitution < 0.0 || (o.contact_restitution <= 1.0 && !hunt_crossley) ||
-            (hunt_crossley && o.contact_restitution > 0.0 && o.contact_restitution <= 1.0),
-        "options: contact_restitution must be in [0, 1] (in (0, 1] for hunt_crossley), got " +
-            std::to_string(o.contact_restitution));
     FLEXROCK_THROW_UNLESS(!hunt_crossley || o.contact_restitution > 0.0,
                           "options: contact_force_law = hunt_crossley needs contact_restitution "
                           "in (0, 1] (its damping follows from it)");
-    FLEXROCK_THROW_UNLESS(
-        o.contact_tangential_stiffness == kTangentialStiffnessUnset ||
-            (std::isfinite(o.contact_tangential_stiffness) && o.contact_tangential_stiffness > 0.0),
-        "options: contact_tangential_stiffness must be > 0 [N/m] (or -1, not given: the normal "
-        "spring's secant stiffness under half the weight), got " +
-            format_number(o.contact_tangential_stiffness));
-    for (const ImpulsiveOnlyKey& k : kImpulsiveOnlyKeys)
-      FLEXROCK_THROW_UNLESS(k.is_default(o), std::string("options: ") + k.key +
-                                                 " is set with contact_model = compliant, but " +
-                                                 kImpulsiveOnlyWhy);
-  } else {
-    FLEXROCK_THROW_UNLESS(o.contact_stiffness == 0.0 && o.contact_exponent == 1.0 &&
-                              o.contact_damping_ratio == 1.0 && o.contact_restitution < 0.0 &&
-                              o.contact_tangential_stiffness == kTangentialStiffnessUnset &&
-                              o.contact_force_law == ContactForceLaw::kLinear,
-                          "options: contact_stiffness, contact_force_law, contact_exponent, "
-                          "contact_damping_ratio, contact_restitution and "
-                          "contact_tangential_stiffness apply to contact_model = compliant");
   }
-  FLEXROCK_THROW_UNLESS(o.max_steps > 0 && o.max_impacts > 0,
-                        "options: max_steps and max_impacts must be positive");
   const int n = body.modes();
   FLEXROCK_THROW_UNLESS(init.q.size() == 0 || init.q.size() == n,
                         "initial state: q must have " + std::to_string(n) +

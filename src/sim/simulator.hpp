@@ -485,7 +485,7 @@ Simulator<N, MaxN>::Simulator(const Body& body, const GroundMotion& motion,
       samples_(std::clamp(opt.event_samples, 1, kMaxSamples)),
       rec_(res_, body.params().mass, body.g(), body.params().height, body.modes()),
       series_(motion),
-      exact_(dyn_, motion, samples_, opt.max_step, opt.exact_full_contact) {
+      exact_(dyn_, motion, samples_, opt.max_step, opt.methods.exact_full_contact) {
   scratch_.qu.resize(n_);
   scratch_.qdu.resize(n_);
   scratch_.q.resize(n_);

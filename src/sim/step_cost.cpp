@@ -123,7 +123,7 @@ StepCost estimate_step_cost(const Body& body, const SimulationOptions& options) 
   c.rocking_time_scale = 1.0 / body.rocking_frequency();
   c.rocking_omega = std::max(rocking_omega(body, dyn, 1), rocking_omega(body, dyn, 2));
   c.full_contact_omega = body.modes() > 0 ? body.natural_frequencies().cwiseAbs().maxCoeff() : 0.0;
-  c.method = options.high_order_rocking ? ExplicitMethod::kDop853 : ExplicitMethod::kDopri5;
+  c.method = options.methods.high_order_rocking ? ExplicitMethod::kDop853 : ExplicitMethod::kDopri5;
   const bool eighth = c.method == ExplicitMethod::kDop853;
   const double stable = eighth ? kDop853ImaginaryStability : kDopri5ImaginaryStability;
   c.h_omega = eighth ? std::min(std::pow(options.rtol / kDop853ErrorConstant, 0.125), stable)
@@ -131,7 +131,8 @@ StepCost estimate_step_cost(const Body& body, const SimulationOptions& options) 
   c.rocking_min_steps_per_second = c.rocking_omega / stable;
   c.rocking_steps_per_second = std::max(c.rocking_omega / c.h_omega, 1.0 / options.max_step);
   if (options.contact_model == ContactModel::kCompliant &&
-      options.contact_integrator != ContactIntegrator::kImplicit && options.contact_stiffness > 0.0)
+      options.methods.contact_integrator != ContactIntegrator::kImplicit &&
+      options.contact_stiffness > 0.0)
     compliant_step_cost(body, options, c);
   return c;
 }

@@ -365,7 +365,7 @@ TEST(AdversarialChatter, WithoutTheCutOffEndlessChatterStopsWithAReason) {
   EXPECT_EQ(rest.final_phase, Phase::kFullContact);
   EXPECT_GT(rest.extremes.impacts, 20);
   expect_sound(rest);
-  opt.series_rocking = false;
+  opt.methods.series_rocking = false;
   const SimulationResult r = simulate(body, GroundMotion::none(5.0), init, opt);
   // the impact interval shrinks geometrically until impacts pile up within 1e-9 s (Zeno) or the
   // step size collapses: a stop, with why

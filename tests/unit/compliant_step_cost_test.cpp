@@ -130,7 +130,7 @@ TEST(CompliantStepCost, WarnsBeforeARunThatWouldPassMaxSteps) {
   EXPECT_EQ(ci.rocking_steps_per_second, c.rocking_steps_per_second);
   // the Rosenbrock method alone is not DOPRI5: no estimate
   SimulationOptions implicit = r.options;
-  implicit.contact_integrator = ContactIntegrator::kImplicit;
+  implicit.methods.contact_integrator = ContactIntegrator::kImplicit;
   EXPECT_EQ(estimate_step_cost(r.body, implicit).contact_steps_per_second, 0.0);
 }
 

@@ -215,7 +215,7 @@ TEST(CompliantContact, TheIntegratorsAgreeAndTheSwitchSavesWork) {
       SimulationOptions o = compliant(body, 1000.0, 4.0);
       o.rtol = rtol;
       o.atol = 1e-3 * rtol;
-      o.contact_integrator = how;
+      o.methods.contact_integrator = how;
       rs.push_back(simulate(body, pulse, {}, o));
       ASSERT_EQ(rs.back().status, Status::kOverturned) << rs.back().message;
     }

@@ -58,7 +58,7 @@ Body damped_body(int n, unsigned seed, int damping) {
 
 SimulationResult run(const Body& body, const GroundMotion& m, bool exact, double t_end = -1.0) {
   SimulationOptions opt;
-  opt.exact_full_contact = exact;
+  opt.methods.exact_full_contact = exact;
   // the reference: the integrator at its tightest, with short steps (its input work and damping
   // loss are not error-controlled); the exact path does not depend on rtol in contact
   opt.rtol = exact ? 1e-9 : 1e-13;
@@ -177,9 +177,9 @@ TEST(ExactFullContact, CoupledWidelySpreadModesMatchTightIntegration) {
         const GroundMotion m = random_record(seed, 0.02, 0.2, uniform);
         SimulationOptions opt;
         opt.output_dt = 0.0137;
-        opt.exact_full_contact = true;
+        opt.methods.exact_full_contact = true;
         const SimulationResult ex = simulate(body, m, {}, opt);
-        opt.exact_full_contact = false;
+        opt.methods.exact_full_contact = false;
         opt.rtol = 1e-12;
         opt.atol = 1e-15;
         opt.max_step = 1e-4;
@@ -302,7 +302,7 @@ TEST(ExactFullContact, ASoftModesLargeSagBesideAStiffModeMatchesALongDoubleRefer
       SimulationOptions opt;
       opt.output_dt = 0.0137;
       const SimulationResult ex = simulate(body, m, {}, opt);
-      opt.exact_full_contact = false;
+      opt.methods.exact_full_contact = false;
       opt.rtol = 1e-12;
       opt.atol = 1e-14;
       opt.max_step = 1e-3;
@@ -405,10 +405,10 @@ SimulationResult run(const Body& body, const GroundMotion& m, int path, double o
   SimulationOptions opt;
   opt.output_dt = output_dt;
   opt.t_end = t_end;
-  opt.full_contact_walk = path == 0;  // path 1: the stepped, sampled propagation
+  opt.methods.full_contact_walk = path == 0;  // path 1: the stepped, sampled propagation
   if (path == 2) {
     // the integrator at its tightest, with short steps
-    opt.exact_full_contact = false;
+    opt.methods.exact_full_contact = false;
     opt.rtol = 1e-13;
     opt.atol = 1e-16;
     opt.max_step = 0.001;

@@ -31,7 +31,7 @@ SimulationResult run(const Body& body, const GroundMotion& motion, const Initial
   opt.rtol = 1e-13;
   opt.atol = 1e-15;
   opt.output_dt = output_dt;
-  opt.closed_form_free_rocking = closed_form;
+  opt.methods.closed_form_free_rocking = closed_form;
   return simulate(body, motion, init, opt);
 }
 

@@ -98,7 +98,7 @@ TEST(RockingSeries, FreeRockingImpactTimesMatchEnergyQuadrature) {
     opt.max_step = 1.0;
     opt.rtol = 1e-13;
     opt.atol = 1e-15;
-    opt.series_rocking = series;
+    opt.methods.series_rocking = series;
     const auto res = simulate(body, GroundMotion::none(opt.t_end), init, opt);
     const auto times = impact_times(res);
     ASSERT_GE(times.size(), 12u);
@@ -116,7 +116,7 @@ SimulationResult run_record(const GroundMotion& motion, bool series, double rtol
   SimulationOptions opt;
   opt.rtol = rtol;
   opt.atol = 1e-2 * rtol;
-  opt.series_rocking = series;
+  opt.methods.series_rocking = series;
   return simulate(body, motion, InitialState{}, opt);
 }
 

@@ -79,8 +79,8 @@ TEST(StepCost, StiffSlenderBodyPredictsTheEnginesSteps) {
         o.t_end = 0.02;
         // the explicit integrator's cost (the rocking integrator would switch to the Rosenbrock
         // method: tests/unit/stiff_rocking_test.cpp)
-        o.rocking_integrator = ContactIntegrator::kExplicit;
-        o.high_order_rocking = eighth;
+        o.methods.rocking_integrator = ContactIntegrator::kExplicit;
+        o.methods.high_order_rocking = eighth;
         const StepCost c = estimate_step_cost(body, o);
         EXPECT_NEAR(c.full_contact_omega, 2.0 * 3.141592653589793 * f, 1e-6 * f);
         EXPECT_GT(c.rocking_omega, 10.0 * c.full_contact_omega) << "f = " << f;

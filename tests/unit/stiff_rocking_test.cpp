@@ -43,7 +43,7 @@ SimulationOptions options(ContactIntegrator how, double rtol = 1e-9) {
   SimulationOptions o;
   o.rtol = rtol;
   o.atol = 1e-3 * rtol;
-  o.rocking_integrator = how;
+  o.methods.rocking_integrator = how;
   o.max_steps = 100'000'000;
   return o;
 }
@@ -142,7 +142,7 @@ TEST(StiffRocking, SwitchThresholdDoesNotChangeTheAnswer) {
   SimulationOptions o = options(ContactIntegrator::kAuto);
   const SimulationResult base = simulate(body, motion, InitialState{}, o);
   for (double scale : {10.0, 0.1}) {
-    o.stiff_switch_scale = scale;
+    o.methods.stiff_switch_scale = scale;
     const SimulationResult r = simulate(body, motion, InitialState{}, o);
     expect_same_motion(r, base, scale > 1.0 ? "stricter" : "looser");
   }
@@ -156,7 +156,7 @@ TEST(StiffRocking, OverturnAgreesWithTheExplicitRun) {
   SimulationOptions o = options(ContactIntegrator::kAuto);
   o.overturn = OverturnCriterion::kStaticInstability;
   const SimulationResult auto_run = simulate(body, motion, InitialState{}, o);
-  o.rocking_integrator = ContactIntegrator::kExplicit;
+  o.methods.rocking_integrator = ContactIntegrator::kExplicit;
   o.rtol = 1e-10;
   o.atol = 1e-13;
   const SimulationResult explicit_run = simulate(body, motion, InitialState{}, o);
@@ -198,7 +198,7 @@ TEST(StiffRocking, JumpOfAnAnalyticMotionWhileRocking) {
 TEST(StiffRocking, SwitchScaleMustBePositive) {
   SimulationOptions o;
   for (double bad : {0.0, -1.0, std::nan("")}) {
-    o.stiff_switch_scale = bad;
+    o.methods.stiff_switch_scale = bad;
     try {
       simulate(stiff_slab(), sine_record(0.12, 0.1), InitialState{}, o);
       ADD_FAILURE() << "stiff_switch_scale = " << bad << " accepted";

@@ -112,11 +112,11 @@ TEST(FlexibleBody, SampledRecordKeepsFullAccuracyAcrossKinks) {
     opt.t_end = t[k];
     // integrated by DOPRI5, and propagated exactly between the samples (the default): the
     // latter is the same recurrence as the reference, so it agrees to rounding
-    opt.exact_full_contact = false;
+    opt.methods.exact_full_contact = false;
     const auto res = simulate(body, motion, {}, opt);
     ASSERT_EQ(res.extremes.first_uplift_time, -1.0);
     EXPECT_NEAR(res.final_q(0) * o.h(), exact[k], 1e-8 * umax) << "at t = " << t[k];
-    opt.exact_full_contact = true;
+    opt.methods.exact_full_contact = true;
     const auto ex = simulate(body, motion, {}, opt);
     ASSERT_EQ(ex.extremes.first_uplift_time, -1.0);
     EXPECT_NEAR(ex.final_q(0) * o.h(), exact[k], 1e-12 * umax) << "at t = " << t[k];

@@ -102,6 +102,11 @@ std::string body_key_reference();
 /// hold it unchanged.
 std::string pulse_key_reference();
 
+/// The key reference of [solver], as the Markdown table of docs/case-file.md, written from the
+/// table of solver keys (sim/solver_keys.hpp) with its begin and end marker lines
+/// (`flexrock keys --markdown`).
+std::string solver_key_reference();
+
 /// Levenshtein edit distance (insertions, deletions, substitutions), for "did you mean".
 std::size_t edit_distance(std::string_view a, std::string_view b);
 

@@ -45,6 +45,10 @@ inline constexpr OptionBound kContactDampingRatioBound{
 inline constexpr OptionBound kImpactDurationBound{
     "impact_duration", 1e-6, 1.0, "s",
     "contacts last from tens of microseconds (steel on steel) to tenths of a second (rubber)"};
+// event_samples: the engine's buffers hold 32 points a step (a step is refined by location,
+// never by more samples, so more would buy nothing)
+inline constexpr OptionBound kEventSamplesBound{"event_samples", 1.0, 32.0, "-",
+                                                "points a step where the guards are checked"};
 // a synthetic pulse's period (or 1/frequency_hz): no ground or shake-table motion is faster than
 // 10 kHz, and one slower than 1e-4 Hz (a period of 2.8 hours) is a static tilt
 inline constexpr OptionBound kPulsePeriodBound{

@@ -94,53 +94,14 @@ struct InitialState {
   VectorX q_dot;           // [1/s] empty: zero
 };
 
-struct SimulationOptions {
-  double t_end = -1.0;  // [s] end time; < 0: the end of the motion
-  double rtol = 1e-9;   // relative tolerance of the integrator
-  double atol = 1e-11;  // absolute tolerance (rad, -, rad/s, 1/s)
-  // [s] cap on the step where events are sought by samples within each step (not on a rigid
-  // body's rocking by its series, whose events are bounded over the whole step)
-  double max_step = 0.01;
-  int event_samples = 4;   // points per step where event functions are checked
-  double output_dt = 0.0;  // [s] time-history spacing; 0: no time history
-  OverturnCriterion overturn = OverturnCriterion::kHalfPi;
-  // impacts closer than this times the shortest period end rocking (docs/theory.md, "Chatter")
-  double chatter_ratio = 1e-4;
-  double restitution_factor = 1.0;  // factor on theta_dot after an impact (1: the law's own)
-  // how impacts and landings are resolved (docs/theory.md, "Impact laws")
-  ImpactLaw impact_law = ImpactLaw::kPaper;
-  // restitution law: theta_dot+/theta_dot- at an impact landing on edge 1, on edge 2 (0 to 1)
-  double restitution_ratio_edge1 = 1.0;
-  double restitution_ratio_edge2 = 1.0;
-  // [s] the contact duration assumed to turn an impulse I into a force estimate: the peak of a
-  // half-sine pulse, pi |I| / (2 duration)
-  double impact_duration = 0.002;
-  // Coulomb friction at the base (docs/theory.md, "Sliding"): the static coefficient mu_s; inf: the
-  // floor holds whatever the demand (the paper's assumption; no sliding)
-  double friction_coefficient = std::numeric_limits<double>::infinity();
-  // the kinetic coefficient mu_k while sliding; inf: equal to the static one (mu_k <= mu_s)
-  double kinetic_friction_coefficient = std::numeric_limits<double>::infinity();
-  long max_steps = 50'000'000;    // integrator steps before the run stops
-  long max_impacts = 10'000'000;  // impacts before the run stops
+/// How the engine steps, kept for tests and comparisons: each switch picks between two methods
+/// that give the same answer within the tolerances (the tests check that they do), at different
+/// cost. The defaults are the engine's; no file sets them and Python exposes them as
+/// SimulationOptions.methods.
+struct SimulationMethods {
   // a flexible body in full contact under a sampled record is propagated exactly between the
   // samples (docs/theory.md, "Exact propagation in full contact"); false: integrated by DOPRI5
   bool exact_full_contact = true;
-  std::atomic<double>* progress = nullptr;  // if set: the time reached [s], after every step
-  // the floor (docs/theory.md, "Compliant contact"): impulsive (a rigid floor and the impact law)
-  // or compliant (a no-tension spring-dashpot at each tipping point)
-  ContactModel contact_model = ContactModel::kImpulsive;
-  ContactForceLaw contact_force_law = ContactForceLaw::kLinear;
-  double contact_stiffness = 0.0;  // [N/m^p] k of each tipping point's spring (compliant: > 0)
-  double contact_exponent = 1.0;   // p: F ~ delta^p (linear: 1; Hertz-like: 1.5)
-  // linear: the dashpot as a damping ratio of the body bouncing on both springs (1: critical)
-  double contact_damping_ratio = 1.0;
-  // the restitution of a free bounce (linear: sets the damping ratio; hunt_crossley: its
-  // damping); < 0: not given
-  double contact_restitution = -1.0;
-  // [N/m] the sticking tipping point's horizontal spring at rest under half the weight (it scales
-  // with the normal spring's force: docs/theory.md, "Compliant contact"), > 0; -1: not given, the
-  // normal spring's secant stiffness there
-  double contact_tangential_stiffness = -1.0;
   // how the compliant contact is integrated: kAuto switches between DOPRI5 and a Rosenbrock
   // method as the springs' stiffness would hold the explicit step (tests force either)
   ContactIntegrator contact_integrator = ContactIntegrator::kAuto;
@@ -168,6 +129,54 @@ struct SimulationOptions {
   // advanced by the closed form of its arcs, one step from one impact to the next (docs/theory.md,
   // "Free rocking in closed form"); false: by the Taylor series as under the record
   bool closed_form_free_rocking = true;
+};
+
+struct SimulationOptions {
+  double t_end = -1.0;  // [s] end time; < 0: the end of the motion
+  double rtol = 1e-9;   // relative tolerance of the integrator
+  double atol = 1e-11;  // absolute tolerance (rad, -, rad/s, 1/s)
+  // [s] cap on the step where events are sought by samples within each step (not on a rigid
+  // body's rocking by its series, whose events are bounded over the whole step)
+  double max_step = 0.01;
+  int event_samples = 4;   // points per step where event functions are checked
+  double output_dt = 0.0;  // [s] time-history spacing; 0: no time history
+  OverturnCriterion overturn = OverturnCriterion::kHalfPi;
+  // impacts closer than this times the shortest period end rocking (docs/theory.md, "Chatter")
+  double chatter_ratio = 1e-4;
+  double restitution_factor = 1.0;  // factor on theta_dot after an impact (1: the law's own)
+  // how impacts and landings are resolved (docs/theory.md, "Impact laws")
+  ImpactLaw impact_law = ImpactLaw::kPaper;
+  // restitution law: theta_dot+/theta_dot- at an impact landing on edge 1, on edge 2 (0 to 1)
+  double restitution_ratio_edge1 = 1.0;
+  double restitution_ratio_edge2 = 1.0;
+  // [s] the contact duration assumed to turn an impulse I into a force estimate: the peak of a
+  // half-sine pulse, pi |I| / (2 duration)
+  double impact_duration = 0.002;
+  // Coulomb friction at the base (docs/theory.md, "Sliding"): the static coefficient mu_s; inf: the
+  // floor holds whatever the demand (the paper's assumption; no sliding)
+  double friction_coefficient = std::numeric_limits<double>::infinity();
+  // the kinetic coefficient mu_k while sliding; inf: equal to the static one (mu_k <= mu_s)
+  double kinetic_friction_coefficient = std::numeric_limits<double>::infinity();
+  long max_steps = 50'000'000;              // integrator steps before the run stops
+  long max_impacts = 10'000'000;            // impacts before the run stops
+  std::atomic<double>* progress = nullptr;  // if set: the time reached [s], after every step
+  // the floor (docs/theory.md, "Compliant contact"): impulsive (a rigid floor and the impact law)
+  // or compliant (a no-tension spring-dashpot at each tipping point)
+  ContactModel contact_model = ContactModel::kImpulsive;
+  ContactForceLaw contact_force_law = ContactForceLaw::kLinear;
+  double contact_stiffness = 0.0;  // [N/m^p] k of each tipping point's spring (compliant: > 0)
+  double contact_exponent = 1.0;   // p: F ~ delta^p (linear: 1; Hertz-like: 1.5)
+  // linear: the dashpot as a damping ratio of the body bouncing on both springs (1: critical)
+  double contact_damping_ratio = 1.0;
+  // the restitution of a free bounce (linear: sets the damping ratio; hunt_crossley: its
+  // damping); < 0: not given
+  double contact_restitution = -1.0;
+  // [N/m] the sticking tipping point's horizontal spring at rest under half the weight (it scales
+  // with the normal spring's force: docs/theory.md, "Compliant contact"), > 0; -1: not given, the
+  // normal spring's secant stiffness there
+  double contact_tangential_stiffness = -1.0;
+  // how the engine steps: for tests and comparisons only (SimulationMethods)
+  SimulationMethods methods;
 };
 
 /// Something that happened, in time order. Fields not meaningful for a kind are zero.

@@ -32,7 +32,7 @@ inline constexpr double kDop853ErrorConstant = 4.337e-7;
 
 /// Estimated step cost of the explicit integrator for a body.
 struct StepCost {
-  // the rocking's explicit method (SimulationOptions::high_order_rocking)
+  // the rocking's explicit method (SimulationMethods::high_order_rocking)
   ExplicitMethod method = ExplicitMethod::kDop853;
   double rocking_time_scale = 0.0;  // [s] 1/p, p the rocking frequency
   // [rad/s] largest |eigenvalue| of the rocking equations linearized at theta = 0 (at rest, the
@@ -58,9 +58,9 @@ struct StepCost {
   double contact_steps_per_second = 0.0;
 };
 
-/// The step cost of `body` at `options` (rtol, max_step, high_order_rocking; for the compliant
-/// contact its constants and integrator); cheap: one eigenproblem per edge (and two for the
-/// compliant contact).
+/// The step cost of `body` at `options` (rtol, max_step, methods.high_order_rocking; for the
+/// compliant contact its constants and integrator); cheap: one eigenproblem per edge (and two for
+/// the compliant contact).
 StepCost estimate_step_cost(const Body& body, const SimulationOptions& options = {});
 
 /// The explicit method's stability bound [s] while `body` rocks on `edge` (1 or 2): the longest
