@@ -166,7 +166,7 @@ def flexible_step_section(steps):
     out = ["### The flexible body's rocking step", "",
            "Cases (d) with n = 1 and n = 8 at each tolerance, their rocking stepped by DOP853 "
            "(`flexrock`, the engine's default) and by DOPRI5 (`flexrock DOPRI5 rocking`, "
-           "`high_order_rocking = false`: the engine before it), in one session. The error is "
+           "`methods.high_order_rocking = false`: the engine before it), in one session. The error is "
            "the largest relative difference of max |theta|, the first uplift time and the first "
            "five impact times from the run at rtol = 1e-13 (1 when the outcome differs); `steps` "
            "counts every step of the run (the record walk's included).", "",
