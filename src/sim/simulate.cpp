@@ -116,21 +116,21 @@ void check_options(const Body& body, const InitialState& init, const SimulationO
         k.field);
   }
   FLEXROCK_THROW_UNLESS(o.rtol >= kMinRelativeTolerance,
-                        "options: rtol = " + std::to_string(o.rtol) +
+                        "options: rtol = " + format_number(o.rtol) +
                             " is below what double precision can deliver; use >= 1e-14");
   FLEXROCK_THROW_UNLESS(
       std::isfinite(o.output_dt) && o.output_dt >= 0.0,
-      "options: output_dt must be >= 0 (0: no time history), got " + std::to_string(o.output_dt));
+      "options: output_dt must be >= 0 (0: no time history), got " + format_number(o.output_dt));
   FLEXROCK_THROW_UNLESS(std::isfinite(o.t_end), "options: t_end must be finite");
   FLEXROCK_THROW_UNLESS(o.impact_law != ImpactLaw::kRestitution || o.restitution_factor == 1.0,
-                        "options: restitution_factor = " + std::to_string(o.restitution_factor) +
+                        "options: restitution_factor = " + format_number(o.restitution_factor) +
                             " with impact_law = restitution: give the measured ratio as "
                             "restitution_ratio instead (the factor applies to paper and "
                             "rigid_body)");
   FLEXROCK_THROW_UNLESS(
       std::isfinite(o.methods.stiff_switch_scale) && o.methods.stiff_switch_scale > 0.0,
       "options: stiff_switch_scale must be positive and finite, got " +
-          std::to_string(o.methods.stiff_switch_scale) +
+          format_number(o.methods.stiff_switch_scale) +
           " (a factor on the rate where the rocking integrator switches "
           "methods; 1 by default)");
   FLEXROCK_THROW_UNLESS(
@@ -148,7 +148,7 @@ void check_options(const Body& body, const InitialState& init, const SimulationO
     FLEXROCK_THROW_UNLESS(
         !hunt_crossley || (o.contact_exponent >= 1.0 && o.contact_exponent <= 3.0),
         "options: contact_exponent must be in [1, 3] (1.5: Hertz), got " +
-            std::to_string(o.contact_exponent));
+            format_number(o.contact_exponent));
     FLEXROCK_THROW_UNLESS(hunt_crossley || o.contact_exponent == 1.0,
                           "options: contact_exponent applies to contact_force_law = "
                           "hunt_crossley (the linear law has p = 1)");
@@ -174,8 +174,8 @@ void check_options(const Body& body, const InitialState& init, const SimulationO
   const double limit = init.theta >= 0.0 ? body.tipping_angle(1) : body.tipping_angle(2);
   const double lim = o.overturn == OverturnCriterion::kHalfPi ? 1.5707963267948966 : limit;
   FLEXROCK_THROW_UNLESS(std::abs(init.theta) < lim,
-                        "initial state: |theta| = " + std::to_string(std::abs(init.theta)) +
-                            " rad is already past the overturning angle " + std::to_string(lim) +
+                        "initial state: |theta| = " + format_number(std::abs(init.theta)) +
+                            " rad is already past the overturning angle " + format_number(lim) +
                             " rad");
 }
 

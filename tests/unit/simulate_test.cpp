@@ -145,6 +145,13 @@ TEST(Simulate, RejectsBadOptionsWithMessages) {
   o = {};
   o.event_samples = 0;
   expect_throw(o, "event_samples");
+  // refused numbers are written as given, not rounded to six decimals ("0.000000")
+  o = {};
+  o.rtol = 1e-15;
+  expect_throw(o, "rtol = 1e-15 is below");
+  o = {};
+  o.output_dt = -2.5e-7;
+  expect_throw(o, "got -2.5e-07");
   InitialState init;
   init.theta = 1.6;  // beyond pi/2, the default overturning angle
   try {
