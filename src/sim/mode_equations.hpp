@@ -265,21 +265,22 @@ double Simulator<N, MaxN>::guard_value(int slot, double t) {
 template <int N, int MaxN>
 double Simulator<N, MaxN>::crossing(int slot, double tl, double tr, double gl, double gr) {
   if constexpr (N == 0) {
-    if (!std::holds_alternative<Series*>(stepper_))
-      return locate_crossing(slot, tl, tr, gl, gr, *this);
-    const Guard g = mode_spec(mode_).guards[static_cast<std::size_t>(slot)];
-    const double sg = edge_sign(edge());
-    const double* c = series_.integ.theta_coefficients();
-    const double* dc = series_.integ.theta_rate_coefficients();  // k c[k]
-    const int degree = series_.integ.order();                    // theta's; theta_dot's is one less
-    if (g == Guard::kImpact)
-      return polynomial_crossing(c, dc, degree, sg, series_.integ.t0(), tl, tr, gl, gr);
-    if (g == Guard::kPeak) {
-      // theta_dot's coefficients d[k] = dc[k + 1], and k d[k]
-      const double* d = dc + 1;
-      std::array<double, RockingSeries<ContactState>::kMaxOrder + 2> dd;
-      for (int k = 1; k < degree; ++k) dd[static_cast<std::size_t>(k)] = k * d[k];
-      return polynomial_crossing(d, dd.data(), degree - 1, sg, series_.integ.t0(), tl, tr, gl, gr);
+    if (std::holds_alternative<Series*>(stepper_)) {
+      const Guard g = mode_spec(mode_).guards[static_cast<std::size_t>(slot)];
+      const double sg = edge_sign(edge());
+      const double* c = series_.integ.theta_coefficients();
+      const double* dc = series_.integ.theta_rate_coefficients();  // k c[k]
+      const int degree = series_.integ.order();  // theta's; theta_dot's is one less
+      if (g == Guard::kImpact)
+        return polynomial_crossing(c, dc, degree, sg, series_.integ.t0(), tl, tr, gl, gr);
+      if (g == Guard::kPeak) {
+        // theta_dot's coefficients d[k] = dc[k + 1], and k d[k]
+        const double* d = dc + 1;
+        std::array<double, RockingSeries<ContactState>::kMaxOrder + 2> dd;
+        for (int k = 1; k < degree; ++k) dd[static_cast<std::size_t>(k)] = k * d[k];
+        return polynomial_crossing(d, dd.data(), degree - 1, sg, series_.integ.t0(), tl, tr, gl,
+                                   gr);
+      }
     }
   }
   return locate_crossing(slot, tl, tr, gl, gr, *this);
