@@ -13,6 +13,7 @@
 
 #include "automaton.hpp"
 #include "compliant.hpp"
+#include "event_location.hpp"
 #include "flexrock/core/error.hpp"
 #include "flexrock/core/format.hpp"
 #include "flexrock/sim/option_bounds.hpp"
@@ -243,8 +244,7 @@ SimulationResult checked(const Body& body, SimulationResult r) {
 template <int N, int MaxN>
 SimulationResult run(const Body& body, const GroundMotion& motion, const InitialState& init,
                      const SimulationOptions& opt) {
-  detail::Simulator<N, MaxN> sim(body, motion, opt);
-  return checked(body, sim.run(init));
+  return checked(body, detail::run_event_loop<N, MaxN>(body, motion, opt, init));
 }
 
 // fixed sizes up to FLEXROCK_FIXED_MODES modes (8; the sanitizer builds compile fewer, each size

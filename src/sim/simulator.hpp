@@ -38,6 +38,7 @@
 #include "recorder.hpp"
 #include "rocking_series.hpp"
 #include "series_guards.hpp"
+#include "simulator_instances.hpp"
 #include "step_extremes.hpp"
 #include "steppers.hpp"
 
@@ -576,3 +577,15 @@ SimulationResult Simulator<N, MaxN>::run(const InitialState& init) {
 #include "record_walk.hpp"     // IWYU pragma: keep
 #include "resets.hpp"          // IWYU pragma: keep
 #include "rigid_steppers.hpp"  // IWYU pragma: keep
+
+namespace flexrock::detail {
+
+// the entry point each size's file instantiates (simulator_instances.hpp)
+template <int N, int MaxN>
+SimulationResult run_event_loop(const Body& body, const GroundMotion& motion,
+                                const SimulationOptions& opt, const InitialState& init) {
+  Simulator<N, MaxN> sim(body, motion, opt);
+  return sim.run(init);
+}
+
+}  // namespace flexrock::detail

@@ -4,12 +4,11 @@
 #include "simulator.hpp"
 
 namespace flexrock::detail {
-// only the entry points: the members they reach are compiled with them, and no other (a
-// rigid body's loop has no record walk, a flexible body's no series, arc or still path)
-template Simulator<Eigen::Dynamic, 16>::Simulator(const Body&, const GroundMotion&,
-                                                  const SimulationOptions&);
-template SimulationResult Simulator<Eigen::Dynamic, 16>::run(const InitialState&);
-template Simulator<Eigen::Dynamic, Eigen::Dynamic>::Simulator(const Body&, const GroundMotion&,
-                                                              const SimulationOptions&);
-template SimulationResult Simulator<Eigen::Dynamic, Eigen::Dynamic>::run(const InitialState&);
+template SimulationResult run_event_loop<Eigen::Dynamic, 16>(const Body&, const GroundMotion&,
+                                                             const SimulationOptions&,
+                                                             const InitialState&);
+template SimulationResult run_event_loop<Eigen::Dynamic, Eigen::Dynamic>(const Body&,
+                                                                         const GroundMotion&,
+                                                                         const SimulationOptions&,
+                                                                         const InitialState&);
 }  // namespace flexrock::detail

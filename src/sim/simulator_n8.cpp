@@ -3,8 +3,6 @@
 #include "simulator.hpp"
 
 namespace flexrock::detail {
-// only the entry points: the members they reach are compiled with them, and no other (a
-// rigid body's loop has no record walk, a flexible body's no series, arc or still path)
-template Simulator<8, 8>::Simulator(const Body&, const GroundMotion&, const SimulationOptions&);
-template SimulationResult Simulator<8, 8>::run(const InitialState&);
+template SimulationResult run_event_loop<8, 8>(const Body&, const GroundMotion&,
+                                               const SimulationOptions&, const InitialState&);
 }  // namespace flexrock::detail
