@@ -55,6 +55,17 @@ struct ImpactRule {
   double ratio_edge1 = 1.0, ratio_edge2 = 1.0;
 };
 
+/// Which corner impact: the landing tipping point, and how the outcome may be chosen (the maps with
+/// friction, friction_impact.hpp).
+struct CornerImpactCase {
+  int edge = 1;              // the tipping point that lands
+  bool from_flight = false;  // a landing after a flight (at theta = 0 the other tipping point may
+                             // take the floor); false: a rocking impact at theta = 0
+  bool flat = false;         // both edges land whatever the single-point map gives (chatter)
+  bool grazing = false;      // below the chatter interval: a sliding impulse that would pull is
+                             // replaced by the sticking one (§16: Carnot's loss)
+};
+
 /// State just after an impact and what the impact did.
 template <class Vec>
 struct ImpactOutcome {
