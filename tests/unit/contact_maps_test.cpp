@@ -1,14 +1,17 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // The reset maps of contact/ (lift-off, landing, Moreau's impact with Coulomb friction, stick or
 // slip) against the machine-checked derivation (tools/derive/derive.py), which computes each map
-// mass by mass from the point-mass bodies, at rigid (n = 0) and flexible (n = 1, 2, 3) states;
+// mass by mass from the point-mass bodies, at rigid (n = 0) and flexible (n = 1, 2, 3) states,
+// under the paper's and the rigid_body law, and the whole map's choice at theta = 0;
 // then the laws' own properties: no energy gained, the impulse in the friction cone, a sticking
 // corner at rest after, and the limits mu -> infinity (the sticking map) and mu -> 0 (no friction).
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <limits>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <set>
 #include <string>
@@ -320,6 +323,103 @@ TEST(ContactMapsReference, SlipDirectionOpposesKineticFriction) {
     }
   });
   EXPECT_GE(checked, 20);
+}
+
+TEST(ContactMapsReference, RigidBodyLawWithFrictionAgainstPointMassMechanics) {
+  // rigid_body: the body rigid during the impact (q_dot+ = q_dot-), the moment of momentum about
+  // the corner summed mass by mass, Coulomb's law on the impulse; where it would add energy the
+  // engine takes the paper's law and says so
+  int stick = 0, slip = 0, fallback = 0;
+  std::set<int> ns;
+  const ImpactRule rigid{.law = ImpactLaw::kRigidBody};
+  for_each_body([&](const json& c, const Body& body, const DynX& dyn) {
+    const double m = body.params().mass;
+    for (const auto& s : c["friction"]["friction_landings"]) {
+      const FrictionCase k = friction_case(s);
+      const json& r = s["rigid_body"];
+      const int e = s["edge"];
+      const bool slips = r["mode"] == "slip";
+      const double scale = std::abs(k.thd) + k.qd.norm();
+      ImpactCandidate<VectorX> cand;
+      corner_candidate(dyn, e, k.state(), true, cand);
+      expect_impulse(m * (cand.vc0 - k.v_c), r["stick_impulse"], "rigid_body sticking impulse");
+      const CoulombResolution z = coulomb_resolution(cand, k.v_c, m, k.f);
+      EXPECT_EQ(z.slid, slips);
+      EXPECT_EQ(z.ok, r["consistent"].get<int>() != 0);
+      if (!z.ok) continue;
+      expect_close(z.v, r["d_dot_plus"].get<double>(), 1.0, "rigid_body d_dot+");
+      expect_close(cand.thd0 + z.v * cand.thd1, r["theta_dot_plus"].get<double>(), scale,
+                   "rigid_body thd+");
+      EXPECT_EQ(VectorX(cand.qd0 + z.v * cand.qd1), k.qd);  // the modal velocities are kept
+      expect_impulse(m * (cand.vc0 + z.v * cand.vc1 - k.v_c), r["impulse"], "rigid_body impulse");
+      if (k.theta == 0.0) continue;  // the whole map may take another outcome there
+      const double loss = r["energy_loss"];
+      const double before = dyn.flight_kinetic_energy(k.q, k.thd, k.qd, k.v_c);
+      if (std::abs(loss) < 1e-9 * before) continue;  // a gain or a loss within rounding of zero
+      const auto out =
+          friction_impact(dyn, k.state(), {.edge = e, .from_flight = true}, rigid, k.f);
+      ASSERT_TRUE(out.consistent);
+      EXPECT_EQ(out.law_fallback, loss < 0.0) << loss;
+      if (out.law_fallback) {
+        // the paper's law: the same as the map with the paper's rule
+        const auto paper =
+            friction_impact(dyn, k.state(), {.edge = e, .from_flight = true}, ImpactRule{}, k.f);
+        EXPECT_EQ(out.theta_dot, paper.theta_dot);
+        EXPECT_EQ(out.impulse, paper.impulse);
+        ++fallback;
+        continue;
+      }
+      expect_close(out.theta_dot, r["theta_dot_plus"].get<double>(), scale, "rigid_body map thd+");
+      expect_impulse(out.impulse, r["impulse"], "rigid_body map impulse");
+      expect_close(out.energy_loss, loss, std::abs(loss), "rigid_body map loss");
+      ns.insert(static_cast<int>(k.q.size()));
+      (slips ? slip : stick) += 1;
+    }
+  });
+  EXPECT_GE(stick, 10);
+  EXPECT_GE(slip, 20);
+  EXPECT_EQ(ns, (std::set<int>{0, 1, 2, 3}));
+  std::printf("rigid_body with friction: %d stick, %d slip, %d took the paper's law\n", stick, slip,
+              fallback);
+}
+
+TEST(ContactMapsReference, LevelImpactWithFrictionTakesTheConsistentOutcome) {
+  // theta = 0 from flight: corner 1, corner 2 and flat, each resolved by Coulomb's law; the
+  // derivation's consistency of each and the outcome the stated rule takes, for the whole map
+  const json& ref = reference();
+  ASSERT_TRUE(ref.contains("friction_theta0"));
+  const double g = ref["g"];
+  std::map<std::string, int> taken;
+  for (const auto& s : ref["friction_theta0"]) {
+    const Body body(params_of(s, g));
+    const DynX dyn(body);
+    const FrictionCase k = friction_case(s);
+    const int e = s["edge"];
+    const json& want = s["outcome"];
+    const auto out =
+        friction_impact(dyn, k.state(), {.edge = e, .from_flight = true}, ImpactRule{}, k.f);
+    ASSERT_EQ(out.consistent, want["fits"].get<int>() != 0);
+    if (!out.consistent) continue;
+    const std::string kind = want["outcome"];
+    EXPECT_EQ(out.flat, kind == "flat");
+    if (!out.flat) {
+      EXPECT_EQ(out.edge, kind == "corner1" ? 1 : 2);
+    }
+    EXPECT_EQ(out.slid, want["mode"] == "slip");
+    EXPECT_EQ(out.slip, want["slip_sign"].get<int>());
+    const double scale = std::abs(k.thd) + k.qd.norm();
+    expect_close(out.slip_velocity, want["d_dot_plus"].get<double>(), 1.0, "d_dot+");
+    expect_close(out.theta_dot, want["theta_dot_plus"].get<double>(), scale, "theta_dot+");
+    expect_vec(out.q_dot, want["q_dot_plus"], scale, "q_dot+");
+    expect_impulse(out.impulse, want["impulse"], "impulse");
+    const double mgh = body.params().mass * g * body.params().height;
+    expect_close(out.energy_loss, want["energy_loss"].get<double>(), mgh, "loss");
+    ++taken[kind];
+  }
+  // each outcome is exercised
+  EXPECT_GE(taken["corner1"], 2);
+  EXPECT_GE(taken["corner2"], 2);
+  EXPECT_GE(taken["flat"], 10);
 }
 
 // ---- the laws' own properties, at the reference's states over a range of coefficients
