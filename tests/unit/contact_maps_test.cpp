@@ -227,7 +227,7 @@ TEST(ContactMapsReference, FrictionImpactAgainstPointMassMechanics) {
       const double scale = std::abs(k.thd) + k.qd.norm();
       // the corner's outcome, affine in d_dot+, and Coulomb's law on it
       ImpactCandidate<VectorX> cand;
-      corner_candidate(dyn, e, k.state(), false, cand);
+      corner_candidate(dyn, e, k.state(), ModesInImpact::kMomentaConserved, cand);
       const CoulombResolution z = coulomb_resolution(cand, k.v_c, m, k.f);
       const Eigen::Vector2d l0 = m * (cand.vc0 - k.v_c);
       expect_impulse(l0, s["stick_impulse"], "sticking impulse");
@@ -341,7 +341,7 @@ TEST(ContactMapsReference, RigidBodyLawWithFrictionAgainstPointMassMechanics) {
       const bool slips = r["mode"] == "slip";
       const double scale = std::abs(k.thd) + k.qd.norm();
       ImpactCandidate<VectorX> cand;
-      corner_candidate(dyn, e, k.state(), true, cand);
+      corner_candidate(dyn, e, k.state(), impact_law_info(ImpactLaw::kRigidBody).modes, cand);
       expect_impulse(m * (cand.vc0 - k.v_c), r["stick_impulse"], "rigid_body sticking impulse");
       const CoulombResolution z = coulomb_resolution(cand, k.v_c, m, k.f);
       EXPECT_EQ(z.slid, slips);
@@ -512,6 +512,62 @@ TEST(ContactMapsProperties, FrictionLimitsAreTheStickingAndTheFrictionlessMaps) 
   });
   EXPECT_GE(sticking, 20);
   EXPECT_GE(frictionless, 60);
+}
+
+TEST(ContactMapsProperties, EachImpactLawDoesWhatItsRowSays) {
+  // whatever rows kImpactLaws holds: the rocking impact and the landing keep the modal velocities
+  // or conserve the modal momenta as the row's `modes` says, and a measured ratio gives
+  // theta_dot+ = r theta_dot-
+  int checked = 0;
+  for_each_body([&](const json& c, const Body&, const DynX& dyn) {
+    if (c["n"].get<int>() == 0) return;
+    for (const ImpactLawInfo& law : kImpactLaws) {
+      const ImpactRule rule{.law = law.law, .ratio_edge1 = 0.5, .ratio_edge2 = 0.5};
+      for (const auto& s : c["impacts"]) {
+        const int landing = s["landing_edge"];
+        const VectorX q = vec(s["q"]), qd = vec(s["q_dot_minus"]);
+        const double thd = s["theta_dot_minus"];
+        const auto out = resolve_impact(dyn, landing, q, thd, qd, rule);
+        if (out.law_fallback) continue;
+        const VectorX p_before = dyn.mu() * qd + dyn.coupling(dyn.alpha(3 - landing), q) * thd;
+        const VectorX p_after =
+            dyn.mu() * out.q_dot + dyn.coupling(dyn.alpha(landing), q) * out.theta_dot;
+        for (Eigen::Index i = 0; i < q.size(); ++i) {
+          if (law.modes == ModesInImpact::kVelocitiesKept) {
+            EXPECT_EQ(out.q_dot(i), qd(i)) << law.name;
+          } else {
+            EXPECT_NEAR(p_after(i), p_before(i), 1e-12 * (p_before.norm() + 1.0)) << law.name;
+          }
+        }
+        if (law.rebound == Rebound::kMeasuredRatio && !out.both_edges) {
+          EXPECT_NEAR(out.theta_dot, 0.5 * thd, 1e-15 * std::abs(thd)) << law.name;
+        }
+        ++checked;
+      }
+      for (const auto& s : c["landings"]) {
+        const int e = s["edge"];
+        const VectorX q = vec(s["q"]), qd = vec(s["q_dot_minus"]);
+        const Eigen::Vector2d v_c = vec2(s["cg_velocity"]);
+        const double th = s["theta"], thd = s["theta_dot_minus"];
+        const auto out = landing_map(dyn, e, State{th, q, thd, qd, v_c}, rule);
+        if (out.law_fallback) continue;
+        const double sn = std::sin(th), cs = std::cos(th);
+        const VectorX p_before = dyn.flight_modal_momenta(
+            e, q, thd, qd, dyn.corner_velocity_body(e, sn, cs, q, thd, qd, v_c));
+        const VectorX p_after =
+            dyn.mu() * out.q_dot + dyn.coupling(dyn.alpha(out.edge), q) * out.theta_dot;
+        for (Eigen::Index i = 0; i < q.size(); ++i) {
+          if (law.modes == ModesInImpact::kVelocitiesKept) {
+            EXPECT_EQ(out.q_dot(i), qd(i)) << law.name;
+          } else {
+            EXPECT_NEAR(p_after(i), p_before(i), 1e-12 * (p_before.norm() + 1.0)) << law.name;
+          }
+        }
+        ++checked;
+      }
+    }
+  });
+  EXPECT_GE(checked, 180);  // 9 flexible bodies, 8 impacts and landings each, 3 laws
 }
 
 TEST(ContactMapsProperties, StickOrSlipNeedsAStrictlyPositiveMargin) {

@@ -92,7 +92,8 @@ struct LandingOutcome {
 template <class Dyn, class Vec>
 LandingOutcome<Vec> landing_map(const Dyn& dyn, int edge, const ImpactState<Vec>& s,
                                 const ImpactRule& rule) {
-  const bool rigid = rule.law == ImpactLaw::kRigidBody;
+  const ImpactLawInfo& law = impact_law_info(rule.law);
+  const bool rigid = law.modes == ModesInImpact::kVelocitiesKept;
   const int n = dyn.modes();
   const Vec& q = s.q;
   const Vec& qd = s.q_dot;
@@ -103,7 +104,7 @@ LandingOutcome<Vec> landing_map(const Dyn& dyn, int edge, const ImpactState<Vec>
   const Eigen::Vector2d v_corner = dyn.corner_velocity_body(e, sn, cs, q, thd_minus, qd, v_c);
   double thd_plus = 0.0;
   Vec qd_plus(n);
-  dyn.corner_impact(e, q, thd_minus, qd, v_corner, thd_plus, qd_plus, rigid);
+  law_corner_impact(dyn, law.modes, e, q, thd_minus, qd, v_corner, thd_plus, qd_plus);
   bool flat = false;
   if (th == 0.0 && edge_sign(e) * thd_plus <= 0.0) {
     // level: the body rocks on the other tipping point if its map turns it up about that one,
@@ -112,7 +113,7 @@ LandingOutcome<Vec> landing_map(const Dyn& dyn, int edge, const ImpactState<Vec>
     const Eigen::Vector2d v_other = dyn.corner_velocity_body(o, sn, cs, q, thd_minus, qd, v_c);
     double thd_o = 0.0;
     Vec qd_o(n);
-    dyn.corner_impact(o, q, thd_minus, qd, v_other, thd_o, qd_o, rigid);
+    law_corner_impact(dyn, law.modes, o, q, thd_minus, qd, v_other, thd_o, qd_o);
     if (edge_sign(o) * thd_o > 0.0) {
       e = o;
       thd_plus = thd_o;
@@ -147,7 +148,7 @@ LandingOutcome<Vec> landing_map(const Dyn& dyn, int edge, const ImpactState<Vec>
   if (rigid) {
     const double before = dyn.flight_kinetic_energy(q, thd_minus, qd, v_c);
     loss = before - dyn.flight_kinetic_energy(q, thd_plus, qd_plus, v_after);
-    if (loss < -kImpactEnergyRounding * before) {
+    if (law.on_gain == OnEnergyGain::kPaperLaw && loss < -kImpactEnergyRounding * before) {
       ImpactRule paper = rule;
       paper.law = ImpactLaw::kPaper;
       LandingOutcome<Vec> out = landing_map(dyn, edge, s, paper);

@@ -87,7 +87,7 @@ struct CoulombResolution {
 /// The tipping point `c` sticks (d_dot+ = 0) or slides at unit d_dot+: each the plastic corner
 /// impact of Dynamics::corner_impact, the second with the corner's velocity after set to I.
 template <class Dyn, class Vec>
-void corner_candidate(const Dyn& dyn, int c, const ImpactState<Vec>& s, bool rigid,
+void corner_candidate(const Dyn& dyn, int c, const ImpactState<Vec>& s, ModesInImpact modes,
                       ImpactCandidate<Vec>& k) {
   const int n = dyn.modes();
   const double sn = std::sin(s.theta), cs = std::cos(s.theta);
@@ -96,8 +96,8 @@ void corner_candidate(const Dyn& dyn, int c, const ImpactState<Vec>& s, bool rig
       dyn.corner_velocity_body(c, sn, cs, s.q, s.theta_dot, s.q_dot, s.v_c);
   k.qd0.resize(n);
   k.qd1.resize(n);
-  dyn.corner_impact(c, s.q, s.theta_dot, s.q_dot, v_corner, k.thd0, k.qd0, rigid);
-  dyn.corner_impact(c, s.q, 0.0, Vec::Zero(n), -unit_body, k.thd1, k.qd1, rigid);
+  law_corner_impact(dyn, modes, c, s.q, s.theta_dot, s.q_dot, v_corner, k.thd0, k.qd0);
+  law_corner_impact(dyn, modes, c, s.q, 0.0, Vec(Vec::Zero(n)), -unit_body, k.thd1, k.qd1);
   Eigen::Vector2d r;
   dyn.cg_from_pivot(c, sn, cs, s.q, k.thd0, k.qd0, r, k.vc0);
   dyn.cg_from_pivot(c, sn, cs, s.q, k.thd1, k.qd1, r, k.vc1);
@@ -108,8 +108,9 @@ void corner_candidate(const Dyn& dyn, int c, const ImpactState<Vec>& s, bool rig
 /// (over M h^2) are conserved; rigid_body: the slip carries the body as a whole, the modes keep
 /// their rates. `edge`: the tipping point whose velocity gives p (the same for both).
 template <class Dyn, class Vec>
-void flat_candidate(const Dyn& dyn, int edge, const ImpactState<Vec>& s, bool rigid,
+void flat_candidate(const Dyn& dyn, int edge, const ImpactState<Vec>& s, ModesInImpact modes,
                     ImpactCandidate<Vec>& k) {
+  const bool rigid = modes == ModesInImpact::kVelocitiesKept;
   const int n = dyn.modes();
   const double h = dyn.height();
   const double sn = std::sin(s.theta), cs = std::cos(s.theta);
@@ -145,8 +146,8 @@ namespace detail {
 
 template <class Dyn, class Vec>
 FrictionImpactOutcome<Vec> friction_impact(const Dyn& dyn, const ImpactState<Vec>& s,
-                                           const CornerImpactCase& ic, bool flat, bool rigid,
-                                           const CoulombFriction& f) {
+                                           const CornerImpactCase& ic, bool flat,
+                                           const ImpactLawInfo& law, const CoulombFriction& f) {
   using Candidate = ImpactCandidate<Vec>;
   const int e = ic.edge;
   const double th = s.theta, thd_minus = s.theta_dot, m = dyn.mass();
@@ -157,19 +158,19 @@ FrictionImpactOutcome<Vec> friction_impact(const Dyn& dyn, const ImpactState<Vec
   CoulombResolution z;
   int lands = e;
   if (flat) {
-    flat_candidate(dyn, e, s, rigid, k);
+    flat_candidate(dyn, e, s, law.modes, k);
     z = coulomb_resolution(k, v_c, m, f);
   } else if (th != 0.0) {
-    corner_candidate(dyn, e, s, rigid, k);
+    corner_candidate(dyn, e, s, law.modes, k);
     z = coulomb_resolution(k, v_c, m, f);
   } else {
     // theta = 0 (theory §19): corner 1, corner 2 and flat, each resolved with friction; the one
     // that is consistent (the body turns away from the other corner; flat: both corners press),
     // and where two are, the one the sticking rule of §16 names
     std::array<Candidate, 3> c;  // corner 1, corner 2, flat
-    corner_candidate(dyn, 1, s, rigid, c[0]);
-    corner_candidate(dyn, 2, s, rigid, c[1]);
-    flat_candidate(dyn, e, s, rigid, c[2]);
+    corner_candidate(dyn, 1, s, law.modes, c[0]);
+    corner_candidate(dyn, 2, s, law.modes, c[1]);
+    flat_candidate(dyn, e, s, law.modes, c[2]);
     std::array<CoulombResolution, 3> r = {coulomb_resolution(c[0], v_c, m, f),
                                           coulomb_resolution(c[1], v_c, m, f),
                                           coulomb_resolution(c[2], v_c, m, f)};
@@ -214,9 +215,10 @@ FrictionImpactOutcome<Vec> friction_impact(const Dyn& dyn, const ImpactState<Vec
   out.v_c = k.vc0 + v_plus * k.vc1;
   out.impulse = m * (out.v_c - v_c);
   out.energy_loss = kinetic_before - dyn.flight_kinetic_energy(s.q, thd_plus, out.q_dot, out.v_c);
-  if (rigid && out.energy_loss < -kImpactEnergyRounding * kinetic_before) {
+  if (law.on_gain == OnEnergyGain::kPaperLaw &&
+      out.energy_loss < -kImpactEnergyRounding * kinetic_before) {
     // the paper's law takes the impact, with the outcome chosen so far (flat stays flat)
-    out = friction_impact(dyn, s, ic, flat, false, f);
+    out = friction_impact(dyn, s, ic, flat, impact_law_info(ImpactLaw::kPaper), f);
     out.law_fallback = true;
     return out;
   }
@@ -242,7 +244,7 @@ template <class Dyn, class Vec>
 FrictionImpactOutcome<Vec> friction_impact(const Dyn& dyn, const ImpactState<Vec>& s,
                                            const CornerImpactCase& ic, const ImpactRule& rule,
                                            const CoulombFriction& f) {
-  return detail::friction_impact(dyn, s, ic, ic.flat, rule.law == ImpactLaw::kRigidBody, f);
+  return detail::friction_impact(dyn, s, ic, ic.flat, impact_law_info(rule.law), f);
 }
 
 }  // namespace flexrock
