@@ -21,6 +21,15 @@ target_link_libraries(flexrock_sympy_tests PRIVATE flexrock::core nlohmann_json:
 target_compile_definitions(flexrock_sympy_tests PRIVATE FLEXROCK_BINARY_DIR="${PROJECT_BINARY_DIR}")
 flexrock_apply_sanitizers(flexrock_sympy_tests)
 gtest_discover_tests(flexrock_sympy_tests PROPERTIES LABELS unit FIXTURES_REQUIRED sympy_reference)
+# the reset maps of contact/ against the same derivation, and the laws' own properties
+add_executable(flexrock_contact_maps_tests unit/contact_maps_test.cpp)
+target_link_libraries(flexrock_contact_maps_tests PRIVATE flexrock::core nlohmann_json::nlohmann_json
+                      GTest::gtest GTest::gtest_main flexrock_warnings)
+target_compile_definitions(flexrock_contact_maps_tests PRIVATE
+                           FLEXROCK_BINARY_DIR="${PROJECT_BINARY_DIR}")
+flexrock_apply_sanitizers(flexrock_contact_maps_tests)
+gtest_discover_tests(flexrock_contact_maps_tests PROPERTIES LABELS unit
+                     FIXTURES_REQUIRED sympy_reference)
 flexrock_add_test(flexrock_sim_tests SOURCES unit/simulate_test.cpp LABEL unit)
 # the run says where the sticking contact breaks (pivot_tension, tensile_landing), with magnitudes
 flexrock_add_test(flexrock_assumption_breaks_tests SOURCES unit/assumption_breaks_test.cpp LABEL unit)

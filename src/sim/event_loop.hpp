@@ -91,8 +91,7 @@ bool Simulator<N, MaxN>::start_mode(double t, State& x) {
   if (at_or_below(Guard::kSlipStop)) return stick(t, x);
   if (flying()) {
     for (int e : {1, 2}) {
-      if (at_or_below(e == 1 ? Guard::kLandingEdge1 : Guard::kLandingEdge2))
-        return land(t, x, e, setup_.rigid_law);
+      if (at_or_below(e == 1 ? Guard::kLandingEdge1 : Guard::kLandingEdge2)) return land(t, x, e);
     }
   }
   return true;

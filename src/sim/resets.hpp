@@ -4,6 +4,8 @@
 // next mode's entry. Part of the event loop (simulator.hpp), included at its end.
 #pragma once
 
+#include "flexrock/contact/flight_maps.hpp"
+#include "flexrock/contact/friction_impact.hpp"
 #include "simulator.hpp"
 
 namespace flexrock::detail {
@@ -31,7 +33,7 @@ bool Simulator<N, MaxN>::fire(int slot, double t, State& x) {
     case Reset::kOverturn:
       return overturned(t, x);
     case Reset::kLanding:
-      return land(t, x, g.edge, setup_.rigid_law);
+      return land(t, x, g.edge);
     case Reset::kSlip:
       return start_slip(t, x);
     case Reset::kStick:
@@ -120,14 +122,14 @@ bool Simulator<N, MaxN>::impact(double t, State& x) {
   // a sticking pivot is a numerical device on a vanishing impulse whose ratio |I_x|/I_y says
   // nothing about sliding (§10): it stays the sticking both-edges stop.
   if (std::isfinite(setup_.mu_s) &&
-      (sliding() || (!chatter && !(out.impulse(1) > 0.0 &&
-                                   std::abs(out.impulse(0)) <= setup_.mu_s * out.impulse(1))))) {
+      (sliding() ||
+       (!chatter && !inside_friction_cone(out.impulse(0), out.impulse(1), setup_.mu_s)))) {
     Eigen::Vector2d r, v_c;
     dyn_.cg_from_pivot(edge(), 0.0, 1.0, scratch_.q, thd_minus, scratch_.qd, r, v_c);
     if (sliding()) v_c(0) += x(isv());
-    return friction_impact(t, x, landing, v_c, false, chatter,
-                           chatter ? EventKind::kChatterCutoff : EventKind::kImpact, chatter,
-                           setup_.rigid_law);
+    x(0) = 0.0;  // located at theta = 0 up to rounding
+    return impact_with_friction(t, x, {.edge = landing, .flat = chatter, .grazing = chatter}, v_c,
+                                chatter ? EventKind::kChatterCutoff : EventKind::kImpact);
   }
   if (out.law_fallback) law_fallback(t, landing);
   Event ev = make_event(t,
@@ -139,8 +141,7 @@ bool Simulator<N, MaxN>::impact(double t, State& x) {
   ev.energy_loss = out.energy_loss;
   ev.impulse_x = out.impulse(0);
   ev.impulse_y = out.impulse(1);
-  ev.friction_demand = out.impulse(1) > 0.0 ? std::abs(out.impulse(0)) / out.impulse(1)
-                                            : std::numeric_limits<double>::infinity();
+  ev.friction_demand = friction_ratio(out.impulse(0), out.impulse(1));
   count_impact(ev, out.impulse(1), out.energy_loss, chatter);
   x(0) = 0.0;
   x(ithd()) = out.theta_dot;
@@ -164,21 +165,19 @@ bool Simulator<N, MaxN>::impact(double t, State& x) {
 template <int N, int MaxN>
 bool Simulator<N, MaxN>::lift_off(double t, State& x) {
   unpack(x);
-  const int e = edge();  // in full contact theta = 0 and either edge gives the same c.g.
-  const double sn = std::sin(x(0)), cs = std::cos(x(0));
+  const int e = edge();
   // a free body must move its touching tipping points up: otherwise the sticking pivot is pulled
   // sideways as its force vanishes and the body could only leave it by sliding, which is not
   // modelled here; the floor is let pull (flagged) until it presses again (theory "Lift-off")
-  const BaseAcceleration a = motion_.at(t, cursor_.event);
-  const int pivot = mode_spec(mode_).pivot;
-  // (a sliding pivot's friction vanishes with F_J: no such case, theory "Lift-off from a sliding
-  // mode"; there the corner's free acceleration is zero to rounding and its sign says nothing)
-  const bool dives =
-      !sliding() && ((pivot != 2 && dyn_.free_corner_acceleration(1, sn, cs, scratch_.q, x(ithd()),
-                                                                  scratch_.qd, a) < 0.0) ||
-                     (pivot != 1 && dyn_.free_corner_acceleration(2, sn, cs, scratch_.q, x(ithd()),
-                                                                  scratch_.qd, a) < 0.0));
-  if (dives) {
+  const LiftOffState<Vec> at{.pivot = mode_spec(mode_).pivot,
+                             .theta = x(0),
+                             .q = scratch_.q,
+                             .theta_dot = x(ithd()),
+                             .q_dot = scratch_.qd,
+                             .offset = offset_of(x),
+                             .sliding = sliding(),
+                             .slip_velocity = sliding() ? x(isv()) : 0.0};
+  if (lift_off_pulls(dyn_, at, motion_.at(t, cursor_.event))) {
     latch_.tension = true;
     res_.pivot_tension = true;
     Event ev = make_event(t, EventKind::kPivotTension, rocking() ? e : 0);
@@ -190,14 +189,11 @@ bool Simulator<N, MaxN>::lift_off(double t, State& x) {
     ++res_.extremes.tension_episodes;
     return request_entry();
   }
-  Eigen::Vector2d r, v;
-  dyn_.cg_from_pivot(e, sn, cs, scratch_.q, x(ithd()), scratch_.qd, r, v);
-  const double d = offset_of(x);
-  if (sliding()) v(0) += x(isv());  // the pivot's slip carries the c.g.
-  x(ixc()) = d + dyn_.height() * dyn_.alpha(e) + r(0);
-  x(ixc() + 1) = r(1);
-  x(ixc() + 2) = v(0);
-  x(ixc() + 3) = v(1);
+  const FlightStart f = lift_off_map(dyn_, at);
+  x(ixc()) = f.r_c(0);
+  x(ixc() + 1) = f.r_c(1);
+  x(ixc() + 2) = f.v_c(0);
+  x(ixc() + 3) = f.v_c(1);
   Event ev = make_event(t, EventKind::kLiftOff, full_contact() ? 0 : e);
   ev.theta = x(0);
   ev.theta_dot_before = ev.theta_dot_after = x(ithd());
@@ -216,10 +212,11 @@ bool Simulator<N, MaxN>::lift_off(double t, State& x) {
   return request_entry();
 }
 
-// tipping point e lands after a flight: the plastic corner impact (theory "Landing"); at theta = 0
-// with the body turning into the floor about e, both edges land (flat)
+// tipping point e lands after a flight: the plastic corner impact (theory "Landing", landing_map
+// or friction_impact in contact/); at theta = 0 with the body turning into the floor about e, the
+// other tipping point may land instead, or both (flat)
 template <int N, int MaxN>
-bool Simulator<N, MaxN>::land(double t, State& x, int e, bool rigid) {
+bool Simulator<N, MaxN>::land(double t, State& x, int e) {
   unpack(x);
   const double th = x(0), thd_minus = x(ithd());
   const double sn = std::sin(th), cs = std::cos(th), h = dyn_.height();
@@ -231,81 +228,30 @@ bool Simulator<N, MaxN>::land(double t, State& x, int e, bool rigid) {
       latch_.tension = latch_.hold_tension = true;  // as below: grazing hops cannot accumulate
       latch_.tension_event = -1;
     }
-    return friction_impact(t, x, e, v_c, true, false,
-                           chatter ? EventKind::kChatterCutoff : EventKind::kLanding, chatter,
-                           rigid);
+    return impact_with_friction(t, x, {.edge = e, .from_flight = true, .grazing = chatter}, v_c,
+                                chatter ? EventKind::kChatterCutoff : EventKind::kLanding);
   }
-  const int e_in = e;
-  const Eigen::Vector2d v_corner =
-      dyn_.corner_velocity_body(e, sn, cs, scratch_.q, thd_minus, scratch_.qd, v_c);
-  double thd_plus = 0.0;
-  Vec qd_plus(n_);
-  dyn_.corner_impact(e, scratch_.q, thd_minus, scratch_.qd, v_corner, thd_plus, qd_plus, rigid);
-  bool flat = false;
-  if (th == 0.0 && edge_sign(e) * thd_plus <= 0.0) {
-    // level: the body rocks on the other tipping point if its map turns it up about that one,
-    // else both land (both vertical impulses are then compressive; theory "Landing")
-    const int o = e == 1 ? 2 : 1;
-    const Eigen::Vector2d v_other =
-        dyn_.corner_velocity_body(o, sn, cs, scratch_.q, thd_minus, scratch_.qd, v_c);
-    double thd_o = 0.0;
-    Vec qd_o(n_);
-    dyn_.corner_impact(o, scratch_.q, thd_minus, scratch_.qd, v_other, thd_o, qd_o, rigid);
-    if (edge_sign(o) * thd_o > 0.0) {
-      e = o;
-      thd_plus = thd_o;
-      qd_plus = qd_o;
-    } else {
-      flat = true;
-    }
-  }
-  const double x_corner = dyn_.corner_x(e, sn, cs, scratch_.q, x(ixc()));
-  if (flat) {
-    // both edges on the floor: theta_dot = 0, the modal momenta are conserved (rigid_body: the
-    // modal velocities)
-    thd_plus = 0.0;
-    if (rigid) {
-      qd_plus = scratch_.qd;
-    } else {
-      const Vec p = dyn_.flight_modal_momenta(e, scratch_.q, thd_minus, scratch_.qd, v_corner);
-      qd_plus = dyn_.mu_inverse() * p;
-    }
-  }
-  // the c.g. velocity after, for the impulse
-  Eigen::Vector2d r, v_after;
-  dyn_.cg_from_pivot(e, sn, cs, scratch_.q, thd_plus, qd_plus, r, v_after);
-  if (flat)
-    v_after = dyn_.height() * Eigen::Vector2d(dyn_.psi_x().dot(qd_plus), dyn_.psi_y().dot(qd_plus));
-  const Eigen::Vector2d impulse = dyn_.mass() * (v_after - v_c);
-  // a plastic impact loses the kinetic energy of the velocity jump (Carnot), which is >= 0 by
-  // construction: the jump's c.g. velocity and its motion about the c.g. (theory §16). The
-  // rigid_body law is no projection: its loss is the difference of the energies, and where that
-  // is a gain the paper's law takes the landing
-  const Vec dqd = qd_plus - scratch_.qd;
-  double loss = dyn_.flight_kinetic_energy(scratch_.q, thd_plus - thd_minus, dqd, v_after - v_c);
-  if (rigid) {
-    const double before = dyn_.flight_kinetic_energy(scratch_.q, thd_minus, scratch_.qd, v_c);
-    loss = before - dyn_.flight_kinetic_energy(scratch_.q, thd_plus, qd_plus, v_after);
-    if (loss < -kImpactEnergyRounding * before) {
-      law_fallback(t, e_in);
-      return land(t, x, e_in, false);
-    }
-  }
-  x(ithd()) = thd_plus;
-  x.segment(iqd(), n_) = qd_plus;
-  ledger_.offset = x_corner - h * dyn_.alpha(e);
-  switch_mode(flat ? ContactMode::kFullContact
-                   : (e == 1 ? ContactMode::kRockingEdge1 : ContactMode::kRockingEdge2),
+  const auto out = landing_map(
+      dyn_, e,
+      ImpactState<Vec>{
+          .theta = th, .q = scratch_.q, .theta_dot = thd_minus, .q_dot = scratch_.qd, .v_c = v_c},
+      setup_.rule);
+  if (out.law_fallback) law_fallback(t, e);
+  const double x_corner = dyn_.corner_x(out.edge, sn, cs, scratch_.q, x(ixc()));
+  x(ithd()) = out.theta_dot;
+  x.segment(iqd(), n_) = out.q_dot;
+  ledger_.offset = x_corner - h * dyn_.alpha(out.edge);
+  switch_mode(out.flat ? ContactMode::kFullContact
+                       : (out.edge == 1 ? ContactMode::kRockingEdge1 : ContactMode::kRockingEdge2),
               t, x);
-  Event ev = make_event(t, EventKind::kLanding, flat ? 0 : e);
+  Event ev = make_event(t, EventKind::kLanding, out.flat ? 0 : out.edge);
   ev.theta = th;
   ev.theta_dot_before = thd_minus;
-  ev.theta_dot_after = thd_plus;
-  ev.energy_loss = loss;
-  ev.impulse_x = impulse(0);
-  ev.impulse_y = impulse(1);
-  ev.friction_demand = impulse(1) > 0.0 ? std::abs(impulse(0)) / impulse(1)
-                                        : std::numeric_limits<double>::infinity();
+  ev.theta_dot_after = out.theta_dot;
+  ev.energy_loss = out.energy_loss;
+  ev.impulse_x = out.impulse(0);
+  ev.impulse_y = out.impulse(1);
+  ev.friction_demand = friction_ratio(out.impulse(0), out.impulse(1));
   res_.extremes.flight_time += t - ledger_.flight_start;
   // a flight shorter than the chatter interval is below what the model resolves (a tipping point
   // grazing the floor): the landing is a chatter cut-off, and the floor may pull until it presses
@@ -316,8 +262,8 @@ bool Simulator<N, MaxN>::land(double t, State& x, int e, bool rigid) {
     latch_.tension = true;
     latch_.tension_event = -1;
   }
-  count_impact(ev, impulse(1), ev.energy_loss, chatter);
-  return after_impulse(t, ev, th, dyn_.mass() * (v_c.norm() + v_after.norm()));
+  count_impact(ev, out.impulse(1), ev.energy_loss, chatter);
+  return after_impulse(t, ev, th, dyn_.mass() * (v_c.norm() + out.v_c.norm()));
 }
 
 template <int N, int MaxN>
@@ -364,11 +310,10 @@ bool Simulator<N, MaxN>::start_slip(double t, State& x) {
   GuardSample now;
   evaluate(t, x, now);
   // the floor cannot push along F_I as hard as sticking needs: the base slips the other way
-  const int s = now.fi > 0.0 ? -1 : 1;
+  const int s = slip_direction(now.fi);
   Event ev = make_event(t, EventKind::kSlipStart, rocking() ? edge() : 0);
   ev.theta = x(0);
-  ev.friction_demand =
-      now.fj > 0.0 ? std::abs(now.fi) / now.fj : std::numeric_limits<double>::infinity();
+  ev.friction_demand = friction_ratio(now.fi, now.fj);
   rec_.event(ev);
   res_.friction_exceeded = true;
   ++res_.extremes.slips;
@@ -426,18 +371,17 @@ bool Simulator<N, MaxN>::stick(double t, State& x) {
   switch_mode(contact_mode(pivot, 0), t, x);
   GuardSample now;
   evaluate(t, x, now);
-  const double margin = now.v[static_cast<std::size_t>(guard_slot(mode_, Guard::kFrictionLimit))];
-  const int s = now.fi > 0.0 ? -1 : 1;
-  Event ev = make_event(t, margin > 0.0 ? EventKind::kStick : EventKind::kSlipReversal,
+  const StickOrSlip after = stick_or_slip(
+      now.fi, now.v[static_cast<std::size_t>(guard_slot(mode_, Guard::kFrictionLimit))]);
+  Event ev = make_event(t, after.sticks ? EventKind::kStick : EventKind::kSlipReversal,
                         rocking() ? edge() : 0);
   ev.theta = th;
-  ev.friction_demand =
-      now.fj > 0.0 ? std::abs(now.fi) / now.fj : std::numeric_limits<double>::infinity();
+  ev.friction_demand = friction_ratio(now.fi, now.fj);
   rec_.event(ev);
   latch_.zero_start.fill(false);
-  if (margin <= 0.0) {
-    if (s != was) ++res_.extremes.slips;
-    switch_mode(contact_mode(pivot, s), t, x);
+  if (after.slip != 0) {
+    if (after.slip != was) ++res_.extremes.slips;
+    switch_mode(contact_mode(pivot, after.slip), t, x);
     latch_.zero_start[static_cast<std::size_t>(guard_slot(mode_, Guard::kSlipStop))] = true;
   }
   if (rocking() && th == 0.0) {
@@ -447,173 +391,57 @@ bool Simulator<N, MaxN>::stick(double t, State& x) {
   return request_entry();
 }
 
-// Moreau's impact law for one contact, plastic normally, with Coulomb friction on the impulse
-// (theory §19): the moment of momentum about tipping point e and the modal momenta are conserved;
-// after the impact e rests on the floor (stick) or slides along it at d_dot+ (slip), and every
-// post-impact quantity is affine in d_dot+. The sticking impulse is taken if it lies in the
-// friction cone; else the slip direction is the one the cone cannot hold, and d_dot+ puts the
-// impulse on the cone's edge. At theta = 0 a map that turns the body into the floor about e lands
-// both edges (theta_dot+ = 0, the modal momenta conserved), with the same friction rule.
+// the impact of a tipping point with Coulomb friction (friction_impact in contact/, theory §19):
+// its outcome into the state, the mode, the events and the ledger; false when the run ends
 template <int N, int MaxN>
-bool Simulator<N, MaxN>::friction_impact(double t, State& x, int e, const Eigen::Vector2d& v_c,
-                                         bool from_flight, bool flat, EventKind kind, bool chatter,
-                                         bool rigid) {
+bool Simulator<N, MaxN>::impact_with_friction(double t, State& x, const CornerImpactCase& c,
+                                              const Eigen::Vector2d& v_c, EventKind kind) {
   unpack(x);
-  if (!from_flight) x(0) = 0.0;  // a rocking impact is located at theta = 0 up to rounding
   const double th = x(0), thd_minus = x(ithd());
-  const double sn = std::sin(th), cs = std::cos(th), h = dyn_.height(), m = dyn_.mass();
-  const double kinetic_before = dyn_.flight_kinetic_energy(scratch_.q, thd_minus, scratch_.qd, v_c);
-  const Eigen::Vector2d unit_body(cs, -sn);  // I in body components
-  // one candidate: the post-impact rates and c.g. velocity at d_dot+ = 0 and per unit d_dot+
-  struct Candidate {
-    double thd0 = 0.0, thd1 = 0.0;
-    Vec qd0, qd1;
-    Eigen::Vector2d vc0, vc1;
-  };
-  auto single = [&](int c, Candidate& k) {
-    const Eigen::Vector2d v_corner =
-        dyn_.corner_velocity_body(c, sn, cs, scratch_.q, thd_minus, scratch_.qd, v_c);
-    k.qd0.resize(n_);
-    k.qd1.resize(n_);
-    dyn_.corner_impact(c, scratch_.q, thd_minus, scratch_.qd, v_corner, k.thd0, k.qd0, rigid);
-    dyn_.corner_impact(c, scratch_.q, 0.0, Vec::Zero(n_), -unit_body, k.thd1, k.qd1, rigid);
-    Eigen::Vector2d r;
-    dyn_.cg_from_pivot(c, sn, cs, scratch_.q, k.thd0, k.qd0, r, k.vc0);
-    dyn_.cg_from_pivot(c, sn, cs, scratch_.q, k.thd1, k.qd1, r, k.vc1);
-    k.vc1(0) += 1.0;
-  };
-  auto both = [&](Candidate& k) {
-    // theta = 0: the modal momenta p = mu q_dot + psi_x d_dot / h (over M h^2) are conserved
-    const Eigen::Vector2d v_corner =
-        dyn_.corner_velocity_body(e, sn, cs, scratch_.q, thd_minus, scratch_.qd, v_c);
-    const Vec p = dyn_.flight_modal_momenta(e, scratch_.q, thd_minus, scratch_.qd, v_corner);
-    k.thd0 = k.thd1 = 0.0;
-    k.qd0 = rigid ? scratch_.qd : Vec(dyn_.mu_inverse() * p);
-    // rigid_body: the slip carries the body as a whole, the modes keep their rates
-    k.qd1 = rigid ? Vec(Vec::Zero(n_)) : Vec(-(dyn_.mu_inverse() * dyn_.psi_x()) / h);
-    k.vc0 = h * Eigen::Vector2d(dyn_.psi_x().dot(k.qd0), dyn_.psi_y().dot(k.qd0));
-    k.vc1 = Eigen::Vector2d(1.0 + h * dyn_.psi_x().dot(k.qd1), h * dyn_.psi_y().dot(k.qd1));
-  };
-  // Coulomb on the impulse M (v_c+ - v_c-) = L0 + d_dot+ L1: d_dot+ = 0 inside the cone, else on
-  // its edge; `ok` false when the slide has no consistent solution (k_s <= 0)
-  struct Resolved {
-    double v = 0.0;       // d_dot+
-    double demand = 0.0;  // |L0_I| / L0_J: the friction the sticking impulse needs
-    bool slid = false, ok = true;
-  };
-  auto coulomb = [&](const Candidate& c) {
-    Resolved z;
-    const Eigen::Vector2d l0 = m * (c.vc0 - v_c), l1 = m * c.vc1;
-    z.demand = l0(1) > 0.0 ? std::abs(l0(0)) / l0(1) : std::numeric_limits<double>::infinity();
-    if (l0(1) > 0.0 && std::abs(l0(0)) <= setup_.mu_s * l0(1)) return z;
-    const double sg = l0(0) > 0.0 ? -1.0 : 1.0;
-    const double k_s = l1(0) + sg * setup_.mu_k * l1(1);
-    z.v = -(l0(0) + sg * setup_.mu_k * l0(1)) / k_s;
-    z.slid = true;
-    z.ok = k_s > 0.0;
-    return z;
-  };
-  auto turn = [](const Candidate& c, double v) { return c.thd0 + v * c.thd1; };
-  Candidate k;
-  Resolved z;
-  int lands = e;
-  if (flat) {
-    both(k);
-    z = coulomb(k);
-  } else if (th != 0.0) {
-    single(e, k);
-    z = coulomb(k);
-  } else {
-    // theta = 0 (theory §19): corner 1, corner 2 and flat, each resolved with friction; the one
-    // that is consistent (the body turns away from the other corner; flat: both corners press),
-    // and where two are, the one the sticking rule of §16 names
-    std::array<Candidate, 3> c;  // corner 1, corner 2, flat
-    single(1, c[0]);
-    single(2, c[1]);
-    both(c[2]);
-    std::array<Resolved, 3> r = {coulomb(c[0]), coulomb(c[1]), coulomb(c[2])};
-    std::array<bool, 3> fits = {r[0].ok && turn(c[0], r[0].v) > 0.0,
-                                r[1].ok && -turn(c[1], r[1].v) > 0.0,
-                                r[2].ok && turn(c[0], r[2].v) <= 0.0 && -turn(c[1], r[2].v) <= 0.0};
-    // the sticking rule: the landing corner if it turns the body up about itself, else (landing
-    // from flight) the other one, else flat
-    const int o = e == 1 ? 2 : 1;
-    int pick = 2;
-    if (edge_sign(e) * c[static_cast<std::size_t>(e - 1)].thd0 > 0.0) {
-      pick = e - 1;
-    } else if (from_flight && edge_sign(o) * c[static_cast<std::size_t>(o - 1)].thd0 > 0.0) {
-      pick = o - 1;
-    }
-    if (!fits[static_cast<std::size_t>(pick)]) {
-      for (int j = 0; j < 3; ++j)
-        if (fits[static_cast<std::size_t>(j)]) pick = j;
-    }
-    const auto pk = static_cast<std::size_t>(pick);
-    k = c[pk];
-    z = r[pk];
-    z.ok = z.ok && fits[pk];
-    flat = pick == 2;
-    lands = flat ? e : pick + 1;
-  }
-  if (chatter && z.slid && !((k.vc0 + z.v * k.vc1 - v_c)(1) > 0.0)) {
-    // a grazing landing (below the chatter interval) whose sliding impulse would pull: the
-    // sticking one, as without friction (§16: Carnot's loss, a tensile_landing said)
-    z = Resolved{};
-  }
-  const bool ok = z.ok;
-  const double v_plus = z.v;
-  const bool slid = z.slid;
-  const double sticking_demand = z.demand;
-  if (!ok)
+  const auto out = friction_impact(
+      dyn_,
+      ImpactState<Vec>{
+          .theta = th, .q = scratch_.q, .theta_dot = thd_minus, .q_dot = scratch_.qd, .v_c = v_c},
+      c, setup_.rule, CoulombFriction{setup_.mu_s, setup_.mu_k});
+  if (out.law_fallback) law_fallback(t, c.edge);
+  if (!out.consistent)
     return stop(t, "no consistent impact with friction at t = " + short_number(t) +
                        " s (no outcome of the impact law with Coulomb friction fits; "
                        "docs/theory.md, \"Impacts with friction\")");
-  const double thd_plus = k.thd0 + v_plus * k.thd1;
-  const Vec qd_plus = k.qd0 + v_plus * k.qd1;
-  const Eigen::Vector2d v_after = k.vc0 + v_plus * k.vc1;
-  const Eigen::Vector2d impulse = m * (v_after - v_c);
-  const double loss =
-      kinetic_before - dyn_.flight_kinetic_energy(scratch_.q, thd_plus, qd_plus, v_after);
-  if (rigid && loss < -kImpactEnergyRounding * kinetic_before) {
-    law_fallback(t, e);
-    return friction_impact(t, x, e, v_c, from_flight, flat, kind, chatter, false);
-  }
   // the contact point's place: the landing tipping point, or the base centre when flat
   const double d_now = offset_of(x);
-  if (from_flight) {
-    const double x_corner = dyn_.corner_x(lands, sn, cs, scratch_.q, x(ixc()));
-    ledger_.offset = x_corner - h * dyn_.alpha(lands);
+  if (c.from_flight) {
+    const double x_corner =
+        dyn_.corner_x(out.edge, std::sin(th), std::cos(th), scratch_.q, x(ixc()));
+    ledger_.offset = x_corner - dyn_.height() * dyn_.alpha(out.edge);
   } else {
     ledger_.offset = d_now;
   }
-  x(ithd()) = flat ? 0.0 : thd_plus;
-  x.segment(iqd(), n_) = qd_plus;
-  const int pivot = flat ? 0 : lands;
-  const int s = !slid || v_plus == 0.0 ? 0 : (v_plus > 0.0 ? 1 : -1);
-  switch_mode(contact_mode(pivot, s), t, x);
+  x(ithd()) = out.theta_dot;
+  x.segment(iqd(), n_) = out.q_dot;
+  switch_mode(contact_mode(out.flat ? 0 : out.edge, out.slip), t, x);
   x(isd()) = ledger_.offset;
-  x(isv()) = s != 0 ? v_plus : 0.0;
-  Event ev = make_event(t, flat && kind == EventKind::kImpact ? EventKind::kRockingEnded : kind,
-                        from_flight && flat ? 0 : lands);
+  x(isv()) = out.slip_velocity;
+  Event ev = make_event(t, out.flat && kind == EventKind::kImpact ? EventKind::kRockingEnded : kind,
+                        c.from_flight && out.flat ? 0 : out.edge);
   ev.theta = th;
   ev.theta_dot_before = thd_minus;
   ev.theta_dot_after = x(ithd());
-  ev.energy_loss = loss;
-  ev.impulse_x = impulse(0);
-  ev.impulse_y = impulse(1);
-  ev.friction_demand = impulse(1) > 0.0 ? std::abs(impulse(0)) / impulse(1)
-                                        : std::numeric_limits<double>::infinity();
-  count_impact(ev, impulse(1), loss, chatter);
-  if (slid) {
+  ev.energy_loss = out.energy_loss;
+  ev.impulse_x = out.impulse(0);
+  ev.impulse_y = out.impulse(1);
+  ev.friction_demand = friction_ratio(out.impulse(0), out.impulse(1));
+  count_impact(ev, out.impulse(1), out.energy_loss, c.grazing);
+  if (out.slid) {
     // the impulse needed more friction than the floor has: a sliding impact
     res_.friction_exceeded = true;
     ++res_.extremes.slips;
     Event fe = ev;
     fe.kind = EventKind::kFrictionExceeded;
-    fe.friction_demand = sticking_demand;
+    fe.friction_demand = out.sticking_demand;
     rec_.event(fe);
   }
-  return after_impulse(t, ev, th, m * (v_c.norm() + v_after.norm()));
+  return after_impulse(t, ev, th, dyn_.mass() * (v_c.norm() + out.v_c.norm()));
 }
 
 // the end of a landing or an impact with friction, recorded as `ev` at tilt th: a tensile impulse

@@ -283,8 +283,7 @@ class Simulator final : private GuardProbe {
   bool uplift(double t, State& x, int e);
   bool impact(double t, State& x);
   bool lift_off(double t, State& x);
-  // `rigid`: the rigid_body law (false: the paper's, also when rigid_body would add energy)
-  bool land(double t, State& x, int e, bool rigid);
+  bool land(double t, State& x, int e);
   bool overturned(double t, State& x);
   // `momentum` [N s]: M (|v_c| before + after), the scale of the impulse's rounding
   bool after_impulse(double t, const Event& ev, double th, double momentum);
@@ -296,11 +295,10 @@ class Simulator final : private GuardProbe {
   bool stick(double t, State& x);
   // the mode changes to m at t: the slip's bookkeeping (offset, time sliding)
   void switch_mode(ContactMode m, double t, State& x);
-  // the plastic impact of tipping point e with Coulomb friction (theory §19); false when the run
-  // ends. `from_flight`: a landing (the other tipping point may take over at theta = 0);
-  // `flat`: both edges land whatever the single-point map gives (chatter)
-  bool friction_impact(double t, State& x, int e, const Eigen::Vector2d& v_c, bool from_flight,
-                       bool flat, EventKind kind, bool chatter, bool rigid);
+  // the plastic impact with Coulomb friction (theory §19) of the case `c` at the c.g. velocity
+  // v_c, recorded as `kind`; false when the run ends
+  bool impact_with_friction(double t, State& x, const CornerImpactCase& c,
+                            const Eigen::Vector2d& v_c, EventKind kind);
   // rigid_body would have added energy at t: the paper's law takes the impact, said in an event
   void law_fallback(double t, int e);
   bool stop(double t, std::string why);
@@ -441,7 +439,6 @@ class Simulator final : private GuardProbe {
   struct Setup {
     std::array<double, 2> overturn_limit{};  // [rad] on edge 1 (theta > 0) and edge 2
     ImpactRule rule;                         // the impact law and its parameters
-    bool rigid_law = false;                  // rule is rigid_body
     double mu_s = 0.0, mu_k = 0.0;  // static and kinetic friction coefficients (inf: no limit)
     double chatter_interval = 0.0;  // [s]
     double base_width = 0.0;        // [m] b1 + b2
@@ -499,7 +496,6 @@ Simulator<N, MaxN>::Simulator(const Body& body, const GroundMotion& motion,
   setup_.rule.restitution_factor = opt.restitution_factor;
   setup_.rule.ratio_edge1 = opt.restitution_ratio_edge1;
   setup_.rule.ratio_edge2 = opt.restitution_ratio_edge2;
-  setup_.rigid_law = opt.impact_law == ImpactLaw::kRigidBody;
   setup_.mu_s = opt.friction_coefficient;
   setup_.mu_k = std::min(opt.kinetic_friction_coefficient, opt.friction_coefficient);
   // shortest period among the pinned-base modes and the rigid rocking motion

@@ -2269,10 +2269,38 @@ def friction_landing(K, FK, body, edge, th, q, x, xd, vb, mu_s, mu_k, chk, stats
         stats['tensile_stick'] += 1
         if mode == 'slip' and Lam[1] > 0:
             stats['tensile_resolved'] += 1
+    # the rigid_body law (theory 21) at the same state: the body is rigid during the impact, q_dot+ = q_dot-,
+    # and only the moment of momentum about the corner is conserved (the rigidifying impulses are internal);
+    # for each d_dot+ from the masses, then Coulomb's law on the impulse as above
+    def post_rigid(ddp_):
+        bp = [vb[0] + ddp_, vb[1], 0, 0, G]
+        pv = lambda thd_: [kcall(K, K.Rd, pt, x0, xe, th, q, thd_, qdm, 0, [0] * n, bp) for pt in pts]
+        h0, h1 = conserved(pv(0))[0], conserved(pv(1))[0]
+        thdp = (pre[0] - h0) / (h1 - h0)
+        vp = pv(thdp)
+        Lr = [sum(pt[0] * (vp_[i] - vm_[i]) for pt, vp_, vm_ in zip(pts, vp, vm)) for i in range(2)]
+        dT = sum(pt[0] * (vp_[0] ** 2 + vp_[1] ** 2 - vm_[0] ** 2 - vm_[1] ** 2) / 2
+                 for pt, vp_, vm_ in zip(pts, vp, vm))
+        return thdp, Lr, vb[0] * Lr[0] + vb[1] * Lr[1] - dT
+    rt0, rL0, rE0 = post_rigid(0)
+    _, rL1, _ = post_rigid(1)
+    rdL = [rL1[i] - rL0[i] for i in range(2)]
+    rmode, rsg, rddp, rthd, rLam, rE, rok = 'stick', 0, mp.mpf(0), rt0, rL0, rE0, True
+    if not (rL0[1] >= 0 and abs(rL0[0]) <= mu_s * rL0[1]):
+        rmode, rsg = 'slip', (-1 if rL0[0] > 0 else 1)
+        ks = rdL[0] + rsg * mu_k * rdL[1]
+        rddp = -(rL0[0] + rsg * mu_k * rL0[1]) / ks
+        rok = ks > 0
+        rthd, rLam, rE = post_rigid(rddp)
+        chk.eq(rLam[0], -rsg * mu_k * rLam[1], what + ' (rigid_body): impulse on the cone')
+    stats['rigid_body_' + rmode] += 1
+    stats['rigid_body_gain'] += rE < 0
+    rigid = dict(mode=rmode, slip_sign=rsg, consistent=int(bool(rok)), d_dot_plus=rddp, theta_dot_plus=rthd,
+                 impulse=rLam, stick_impulse=rL0, energy_loss=rE)
     return dict(edge=edge, theta=th, q=q, cg_velocity=vc, theta_dot_minus=thdm, q_dot_minus=qdm,
                 corner_velocity_minus=Vm, base_velocity=list(vb), mu_s=mu_s, mu_k=mu_k, mode=mode, slip_sign=sg,
                 d_dot_plus=ddp, theta_dot_plus=nu[0], q_dot_plus=nu[1:], impulse=Lam, stick_impulse=L0,
-                energy_loss=E)
+                energy_loss=E, rigid_body=rigid)
 
 
 def flat_friction_landing(K, FK, body, d, q, vd_, thd, qd, vb, mu_s, mu_k, chk, stats):
@@ -2721,6 +2749,103 @@ def theta0_rule_with_friction(seed, trials, stats):
             stats['ambiguous_min_mu_s'] = min(stats['ambiguous_min_mu_s'], float(mu_s))
             if choice in ok:
                 stats['ambiguous_frictionless_choice_consistent'] += 1
+
+
+def theta0_friction_outcome(body, e, q, qd, thd, vt, mu_s, mu_k):
+    """a body landing level (theta = 0) from flight on corner e with Coulomb friction (theory 19): the three
+    outcomes (corner 1, corner 2, flat), each resolved by Coulomb's law, whether each is consistent (a corner:
+    a slide with k_s > 0, and the body turns up about it; flat: both corners press, H^_1 <= 0 <= H^_2 at the
+    slip velocity after), and the one taken: the sticking rule of theory 16 (corner e if its sticking map
+    turns the body up about it, else the other corner if its does, else flat) where that one is consistent,
+    else the last consistent one of corner 1, corner 2, flat.  vt: the c.g. velocity over h."""
+    n, P, M, h = body.n, body.P, body.M, body.h
+    nu = [thd] + list(qd)
+    sgn = {1: 1, 2: -1}
+
+    def Hhat(c, ddp_):
+        ac = alpha_of(body, c)
+        _, rhs = conv_landing_system(P, ac, q, vt, thd, qd)
+        Lp = conv_L(P, ac, q, (ddp_, 0))
+        r = [rhs[i] - Lp[i] for i in range(n + 1)]
+        return r[0] - (dot(conv_b(P, ac, q), mu_solve(P, r[1:])) if n else 0)
+    cand = []
+    for c in (1, 2):
+        ac = alpha_of(body, c)
+        Bc = conv_B(P, ac, q)
+        Vm = (h * (vt[0] - dot(Bc[0], nu)), h * (vt[1] - dot(Bc[1], nu)))
+        mode, sg, ddp, nup, Lam = conv_friction_impact(P, ac, q, 0, nu, Vm, mu_s, mu_k)
+        ok = True
+        if mode == 'slip':
+            Wi = conv_Winv(P, ac, q, 0)
+            ok = Wi[0, 0] + sg * mu_k * Wi[1, 0] > 0
+        chk_turn = Hhat(c, ddp) / schur(P, ac, q)
+        assert abs(chk_turn - nup[0]) < mp.mpf('1e-25') * (1 + abs(nup[0])), 'theta = 0: corner map vs H^'
+        cand.append(dict(outcome='corner%d' % c, mode=mode, slip_sign=sg, d_dot_plus=ddp, theta_dot_plus=nup[0],
+                         q_dot_plus=nup[1:], impulse=Lam, fits=int(bool(ok and sgn[c] * nup[0] > 0))))
+    prhs = conv_flat_landing_rhs(P, q, vt, thd, qd)
+
+    def flat(ddp_):
+        qdp = mu_solve(P, [prhs[j] - P['psi_x'][j] * ddp_ / h for j in range(n)]) if n else []
+        return qdp, [M * (ddp_ + h * dot(P['psi_x'], qdp) - h * vt[0]), M * (h * dot(P['psi_y'], qdp) - h * vt[1])]
+    _, L0 = flat(0)
+    mode, sg, ddp, ok = 'stick', 0, mp.mpf(0), True
+    if not (L0[1] >= 0 and abs(L0[0]) <= mu_s * L0[1]):
+        mode, sg = 'slip', (-1 if L0[0] > 0 else 1)
+        k = M * conv_k_slide_full(P, sg, mu_k)
+        ddp = -(L0[0] + sg * mu_k * L0[1]) / k
+        ok = k > 0
+    qdp, Lam = flat(ddp)
+    cand.append(dict(outcome='flat', mode=mode, slip_sign=sg, d_dot_plus=ddp, theta_dot_plus=mp.mpf(0), q_dot_plus=qdp,
+                     impulse=Lam, fits=int(bool(ok and Hhat(1, ddp) <= 0 <= Hhat(2, ddp)))))
+    o = 2 if e == 1 else 1
+    pick = 2
+    if sgn[e] * Hhat(e, 0) > 0:
+        pick = e - 1
+    elif sgn[o] * Hhat(o, 0) > 0:
+        pick = o - 1
+    if not cand[pick]['fits']:
+        for j in range(3):
+            if cand[j]['fits']:
+                pick = j
+    out = dict(cand[pick])
+    vc = [h * vt[0], h * vt[1]]
+    vcp = [vc[i] + out['impulse'][i] / M for i in range(2)]
+    out['energy_loss'] = conv_T_flight(P, q, vc, thd, qd) - conv_T_flight(P, q, vcp, out['theta_dot_plus'],
+                                                                         out['q_dot_plus'])
+    assert not out['fits'] or out['energy_loss'] > -mp.mpf('1e-20') * M * G * h, 'theta = 0: energy gained'
+    return dict(n=n, params=dict(M=body.M, h=body.h, b1=body.b1, b2=body.b2, zeta2=P['zeta2'], mu=P['mu'],
+                                 kappa=P['kappa'], gamma=P['gamma'], psi_x=P['psi_x'], psi_y=P['psi_y'],
+                                 delta=P['delta'], beta=P['beta']),
+                edge=e, q=q, q_dot_minus=list(qd), theta_dot_minus=thd, cg_velocity=vc, mu_s=mu_s, mu_k=mu_k,
+                consistent=[c_['fits'] for c_ in cand], outcome=out)
+
+
+def theta0_friction_cases(seed, count):
+    """level landings with friction for the engine's whole map at theta = 0 (written): bodies n = 0, 1, 2, wide
+    and narrow, both corners coming down, mu_s from 0.05 to 2"""
+    rng = np.random.RandomState(seed)
+    cases, taken = [], dict(corner1=0, corner2=0, flat=0, inconsistent=0)
+    for trial in range(count):
+        n = trial % 3
+        b = random_body(rng, n, 'theta=0 map n=%d' % n)
+        if trial % 2:
+            b.b1, b.b2 = b.h * mpf(rng.uniform(0.1, 2.5)), b.h * mpf(rng.uniform(0.1, 2.5))
+            b.params()
+        h = b.h
+        sgh = mp.sqrt(G * h)
+        q = [mpf(0.05 * rng.normal()) for _ in range(n)]
+        qd = [mpf(rng.normal()) for _ in range(n)]
+        thd = mpf(rng.uniform(-1.0, 1.0))
+        nu = [thd] + qd
+        vO = (mpf(rng.uniform(-2, 2)) * sgh,
+              min(h * b.alpha1 * thd, -h * b.alpha2 * thd) - mpf(rng.uniform(0.02, 1.0)) * sgh)
+        B0 = conv_B(b.P, 0, q)
+        vt = ((vO[0] + h * dot(B0[0], nu)) / h, (vO[1] + h * dot(B0[1], nu)) / h)
+        mu_s = mpf(10 ** rng.uniform(-1.3, 0.3))
+        r = theta0_friction_outcome(b, 1 + trial % 2, q, qd, thd, vt, mu_s, mu_s * mpf(rng.uniform(0.6, 1)))
+        taken[r['outcome']['outcome'] if r['outcome']['fits'] else 'inconsistent'] += 1
+        cases.append(r)
+    return cases, taken
 
 
 # ---------------------------------------------------------------------------
@@ -3299,7 +3424,7 @@ def main():
                   both_single_admissible=0)
     xstats = dict(slide_rock=0, slide_full=0, k_nonpositive=0, friction_landings=0, mode_stick=0, mode_slip=0,
                   impact_k_nonpositive=0, tensile_stick=0, tensile_resolved=0, flat_friction=0, flat_stick=0,
-                  flat_slip=0)
+                  flat_slip=0, rigid_body_stick=0, rigid_body_slip=0, rigid_body_gain=0)
     cases = []
     kernels, fkernels = {}, {}
     for n in range(4):
@@ -3383,6 +3508,10 @@ def main():
           (t0r['cases'], t0r['consistent_1'], t0r['consistent_2'], t0r['ambiguous_min_mu_s'],
            t0r['ambiguous_frictionless_choice_consistent'], t0r['consistent_3'],
            t0r['frictionless_choice_inconsistent']), file=sys.stderr)
+    theta0_friction, t0taken = theta0_friction_cases(args.seed + 211, 72)
+    print('theta = 0 with friction, the engine\'s rule (written): %d landings, taken corner 1 in %d, corner 2 in %d, '
+          'flat in %d, none consistent in %d' % (len(theta0_friction), t0taken['corner1'], t0taken['corner2'],
+                                                t0taken['flat'], t0taken['inconsistent']), file=sys.stderr)
     rigid_friction = rigid_friction_checks(kernels[0], chk)
     pulses = pulse_checks(chk)
     for rb in rigid_friction:
@@ -3409,8 +3538,9 @@ def main():
     with open(args.out, 'w') as fh:
         fh.write('{"g": 9.80665, "seed": %d, "cases": [\n' % args.seed)
         fh.write(',\n'.join(fmt(c) for c in cases))
-        fh.write('\n], "rigid_block_friction": %s, "sliding_pulses": %s, "compliant_potential": %s}\n' %
-                 (fmt(rigid_friction), fmt(pulses), fmt(compliant_refs)))
+        fh.write('\n], "rigid_block_friction": %s, "sliding_pulses": %s, "compliant_potential": %s, '
+                 '"friction_theta0": %s}\n' %
+                 (fmt(rigid_friction), fmt(pulses), fmt(compliant_refs), fmt(theta0_friction)))
     json.load(open(args.out))
     print('numeric cases: %d, max relative (a)-vs-(b) difference %.2e (%s)' %
           (len(cases), float(chk.maxerr), chk.where), file=sys.stderr)
@@ -3423,10 +3553,11 @@ def main():
            fstats['flat_compressive'], fstats['both_single_admissible']), file=sys.stderr)
     print('friction: sliding states %d rocking, %d full contact (k_s <= 0 in %d); impacts %d (stick %d, slip %d, '
           'k_s <= 0 in %d; a sticking corner would need a tensile impulse in %d, all resolved by sliding: %d); '
-          'flat %d (stick %d, slip %d)' %
+          'flat %d (stick %d, slip %d); under the rigid_body law stick %d, slip %d, energy gained in %d' %
           (xstats['slide_rock'], xstats['slide_full'], xstats['k_nonpositive'], xstats['friction_landings'],
            xstats['mode_stick'], xstats['mode_slip'], xstats['impact_k_nonpositive'], xstats['tensile_stick'],
-           xstats['tensile_resolved'], xstats['flat_friction'], xstats['flat_stick'], xstats['flat_slip']),
+           xstats['tensile_resolved'], xstats['flat_friction'], xstats['flat_stick'], xstats['flat_slip'],
+           xstats['rigid_body_stick'], xstats['rigid_body_slip'], xstats['rigid_body_gain']),
           file=sys.stderr)
     print('total %.1f s' % (time.time() - t0), file=sys.stderr)
     return 1 if failed else 0

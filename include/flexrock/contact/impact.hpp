@@ -24,22 +24,59 @@ enum class ImpactLaw {
                  // modal momenta conserved
 };
 
+/// What the modes do during an impact under a law (docs/theory.md §21).
+enum class ModesInImpact {
+  kMomentaConserved,  // the impulse acts where the modes vanish: the modal momenta are conserved
+  kVelocitiesKept,    // the body is rigid during the impact: the modal velocities are continuous,
+                      // and only the moment of momentum about the landing point is conserved
+};
+
+/// Where theta_dot+ of the rocking impact at theta = 0 comes from.
+enum class Rebound {
+  kMap,            // the law's own map: the moment of momentum about the landing edge (times
+                   // restitution_factor)
+  kMeasuredRatio,  // a measured ratio theta_dot+/theta_dot- per landing edge (restitution_ratio)
+};
+
+/// What an impact does where its law would add energy (said as impact_law_fallback).
+enum class OnEnergyGain {
+  kNothing,       // the impact stands (a gain is said as impact_gained_energy)
+  kPaperLaw,      // the paper's law takes the impact
+  kElasticRatio,  // the measured ratio is capped at the elastic sqrt(S_pre/S_post)
+};
+
+/// One row of the impact laws: its name and what it does. The maps below and the maps with
+/// friction and from flight (friction_impact.hpp, flight_maps.hpp) read the row, never the law's
+/// name: a new law that combines these behaviours is one row here.
 struct ImpactLawInfo {
   ImpactLaw law;
   const char* name;         // as written in case files, studies and Python
   const char* description;  // one line, for `--help` and the docs
+  ModesInImpact modes;      // the modes during every impact of the law (rocking, landing, flat)
+  Rebound rebound;          // theta_dot+ of the rocking impact
+  OnEnergyGain on_gain;     // where the law would add energy
 };
 
 inline constexpr ImpactLawInfo kImpactLaws[] = {
     {ImpactLaw::kPaper, "paper",
-     "the paper's: an instantaneous impulse at the landing edge; modal momenta conserved"},
+     "the paper's: an instantaneous impulse at the landing edge; modal momenta conserved",
+     ModesInImpact::kMomentaConserved, Rebound::kMap, OnEnergyGain::kNothing},
     {ImpactLaw::kRigidBody, "rigid_body",
      "the body is rigid during the impact: modal velocities continuous; Housner's law for a stiff "
-     "body"},
+     "body",
+     ModesInImpact::kVelocitiesKept, Rebound::kMap, OnEnergyGain::kPaperLaw},
     {ImpactLaw::kRestitution, "restitution",
      "a measured ratio theta_dot+/theta_dot- per landing edge (restitution_ratio); modal momenta "
-     "conserved"},
+     "conserved",
+     ModesInImpact::kMomentaConserved, Rebound::kMeasuredRatio, OnEnergyGain::kElasticRatio},
 };
+
+/// The row of `law`.
+constexpr const ImpactLawInfo& impact_law_info(ImpactLaw law) {
+  for (const auto& i : kImpactLaws)
+    if (i.law == law) return i;
+  return kImpactLaws[0];
+}
 
 inline const char* to_string(ImpactLaw law) {
   for (const auto& i : kImpactLaws)
@@ -53,6 +90,17 @@ struct ImpactRule {
   double restitution_factor = 1.0;  // paper and rigid_body: factor on theta_dot+
   // restitution: theta_dot+/theta_dot- when landing on edge 1 and on edge 2
   double ratio_edge1 = 1.0, ratio_edge2 = 1.0;
+};
+
+/// Which corner impact: the landing tipping point, and how the outcome may be chosen (the maps with
+/// friction, friction_impact.hpp).
+struct CornerImpactCase {
+  int edge = 1;              // the tipping point that lands
+  bool from_flight = false;  // a landing after a flight (at theta = 0 the other tipping point may
+                             // take the floor); false: a rocking impact at theta = 0
+  bool flat = false;         // both edges land whatever the single-point map gives (chatter)
+  bool grazing = false;      // below the chatter interval: a sliding impulse that would pull is
+                             // replaced by the sticking one (§16: Carnot's loss)
 };
 
 /// State just after an impact and what the impact did.
@@ -105,6 +153,31 @@ void rigid_body_impact(const Dyn& dyn, int landing_edge, const Vec& q, double th
   q_dot_plus = q_dot_minus;
 }
 
+/// The plastic impact of tipping point `edge` (it sticks) under a law whose modes do `modes`:
+/// with the modal momenta conserved, Dynamics::corner_impact (the paper's map, docs/theory.md
+/// "Landing"); with the body rigid during the impact the modal velocities are continuous,
+/// q_dot+ = q_dot-, and only the moment of momentum about the tipping point is conserved,
+/// m theta_dot+ = r_theta - b.q_dot- (the first row of the landing system).
+template <class Dyn, class Vec>
+void law_corner_impact(const Dyn& dyn, ModesInImpact modes, int edge, const Vec& q,
+                       double theta_dot_minus, const Vec& q_dot_minus,
+                       const Eigen::Vector2d& v_corner_body, double& theta_dot_plus,
+                       Vec& q_dot_plus) {
+  if (modes == ModesInImpact::kMomentaConserved) {
+    dyn.corner_impact(edge, q, theta_dot_minus, q_dot_minus, v_corner_body, theta_dot_plus,
+                      q_dot_plus);
+    return;
+  }
+  const double a = dyn.alpha(edge);
+  const double wx = -a + dyn.psi_x().dot(q), wy = 1.0 + dyn.psi_y().dot(q);
+  const double m = dyn.inertia(a, q);
+  const Vec b = dyn.coupling(a, q);
+  const double r_theta = m * theta_dot_minus + b.dot(q_dot_minus) +
+                         (wx * v_corner_body(1) - wy * v_corner_body(0)) / dyn.height();
+  q_dot_plus = q_dot_minus;
+  theta_dot_plus = (r_theta - b.dot(q_dot_minus)) / m;
+}
+
 /// The impact under `rule`, with the both-edges rule. If the law's theta_dot+ would not turn the
 /// body about the landing edge (or `force_both_edges`, the chatter cut-off), both edges stay on
 /// the floor: theta_dot+ = 0, and the modal momenta are conserved (paper, restitution),
@@ -120,25 +193,30 @@ ImpactOutcome<Vec> resolve_impact(const Dyn& dyn, int landing_edge, const Vec& q
   ImpactOutcome<Vec> out;
   const int pre_edge = landing_edge == 1 ? 2 : 1;
   const double a_pre = dyn.alpha(pre_edge), a_post = dyn.alpha(landing_edge);
-  const bool rigid = rule.law == ImpactLaw::kRigidBody;
+  const ImpactLawInfo& law = impact_law_info(rule.law);
+  const bool rigid = law.modes == ModesInImpact::kVelocitiesKept;
+  const bool ratio = law.rebound == Rebound::kMeasuredRatio;
   double factor = rule.restitution_factor;
-  if (rigid) {
-    rigid_body_impact(dyn, landing_edge, q, theta_dot_minus, q_dot_minus, out.theta_dot, out.q_dot);
-  } else if (rule.law == ImpactLaw::kRestitution) {
+  if (ratio) {
     // the measured ratio replaces the law's theta_dot+; 0 ends rocking. Its loss is
-    // 1/2 M h^2 (S_pre - r^2 S_post) theta_dot-^2: above the elastic ratio sqrt(S_pre/S_post) (an
-    // asymmetric or flexible body) it would add energy, so the elastic ratio is taken and said
+    // 1/2 M h^2 (S_pre - r^2 S_post) theta_dot-^2 with the modal momenta conserved: above the
+    // elastic ratio sqrt(S_pre/S_post) (an asymmetric or flexible body) it would add energy
     out.theta_dot = theta_dot_minus;
+    if (rigid) out.q_dot = q_dot_minus;
     factor = landing_edge == 1 ? rule.ratio_edge1 : rule.ratio_edge2;
-    auto schur = [&](double a) {
-      const Vec b = dyn.coupling(a, q);
-      return dyn.inertia(a, q) - b.dot(dyn.mu_inverse() * b);  // S = m - b^T mu^-1 b
-    };
-    const double elastic = std::sqrt(schur(a_pre) / schur(a_post));
-    if (factor > elastic) {
-      factor = elastic;
-      out.law_fallback = true;
+    if (law.on_gain == OnEnergyGain::kElasticRatio) {
+      auto schur = [&](double a) {
+        const Vec b = dyn.coupling(a, q);
+        return dyn.inertia(a, q) - b.dot(dyn.mu_inverse() * b);  // S = m - b^T mu^-1 b
+      };
+      const double elastic = std::sqrt(schur(a_pre) / schur(a_post));
+      if (factor > elastic) {
+        factor = elastic;
+        out.law_fallback = true;
+      }
     }
+  } else if (rigid) {
+    rigid_body_impact(dyn, landing_edge, q, theta_dot_minus, q_dot_minus, out.theta_dot, out.q_dot);
   } else {
     single_edge_impact(dyn, landing_edge, q, theta_dot_minus, q_dot_minus, out.theta_dot,
                        out.q_dot);
@@ -151,14 +229,14 @@ ImpactOutcome<Vec> resolve_impact(const Dyn& dyn, int landing_edge, const Vec& q
     out.law_fallback = false;  // no ratio was applied
     out.theta_dot = 0.0;
     out.q_dot = rigid ? q_dot_minus : Vec(dyn.mu_inverse() * p);
-  } else if (factor != 1.0 || rule.law == ImpactLaw::kRestitution) {
+  } else if (factor != 1.0 || ratio) {
     out.theta_dot *= factor;
     if (!rigid) out.q_dot = dyn.mu_inverse() * (p - dyn.coupling(a_post, q) * out.theta_dot);
   }
   const Eigen::Vector2d v_minus = dyn.cg_velocity(a_pre, q, theta_dot_minus, q_dot_minus);
   const Eigen::Vector2d v_plus = dyn.cg_velocity(a_post, q, out.theta_dot, out.q_dot);
   out.impulse = dyn.mass() * (v_plus - v_minus);
-  if ((!rigid && out.both_edges) || (rule.law == ImpactLaw::kPaper && factor == 1.0)) {
+  if ((!rigid && out.both_edges) || (!rigid && !ratio && factor == 1.0)) {
     // a plastic impact loses the kinetic energy of the velocity jump (Carnot): >= 0 by
     // construction, where the difference of the energies can round below zero
     out.energy_loss = dyn.flight_kinetic_energy(q, out.theta_dot - theta_dot_minus,
@@ -168,7 +246,8 @@ ImpactOutcome<Vec> resolve_impact(const Dyn& dyn, int landing_edge, const Vec& q
     out.energy_loss = out.law_fallback  // the elastic ratio: no loss, by construction
                           ? 0.0
                           : before - dyn.kinetic_energy(a_post, q, out.theta_dot, out.q_dot);
-    if (rigid && out.energy_loss < -kImpactEnergyRounding * before) {
+    if (law.on_gain == OnEnergyGain::kPaperLaw &&
+        out.energy_loss < -kImpactEnergyRounding * before) {
       ImpactRule paper = rule;
       paper.law = ImpactLaw::kPaper;
       out = resolve_impact(dyn, landing_edge, q, theta_dot_minus, q_dot_minus, paper,

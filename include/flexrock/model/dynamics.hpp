@@ -449,12 +449,10 @@ class Dynamics {
   ///   A_e nu+ = A_e nu- + (1/h) [w_e x V_b ; psi.V_b],
   /// nu- = (theta_dot, q_dot) before, V_b the tipping point's velocity before (body components).
   /// At theta = 0 with V_b that of a point turning about the other edge this is the paper's map.
-  /// With `rigid_body` the body is rigid during the impact (docs/theory.md, "Impact laws"): the
-  /// modal velocities are continuous, q_dot+ = q_dot-, and only the moment of momentum about the
-  /// tipping point is conserved, m theta_dot+ = r_theta - b.q_dot-.
+  /// (The impact laws' other maps are in contact/impact.hpp, law_corner_impact.)
   void corner_impact(int edge, const Vec& q, double theta_dot_minus, const Vec& q_dot_minus,
-                     const Eigen::Vector2d& v_corner_body, double& theta_dot_plus, Vec& q_dot_plus,
-                     bool rigid_body = false) const {
+                     const Eigen::Vector2d& v_corner_body, double& theta_dot_plus,
+                     Vec& q_dot_plus) const {
     const double a = alpha(edge);
     const double wx = -a + psi_x_.dot(q), wy = 1.0 + psi_y_.dot(q);
     const double m = inertia(a, q);
@@ -462,11 +460,6 @@ class Dynamics {
     // the right-hand side: A_e nu- plus the momenta of the tipping point's motion
     const double r_theta = m * theta_dot_minus + b.dot(q_dot_minus) +
                            (wx * v_corner_body(1) - wy * v_corner_body(0)) / h_;
-    if (rigid_body) {
-      q_dot_plus = q_dot_minus;
-      theta_dot_plus = (r_theta - b.dot(q_dot_minus)) / m;
-      return;
-    }
     const Vec r_q = b * theta_dot_minus + mu_ * q_dot_minus +
                     (psi_x_ * v_corner_body(0) + psi_y_ * v_corner_body(1)) / h_;
     solve_rocking_inertia(m, b, r_theta, r_q, theta_dot_plus, q_dot_plus);
