@@ -68,3 +68,9 @@ if(TARGET flexrock)
     set_tests_properties(cli_study_mpi PROPERTIES LABELS cli TIMEOUT 300)
   endif()
 endif()
+
+# the hand estimates of a qualification against the engine and their closed forms
+flexrock_add_test(flexrock_hand_estimates_tests
+  SOURCES unit/hand_estimates_test.cpp
+  LIBS flexrock::study
+  LABEL unit)
