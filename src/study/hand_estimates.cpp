@@ -33,6 +33,11 @@ double housner_rectangular_min_amplitude(const RockingConstants& c, double g, do
   return g * c.alpha / (-std::expm1(-c.p * t1));
 }
 
+double housner_rectangular_min_duration(const RockingConstants& c, double g, double a) {
+  if (!(a > g * c.alpha)) return std::numeric_limits<double>::infinity();
+  return -std::log1p(-g * c.alpha / a) / c.p;
+}
+
 double housner_critical_velocity(const RockingConstants& c, double mass, double height, double g) {
   // (M h V)^2 / (2 I_O) = M g R (1 - cos alpha)
   const double barrier = mass * g * c.R * (1.0 - std::cos(c.alpha));

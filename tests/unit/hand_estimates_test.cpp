@@ -135,6 +135,7 @@ TEST(HandEstimates, HousnerRectangularPulseIsTheEnginesThresholdToSecondOrderInA
     EXPECT_NEAR(c.p, std::sqrt(3.0 * g / 4.0), 1e-12);  // Housner's p of a block, R = 1 m
     const double t1 = 1.0 / c.p;
     const double hand = housner_rectangular_min_amplitude(c, g, t1);
+    EXPECT_NEAR(housner_rectangular_min_duration(c, g, hand), t1, 1e-12 * t1);  // the inverse
     const double engine = engine_rectangular_threshold(Body(p), t1, 0.9 * hand, 1.2 * hand);
     const double err = std::abs(engine / hand - 1.0);
     EXPECT_LT(err, 0.6 * alpha * alpha) << alpha;

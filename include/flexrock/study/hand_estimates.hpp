@@ -37,6 +37,9 @@ double sliding_threshold(double mu_s, double g);
 /// overturns it, a_min = g alpha / (1 - exp(-p t1)) [m/s^2]. Exact for the linearized equation;
 /// the nonlinear body differs by O(alpha^2) (slender bodies: alpha <~ 0.25).
 double housner_rectangular_min_amplitude(const RockingConstants& c, double g, double t1);
+/// Its inverse: the shortest rectangular pulse of amplitude a [m/s^2] that overturns the body,
+/// t1 = -ln(1 - g alpha / a) / p [s]; +inf when a <= g alpha (no pulse length suffices).
+double housner_rectangular_min_duration(const RockingConstants& c, double g, double a);
 
 /// Housner's energy criterion for an impulsive base velocity change V: the c.g.'s pivot
 /// angular momentum M h V gives the kinetic energy (M h V)^2 / (2 I_O), which overturns the body
