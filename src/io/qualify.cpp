@@ -309,6 +309,9 @@ std::string what(const char* table, const char* key) {
 QualifyFile load_qualify_file(const std::string& path) {
   const toml::table doc = detail::parse_toml(path, "qualification");
   Keys top(path, doc, "");
+  // a misspelt table is named before any table found missing
+  for (const QualifyKey& k : kKeys) top.has(*k.table ? k.table : k.key);
+  top.finish("at the top level (see docs/qualify.md)");
   QualifyFile f;
   f.source = path;
   f.name = top.string_opt("name", "a string").value_or(fs::path(path).stem().string());
@@ -348,7 +351,9 @@ QualifyFile load_qualify_file(const std::string& path) {
       f.friction.clear();
       for (const toml::node& e : *a) {
         const double mu = r->to_number(e, "friction", what("ranges", "friction"), true);
-        if (!(mu > 0.0)) r->expected("friction", "values > 0: " + what("ranges", "friction"));
+        if (!(mu > 0.0))
+          r->fail_at(line_of(e), "friction",
+                     "expected values > 0: " + what("ranges", "friction") + ", got " + num(mu));
         if (std::find(f.friction.begin(), f.friction.end(), mu) != f.friction.end())
           r->fail_at(line_of(e), "friction", "expected distinct values, got " + num(mu) + " twice");
         f.friction.push_back(mu);
@@ -489,12 +494,12 @@ QualifyFile load_qualify_file(const std::string& path) {
           "expected the impulsive contact: with contact_model = \"compliant\" the runs keep no "
           "impulse to estimate the force from (the resolved contact force is in `flexrock run`'s "
           "summary)");
+    c->finish("in [criteria] (see docs/qualify.md)");
     if (!f.criteria.tilt_fraction && !f.criteria.sliding_clearance && !f.criteria.impact_force &&
         !f.criteria.uplift)
       c->fail_at(c->line(), "tilt_fraction",
                  "missing; expected at least one criterion: tilt_fraction, sliding_clearance, "
                  "impact_force, uplift");
-    c->finish("in [criteria] (see docs/qualify.md)");
   }
 
   // the IDA
