@@ -249,6 +249,18 @@ TEST_F(QualifyFiles, TheReportsNumbersAreTheRuns) {
   // the demands CSV: a row a run, the tilt in rad
   EXPECT_EQ(rep.demands_csv.substr(0, rep.demands_csv.find('\n')),
             ",1-ROT-0-1,1-SLD-0-1,1-IMF-0-1,1-UPL-0-1");
+  // the validation checks cited are on the validation page, their agreement quoted as it is
+  std::ifstream vin(std::string(FLEXROCK_SOURCE_DIR) + "/docs/validation.md");
+  const std::string page((std::istreambuf_iterator<char>(vin)), std::istreambuf_iterator<char>());
+  ASSERT_FALSE(j["validation"].empty());
+  for (const Json& v : j["validation"]) {
+    const std::string section =
+        v["section"].get<std::string>().substr(std::string("docs/validation.md, ").size());
+    EXPECT_NE(page.find("# " + section + "\n"), std::string::npos) << section;
+    EXPECT_NE(page.find(v["agreement"].get<std::string>()), std::string::npos) << v["agreement"];
+    EXPECT_TRUE(fs::exists(fs::path(FLEXROCK_SOURCE_DIR) / v["test"].get<std::string>()))
+        << v["test"];
+  }
   // the work CSVs were written and the journals removed
   EXPECT_TRUE(fs::exists(dir_ / "runs" / "design.csv"));
   EXPECT_FALSE(fs::exists(dir_ / "runs" / "design.csv.partial"));
