@@ -99,6 +99,12 @@ def tables(j: dict) -> list:
                 ["design level", level],
                 ["bounding cases x records", f"{len(j['cases'])} x {len(j['records'])}"],
                 [
+                    "median margin to overturning (IDA)",
+                    f"{_fmt(j['ida']['median_margin'])} x design"
+                    if j["ida"]["median_margin"] is not None
+                    else f"above {_fmt(j['ida']['factors'][-1])} x design",
+                ],
+                [
                     "smallest margin to overturning (IDA)",
                     "none overturned within the grid"
                     if mm is None

@@ -936,7 +936,7 @@ QualifyReport QualifySession::finish() {
       bj["margin"] = nullptr;
       bj["safe_margin"] = f.ida_factors.back();
       bj["note"] = "no overturning up to the largest factor: the margin is above it";
-      min_margin = std::min(min_margin, kInf);
+      margins.push_back(kInf);
     } else {
       const double m = b.overturning / s;
       bj["margin"] = m;
@@ -959,13 +959,16 @@ QualifyReport QualifySession::finish() {
   } else {
     idaj["min_margin"] = nullptr;
   }
+  // the median over every case and record, those that never overturned counted above the grid
+  // (null: the median lies above the largest factor)
   std::sort(margins.begin(), margins.end());
-  idaj["overturning_records"] = margins.size();
-  idaj["median_margin"] =
-      margins.empty() ? Json(nullptr)
-      : margins.size() % 2
-          ? Json(margins[margins.size() / 2])
-          : Json(0.5 * (margins[margins.size() / 2 - 1] + margins[margins.size() / 2]));
+  idaj["overturning_curves"] =
+      std::count_if(margins.begin(), margins.end(), [](double v) { return std::isfinite(v); });
+  const double median = margins.empty() ? kInf
+                        : margins.size() % 2
+                            ? margins[margins.size() / 2]
+                            : 0.5 * (margins[margins.size() / 2 - 1] + margins[margins.size() / 2]);
+  idaj["median_margin"] = number(median);
   j["ida"] = idaj;
 
   // hand estimates, per case (the rigid constants of its body) and record
