@@ -214,6 +214,33 @@ def tables(j: dict) -> list:
                 rows,
             )
         )
+        ref = ida.get("refined")
+        if ref:
+            out.append(
+                (
+                    "Margin to overturning refined (bisection and integration 10 times finer)",
+                    ["case", "record", "tolerance", "rtol", "margin", "relative change", "within the coarse bracket"],
+                    [[ref["case"], ref["record"], _fmt(ref["tolerance"]), _fmt(ref["rtol"]), _fmt(ref["margin"]),
+                      _fmt(ref["relative_change"], 2), _fmt(ref["within_coarse_bracket"])]],
+                )
+            )
+    if "fragility" in j:
+        fr = j["fragility"]
+        rows = []
+        for e in fr["per_case"]:
+            if "error" in e:
+                rows.append([_case_name(j, e["case"]), "-", "-", "-", "-", e["error"]])
+            else:
+                rows.append([_case_name(j, e["case"]), _fmt(e["theta"]),
+                             f"[{_fmt(e['theta_lower'])}, {_fmt(e['theta_upper'])}]", _fmt(e["beta"]),
+                             _fmt(e["probability_at_design"], 3), ""])
+        out.append(
+            (
+                f"Fragility of overturning ({fr['method']}; IM: {fr['im']})",
+                ["case", "median theta", "95% bounds", "beta", "P(overturn) at design", "note"],
+                rows,
+            )
+        )
     he = j["hand_estimates"]
     out.append(
         (
@@ -371,14 +398,38 @@ def _demand_figure(plt, j: dict):
     return fig
 
 
+def _fragility_figure(plt, j: dict):
+    fig, ax = plt.subplots(figsize=(7.5, 3.6))
+    fr = j["fragility"]
+    top = max(j["ida"]["factors"]) if j["ida"]["factors"] else 8.0
+    xs = [0.1 * top * (10.0 ** (k / 100.0)) for k in range(0, 201)]
+    for e in fr["per_case"]:
+        if "error" in e:
+            continue
+        ys = [0.5 * math.erfc(-math.log(x / e["theta"]) / (e["beta"] * math.sqrt(2.0))) for x in xs]
+        ax.plot(xs, ys, lw=0.9, color=f"C{e['case'] % 10}", label=_case_name(j, e["case"]))
+    ax.axvline(1.0, color="k", lw=0.8, ls="--")
+    ax.set_xscale("log")
+    ax.set_ylim(0, 1)
+    ax.set_xlabel("multiple of the design level")
+    ax.set_ylabel("P(overturning)")
+    ax.set_title("fragility of overturning per bounding case (lognormal fit to the IDA)")
+    ax.legend(fontsize=6)
+    fig.tight_layout()
+    return fig
+
+
 def figures(j: dict) -> list:
     """(title, matplotlib Figure) of the report."""
     plt = _mpl()
-    return [
+    out = [
         ("Governing time history", _history_figure(plt, j)),
         ("IDA curves", _ida_figure(plt, j)),
         ("Demands against the limits", _demand_figure(plt, j)),
     ]
+    if "fragility" in j:
+        out.append(("Fragility of overturning", _fragility_figure(plt, j)))
+    return out
 
 
 def _png(fig, dpi: int = 110) -> bytes:

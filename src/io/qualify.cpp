@@ -26,7 +26,9 @@
 #include "flexrock/io/case_file.hpp"
 #include "flexrock/io/files.hpp"
 #include "flexrock/sim/solver_keys.hpp"
+#include "flexrock/study/fragility.hpp"
 #include "flexrock/study/hand_estimates.hpp"
+#include "flexrock/study/spectrum.hpp"
 #include "flexrock/study/uncertain.hpp"
 #include "flexrock/version.hpp"
 #include "study_internal.hpp"
@@ -88,6 +90,8 @@ const std::vector<QualifyKey> kKeys = {
     {"ida", "tolerance", "-", "0.01",
      "relative width of the bisection's final bracket, in [1e-6, 0.5]"},
     {"report", "history_dt", "s", "0.01", "spacing of the governing time history, > 0"},
+    {"report", "fragility", "", "false",
+     "fit a lognormal fragility of overturning per case to the IDA's capacities (needs the IDA)"},
     {"solver", "(keys)", "", "",
      "every key of a study's [solver] table (docs/studies.md); overturning at pi/2 by default"},
 };
@@ -520,6 +524,11 @@ QualifyFile load_qualify_file(const std::string& path) {
   }
   if (auto r = top.table_opt("report")) {
     f.history_dt = r->positive_or("history_dt", 0.01, "[s]");
+    f.fragility = r->boolean_or("fragility", false);
+    if (f.fragility && !f.ida)
+      r->fail("fragility",
+              "expected [ida] enabled = true: the fragility is fitted to the IDA's "
+              "capacities");
     r->finish("in [report] (see docs/qualify.md)");
   }
   top.finish("at the top level (see docs/qualify.md)");
@@ -969,7 +978,79 @@ QualifyReport QualifySession::finish() {
                             ? margins[margins.size() / 2]
                             : 0.5 * (margins[margins.size() / 2 - 1] + margins[margins.size() / 2]);
   idaj["median_margin"] = number(median);
+  // the smallest margin again with the bisection and the integration 10 times finer: the margin
+  // is a result only if it stays put
+  if (std::isfinite(min_margin)) {
+    const std::size_t c = min_at / nr, r = min_at % nr;
+    study::RecordSpectrumSpec rs;
+    rs.motion = spec.records[r].motion;
+    const double s = rows[c * nr + r].scale;
+    for (double k : f.ida_factors) rs.scales.push_back(k * s);
+    rs.free_periods = spec.free_periods;
+    rs.bisection_tolerance = f.ida_tolerance / 10.0;
+    rs.solver = case_solver(f, f.cases[c]);
+    rs.solver.rtol /= 10.0;
+    rs.solver.atol /= 10.0;
+    study::RunOptions one;
+    one.threads = 1;
+    const study::SpectrumResult fine =
+        study::compute_record_spectrum(Body(f.cases[c].body), rs, one);
+    const study::OverturnBoundary& b = fine.boundary.at(0);
+    const double m = b.kind == study::OverturnBoundary::Kind::kNone ? kInf : b.overturning / s;
+    const Json& coarse = idaj["per"][min_at];
+    const double safe =
+        coarse["safe_margin"].is_number() ? coarse["safe_margin"].get<double>() : 0.0;
+    idaj["refined"] = {{"case", f.cases[c].name},
+                       {"record", spec.records[r].name},
+                       {"tolerance", rs.bisection_tolerance},
+                       {"rtol", rs.solver.rtol},
+                       {"atol", rs.solver.atol},
+                       {"margin", number(m)},
+                       {"relative_change", number((m - min_margin) / min_margin)},
+                       {"within_coarse_bracket", m >= safe && m <= min_margin}};
+  }
   j["ida"] = idaj;
+  // a lognormal fragility of overturning per case, fitted to the IDA's capacity intervals in
+  // multiples of the design level (Baker 2015, truncated IDA)
+  if (f.fragility) {
+    Json fr = Json::array();
+    for (std::size_t c = 0; c < f.cases.size(); ++c) {
+      std::vector<study::CapacityInterval> caps;
+      for (std::size_t r = 0; r < nr; ++r) {
+        const Json& p = idaj["per"][c * nr + r];
+        const std::string kind = p["kind"].get<std::string>();
+        if (kind == "found") {
+          caps.push_back({p["safe_margin"].get<double>(), p["margin"].get<double>()});
+        } else if (kind == "below_grid") {
+          caps.push_back({0.0, p["margin"].get<double>()});
+        } else {
+          caps.push_back({f.ida_factors.back(), kInf});
+        }
+      }
+      Json e = {{"case", c}};
+      try {
+        const study::FragilityFit fit = study::fit_capacity_intervals(caps);
+        e["theta"] = fit.theta;
+        e["beta"] = fit.beta;
+        e["theta_lower"] = fit.theta_lower;
+        e["theta_upper"] = fit.theta_upper;
+        e["beta_lower"] = fit.beta_lower;
+        e["beta_upper"] = fit.beta_upper;
+        e["confidence"] = fit.confidence;
+        e["records"] = fit.samples;
+        e["probability_at_design"] =
+            0.5 * std::erfc(-std::log(1.0 / fit.theta) / (fit.beta * std::numbers::sqrt2));
+      } catch (const InputError& err) {
+        e["error"] = err.what();  // no finite estimate: said, not guessed
+      }
+      fr.push_back(e);
+    }
+    j["fragility"] = {{"im", "multiple of the design level"},
+                      {"method",
+                       "lognormal by maximum likelihood over the capacity intervals (safe, "
+                       "overturning] of the records (Baker 2015, truncated IDA)"},
+                      {"per_case", fr}};
+  }
 
   // hand estimates, per case (the rigid constants of its body) and record
   Json hand = Json::array();

@@ -69,7 +69,10 @@ class QualifyFiles : public ::testing::Test {
 
   // a rigid block, two records, the criteria: `extra` is put before [design]
   std::string qualification(const std::string& ranges, const std::string& extra = "",
-                            const std::string& body = kRigid) {
+                            const std::string& body = kRigid,
+                            const std::string& ida =
+                                "[ida]\nfactors = [0.5, 1, 2, 4]\ntolerance = "
+                                "0.02\n") {
     return write("q.toml", body + ranges +
                                "[[record]]\nfile = \"rec.txt\"\nformat = \"single_column\"\ndt = "
                                "0.01\nunits = \"g\"\n"
@@ -78,8 +81,8 @@ class QualifyFiles : public ::testing::Test {
                                extra +
                                "[design]\npga = 0.3\nunits = \"g\"\n"
                                "[criteria]\ntilt_fraction = 0.5\nsliding_clearance = 0.05\n"
-                               "impact_force = 1e5\nuplift = 0.05\n"
-                               "[ida]\nfactors = [0.5, 1, 2, 4]\ntolerance = 0.02\n");
+                               "impact_force = 1e5\nuplift = 0.05\n" +
+                               ida);
   }
 
   // the message of the InputError loading `path` throws
@@ -180,7 +183,8 @@ TEST_F(QualifyFiles, CasesAreTheCornersOfTheRanges) {
 
 // the report's numbers against runs made here, independently of the session
 TEST_F(QualifyFiles, TheReportsNumbersAreTheRuns) {
-  const QualifyFile f = load_qualify_file(qualification("[ranges]\nfriction = [0.2, 0.6]\n"));
+  const QualifyFile f = load_qualify_file(
+      qualification("[ranges]\nfriction = [0.2, 0.6]\n", "[report]\nfragility = true\n"));
   QualifySession session(f, (dir_ / "runs").string());
   study::RunOptions o;
   o.threads = 2;
@@ -246,6 +250,32 @@ TEST_F(QualifyFiles, TheReportsNumbersAreTheRuns) {
     }
   }
   EXPECT_GT(found, 0) << "the test needs some IDA curve that overturns";
+  // the smallest margin refined stays in its bracket, within the stated resolution
+  const Json& ref = j["ida"]["refined"];
+  EXPECT_TRUE(ref["within_coarse_bracket"].get<bool>());
+  EXPECT_LE(std::abs(ref["relative_change"].get<double>()), 0.02);
+  // the fragility is the fit of the IDA's capacity intervals
+  for (std::size_t c = 0; c < f.cases.size(); ++c) {
+    std::vector<study::CapacityInterval> caps;
+    for (std::size_t r = 0; r < spec.records.size(); ++r) {
+      const Json& p = j["ida"]["per"][c * spec.records.size() + r];
+      if (p["kind"] == "found") {
+        caps.push_back({p["safe_margin"].get<double>(), p["margin"].get<double>()});
+      } else if (p["kind"] == "below_grid") {
+        caps.push_back({0.0, p["margin"].get<double>()});
+      } else {
+        caps.push_back({4.0, std::numeric_limits<double>::infinity()});
+      }
+    }
+    const Json& e = j["fragility"]["per_case"][c];
+    try {
+      const study::FragilityFit fit = study::fit_capacity_intervals(caps);
+      EXPECT_EQ(e["theta"].get<double>(), fit.theta);
+      EXPECT_EQ(e["beta"].get<double>(), fit.beta);
+    } catch (const InputError& err) {
+      EXPECT_EQ(e["error"].get<std::string>(), err.what());
+    }
+  }
   // the demands CSV: a row a run, the tilt in rad
   EXPECT_EQ(rep.demands_csv.substr(0, rep.demands_csv.find('\n')),
             ",1-ROT-0-1,1-SLD-0-1,1-IMF-0-1,1-UPL-0-1");
@@ -264,6 +294,31 @@ TEST_F(QualifyFiles, TheReportsNumbersAreTheRuns) {
   // the work CSVs were written and the journals removed
   EXPECT_TRUE(fs::exists(dir_ / "runs" / "design.csv"));
   EXPECT_FALSE(fs::exists(dir_ / "runs" / "design.csv.partial"));
+}
+
+TEST_F(QualifyFiles, AFlexibleBodyIsBoundedByItsDampingAndCitesTheFlexibleChecks) {
+  const QualifyFile f = load_qualify_file(qualification("[ranges]\ndamping_ratio = [0.01, 0.05]\n",
+                                                        "", kFlexible, "[ida]\nenabled = false\n"));
+  ASSERT_EQ(f.cases.size(), 2u);
+  EXPECT_EQ(f.cases[0].name, "mu=inf zeta=0.01");
+  for (const QualifyCase& c : f.cases) {
+    const Body b(c.body);
+    for (Eigen::Index i = 0; i < b.damping_ratios().size(); ++i)
+      EXPECT_NEAR(b.damping_ratios()(i), *c.damping, 1e-12);
+  }
+  QualifySession session(f, (dir_ / "runs").string());
+  EXPECT_EQ(session.ida_sessions(), 0u);
+  session.run({});
+  const Json j = Json::parse(session.finish().json);
+  std::ifstream vin(std::string(FLEXROCK_SOURCE_DIR) + "/docs/validation.md");
+  const std::string page((std::istreambuf_iterator<char>(vin)), std::istreambuf_iterator<char>());
+  int flexible = 0;
+  for (const Json& v : j["validation"]) {
+    flexible += v["feature"] == "flexible";
+    EXPECT_NE(page.find(v["agreement"].get<std::string>()), std::string::npos) << v["agreement"];
+  }
+  EXPECT_EQ(flexible, 2);
+  EXPECT_TRUE(j["ida"]["min_margin"].is_null());
 }
 
 TEST_F(QualifyFiles, AStoppedQualificationResumesToTheSameReport) {
