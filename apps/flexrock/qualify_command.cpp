@@ -143,6 +143,7 @@ int run_qualify(const QualifyOptions& o) {
   io::write_atomically(csv, [&](std::ostream& s) { s << rep.demands_csv; });
   fmt::print("{}: {}\n", q.name, rep.pass ? "PASSES every criterion" : "DOES NOT PASS");
   if (!o.quiet) {
+    for (const std::string& line : rep.summary) fmt::print("  {}\n", line);
     fmt::print("time: {:.3g} s\nwrote {}\nwrote {}\n", seconds, json, csv);
   }
   if (o.no_render) return 0;

@@ -863,6 +863,7 @@ QualifyReport QualifySession::finish() {
                        format_number(max_pull, 4) + " N): give friction bounds");
 
   // the criteria: demand per case (largest over the records), the governing case, the ratio
+  std::vector<std::string> summary;
   Json crits = Json::array();
   bool pass = stopped == 0 && over == 0;
   std::map<std::string, std::size_t> governing_row;
@@ -895,6 +896,11 @@ QualifyReport QualifySession::finish() {
     }
     const double ratio = gov_v / *limit;
     const bool ok = ratio <= 1.0;
+    summary.push_back(std::string(k.name) + ": " + format_number(gov_v, 4) + " " + k.unit + " of " +
+                      format_number(*limit, 4) + " (ratio " + format_number(ratio, 3) +
+                      (ok ? ", ok" : ", EXCEEDED") + "), governed by " +
+                      f.cases[rows[gov].body].name + " under " +
+                      spec.records[rows[gov].record].name);
     pass = pass && ok;
     governing_row[k.name] = gov;
     crits.push_back(
@@ -1008,6 +1014,14 @@ QualifyReport QualifySession::finish() {
                        {"margin", number(m)},
                        {"relative_change", number((m - min_margin) / min_margin)},
                        {"within_coarse_bracket", m >= safe && m <= min_margin}};
+  }
+  if (f.ida) {
+    summary.push_back(std::isfinite(min_margin)
+                          ? "margin to overturning: " + format_number(min_margin, 4) +
+                                " x the design level (" + f.cases[min_at / nr].name + " under " +
+                                spec.records[min_at % nr].name + ")"
+                          : "margin to overturning: no overturning up to " +
+                                format_number(f.ida_factors.back(), 4) + " x the design level");
   }
   j["ida"] = idaj;
   // a lognormal fragility of overturning per case, fitted to the IDA's capacity intervals in
@@ -1285,6 +1299,8 @@ QualifyReport QualifySession::finish() {
   rep.json = j.dump(1) + "\n";
   rep.demands_csv = csv.str();
   rep.pass = pass;
+  for (const std::string& w : warnings) summary.push_back("warning: " + w);
+  rep.summary = std::move(summary);
   return rep;
 }
 

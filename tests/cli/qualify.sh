@@ -77,6 +77,31 @@ if [ -z "$render" ]; then
   grep -q CreationDate "$WORK/a/cab.pdf" && fail "the PDF carries a creation date"
 fi
 
+# interrupted by SIGINT once the journal holds runs, then the same command goes on from there
+# to the same report
+"$FLEXROCK" qualify "$WORK/cab.toml" -o "$WORK/i" -j 1 -q --no-render >"$WORK/i.out" 2>&1 &
+pid=$!
+for _ in $(seq 1 400); do
+  [ -s "$WORK/i/cab.runs/design.csv.partial" ] && break
+  sleep 0.01
+done
+kill -INT "$pid" 2>/dev/null || true
+set +e
+wait "$pid"
+irc=$?
+set -e
+if [ "$irc" -eq 1 ]; then
+  grep -q "interrupted: finished runs are kept in" "$WORK/i.out" || fail "interrupt message"
+  [ -e "$WORK/i/cab.qualify.json" ] && fail "an interrupted qualification wrote its report"
+  run "$FLEXROCK" qualify "$WORK/cab.toml" -o "$WORK/i" -j 2 --no-render
+  expect_rc 0 "resume"
+  expect_in "$WORK/out" "resuming:"
+  cmp "$WORK/a/cab.qualify.json" "$WORK/i/cab.qualify.json" || fail "the resumed report differs"
+else
+  [ "$irc" -eq 0 ] || fail "exit code $irc after SIGINT"
+  echo "note: the qualification finished before the interrupt; resume not exercised"
+fi
+
 # bad files: file, line and key, exit 2, nothing written
 sed 's/^tilt_fraction = 0.5/tilt_fraction = 1.5/' "$WORK/cab.toml" >"$WORK/bad.toml"
 run "$FLEXROCK" qualify "$WORK/bad.toml" -o "$WORK/c"

@@ -99,7 +99,8 @@ std::string sha256_hex(std::string_view bytes);
 struct QualifyReport {
   std::string json;
   std::string demands_csv;
-  bool pass = false;  // every criterion met, nothing overturned or stopped
+  bool pass = false;                 // every criterion met, nothing overturned or stopped
+  std::vector<std::string> summary;  // lines for the console: each criterion, the margin, warnings
 };
 
 /// A qualification from its file to its report: the design-level sweep and the IDA spectra as
