@@ -1099,8 +1099,9 @@ QualifyReport QualifySession::finish() {
                 {"pgv_over_housner_velocity", row.pgv / vcrit},
                 {"engine_overturned", study::overturned(s.outcome)},
                 {"housner_pulse_duration_s",
-                 number(std::min(study::housner_rectangular_min_duration(c1, g, row.pga),
-                                 study::housner_rectangular_min_duration(c2, g, row.pga)))}};
+                 // each direction's peak against its edge, as for the uplift
+                 number(std::min(study::housner_rectangular_min_duration(c1, g, a_pos),
+                                 study::housner_rectangular_min_duration(c2, g, a_neg)))}};
       if (std::isfinite(k.friction)) {
         const GroundMotion& m = spec.records[row.record].motion;
         std::vector<double> a = m.horizontal();
@@ -1153,8 +1154,9 @@ QualifyReport QualifySession::finish() {
               "pulses in phase can need less"}},
             {{"name", "Housner rectangular-pulse overturning duration"},
              {"formula",
-              "t_min = -ln(1 - g alpha / a) / p: the shortest pulse of the design PGA a that "
-              "overturns the body (linearized)"},
+              "t_min = -ln(1 - g alpha / a) / p: the shortest rectangular pulse of the design "
+              "motion's peak a that overturns the body (linearized; each direction's peak "
+              "against its edge, the shorter shown)"},
              {"source", "Housner (1963), rectangular pulse; docs/validation.md 1.3"},
              {"validity",
               "rigid slender body (error O(alpha^2), tested), a rectangular pulse; a record's "

@@ -102,6 +102,11 @@ else
   echo "note: the qualification finished before the interrupt; resume not exercised"
 fi
 
+# the shipped example (its 10-record suite from ../shared/data): it loads, runs and passes
+run "$FLEXROCK" qualify "$SRC/examples/qualify/cabinet.toml" -o "$WORK/ex" -j 2 --no-render
+expect_rc 0 "the shipped cabinet example"
+expect_in "$WORK/out" "laboratory cabinet: PASSES every criterion"
+
 # bad files: file, line and key, exit 2, nothing written
 sed 's/^tilt_fraction = 0.5/tilt_fraction = 1.5/' "$WORK/cab.toml" >"$WORK/bad.toml"
 run "$FLEXROCK" qualify "$WORK/bad.toml" -o "$WORK/c"
