@@ -363,6 +363,12 @@ QualifyFile load_qualify_file(const std::string& path) {
         f.friction.push_back(mu);
       }
       given = true;
+      // the bounds replace [solver]'s coefficient: both given, one would be ignored
+      if (std::isfinite(spec.solver.friction_coefficient) ||
+          std::isfinite(spec.solver.kinetic_friction_coefficient))
+        r->fail("friction",
+                "expected no [solver] friction_coefficient or kinetic_friction_coefficient with "
+                "[ranges] friction (the bounds replace them; give the ratio as kinetic_ratio)");
     }
     f.kinetic_ratio = r->number_or("kinetic_ratio", 1.0, what("ranges", "kinetic_ratio"));
     if (!(f.kinetic_ratio > 0.0 && f.kinetic_ratio <= 1.0))

@@ -125,6 +125,8 @@ TEST_F(QualifyFiles, BadFilesAreRefusedWithFileLineAndKey) {
       {"[ranges]\nfricton = [0.3]\n", "", kRigid,
        "q.toml:8: key 'ranges.fricton': unknown key in [ranges] (see docs/qualify.md) (did you "
        "mean 'ranges.friction'?)"},
+      {"[ranges]\nfriction = [0.3]\n", "[solver]\nfriction_coefficient = 0.5\n", kRigid,
+       "q.toml:8: key 'ranges.friction': expected no [solver] friction_coefficient"},
       {"", "[solver]\ncontact_model = \"compliant\"\ncontact_stiffness = 1e8\n", kRigid,
        "key 'criteria.impact_force': expected the impulsive contact"},
   };
