@@ -374,7 +374,8 @@ def _ida_figure(plt, j: dict):
     ax.set_xlabel("multiple of the design level")
     ax.set_ylabel("max theta / overturning angle (1: overturned)")
     ax.set_title(f"IDA curves: {ncase} cases x {len(j['records'])} records (|: bisected margin)")
-    ax.legend(fontsize=6, loc="lower right")
+    if ax.get_legend_handles_labels()[0]:
+        ax.legend(fontsize=6, loc="lower right")
     fig.tight_layout()
     return fig
 
@@ -414,7 +415,11 @@ def _fragility_figure(plt, j: dict):
     ax.set_xlabel("multiple of the design level")
     ax.set_ylabel("P(overturning)")
     ax.set_title("fragility of overturning per bounding case (lognormal fit to the IDA)")
-    ax.legend(fontsize=6)
+    if ax.get_legend_handles_labels()[0]:
+        ax.legend(fontsize=6)
+    else:
+        ax.text(0.5, 0.5, "no finite estimate for any case (see the fragility table)",
+                transform=ax.transAxes, ha="center")
     fig.tight_layout()
     return fig
 
