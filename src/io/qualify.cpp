@@ -90,6 +90,10 @@ const std::vector<QualifyKey> kKeys = {
     {"ida", "tolerance", "-", "0.01",
      "relative width of the bisection's final bracket, in [1e-6, 0.5]"},
     {"report", "history_dt", "s", "0.01", "spacing of the governing time history, > 0"},
+    {"report", "contact_stiffness", "N/m", "none",
+     "with it, the impact force's governing run is run again on the compliant contact (a "
+     "spring-dashpot of this stiffness at each tipping point, critically damped) for the "
+     "resolved contact force"},
     {"report", "fragility", "", "false",
      "fit a lognormal fragility of overturning per case to the IDA's capacities (needs the IDA)"},
     {"solver", "(keys)", "", "",
@@ -217,6 +221,20 @@ BodyParameters apply_one(study::UncertainKind kind, double value, const BodyPara
 }
 
 bool rigid(const BodyParameters& b) { return b.mu.size() == 0; }
+
+// the compliant contact of stiffness k [N/m] in place of the impulsive floor: the impact law's
+// own keys back at their defaults (the springs resolve each impact)
+SimulationOptions compliant_options(SimulationOptions o, double k) {
+  const SimulationOptions d;
+  o.contact_model = ContactModel::kCompliant;
+  o.contact_force_law = ContactForceLaw::kLinear;
+  o.contact_stiffness = k;
+  o.contact_exponent = 1.0;
+  o.impact_law = d.impact_law;
+  o.restitution_factor = d.restitution_factor;
+  o.impact_duration = d.impact_duration;
+  return o;
+}
 
 }  // namespace
 
@@ -530,6 +548,18 @@ QualifyFile load_qualify_file(const std::string& path) {
   }
   if (auto r = top.table_opt("report")) {
     f.history_dt = r->positive_or("history_dt", 0.01, "[s]");
+    if (r->has("contact_stiffness")) {
+      SimulationOptions c =
+          compliant_options(spec.solver, r->positive("contact_stiffness", "[N/m]"));
+      try {
+        validate_options(Body(f.body), {}, c);
+      } catch (const InputError& e) {
+        r->fail("contact_stiffness", std::string("expected a stiffness the compliant contact "
+                                                 "takes: ") +
+                                         e.what());
+      }
+      f.contact_stiffness = c.contact_stiffness;
+    }
     f.fragility = r->boolean_or("fragility", false);
     if (f.fragility && !f.ida)
       r->fail("fragility",
@@ -1254,6 +1284,15 @@ QualifyReport QualifySession::finish() {
     SimulationOptions o5 = base;
     o5.impact_duration = 2.0 * base.impact_duration;
     variant("impact_duration x 2", o5);
+    if (f.contact_stiffness > 0.0) {
+      // the resolved peak normal force of a tipping point on the springs
+      SimulationOptions oc = compliant_options(base, f.contact_stiffness);
+      SimulationResult res;
+      rerun(f, row.body, row, oc, &res);
+      var.push_back({{"variant", "compliant contact, k = " + format_number(f.contact_stiffness, 4) +
+                                     " N/m (resolved)"},
+                     {"impact_force_N", number(res.extremes.max_contact_force)}});
+    }
     j["impact_sensitivity"] = {{"case", f.cases[row.body].name},
                                {"record", spec.records[row.record].name},
                                {"contact_model", to_string(base.contact_model)},

@@ -127,6 +127,8 @@ TEST_F(QualifyFiles, BadFilesAreRefusedWithFileLineAndKey) {
        "mean 'ranges.friction'?)"},
       {"[ranges]\nfriction = [0.3]\n", "[solver]\nfriction_coefficient = 0.5\n", kRigid,
        "q.toml:8: key 'ranges.friction': expected no [solver] friction_coefficient"},
+      {"", "[report]\ncontact_stiffness = 1e-3\n", kRigid,
+       "key 'report.contact_stiffness': expected a stiffness the compliant contact takes"},
       {"", "[solver]\ncontact_model = \"compliant\"\ncontact_stiffness = 1e8\n", kRigid,
        "key 'criteria.impact_force': expected the impulsive contact"},
   };
@@ -185,8 +187,9 @@ TEST_F(QualifyFiles, CasesAreTheCornersOfTheRanges) {
 
 // the report's numbers against runs made here, independently of the session
 TEST_F(QualifyFiles, TheReportsNumbersAreTheRuns) {
-  const QualifyFile f = load_qualify_file(
-      qualification("[ranges]\nfriction = [0.2, 0.6]\n", "[report]\nfragility = true\n"));
+  const QualifyFile f =
+      load_qualify_file(qualification("[ranges]\nfriction = [0.2, 0.6]\n",
+                                      "[report]\nfragility = true\ncontact_stiffness = 1e8\n"));
   QualifySession session(f, (dir_ / "runs").string());
   study::RunOptions o;
   o.threads = 2;
@@ -293,6 +296,14 @@ TEST_F(QualifyFiles, TheReportsNumbersAreTheRuns) {
     EXPECT_TRUE(fs::exists(fs::path(FLEXROCK_SOURCE_DIR) / v["test"].get<std::string>()))
         << v["test"];
   }
+  // the impact force's sensitivity: the estimate scales as 1 / impact_duration, and the
+  // compliant contact's resolved force is there
+  const Json& var = j["impact_sensitivity"]["variants"];
+  ASSERT_EQ(var.size(), 6u);
+  const double as_given = var[0]["impact_force_N"].get<double>();
+  EXPECT_DOUBLE_EQ(var[3]["impact_force_N"].get<double>(), 2.0 * as_given);
+  EXPECT_DOUBLE_EQ(var[4]["impact_force_N"].get<double>(), 0.5 * as_given);
+  EXPECT_GT(var[5]["impact_force_N"].get<double>(), 0.0);
   // the work CSVs were written and the journals removed
   EXPECT_TRUE(fs::exists(dir_ / "runs" / "design.csv"));
   EXPECT_FALSE(fs::exists(dir_ / "runs" / "design.csv.partial"));

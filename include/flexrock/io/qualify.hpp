@@ -84,6 +84,7 @@ struct QualifyFile {
   double ida_tolerance = 0.01;           // relative width of the bisection's final bracket
   double history_dt = 0.01;              // [s] the governing time history's spacing
   bool fragility = false;                // fit a fragility of overturning to the IDA
+  double contact_stiffness = 0.0;        // [N/m] > 0: the impact force on the compliant contact too
   std::vector<std::string> input_files;  // every file read
   std::vector<std::string> input_roles;  // what each is ("qualification", "body", "record")
   std::uint64_t hash = 0;                // FNV-1a of the files and of the cases
