@@ -429,10 +429,8 @@ QualifyFile load_qualify_file(const std::string& path) {
   }
   for (Keys& r : record_tables) {
     study::SweepRecord sr;
-    const std::size_t before = f.input_files.size();
     const Record rec = read_record(r, sr.name, &h, f.input_files);
     f.input_roles.resize(f.input_files.size(), "record");
-    (void)before;
     check_name(r, "name", sr.name);
     if (!names.insert(sr.name).second)
       r.fail("name", "expected a unique record name, got \"" + sr.name + "\" twice");
@@ -718,7 +716,7 @@ namespace {
 
 // the report's numbers, from the rows and spectra
 
-Json body_json(const QualifyFile& f, const BodyParameters& p) {
+Json body_json(const BodyParameters& p) {
   const Body body(p);
   Json j;
   j["mass_kg"] = p.mass;
@@ -741,7 +739,6 @@ Json body_json(const QualifyFile& f, const BodyParameters& p) {
   }
   j["natural_frequencies_hz"] = fr;
   j["damping_ratios"] = zr;
-  (void)f;
   return j;
 }
 
@@ -793,7 +790,7 @@ QualifyReport QualifySession::finish() {
                       {"sha256", sha256_hex(bytes)}});
   }
   j["inputs"] = inputs;
-  Json body = body_json(f, f.body);
+  Json body = body_json(f.body);
   body["type"] = f.body_type;
   body["source"] = f.body_source;
   j["body"] = body;
@@ -851,7 +848,7 @@ QualifyReport QualifySession::finish() {
                {"cg_height_factor", k.cg_height_factor},
                {"cg_offset_m", k.cg_offset},
                {"damping_ratio", k.damping ? Json(*k.damping) : Json(nullptr)}};
-    cj["body"] = body_json(f, k.body);
+    cj["body"] = body_json(k.body);
     cases.push_back(cj);
   }
   j["cases"] = cases;
