@@ -490,7 +490,7 @@ def _wrap(text: str, width: int) -> list:
     return textwrap.wrap(text, width) or [""]
 
 
-def _text_pages(plt, j: dict) -> list:
+def _text_pages(plt, j: dict, first: int = 1) -> list:
     """The tables as A4 pages of monospaced text, as many as they need."""
     lines = [f"Qualification: {j['qualification']['name']}", ""]
     for title, header, rows in tables(j):
@@ -504,15 +504,44 @@ def _text_pages(plt, j: dict) -> list:
     for k in range(0, len(lines), per_page):
         fig = plt.figure(figsize=_PAGE)
         fig.text(0.05, 0.97, "\n".join(lines[k : k + per_page]), family="monospace", fontsize=5.6, va="top")
-        fig.text(0.5, 0.02, f"page {len(pages) + 1}", ha="center", fontsize=6)
+        fig.text(0.5, 0.02, f"page {len(pages) + first}", ha="center", fontsize=6)
         pages.append(fig)
     return pages
 
 
+def _cover(plt, j: dict):
+    """Page 1: the verdict, the summary and the criteria, and the demands against the limits."""
+    page = plt.figure(figsize=_PAGE)
+    page.text(0.05, 0.965, f"Qualification: {j['qualification']['name']}", fontsize=14, va="top")
+    ok = j["acceptance"]["pass"]
+    page.text(0.05, 0.93, "PASSES every criterion" if ok else "DOES NOT PASS", fontsize=12,
+              va="top", color="#060" if ok else "#a00", weight="bold")
+    lines = []
+    for title, header, rows in tables(j)[:2]:
+        lines += _wrap(title, 100) + ["-" * min(100, len(title))]
+        for r in rows:
+            cells = [f"{h}: {c}" for h, c in zip(header, r)] if len(header) > 2 else [f"{r[0]}: {r[1]}"]
+            lines += _wrap("  " + " | ".join(str(c) for c in cells), 105)
+        lines.append("")
+    page.text(0.05, 0.9, "\n".join(lines), family="monospace", fontsize=6.2, va="top")
+    import matplotlib.image as mpimg
+
+    for draw, box in ((_demand_figure, [0.05, 0.38, 0.9, 0.32]), (_ida_figure, [0.05, 0.04, 0.9, 0.34])):
+        fig = draw(plt, j)
+        buf = io.BytesIO(_png(fig, dpi=150))
+        plt.close(fig)
+        ax = page.add_axes(box)
+        ax.imshow(mpimg.imread(buf, format="png"))
+        ax.axis("off")
+    page.text(0.5, 0.02, "page 1", ha="center", fontsize=6)
+    return page
+
+
 def pdf_pages(j: dict) -> list:
-    """The PDF's pages as figures: the tables, then one figure a page."""
+    """The PDF's pages as figures: a cover (verdict, criteria, demands), the tables, then one
+    figure a page."""
     plt = _mpl()
-    pages = _text_pages(plt, j)
+    pages = [_cover(plt, j)] + _text_pages(plt, j, first=2)
     for title, fig in figures(j):
         page = plt.figure(figsize=_PAGE)
         page.text(0.5, 0.97, title, ha="center", va="top", fontsize=11)
