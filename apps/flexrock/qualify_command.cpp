@@ -40,6 +40,21 @@ extern "C" void on_qualify_signal(int sig) {
   std::signal(sig, SIG_DFL);
 }
 
+// the first SIGINT/SIGTERM asks the runs to stop (finished ones are journaled), from before the
+// journals exist until the runs are over; a second one ends the process the default way
+struct StopOnSignal {
+  StopOnSignal() {
+    g_stop.store(false);
+    std::signal(SIGINT, on_qualify_signal);
+    std::signal(SIGTERM, on_qualify_signal);
+  }
+  ~StopOnSignal() { restore(); }
+  void restore() {
+    std::signal(SIGINT, SIG_DFL);
+    std::signal(SIGTERM, SIG_DFL);
+  }
+};
+
 // python3 -m flexrock.report JSON --html H --pdf P; its exit code
 int render(const std::string& json, const std::string& html, const std::string& pdf) {
   const char* env_python = std::getenv("FLEXROCK_PYTHON");
@@ -109,6 +124,7 @@ int run_qualify(const QualifyOptions& o) {
   for (const std::string& f : {json, csv, html, pdf}) outputs.push_back({"report output", f});
   io::check_distinct_files(inputs, outputs);
 
+  StopOnSignal signals;
   io::QualifySession session(std::move(file), work);
   const io::QualifyFile& q = session.file();
   if (!o.quiet) {
@@ -119,16 +135,12 @@ int run_qualify(const QualifyOptions& o) {
     if (session.resumed() > 0)
       fmt::print("resuming: {} runs and cells already in {}\n", session.resumed(), work);
   }
-  g_stop.store(false);
-  std::signal(SIGINT, on_qualify_signal);
-  std::signal(SIGTERM, on_qualify_signal);
   study::RunOptions options;
   options.threads = o.threads;
   options.cancel = &g_stop;
   const auto start = std::chrono::steady_clock::now();
   session.run(options);
-  std::signal(SIGINT, SIG_DFL);
-  std::signal(SIGTERM, SIG_DFL);
+  signals.restore();
   if (g_stop.load()) {
     fmt::print(stderr,
                "flexrock: error: interrupted: finished runs are kept in {}; run the same command "

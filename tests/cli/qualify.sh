@@ -77,12 +77,14 @@ if [ -z "$render" ]; then
   grep -q CreationDate "$WORK/a/cab.pdf" && fail "the PDF carries a creation date"
 fi
 
-# interrupted by SIGINT once the journal holds runs, then the same command goes on from there
+# interrupted by SIGINT once the journal holds a run, then the same command goes on from there
 # to the same report
 "$FLEXROCK" qualify "$WORK/cab.toml" -o "$WORK/i" -j 1 -q --no-render >"$WORK/i.out" 2>&1 &
 pid=$!
 for _ in $(seq 1 400); do
-  [ -s "$WORK/i/cab.runs/design.csv.partial" ] && break
+  # the journal's header and at least one finished run
+  [ -f "$WORK/i/cab.runs/design.csv.partial" ] &&
+    [ "$(wc -l <"$WORK/i/cab.runs/design.csv.partial")" -ge 2 ] && break
   sleep 0.01
 done
 kill -INT "$pid" 2>/dev/null || true
