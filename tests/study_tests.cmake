@@ -68,3 +68,27 @@ if(TARGET flexrock)
     set_tests_properties(cli_study_mpi PROPERTIES LABELS cli TIMEOUT 300)
   endif()
 endif()
+
+# the hand estimates of a qualification against the engine and their closed forms
+flexrock_add_test(flexrock_hand_estimates_tests
+  SOURCES unit/hand_estimates_test.cpp
+  LIBS flexrock::study
+  LABEL unit)
+
+# qualifications: files refused with file, line and key, the report's numbers against the runs,
+# a stopped qualification resumed
+flexrock_add_test(flexrock_qualify_tests
+  SOURCES unit/qualify_test.cpp
+  LIBS flexrock::study flexrock::io
+  LABEL unit)
+if(TARGET flexrock)
+  # flexrock qualify on the shipped cabinet (small suite): verdict, hashes, same bytes again,
+  # bad files; with the Python package, the HTML and PDF too
+  add_test(NAME cli_qualify
+           COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/cli/qualify.sh $<TARGET_FILE:flexrock>
+                   ${PROJECT_SOURCE_DIR})
+  set_tests_properties(cli_qualify PROPERTIES LABELS cli TIMEOUT 300)
+  if(FLEXROCK_BUILD_PYTHON)
+    set_tests_properties(cli_qualify PROPERTIES ENVIRONMENT "FLEXROCK_TEST_PLOT=1")
+  endif()
+endif()

@@ -24,12 +24,14 @@
 #include "flexrock/core/error.hpp"
 #include "flexrock/io/case_file.hpp"
 #include "flexrock/io/outputs.hpp"
+#include "flexrock/io/qualify.hpp"
 #include "flexrock/io/study_files.hpp"
 #include "flexrock/sim/simulate.hpp"
 #include "flexrock/sim/step_cost.hpp"
 #include "flexrock/version.hpp"
 #include "plot_command.hpp"
 #include "progress.hpp"
+#include "qualify_command.hpp"
 #include "study_commands.hpp"
 
 namespace {
@@ -602,6 +604,9 @@ int main(int argc, char** argv) {
 
   flexrock::cli::StudyCommands studies(app);  // spectrum, sweep, fragility
 
+  flexrock::cli::QualifyOptions qualify_options;
+  CLI::App* qualify = flexrock::cli::add_qualify_command(app, qualify_options);
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -616,14 +621,15 @@ int main(int argc, char** argv) {
     if (*check) return cmd_check(check_files, quiet);
     if (*params) return cmd_params(params_file);
     if (*keys) {
-      fmt::print("{}{}{}{}{}{}{}", io::body_key_reference(), io::pulse_key_reference(),
+      fmt::print("{}{}{}{}{}{}{}{}", io::body_key_reference(), io::pulse_key_reference(),
                  io::solver_key_reference(), io::time_history_column_reference(),
                  io::event_column_reference(), io::study_column_reference(),
-                 cli::fragility_curve_column_reference());
+                 cli::fragility_curve_column_reference(), io::qualify_key_reference());
       return 0;
     }
     if (studies.selected()) return studies.run();
     if (*plot) return flexrock::cli::run_plot(plot_options);
+    if (*qualify) return flexrock::cli::run_qualify(qualify_options);
   } catch (const InputError& e) {
     return error(e.what(), kExitBadInput);
   } catch (const std::bad_alloc&) {

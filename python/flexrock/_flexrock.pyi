@@ -861,6 +861,25 @@ class PulseKind:
     @property
     def spectrum(self) -> bool: ...
 
+class QualifySession:
+    """A qualification from its file to
+    its report (flexrock qualify): the design-level runs and the IDA as journaled study sessions in
+    `work_dir`, resumed from there after an interruption.
+    """
+    def __init__(self, path: str, work_dir: str) -> None: ...
+    @property
+    def design_runs(self) -> int: ...
+    def finish(self) -> tuple:
+        """The report: (JSON text, pelicun demand CSV text, passes)."""
+    @property
+    def ida_sessions(self) -> int: ...
+    @property
+    def resumed(self) -> int: ...
+    def run(self, threads: int = ...) -> None:
+        """Runs what is left (the GIL is released); Ctrl-C stops it between runs and raises
+        KeyboardInterrupt, every finished run journaled.
+        """
+
 class Record:
     """An acceleration record, values in the file's units."""
     def __repr__(self) -> str: ...
@@ -2022,6 +2041,12 @@ def measure_request(text: str) -> MeasureRequest:
     MeasureRequest
     """
 
+def newmark_sliding(time: list[float], acceleration: list[float], mu_s: float, mu_k: float, g: float = ...) -> dict:
+    """Newmark's two-way rigid sliding block, exact for the piecewise-linear acceleration
+    [m/s^2] at the times [s] (two equal times make a jump); returns the peak and final offset [m],
+    the time sliding [s] and the slips.
+    """
+
 def one_sine_pulse(a_p: float, omega_p: float, duration: float, component: Component = ...) -> GroundMotion:
     """One full sine cycle a_p sin(omega_p t).
 
@@ -2097,6 +2122,9 @@ def pulse_motion(type: str, a_p: float, omega_p: float, duration: float) -> Grou
     -------
     GroundMotion
     """
+
+def qualify_key_reference() -> str:
+    """The key reference of qualification files (docs/qualify.md), as Markdown."""
 
 def read_at2(path: str) -> Record:
     """Reads a PEER NGA .AT2 record.
@@ -2259,6 +2287,9 @@ def run_sweep(spec: SweepSpec, indices: list[int] = ..., threads: int = ...) -> 
     list of SweepRow
         In index order.
     """
+
+def sha256_hex(data: str) -> str:
+    """SHA-256 of bytes as 64 hex digits."""
 
 def simulate(body: Body, motion: GroundMotion, initial: InitialState = ..., options: SimulationOptions = ...) -> SimulationResult:
     """Simulates a body on a base moving with a ground motion.

@@ -715,12 +715,60 @@ def fragility_from_sweep(
     return [(s.data(0, k), s.fit(0, k)) for k in range(s.bodies)]
 
 
+def qualify(path, output_dir=None, *, threads: int = 0, render: bool = True) -> dict:
+    """Qualifies an unanchored body, as ``flexrock qualify PATH -o OUTPUT_DIR`` does, through the
+    same session (docs/qualify.md): the bounding cases x records at the design level and the IDA
+    journaled in ``<stem>.runs/`` (an interrupted qualification goes on from there), then the
+    report's JSON and pelicun demand CSV, and with ``render`` its HTML and PDF. The files have the
+    same bytes as the command line's.
+
+    Parameters
+    ----------
+    path : str or os.PathLike
+        Qualification file (TOML).
+    output_dir : str or os.PathLike, optional
+        Where the report goes (default: the working directory).
+    threads : int
+        0: every core. The GIL is released while the runs go; Ctrl-C raises KeyboardInterrupt.
+    render : bool
+        Also the HTML and PDF (needs matplotlib).
+
+    Returns
+    -------
+    dict
+        ``report`` (the JSON as a dict), ``pass`` (bool) and ``files`` (the paths written, by
+        kind: json, csv, html, pdf).
+    """
+    import json
+
+    from . import report as _report
+
+    path = os.fspath(path)
+    out = os.fspath(output_dir) if output_dir is not None else "."
+    stem = os.path.splitext(os.path.basename(path))[0]
+    files = {k: os.path.join(out, stem + suffix) for k, suffix in
+             (("json", ".qualify.json"), ("csv", ".demands.csv"), ("html", ".html"), ("pdf", ".pdf"))}
+    session = _flexrock.QualifySession(path, os.path.join(out, stem + ".runs"))
+    session.run(threads)
+    text, csv_text, passes = session.finish()
+    _report._write(files["json"], text)
+    _report._write(files["csv"], csv_text)
+    if render:
+        _report.render(files["json"], files["html"], files["pdf"])
+    else:
+        del files["html"], files["pdf"]
+    return {"report": json.loads(text), "pass": bool(passes), "files": files}
+
+
 _NOT_API = ("annotations", "os", "Iterable", "Mapping", "Optional", "Sequence", "Tuple", "Union")
 __all__ = [n for n in dir() if not n.startswith("_") and n not in _NOT_API]
 __all__ += ["FragilityQuery", "FragilityData", "read_csv_table", "fragility_data",
             "FragilitySession", "FragilityOutcome", "FragilityAnalysis", "DamageState",
             "damage_state", "fragility_measure", "FragilityMeasure", "FragilityMeasureKind",
-            "FragilityOrderNote"]
+            "FragilityOrderNote", "QualifySession", "qualify_key_reference", "newmark_sliding"]
+QualifySession = _flexrock.QualifySession
+qualify_key_reference = _flexrock.qualify_key_reference
+newmark_sliding = _flexrock.newmark_sliding
 read_csv_table = _flexrock.read_csv_table
 fragility_data = _flexrock.fragility_data
 FragilitySession = _flexrock.FragilitySession

@@ -22,9 +22,11 @@
 #include "flexrock/core/error.hpp"
 #include "flexrock/excitation/intensity.hpp"
 #include "flexrock/io/fragility_session.hpp"
+#include "flexrock/io/qualify.hpp"
 #include "flexrock/io/study_files.hpp"
 #include "flexrock/io/study_session.hpp"
 #include "flexrock/study/fragility.hpp"
+#include "flexrock/study/hand_estimates.hpp"
 #include "flexrock/study/outcome.hpp"
 #include "flexrock/study/parallel.hpp"
 #include "flexrock/study/spectrum.hpp"
@@ -1211,6 +1213,56 @@ fit : FragilityFit
 Returns
 -------
 str)doc");
+
+  // qualification (docs/qualify.md): the session; flexrock.qualify() writes and renders
+  py::class_<io::QualifySession>(m, "QualifySession", R"doc(A qualification from its file to
+its report (flexrock qualify): the design-level runs and the IDA as journaled study sessions in
+`work_dir`, resumed from there after an interruption.)doc")
+      .def(py::init([](const std::string& path, const std::string& work_dir) {
+             return std::make_unique<io::QualifySession>(io::load_qualify_file(path), work_dir);
+           }),
+           py::arg("path"), py::arg("work_dir"))
+      .def_property_readonly("design_runs", &io::QualifySession::design_runs)
+      .def_property_readonly("ida_sessions", &io::QualifySession::ida_sessions)
+      .def_property_readonly("resumed", &io::QualifySession::resumed)
+      .def(
+          "run",
+          [](io::QualifySession& s, int threads) {
+            interruptible(threads, [&](const study::RunOptions& o) { s.run(o); });
+          },
+          py::arg("threads") = 0,
+          R"doc(Runs what is left (the GIL is released); Ctrl-C stops it between runs and raises
+KeyboardInterrupt, every finished run journaled.)doc")
+      .def(
+          "finish",
+          [](io::QualifySession& s) {
+            io::QualifyReport r;
+            {
+              py::gil_scoped_release nogil;
+              r = s.finish();
+            }
+            return py::make_tuple(r.json, r.demands_csv, r.pass);
+          },
+          R"doc(The report: (JSON text, pelicun demand CSV text, passes).)doc");
+  m.def("qualify_key_reference", &io::qualify_key_reference,
+        R"doc(The key reference of qualification files (docs/qualify.md), as Markdown.)doc");
+  m.def(
+      "sha256_hex", [](const std::string& b) { return io::sha256_hex(b); }, py::arg("data"),
+      R"doc(SHA-256 of bytes as 64 hex digits.)doc");
+  m.def(
+      "newmark_sliding",
+      [](const std::vector<double>& t, const std::vector<double>& a, double mu_s, double mu_k,
+         double g) {
+        const study::NewmarkResult r = study::newmark_sliding(t, a, mu_s, mu_k, g);
+        return py::dict(py::arg("max_offset_m") = r.max_offset,
+                        py::arg("final_offset_m") = r.final_offset,
+                        py::arg("sliding_time_s") = r.sliding_time, py::arg("slips") = r.slips);
+      },
+      py::arg("time"), py::arg("acceleration"), py::arg("mu_s"), py::arg("mu_k"),
+      py::arg("g") = 9.80665,
+      R"doc(Newmark's two-way rigid sliding block, exact for the piecewise-linear acceleration
+[m/s^2] at the times [s] (two equal times make a jump); returns the peak and final offset [m],
+the time sliding [s] and the slips.)doc");
 }
 
 }  // namespace flexrock::python

@@ -18,7 +18,7 @@ expect_in "$WORK/out" "| \`log_likelihood\` | - |"
 
 # the lines from each begin marker to its end marker, in the docs
 sed -n '/^<!-- begin: written by `flexrock keys --markdown`/,/^<!-- end: written by `flexrock keys --markdown`/p' \
-  "$SRC/docs/case-file.md" "$SRC/docs/studies.md" >"$WORK/docs"
+  "$SRC/docs/case-file.md" "$SRC/docs/studies.md" "$SRC/docs/qualify.md" >"$WORK/docs"
 [ -s "$WORK/docs" ] || fail "no generated reference in docs/case-file.md, docs/studies.md (begin/end markers)"
 if ! diff -u "$WORK/docs" "$WORK/out" >"$WORK/diff"; then
   cat "$WORK/diff" >&2
