@@ -41,7 +41,8 @@ CLI::App* add_plot_command(CLI::App& app, PlotOptions& options) {
   plot->add_option("--im", options.im,
                    "intensity measure of a sweep's fragility: pga (m/s^2), pga_g (default), pgv "
                    "(m/s), scale, requested_level, or one the sweep wrote (pgd, arias, cav, "
-                   "d5_95, pgv_over_pga, sa:T[:zeta]), as flexrock fragility --im");
+                   "d5_95, pgv_over_pga, sa:T[:zeta]), as flexrock fragility --im; a fit or "
+                   "curve CSV records its own, which labels the axis");
   plot->add_option("--dpi", options.dpi, "PNG resolution")->check(CLI::Range(10, 1200));
   return plot;
 }
@@ -67,8 +68,11 @@ int run_plot(const PlotOptions& options) {
   }
   std::vector<std::string> args = {
       python,   "-m",         "flexrock.plot", options.file,
-      "--kind", options.kind, "--dpi",         std::to_string(options.dpi),
-      "--im",   options.im};
+      "--kind", options.kind, "--dpi",         std::to_string(options.dpi)};
+  if (!options.im.empty()) {
+    args.push_back("--im");
+    args.push_back(options.im);
+  }
   if (!options.output.empty()) {
     args.push_back("--output");
     args.push_back(options.output);

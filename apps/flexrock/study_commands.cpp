@@ -444,6 +444,10 @@ const CurveColumn kCurveColumns[] = {
        study::fragility_band(f, x, l, u);
        return fmt::format("{}", u);
      }},
+    {"im_name", "-", "the intensity measure of `im`, as `--im` names it",
+     [](const io::FragilityData& d, const study::FragilityFit&, double) { return d.im_name; }},
+    {"im_unit", "-", "the unit of `im`",
+     [](const io::FragilityData& d, const study::FragilityFit&, double) { return d.im_unit; }},
 };
 
 }  // namespace

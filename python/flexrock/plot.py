@@ -65,8 +65,9 @@ def main(argv=None) -> int:
     )
     parser.add_argument(
         "--im",
-        default="pga_g",
-        help="intensity measure of a sweep's fragility (default pga_g): as flexrock fragility --im",
+        default=None,
+        help="intensity measure of a sweep's fragility (default pga_g): as flexrock fragility --im; "
+        "a fit or curve CSV of flexrock fragility records its own",
     )
     parser.add_argument("--dpi", type=int, default=110, help="PNG resolution (default 110)")
     args = parser.parse_args(argv)

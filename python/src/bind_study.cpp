@@ -1066,7 +1066,10 @@ CsvTable)doc");
       .def_readonly("im", &io::FragilityData::im)
       .def_readonly("failed", &io::FragilityData::failed)
       .def_readonly("excluded", &io::FragilityData::excluded)
-      .def_readonly("record", &io::FragilityData::record);
+      .def_readonly("record", &io::FragilityData::record)
+      .def_readonly("im_name", &io::FragilityData::im_name,
+                    "the intensity measure, as --im names it")
+      .def_readonly("im_unit", &io::FragilityData::im_unit, "its unit");
   m.def("fragility_data",
         py::overload_cast<const io::CsvTable&, const io::FragilityQuery&>(&io::fragility_data),
         py::arg("table"), py::arg("query"),
