@@ -14,6 +14,8 @@ struct PlotOptions {
   std::string kind = "auto";  // auto, response, loop, spectrum, fragility
   std::string im;             // intensity measure of a sweep's fragility (empty: pga_g, or
                               // the one a fit or curve CSV records)
+  std::string body;           // a fragility's body only (empty: each)
+  std::string state;          // a fragility's damage state only (empty: each, or overturning)
   int dpi = 110;              // [1/inch] PNG resolution
 };
 

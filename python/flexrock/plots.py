@@ -600,14 +600,18 @@ def _observed(im, failed, groups=None):
     return np.array([o[0] for o in out]), np.array([o[1] for o in out]), np.array([o[2] for o in out])
 
 
-def _fragility_sources(source, im, body):
+def _fragility_sources(source, im, body, state=None):
     # ([(label, fit or None, im values, failed flags, group keys, curve or None, theta, beta)],
     #  (measure name, unit)): the unit None when the measure's own
-    items, measure = _fragility_items(source, im, body)
+    items, measure = _fragility_items(source, im, body, state)
+    if not items and (body or state):
+        what = " and ".join(f"{k} {v!r}" for k, v in (("body", body), ("state", state)) if v)
+        where = f"{os.fspath(source)}: " if isinstance(source, (str, os.PathLike)) else ""
+        raise ValueError(f"{where}no fragility of {what} to draw")
     return items, measure
 
 
-def _fragility_items(source, im, body):
+def _fragility_items(source, im, body, state):
     from . import studies
 
     items = []
@@ -616,20 +620,28 @@ def _fragility_items(source, im, body):
         cols = _read_columns(path, require_rows=True)
         # a family of damage states (flexrock fragility --state): one curve per body and state
         keys = [str(v) for v in cols["body"]] if "body" in cols else []
-        if "state" in cols:
-            keys = [f"{bv}: {sv}" for bv, sv in zip(keys, (str(v) for v in cols["state"]))]
+        states = [str(v) for v in cols["state"]] if "state" in cols else []
+        if states:
+            keys = [f"{bv}: {sv}" for bv, sv in zip(keys, states)]
         bodies = [str(v) for v in cols["body"]] if "body" in cols else []
+        fitted = {"probability", "lower", "upper", "im"} <= set(cols) or {"theta", "beta", "samples"} <= set(cols)
+        if fitted and state and not states:
+            raise ValueError(f"{path}: a fit of one damage state (no state column): leave --state out")
+
+        def wanted(k):
+            return (not body or bodies[k] == body) and (not state or states[k] == state)
+
         if {"probability", "lower", "upper", "im"} <= set(cols):  # flexrock fragility --curve
             for key in dict.fromkeys(keys):
                 sel = np.array([k == key for k in keys])
-                if body and bodies[int(np.argmax(sel))] != body:
+                if not wanted(int(np.argmax(sel))):
                     continue
                 curve = (cols["im"][sel], cols["probability"][sel], cols["lower"][sel], cols["upper"][sel])
                 items.append((key, None, None, None, None, curve, None, None))
             return items, _recorded_im(path, cols, im)
         if {"theta", "beta", "samples"} <= set(cols):  # flexrock fragility -o
             for k, key in enumerate(keys):
-                if not body or bodies[k] == body:
+                if wanted(k):
                     items.append((key, None, None, None, None, None, float(cols["theta"][k]), float(cols["beta"][k])))
             return items, _recorded_im(path, cols, im)
         if "overturned" not in cols:
@@ -638,7 +650,14 @@ def _fragility_items(source, im, body):
                 "`flexrock sweep` or `flexrock fragility` (-o or --curve), got " + ", ".join(cols)
             )
         measure = (im or "pga_g", None)
-        for data, fit in studies.fragility_from_sweep(path, im=im or "pga_g", body=body or ""):
+        if state:
+            # one damage state, as flexrock fragility --state names it ("theta:0.5")
+            st = studies.damage_state(state)
+            pairs = studies.fragility_from_sweep(path, im=im or "pga_g", outcome=st.outcome.name, level=st.level,
+                                                 body=body or "")
+        else:
+            pairs = studies.fragility_from_sweep(path, im=im or "pga_g", body=body or "")
+        for data, fit in pairs:
             measure = (data.im_name, data.im_unit)
             groups = None
             if "requested_level" in cols:
@@ -668,6 +687,7 @@ def fragility_curve(
     *,
     im: Optional[str] = None,
     body: str = "",
+    state: Optional[str] = None,
     band: bool = True,
     xlabel: Optional[str] = None,
     figsize=(6, 4.5),
@@ -697,6 +717,10 @@ def fragility_curve(
         measure and unit, which label the axis; an `im` that disagrees with them is refused.
     body : str
         Only this body of a sweep or fragility CSV.
+    state : str, optional
+        Only this damage state ("overturned", "theta:0.5", ...): of a fit or curve CSV of
+        ``flexrock fragility --state``, or the state a sweep CSV is fitted for (default:
+        overturning). Bodies that cannot be fitted are left out with a FragilityWarning.
     band : bool
         Draw the confidence band.
     xlabel : str, optional
@@ -713,7 +737,7 @@ def fragility_curve(
     """
     from . import studies
 
-    items, (im_name, im_unit) = _fragility_sources(source, im, body)
+    items, (im_name, im_unit) = _fragility_sources(source, im, body, state)
     if not items:
         raise ValueError(f"no fragility to draw{' for body ' + repr(body) if body else ''}")
     ax = _axes(ax, fig, figsize)

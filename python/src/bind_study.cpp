@@ -1177,7 +1177,22 @@ as ``flexrock fragility`` makes them (the same checks, observations, fits and fi
       .def("data", &io::FragilitySession::data, py::arg("state"), py::arg("body"),
            py::return_value_policy::copy)
       .def("fit", &io::FragilitySession::fit, py::arg("state"), py::arg("body"),
-           py::return_value_policy::copy)
+           py::return_value_policy::copy,
+           "The fit of a state and body; raises InputError with the reason if it has none.")
+      .def("fitted", &io::FragilitySession::fitted, py::arg("state"), py::arg("body"),
+           "Whether a state and body could be fitted.")
+      .def(
+          "not_fitted",
+          [](const io::FragilitySession& s) {
+            std::vector<std::tuple<std::size_t, std::size_t, std::string>> out;
+            for (std::size_t st = 0; st < s.states().size(); ++st) {
+              for (std::size_t k = 0; k < s.bodies(); ++k) {
+                if (!s.fitted(st, k)) out.emplace_back(st, k, s.not_fitted(st, k));
+              }
+            }
+            return out;
+          },
+          "The states and bodies that could not be fitted: (state, body, reason) each.")
       .def(
           "stripes",
           [](const io::FragilitySession& s, std::size_t state, std::size_t body) {
