@@ -21,7 +21,7 @@ from typing import Optional, Sequence, Union
 
 import numpy as np
 
-from . import _csv, _flexrock
+from . import _csv, _flexrock, _pickling
 from ._flexrock import (  # noqa: F401  (re-exported API)
     AccelUnit,
     Body,
@@ -379,8 +379,10 @@ def _synthetic(kind, function: Optional[str] = None, needs: tuple = ()):
                 raise InputError(f"{function}: {key}: missing; give {key}=")
         component = values.get("component", Component.horizontal)
         a_si = float(values["a_p"])
-        m = _flexrock.make_pulse(type_name, a_si, float(values.get("omega_p", 0.0)),
-                                 float(values["duration"]), component, keys)
+        recipe = ("pulse", type_name, a_si, float(values.get("omega_p", 0.0)), float(values["duration"]),
+                  component, keys)
+        m = _flexrock.make_pulse(*recipe[1:])
+        m._flexrock_recipe = recipe  # the call that made it: how it pickles
         comp = {"type": type_name, "amplitude_m_per_s2": a_si}
         if component == Component.vertical:
             return _note(m, {"type": "none"}, comp)
@@ -449,7 +451,9 @@ def free_rocking(duration: float) -> GroundMotion:
     -------
     GroundMotion
     """
-    return _note(GroundMotion.none(duration), {"type": "none"})
+    m = GroundMotion.none(duration)
+    m._flexrock_recipe = ("none", float(duration))  # how it pickles
+    return _note(m, {"type": "none"})
 
 
 def _component(d: Optional[dict]) -> ExcitationComponent:
@@ -491,6 +495,18 @@ class Result:
         if name == "raw":  # not yet set (copy/pickle): no recursion
             raise AttributeError(name)
         return getattr(self.raw, name)
+
+    def __getstate__(self):
+        # the case with the motion it was made from (a synthetic one pickles by its recipe)
+        d = dict(self.__dict__)
+        d["case"] = _pickling.case_state(self.case, d.pop("_motion", None))
+        d["_time_history"] = None
+        return d
+
+    def __setstate__(self, d):
+        d = dict(d)
+        d["case"] = _pickling.rebuild_case(d["case"])
+        self.__dict__.update(d)
 
     def __repr__(self):
         return f"<flexrock.Result {self.status} at t = {self.raw.t_end:.4g} s, {len(self.raw.history)} rows>"
@@ -678,7 +694,9 @@ def simulate(
     out.summary = "result.summary.json"
     out.events = ""
     c.output = out
-    return Result(raw, body, c)
+    r = Result(raw, body, c)
+    r._motion = motion  # with the recipe of a synthetic motion, which c.motion's copy lacks
+    return r
 
 
 def simulate_case(case: Case) -> Result:
