@@ -32,6 +32,13 @@ class FieldPickle {
                         [member](T& t, const pybind11::handle& v) { t.*member = v.cast<M>(); }});
     return *this;
   }
+  /// A field pickled through `get(const T&)` and `set(T&, handle)` (a C array, say).
+  template <class Get, class Set>
+  FieldPickle& field(const char* name, Get get, Set set) {
+    fields_->push_back({name, [get](const T& t) { return pybind11::cast(get(t)); },
+                        [set](T& t, const pybind11::handle& v) { set(t, v); }});
+    return *this;
+  }
   template <class... A>
   FieldPickle& def(A&&... a) {
     c_.def(std::forward<A>(a)...);

@@ -140,3 +140,34 @@ def test_multiprocessing_passes_them_between_processes():
         results = pool.map(_run, jobs)
     for job, r in zip(jobs, results):
         assert r.time_history_csv() == _run(job).time_history_csv()
+
+
+def test_study_results_fits_and_run_summaries(tmp_path):
+    f = fr.fragility([0.1, 0.2, 0.3, 0.4, 0.5, 0.6], [0, 1, 0, 1, 1, 1])
+    g = _round(f)
+    _assert_same(f, g)
+    assert np.array_equal(fr.fragility_probability(f, [0.15, 0.3]), fr.fragility_probability(g, [0.15, 0.3]))
+    for a, b in zip(fr.fragility_band(f, [0.15, 0.3]), fr.fragility_band(g, [0.15, 0.3])):
+        np.testing.assert_array_equal(a, b)
+    body = _body()
+    res = fr.simulate(body, fr.one_sine_pulse(amplitude=0.5, units="g", frequency_hz=1.0, duration=3.0))
+    s = fr.summarize(body, res.raw)
+    _assert_same(s, _round(s))
+    # what fragility_from_sweep returns: (FragilityData, FragilityFit) pairs
+    sweep = tmp_path / "sweep.csv"
+    cols = fr.sweep_columns()
+    rows = [(0.1, 0), (0.2, 1), (0.3, 0), (0.4, 1), (0.5, 1), (0.6, 1)]
+    with open(sweep, "w") as out:
+        out.write(",".join(cols) + "\n")
+        for i, (pga, over) in enumerate(rows):
+            r = dict.fromkeys(cols, "0")
+            r.update(index=str(i), body="b", record="r", requested_level=str(pga), requested_units="g",
+                     pga_g=str(pga), pga_m_per_s2=str(pga * 9.80665), overturned=str(over),
+                     outcome="overturned_after_impacts" if over else "rocking",
+                     status="overturned" if over else "completed", message="")
+            out.write(",".join(r[c] for c in cols) + "\n")
+    ((data, fit),) = fr.fragility_from_sweep(str(sweep), im="pga_g")
+    d2, f2 = _round((data, fit))
+    _assert_same(data, d2)
+    _assert_same(fit, f2)
+    assert (d2.im_name, d2.im_unit) == ("pga_g", "g")
