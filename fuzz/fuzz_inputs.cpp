@@ -131,6 +131,30 @@ void csv(const std::uint8_t* data, std::size_t size) {
   }
 }
 
+void agency(const std::uint8_t* data, std::size_t size) {
+  if (size == 0) return;
+  static constexpr const char* kNames[] = {"input.smc", "input.NS", "input.ACC.ASC", "input.V2"};
+  const std::size_t k = data[0] % std::size(kNames);
+  const std::string path = put_file(kNames[k], data + 1, size - 1);
+  try {
+    switch (k) {
+      case 0:
+        use(io::read_smc(path));
+        break;
+      case 1:
+        use(io::read_knet(path));
+        break;
+      case 2:
+        use(io::read_esm(path));
+        break;
+      default:
+        use(io::read_cosmos(path));
+        break;
+    }
+  } catch (const InputError&) {
+  }
+}
+
 void case_file(const std::uint8_t* data, std::size_t size) {
   const std::string path = put_file("case.toml", data, size);
   try {
@@ -187,6 +211,8 @@ bool run_file(const std::string& target, const std::string& path) {
     values(d, bytes.size());
   } else if (target == "fuzz_csv") {
     csv(d, bytes.size());
+  } else if (target == "fuzz_agency") {
+    agency(d, bytes.size());
   } else if (target == "fuzz_case") {
     case_file(d, bytes.size());
   } else if (target == "fuzz_sweep") {

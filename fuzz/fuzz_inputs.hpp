@@ -22,6 +22,10 @@ void values(const std::uint8_t* data, std::size_t size);
 /// CSV / two-column time-series reader: the first byte picks the units, the rest is the file.
 void csv(const std::uint8_t* data, std::size_t size);
 
+/// Agency record readers: the first byte picks SMC, K-NET, ESM or COSMOS (modulo 4), the rest
+/// is the file.
+void agency(const std::uint8_t* data, std::size_t size);
+
 /// TOML case loader (load_case, then load_body): the input is the case file. Record files it may
 /// name sit next to it: rec.at2, rec.txt (values), rec.csv and nodes.csv.
 void case_file(const std::uint8_t* data, std::size_t size);
@@ -35,8 +39,8 @@ void sweep_manifest(const std::uint8_t* data, std::size_t size);
 /// it as for sweep_manifest().
 void spectrum_file(const std::uint8_t* data, std::size_t size);
 
-/// Runs `target` ("fuzz_at2", "fuzz_values", "fuzz_csv", "fuzz_case", "fuzz_sweep" or
-/// "fuzz_spectrum") on the bytes of a file.
+/// Runs `target` ("fuzz_at2", "fuzz_values", "fuzz_csv", "fuzz_agency", "fuzz_case",
+/// "fuzz_sweep" or "fuzz_spectrum") on the bytes of a file.
 /// Returns false for an unknown target.
 bool run_file(const std::string& target, const std::string& path);
 

@@ -1,9 +1,9 @@
 # SPDX-License-Identifier: BSD-3-Clause
 # included from tests/CMakeLists.txt; paths are relative to tests/
 
-# record readers (PEER .AT2, single-column, time series, combine): flexrock::io
+# record readers (PEER .AT2, SMC, K-NET, ESM, COSMOS, single-column, time series, combine)
 flexrock_add_test(flexrock_io_tests
-  SOURCES unit/records_test.cpp
+  SOURCES unit/records_test.cpp unit/agency_records_test.cpp
   LIBS flexrock::io
   LABEL unit)
 

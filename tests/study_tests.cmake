@@ -7,6 +7,7 @@ flexrock_add_test(flexrock_study_tests
           unit/study_files_test.cpp unit/journal_test.cpp unit/study_sliding_test.cpp
           unit/study_uncertain_test.cpp unit/study_session_test.cpp unit/study_messages_test.cpp
           unit/study_names_test.cpp unit/fragility_session_test.cpp
+          unit/fragility_partial_test.cpp
   LIBS flexrock::study flexrock::io
   LABEL unit)
 

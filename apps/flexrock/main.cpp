@@ -25,6 +25,7 @@
 #include "flexrock/io/case_file.hpp"
 #include "flexrock/io/outputs.hpp"
 #include "flexrock/io/qualify.hpp"
+#include "flexrock/io/records.hpp"
 #include "flexrock/io/study_files.hpp"
 #include "flexrock/sim/simulate.hpp"
 #include "flexrock/sim/step_cost.hpp"
@@ -621,10 +622,11 @@ int main(int argc, char** argv) {
     if (*check) return cmd_check(check_files, quiet);
     if (*params) return cmd_params(params_file);
     if (*keys) {
-      fmt::print("{}{}{}{}{}{}{}{}", io::body_key_reference(), io::pulse_key_reference(),
-                 io::solver_key_reference(), io::time_history_column_reference(),
-                 io::event_column_reference(), io::study_column_reference(),
-                 cli::fragility_curve_column_reference(), io::qualify_key_reference());
+      fmt::print("{}{}{}{}{}{}{}{}{}", io::body_key_reference(), io::record_format_reference(),
+                 io::pulse_key_reference(), io::solver_key_reference(),
+                 io::time_history_column_reference(), io::event_column_reference(),
+                 io::study_column_reference(), cli::fragility_curve_column_reference(),
+                 io::qualify_key_reference());
       return 0;
     }
     if (studies.selected()) return studies.run();

@@ -10,6 +10,7 @@
 #include <cstring>
 #include <filesystem>
 #include <string>
+#include <utility>
 #include <vector>
 
 // set by CMake: where the build lays out the Python package, and the interpreter with numpy and
@@ -41,7 +42,12 @@ CLI::App* add_plot_command(CLI::App& app, PlotOptions& options) {
   plot->add_option("--im", options.im,
                    "intensity measure of a sweep's fragility: pga (m/s^2), pga_g (default), pgv "
                    "(m/s), scale, requested_level, or one the sweep wrote (pgd, arias, cav, "
-                   "d5_95, pgv_over_pga, sa:T[:zeta]), as flexrock fragility --im");
+                   "d5_95, pgv_over_pga, sa:T[:zeta]), as flexrock fragility --im; a fit or "
+                   "curve CSV records its own, which labels the axis");
+  plot->add_option("--body", options.body, "a fragility's body only (default: each)");
+  plot->add_option("--state", options.state,
+                   "a fragility's damage state only (overturned, theta:0.5, ...): of a fit or "
+                   "curve CSV of flexrock fragility --state, or the state a sweep is fitted for");
   plot->add_option("--dpi", options.dpi, "PNG resolution")->check(CLI::Range(10, 1200));
   return plot;
 }
@@ -67,8 +73,14 @@ int run_plot(const PlotOptions& options) {
   }
   std::vector<std::string> args = {
       python,   "-m",         "flexrock.plot", options.file,
-      "--kind", options.kind, "--dpi",         std::to_string(options.dpi),
-      "--im",   options.im};
+      "--kind", options.kind, "--dpi",         std::to_string(options.dpi)};
+  for (const auto& [flag, value] :
+       {std::pair{"--im", &options.im}, std::pair{"--body", &options.body},
+        std::pair{"--state", &options.state}}) {
+    if (value->empty()) continue;
+    args.push_back(flag);
+    args.push_back(*value);
+  }
   if (!options.output.empty()) {
     args.push_back("--output");
     args.push_back(options.output);

@@ -12,7 +12,10 @@ struct PlotOptions {
   std::string file;           // a run's time-history, spectrum, sweep or fragility CSV
   std::string output;         // .png, .svg or .pdf; empty: next to `file`
   std::string kind = "auto";  // auto, response, loop, spectrum, fragility
-  std::string im = "pga_g";   // intensity measure of a sweep's fragility
+  std::string im;             // intensity measure of a sweep's fragility (empty: pga_g, or
+                              // the one a fit or curve CSV records)
+  std::string body;           // a fragility's body only (empty: each)
+  std::string state;          // a fragility's damage state only (empty: each, or overturning)
   int dpi = 110;              // [1/inch] PNG resolution
 };
 

@@ -191,6 +191,11 @@ int error(const std::string& message, int code) {
   return code;
 }
 
+void warning(const std::string& message) {
+  std::fflush(stdout);
+  fmt::print(stderr, "flexrock: warning: {}\n", message);
+}
+
 // runs `work` on a thread while the main thread draws the progress of `completed` of `total`
 template <class Work>
 auto with_progress(bool show, std::size_t total, std::atomic<std::size_t>& completed,
@@ -444,6 +449,10 @@ const CurveColumn kCurveColumns[] = {
        study::fragility_band(f, x, l, u);
        return fmt::format("{}", u);
      }},
+    {"im_name", "-", "the intensity measure of `im`, as `--im` names it",
+     [](const io::FragilityData& d, const study::FragilityFit&, double) { return d.im_name; }},
+    {"im_unit", "-", "the unit of `im`",
+     [](const io::FragilityData& d, const study::FragilityFit&, double) { return d.im_unit; }},
 };
 
 }  // namespace
@@ -487,6 +496,12 @@ int StudyCommands::Impl::run_fragility() {
   for (std::size_t k = 0; k < session.bodies(); ++k) {
     for (std::size_t s = 0; s < states.size(); ++s) {
       const io::FragilityData& d = session.data(s, k);
+      if (!session.fitted(s, k)) {
+        // the others are fitted; this one is reported with its reason, and has no rows
+        fmt::print("{}: P({} | {}): not fitted\n", d.body, what(states[s]), im_name);
+        warning(session.not_fitted(s, k));
+        continue;
+      }
       const study::FragilityFit& f = session.fit(s, k);
       const std::string left_out =
           d.excluded ? fmt::format(", {} runs stopped or lost contact: left out", d.excluded) : "";
@@ -545,6 +560,7 @@ int StudyCommands::Impl::run_fragility() {
         out << '\n';
         for (std::size_t k = 0; k < session.bodies(); ++k) {
           for (std::size_t s = 0; s < states.size(); ++s) {
+            if (!session.fitted(s, k)) continue;
             const io::FragilityData& d = session.data(s, k);
             const auto [lo, hi] = session.range(k, s, s);
             for (int i = 0; i < points; ++i) {
@@ -563,6 +579,13 @@ int StudyCommands::Impl::run_fragility() {
     }
   } catch (const std::exception& e) {
     return error(std::string("could not write the outputs: ") + e.what(), kExitRunFailed);
+  }
+  const std::size_t pairs = session.bodies() * states.size();
+  if (session.fitted_count() < pairs) {
+    warning(fmt::format(
+        "fitted {} of {} {}; the others are reported above and have no rows in the "
+        "outputs",
+        session.fitted_count(), pairs, several ? "bodies and damage states" : "bodies"));
   }
   return kExitOk;
 }

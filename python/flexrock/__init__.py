@@ -21,7 +21,7 @@ from typing import Optional, Sequence, Union
 
 import numpy as np
 
-from . import _csv, _flexrock
+from . import _csv, _flexrock, _pickling
 from ._flexrock import (  # noqa: F401  (re-exported API)
     AccelUnit,
     Body,
@@ -51,6 +51,7 @@ from ._flexrock import (  # noqa: F401  (re-exported API)
     OverturnCriterion,
     Phase,
     Record,
+    RecordFormat,
     SimulationMethods,
     SimulationOptions,
     SimulationResult,
@@ -61,9 +62,15 @@ from ._flexrock import (  # noqa: F401  (re-exported API)
     from_lumped_model,
     load_body,
     load_case,
+    _read_record,
     read_at2,
+    read_cosmos,
+    read_esm,
+    read_knet,
     read_single_column,
+    read_smc,
     read_time_series,
+    record_formats,
     time_history_columns,
 )
 
@@ -160,40 +167,32 @@ def read_record(
     Parameters
     ----------
     path : str
-    format : {"at2", "single_column", "time_series"}, optional
-        Default "at2" for names ending in .AT2.
+    format : str, optional
+        A name of :func:`record_formats` ("at2", "smc", "knet", "esm", "cosmos",
+        "single_column", "time_series"). Default: the format the file name's ending selects
+        (.AT2, .smc, .NS/.EW/.UD, .ACC.ASC, .V1/.V2).
     dt : float, optional
         [s] sample spacing; "single_column" only.
     units : {"g", "m/s^2", "cm/s^2"}, optional
-        Units of the file's values; required unless AT2 (the file states them).
+        Units of the file's values: required for "single_column" and for a "time_series"
+        file without a units row; for a file that states its units, they must agree.
 
     Returns
     -------
     Record
-        Values in the file's units (``Record.to_motion(scale)`` gives m/s^2).
+        Values in the file's units as numpy arrays (``Record.to_motion(scale)`` gives m/s^2).
     """
-    if format is None:
-        if str(path).lower().endswith(".at2"):
-            format = "at2"
-        else:
-            raise InputError(
-                f"{path}: format: expected 'at2', 'single_column' or 'time_series' "
-                "(only .AT2 files are recognised by name)"
-            )
-    if format == "at2":
-        return read_at2(str(path))
-    if units is None:
-        raise InputError(f"{path}: units: required for format {format!r} ('g', 'm/s^2', 'cm/s^2')")
-    unit, _ = _unit(units)
-    if format == "single_column":
-        if dt is None:
-            raise InputError(f"{path}: dt: required for format 'single_column'")
-        return read_single_column(str(path), float(dt), unit)
-    if format == "time_series":
-        return read_time_series(str(path), unit)
-    raise InputError(
-        f"{path}: format: expected 'at2', 'single_column' or 'time_series', got {format!r}"
-    )
+    unit = None if units is None else _unit(units)[0]
+    return _read_record(str(path), format or "", 0.0 if dt is None else float(dt), unit)
+
+
+def _format_for(path) -> str:
+    # the format the file name's ending selects (the table of formats), "" if none
+    name = str(path).lower()
+    for f in record_formats():
+        if any(name.endswith(x) and len(name) > len(x) for x in f.suffixes):
+            return f.name
+    return ""
 
 
 def motion_from_file(
@@ -225,7 +224,7 @@ def motion_from_file(
         Accelerations [m/s^2].
     """
     rec = read_record(path, format, dt=dt, units=units)
-    fmt = format or "at2"
+    fmt = format or _format_for(path)
     comp = {"type": "record", "file": str(path), "format": fmt, "units": _unit_name(rec), "scale": 1.0}
     if vertical is None:
         return _note(rec.to_motion(scale), comp)
@@ -233,7 +232,7 @@ def motion_from_file(
     vcomp = {
         "type": "record",
         "file": str(vertical),
-        "format": vertical_format or "at2",
+        "format": vertical_format or _format_for(vertical),
         "units": _unit_name(vrec),
         "scale": 1.0,
     }
@@ -380,8 +379,10 @@ def _synthetic(kind, function: Optional[str] = None, needs: tuple = ()):
                 raise InputError(f"{function}: {key}: missing; give {key}=")
         component = values.get("component", Component.horizontal)
         a_si = float(values["a_p"])
-        m = _flexrock.make_pulse(type_name, a_si, float(values.get("omega_p", 0.0)),
-                                 float(values["duration"]), component, keys)
+        recipe = ("pulse", type_name, a_si, float(values.get("omega_p", 0.0)), float(values["duration"]),
+                  component, keys)
+        m = _flexrock.make_pulse(*recipe[1:])
+        m._flexrock_recipe = recipe  # the call that made it: how it pickles
         comp = {"type": type_name, "amplitude_m_per_s2": a_si}
         if component == Component.vertical:
             return _note(m, {"type": "none"}, comp)
@@ -450,7 +451,9 @@ def free_rocking(duration: float) -> GroundMotion:
     -------
     GroundMotion
     """
-    return _note(GroundMotion.none(duration), {"type": "none"})
+    m = GroundMotion.none(duration)
+    m._flexrock_recipe = ("none", float(duration))  # how it pickles
+    return _note(m, {"type": "none"})
 
 
 def _component(d: Optional[dict]) -> ExcitationComponent:
@@ -492,6 +495,18 @@ class Result:
         if name == "raw":  # not yet set (copy/pickle): no recursion
             raise AttributeError(name)
         return getattr(self.raw, name)
+
+    def __getstate__(self):
+        # the case with the motion it was made from (a synthetic one pickles by its recipe)
+        d = dict(self.__dict__)
+        d["case"] = _pickling.case_state(self.case, d.pop("_motion", None))
+        d["_time_history"] = None
+        return d
+
+    def __setstate__(self, d):
+        d = dict(d)
+        d["case"] = _pickling.rebuild_case(d["case"])
+        self.__dict__.update(d)
 
     def __repr__(self):
         return f"<flexrock.Result {self.status} at t = {self.raw.t_end:.4g} s, {len(self.raw.history)} rows>"
@@ -679,7 +694,9 @@ def simulate(
     out.summary = "result.summary.json"
     out.events = ""
     c.output = out
-    return Result(raw, body, c)
+    r = Result(raw, body, c)
+    r._motion = motion  # with the recipe of a synthetic motion, which c.motion's copy lacks
+    return r
 
 
 def simulate_case(case: Case) -> Result:

@@ -454,6 +454,10 @@ class FragilityData:
     @property
     def im(self) -> list[float]: ...
     @property
+    def im_name(self) -> str: ...
+    @property
+    def im_unit(self) -> str: ...
+    @property
     def record(self) -> list[str]: ...
 
 class FragilityFit:
@@ -565,11 +569,16 @@ class FragilitySession:
     @property
     def bodies(self) -> int: ...
     def data(self, state: int, body: int) -> FragilityData: ...
-    def fit(self, state: int, body: int) -> FragilityFit: ...
+    def fit(self, state: int, body: int) -> FragilityFit:
+        """The fit of a state and body; raises InputError with the reason if it has none."""
     def fit_csv(self) -> str:
         """The fit CSV's text, as ``flexrock fragility -o`` writes it."""
+    def fitted(self, state: int, body: int) -> bool:
+        """Whether a state and body could be fitted."""
     @property
     def measure(self) -> FragilityMeasure: ...
+    def not_fitted(self) -> list[tuple[int, int, str]]:
+        """The states and bodies that could not be fitted: (state, body, reason) each."""
     def order_notes(self) -> list[FragilityOrderNote]: ...
     @property
     def several(self) -> bool: ...
@@ -894,14 +903,30 @@ class Record:
     @property
     def source(self) -> str: ...
     @property
-    def time(self) -> list[float]: ...
+    def time(self) -> numpy.typing.NDArray[numpy.float64]: ...
     def to_motion(self, scale: float = ...) -> GroundMotion:
         """The record as a horizontal ground motion [m/s^2] times `scale`."""
     def to_si(self, scale: float = ...) -> list[float]: ...
     @property
     def units(self) -> AccelUnit: ...
     @property
-    def values(self) -> list[float]: ...
+    def values(self) -> numpy.typing.NDArray[numpy.float64]: ...
+
+class RecordFormat:
+    """A record format of the table of formats."""
+    def __repr__(self) -> str: ...
+    @property
+    def doc(self) -> str: ...
+    @property
+    def name(self) -> str: ...
+    @property
+    def needs_dt(self) -> bool: ...
+    @property
+    def needs_units(self) -> bool: ...
+    @property
+    def publisher(self) -> str: ...
+    @property
+    def suffixes(self) -> list[str]: ...
 
 class RecordSpectrumSpec:
     """One record x scale factors."""
@@ -2139,6 +2164,19 @@ def read_at2(path: str) -> Record:
         Values in g, as the file states, with its dt [s].
     """
 
+def read_cosmos(path: str) -> Record:
+    """Reads the first acceleration block of a COSMOS V1 or V2 file.
+
+    Parameters
+    ----------
+    path : str
+
+    Returns
+    -------
+    Record
+        Values in the units its data line states, dt from real header value 62.
+    """
+
 def read_csv_table(path: str) -> CsvTable:
     """Reads a CSV file as text fields (a sweep CSV for a fragility fit).
 
@@ -2149,6 +2187,32 @@ def read_csv_table(path: str) -> CsvTable:
     Returns
     -------
     CsvTable
+    """
+
+def read_esm(path: str) -> Record:
+    """Reads an ESM ASCII acceleration file.
+
+    Parameters
+    ----------
+    path : str
+
+    Returns
+    -------
+    Record
+        Values in the units the file states (UNITS), dt from SAMPLING_INTERVAL_S.
+    """
+
+def read_knet(path: str) -> Record:
+    """Reads a NIED K-NET or KiK-net ASCII file.
+
+    Parameters
+    ----------
+    path : str
+
+    Returns
+    -------
+    Record
+        Counts times the file's scale factor, in cm/s^2 (offset kept as published).
     """
 
 def read_single_column(path: str, dt: float, units: AccelUnit) -> Record:
@@ -2167,6 +2231,19 @@ def read_single_column(path: str, dt: float, units: AccelUnit) -> Record:
     Record
     """
 
+def read_smc(path: str) -> Record:
+    """Reads a USGS SMC accelerogram.
+
+    Parameters
+    ----------
+    path : str
+
+    Returns
+    -------
+    Record
+        Values in cm/s^2, dt from the file's sampling rate.
+    """
+
 def read_sweep_csv(spec: SweepSpec, path: str) -> list[SweepRow]:
     """A sweep CSV read back as the rows it was written from (every line checked against its
     run: it must be exactly what the row writes).
@@ -2182,18 +2259,27 @@ def read_sweep_csv(spec: SweepSpec, path: str) -> list[SweepRow]:
         In index order.
     """
 
-def read_time_series(path: str, units: AccelUnit) -> Record:
-    """Reads time/acceleration pairs, one a line.
+def read_time_series(path: str, units: Optional[AccelUnit] = ...) -> Record:
+    """Reads time/acceleration pairs, one a line (blanks, commas or semicolons).
 
     Parameters
     ----------
     path : str
-    units : AccelUnit
-        Units of the accelerations (times in s).
+    units : AccelUnit, optional
+        Units of the accelerations (times in s); required unless a row of the file states them
+        ("s, g" or "time [s], acc [cm/s^2]"), and if both, they must agree.
 
     Returns
     -------
     Record
+    """
+
+def record_formats() -> list[RecordFormat]:
+    """Every record format: the one table case files, study files and read_record use.
+
+    Returns
+    -------
+    list of RecordFormat
     """
 
 def rectangular_pulse(a_p: float, t_1: float, duration: float, component: Component = ...) -> GroundMotion:

@@ -65,8 +65,16 @@ def main(argv=None) -> int:
     )
     parser.add_argument(
         "--im",
-        default="pga_g",
-        help="intensity measure of a sweep's fragility (default pga_g): as flexrock fragility --im",
+        default=None,
+        help="intensity measure of a sweep's fragility (default pga_g): as flexrock fragility --im; "
+        "a fit or curve CSV of flexrock fragility records its own",
+    )
+    parser.add_argument("--body", default="", help="a fragility's body only (default: each)")
+    parser.add_argument(
+        "--state",
+        default=None,
+        help="a fragility's damage state only (overturned, theta:0.5, ...): of a fit or curve CSV "
+        "of flexrock fragility --state, or the state a sweep is fitted for",
     )
     parser.add_argument("--dpi", type=int, default=110, help="PNG resolution (default 110)")
     args = parser.parse_args(argv)
@@ -77,7 +85,7 @@ def main(argv=None) -> int:
         matplotlib.use("Agg")  # a file, never a window
         from matplotlib.figure import Figure
 
-        from . import _csv, plots
+        from . import _csv, plots, studies
     except ImportError as e:
         return _error(
             f"flexrock plot needs matplotlib and numpy for /usr/bin/python3 ({e}); "
@@ -99,6 +107,7 @@ def main(argv=None) -> int:
     fig = Figure(layout="constrained")
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always", _csv.CsvWarning)
+        warnings.simplefilter("always", studies.FragilityWarning)
         try:
             if kind == "response":
                 fig.set_size_inches(9, 11)
@@ -111,7 +120,7 @@ def main(argv=None) -> int:
                 plots.spectrum_map(args.file, fig=fig)
             else:
                 fig.set_size_inches(6, 4.5)
-                plots.fragility_curve(args.file, im=args.im, fig=fig)
+                plots.fragility_curve(args.file, im=args.im, body=args.body, state=args.state, fig=fig)
             if kind in _NEEDED:
                 with open(args.file, newline="") as f:
                     import csv
@@ -123,7 +132,8 @@ def main(argv=None) -> int:
             if not detail.startswith(args.file):
                 detail = f"{args.file}: {detail}"
             return _error(detail, 2)
-    for message in dict.fromkeys(str(w.message) for w in caught if issubclass(w.category, _csv.CsvWarning)):
+    shown = (_csv.CsvWarning, studies.FragilityWarning)
+    for message in dict.fromkeys(str(w.message) for w in caught if issubclass(w.category, shown)):
         print(f"flexrock: warning: {message}", file=sys.stderr)
     # write to a temporary name, then rename: no half-written figure
     tmp = f"{out}.tmp.{os.getpid()}{os.path.splitext(out)[1]}"

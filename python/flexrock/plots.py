@@ -531,29 +531,59 @@ def spectrum_map(
 
 # --- fragility ---------------------------------------------------------------------------------
 
-_IM_LABELS = {
-    "pga": "PGA [m/s²]",
-    "pga_g": "PGA [g]",
-    "pgv": "PGV [m/s]",
-    "scale": "scale factor [-]",
-    "requested_level": "requested level",
+_IM_TITLES = {
+    "pga": ("PGA", "m/s^2"),
+    "pga_g": ("PGA", "g"),
+    "pgv": ("PGV", "m/s"),
+    "scale": ("scale factor", "-"),
+    "requested_level": ("requested level", ""),
 }
 
 
-def _im_label(im: str) -> str:
-    # the fixed names, then the library's table of intensity measures; sa:T[:zeta] by its period
-    if im in _IM_LABELS:
-        return _IM_LABELS[im]
+def _pretty_unit(unit: str) -> str:
+    return unit.replace("^2", "²")
+
+
+def _im_title(im: str):
+    # the measure's title ("PGA", "Sa(1 s, 5 %)") and own unit: the fixed names, sa:T[:zeta], then
+    # the library's table of intensity measures
+    if im in _IM_TITLES:
+        return _IM_TITLES[im]
     if im.startswith("sa:"):
         parts = im.split(":")
         zeta = float(parts[2]) if len(parts) > 2 else 0.05
-        return f"Sa({parts[1]} s, {100 * zeta:g} %) [m/s²]"
+        return f"Sa({parts[1]} s, {100 * zeta:g} %)", "m/s^2"
     from . import _flexrock
 
     for m in _flexrock.intensity_measures():
         if m["name"] == im:
-            return f"{im} [{m['unit']}]"
-    return im
+            return im, m["unit"]
+    return im, ""
+
+
+def _im_label(im: Optional[str], unit: Optional[str] = None) -> str:
+    # the axis label: the measure's title and the unit a file records (else the measure's own)
+    if im is None:
+        return "intensity measure (not recorded in the file)"
+    title, own = _im_title(im)
+    unit = own if unit is None else unit
+    return f"{title} [{_pretty_unit(unit)}]" if unit else title
+
+
+def _recorded_im(path, cols, im):
+    # the measure a fit or curve CSV records (im_name, im_unit); an --im that disagrees is refused
+    if "im_name" not in cols:
+        return (im, None) if im is not None else (None, None)
+    names = list(dict.fromkeys(str(v) for v in cols["im_name"]))
+    units = list(dict.fromkeys(str(v) for v in cols["im_unit"])) if "im_unit" in cols else [None]
+    if len(names) != 1 or len(units) != 1:
+        raise ValueError(f"{path}: more than one intensity measure in the file: {', '.join(names)}")
+    if im is not None and im != names[0]:
+        raise ValueError(
+            f"{path}: the file holds a fit against {names[0]} [{units[0]}], not {im}: "
+            "leave --im out (a fit or curve CSV records its intensity measure)"
+        )
+    return names[0], units[0]
 
 
 def _observed(im, failed, groups=None):
@@ -570,8 +600,18 @@ def _observed(im, failed, groups=None):
     return np.array([o[0] for o in out]), np.array([o[1] for o in out]), np.array([o[2] for o in out])
 
 
-def _fragility_sources(source, im, body):
-    # [(label, fit or None, im values, failed flags, group keys, curve or None, theta, beta)]
+def _fragility_sources(source, im, body, state=None):
+    # ([(label, fit or None, im values, failed flags, group keys, curve or None, theta, beta)],
+    #  (measure name, unit)): the unit None when the measure's own
+    items, measure = _fragility_items(source, im, body, state)
+    if not items and (body or state):
+        what = " and ".join(f"{k} {v!r}" for k, v in (("body", body), ("state", state)) if v)
+        where = f"{os.fspath(source)}: " if isinstance(source, (str, os.PathLike)) else ""
+        raise ValueError(f"{where}no fragility of {what} to draw")
+    return items, measure
+
+
+def _fragility_items(source, im, body, state):
     from . import studies
 
     items = []
@@ -580,28 +620,45 @@ def _fragility_sources(source, im, body):
         cols = _read_columns(path, require_rows=True)
         # a family of damage states (flexrock fragility --state): one curve per body and state
         keys = [str(v) for v in cols["body"]] if "body" in cols else []
-        if "state" in cols:
-            keys = [f"{bv}: {sv}" for bv, sv in zip(keys, (str(v) for v in cols["state"]))]
+        states = [str(v) for v in cols["state"]] if "state" in cols else []
+        if states:
+            keys = [f"{bv}: {sv}" for bv, sv in zip(keys, states)]
         bodies = [str(v) for v in cols["body"]] if "body" in cols else []
+        fitted = {"probability", "lower", "upper", "im"} <= set(cols) or {"theta", "beta", "samples"} <= set(cols)
+        if fitted and state and not states:
+            raise ValueError(f"{path}: a fit of one damage state (no state column): leave --state out")
+
+        def wanted(k):
+            return (not body or bodies[k] == body) and (not state or states[k] == state)
+
         if {"probability", "lower", "upper", "im"} <= set(cols):  # flexrock fragility --curve
             for key in dict.fromkeys(keys):
                 sel = np.array([k == key for k in keys])
-                if body and bodies[int(np.argmax(sel))] != body:
+                if not wanted(int(np.argmax(sel))):
                     continue
                 curve = (cols["im"][sel], cols["probability"][sel], cols["lower"][sel], cols["upper"][sel])
                 items.append((key, None, None, None, None, curve, None, None))
-            return items
+            return items, _recorded_im(path, cols, im)
         if {"theta", "beta", "samples"} <= set(cols):  # flexrock fragility -o
             for k, key in enumerate(keys):
-                if not body or bodies[k] == body:
+                if wanted(k):
                     items.append((key, None, None, None, None, None, float(cols["theta"][k]), float(cols["beta"][k])))
-            return items
+            return items, _recorded_im(path, cols, im)
         if "overturned" not in cols:
             raise ValueError(
                 f"{path}: not a sweep CSV nor a fragility output: expected the columns of "
                 "`flexrock sweep` or `flexrock fragility` (-o or --curve), got " + ", ".join(cols)
             )
-        for data, fit in studies.fragility_from_sweep(path, im=im, body=body or ""):
+        measure = (im or "pga_g", None)
+        if state:
+            # one damage state, as flexrock fragility --state names it ("theta:0.5")
+            st = studies.damage_state(state)
+            pairs = studies.fragility_from_sweep(path, im=im or "pga_g", outcome=st.outcome.name, level=st.level,
+                                                 body=body or "")
+        else:
+            pairs = studies.fragility_from_sweep(path, im=im or "pga_g", body=body or "")
+        for data, fit in pairs:
+            measure = (data.im_name, data.im_unit)
             groups = None
             if "requested_level" in cols:
                 sel = np.array([str(v) == data.body for v in cols["body"]])
@@ -610,14 +667,17 @@ def _fragility_sources(source, im, body):
                 if len(groups) != len(data.im):
                     groups = None
             items.append((data.body, fit, np.asarray(data.im), np.asarray(data.failed), groups, None, fit.theta, fit.beta))
-        return items
+        return items, measure
     if hasattr(source, "theta") and hasattr(source, "beta"):  # a FragilityFit
-        return [("", source, None, None, None, None, source.theta, source.beta)]
+        return [("", source, None, None, None, None, source.theta, source.beta)], (im or "pga_g", None)
     if isinstance(source, tuple) and len(source) == 2 and hasattr(source[1], "theta"):
         source = [source]
+    measure = (im or "pga_g", None)
     for data, fit in source:  # what fragility_from_sweep returns
         items.append((data.body, fit, np.asarray(data.im), np.asarray(data.failed), None, None, fit.theta, fit.beta))
-    return items
+        if getattr(data, "im_name", ""):
+            measure = _recorded_im("the fragility data", {"im_name": [data.im_name], "im_unit": [data.im_unit]}, im)
+    return items, measure
 
 
 def fragility_curve(
@@ -625,8 +685,9 @@ def fragility_curve(
     im_values=None,
     failed=None,
     *,
-    im: str = "pga_g",
+    im: Optional[str] = None,
     body: str = "",
+    state: Optional[str] = None,
     band: bool = True,
     xlabel: Optional[str] = None,
     figsize=(6, 4.5),
@@ -649,15 +710,21 @@ def fragility_curve(
         :func:`flexrock.fragility_from_sweep` returns, or one fit.
     im_values, failed : array_like, optional
         With a bare fit: the observations to draw (IM in the fit's units, 0/1 failures).
-    im : str
-        The intensity measure of a sweep CSV: "pga" [m/s^2], "pga_g" [g], "pgv" [m/s],
-        "scale" [-] or "requested_level" (the manifest's levels).
+    im : str, optional
+        The intensity measure of a sweep CSV (default "pga_g"): "pga" [m/s^2], "pga_g" [g],
+        "pgv" [m/s], "scale" [-], "requested_level" (the manifest's levels), "sa:T", ... A fit
+        or curve CSV, and what :func:`flexrock.fragility_from_sweep` returns, record their
+        measure and unit, which label the axis; an `im` that disagrees with them is refused.
     body : str
         Only this body of a sweep or fragility CSV.
+    state : str, optional
+        Only this damage state ("overturned", "theta:0.5", ...): of a fit or curve CSV of
+        ``flexrock fragility --state``, or the state a sweep CSV is fitted for (default:
+        overturning). Bodies that cannot be fitted are left out with a FragilityWarning.
     band : bool
         Draw the confidence band.
     xlabel : str, optional
-        Default: the IM and its unit.
+        Default: the IM and its unit, as the source records them.
     figsize : (float, float)
         [in], for a new figure.
     ax : matplotlib.axes.Axes, optional
@@ -670,7 +737,7 @@ def fragility_curve(
     """
     from . import studies
 
-    items = _fragility_sources(source, im, body)
+    items, (im_name, im_unit) = _fragility_sources(source, im, body, state)
     if not items:
         raise ValueError(f"no fragility to draw{' for body ' + repr(body) if body else ''}")
     ax = _axes(ax, fig, figsize)
@@ -694,8 +761,10 @@ def fragility_curve(
             if fit is not None and band:
                 lo, hi = studies.fragility_band(fit, x)
         name = f"{label}: " if label and len(items) > 1 else ""
+        unit = "" if im_name is None else im_unit if im_unit is not None else _im_title(im_name)[1]
+        theta_unit = f" {_pretty_unit(unit)}" if unit and unit != "-" else ""
         ax.plot(x, p, color=colour, lw=1.5, gid="fit",
-                label=f"{name}fit, θ = {theta:.3g}, β = {beta:.3g}" if theta is not None else f"{name}fit")
+                label=f"{name}fit, θ = {theta:.3g}{theta_unit}, β = {beta:.3g}" if theta is not None else f"{name}fit")
         if band and lo is not None:
             conf = getattr(fit, "confidence", None)
             ax.fill_between(x, lo, hi, color=colour, alpha=0.2, lw=0, gid="band",
@@ -706,7 +775,7 @@ def fragility_curve(
                        zorder=3, gid="observed", label=f"{name}observed fraction")
     ax.set_ylim(-0.02, 1.02)
     ax.set_xlim(left=0.0)
-    ax.set_xlabel(xlabel or _im_label(im))
+    ax.set_xlabel(xlabel or _im_label(im_name, im_unit))
     ax.set_ylabel("probability of failure [-]")
     ax.legend(loc="lower right", fontsize="small")
     ax.set_title("fragility")

@@ -6,6 +6,7 @@ those of ``flexrock spectrum|sweep|fragility`` (docs/studies.md)."""
 from __future__ import annotations
 
 import os
+import warnings
 from typing import Iterable, Mapping, Optional, Sequence, Tuple, Union
 
 from . import _flexrock
@@ -667,8 +668,10 @@ def fragility_session(
     -------
     FragilitySession
         ``states``, ``bodies``, ``data(state, body)`` (a FragilityData), ``fit(state, body)``
-        (a FragilityFit), ``stripes``, ``order_notes()``, ``unit``, ``measure`` and
-        ``fit_csv()`` (the bytes of ``flexrock fragility -o``). Errors name the options as the
+        (a FragilityFit), ``fitted(state, body)``, ``not_fitted()`` (the states and bodies
+        that could not be fitted, with the reason: the others are fitted), ``stripes``,
+        ``order_notes()``, ``unit``, ``measure`` and ``fit_csv()`` (the bytes of ``flexrock
+        fragility -o``). Errors name the options as the
         command line does (``--state``, ``--level``, ``--im``).
     """
     if states and (outcome != "overturned" or level != 0.0):
@@ -708,11 +711,14 @@ def fragility_from_sweep(
     Returns
     -------
     list of (FragilityData, FragilityFit)
-        One per body; rows whose outcome is ``stopped`` or ``contact_lost`` are left out and
-        counted in ``FragilityData.excluded``.
+        One per body that could be fitted (a FragilityWarning says why for each other one; an
+        InputError when none could); rows whose outcome is ``stopped`` or ``contact_lost`` are
+        left out and counted in ``FragilityData.excluded``.
     """
     s = fragility_session(path, im, outcome, level, body)
-    return [(s.data(0, k), s.fit(0, k)) for k in range(s.bodies)]
+    for _, _, reason in s.not_fitted():
+        warnings.warn(reason + " (not fitted; the other bodies are)", FragilityWarning, stacklevel=2)
+    return [(s.data(0, k), s.fit(0, k)) for k in range(s.bodies) if s.fitted(0, k)]
 
 
 def qualify(path, output_dir=None, *, threads: int = 0, render: bool = True) -> dict:
@@ -760,7 +766,11 @@ def qualify(path, output_dir=None, *, threads: int = 0, render: bool = True) -> 
     return {"report": json.loads(text), "pass": bool(passes), "files": files}
 
 
-_NOT_API = ("annotations", "os", "Iterable", "Mapping", "Optional", "Sequence", "Tuple", "Union")
+class FragilityWarning(UserWarning):
+    """A body or damage state of a fragility study that could not be fitted (the others are)."""
+
+
+_NOT_API = ("annotations", "os", "warnings", "Iterable", "Mapping", "Optional", "Sequence", "Tuple", "Union")
 __all__ = [n for n in dir() if not n.startswith("_") and n not in _NOT_API]
 __all__ += ["FragilityQuery", "FragilityData", "read_csv_table", "fragility_data",
             "FragilitySession", "FragilityOutcome", "FragilityAnalysis", "DamageState",

@@ -31,8 +31,18 @@ void bind_io(py::module_& m) {
       .def_readonly("header", &io::Record::header)
       .def_readonly("units", &io::Record::units)
       .def_readonly("dt", &io::Record::dt, "[s] 0 if not uniform")
-      .def_readonly("time", &io::Record::time, "[s]")
-      .def_readonly("values", &io::Record::values, "in `units`")
+      .def_property_readonly(
+          "time",
+          [](const io::Record& r) {
+            return py::array_t<double>(static_cast<py::ssize_t>(r.time.size()), r.time.data());
+          },
+          "[s] numpy array (a copy)")
+      .def_property_readonly(
+          "values",
+          [](const io::Record& r) {
+            return py::array_t<double>(static_cast<py::ssize_t>(r.values.size()), r.values.data());
+          },
+          "in `units`, numpy array (a copy)")
       .def_property_readonly("npts", &io::Record::npts)
       .def_property_readonly("duration", &io::Record::duration)
       .def("to_si", &io::Record::to_si, py::arg("scale") = 1.0)
@@ -74,18 +84,96 @@ units : AccelUnit
 Returns
 -------
 Record)doc");
-  m.def("read_time_series", &io::read_time_series, py::arg("path"), py::arg("units"),
-        R"doc(Reads time/acceleration pairs, one a line.
+  m.def("read_time_series", &io::read_time_series, py::arg("path"), py::arg("units") = py::none(),
+        R"doc(Reads time/acceleration pairs, one a line (blanks, commas or semicolons).
 
 Parameters
 ----------
 path : str
-units : AccelUnit
-    Units of the accelerations (times in s).
+units : AccelUnit, optional
+    Units of the accelerations (times in s); required unless a row of the file states them
+    ("s, g" or "time [s], acc [cm/s^2]"), and if both, they must agree.
 
 Returns
 -------
 Record)doc");
+  m.def("read_smc", &io::read_smc, py::arg("path"), R"doc(Reads a USGS SMC accelerogram.
+
+Parameters
+----------
+path : str
+
+Returns
+-------
+Record
+    Values in cm/s^2, dt from the file's sampling rate.)doc");
+  m.def("read_knet", &io::read_knet, py::arg("path"),
+        R"doc(Reads a NIED K-NET or KiK-net ASCII file.
+
+Parameters
+----------
+path : str
+
+Returns
+-------
+Record
+    Counts times the file's scale factor, in cm/s^2 (offset kept as published).)doc");
+  m.def("read_esm", &io::read_esm, py::arg("path"), R"doc(Reads an ESM ASCII acceleration file.
+
+Parameters
+----------
+path : str
+
+Returns
+-------
+Record
+    Values in the units the file states (UNITS), dt from SAMPLING_INTERVAL_S.)doc");
+  m.def("read_cosmos", &io::read_cosmos, py::arg("path"),
+        R"doc(Reads the first acceleration block of a COSMOS V1 or V2 file.
+
+Parameters
+----------
+path : str
+
+Returns
+-------
+Record
+    Values in the units its data line states, dt from real header value 62.)doc");
+
+  py::class_<io::RecordFormat>(m, "RecordFormat", "A record format of the table of formats.")
+      .def_property_readonly("name", [](const io::RecordFormat& f) { return std::string(f.name); })
+      .def_property_readonly("suffixes",
+                             [](const io::RecordFormat& f) {
+                               std::vector<std::string> v;
+                               std::istringstream in(f.suffixes);
+                               for (std::string x; in >> x;) v.push_back(x);
+                               return v;
+                             })
+      .def_property_readonly("needs_dt", [](const io::RecordFormat& f) { return f.needs_dt; })
+      .def_property_readonly(
+          "needs_units",
+          [](const io::RecordFormat& f) { return f.units == io::RecordUnits::kGiven; },
+          "the file never states its units: they must be given")
+      .def_property_readonly("publisher",
+                             [](const io::RecordFormat& f) { return std::string(f.publisher); })
+      .def_property_readonly("doc", [](const io::RecordFormat& f) { return std::string(f.doc); })
+      .def("__repr__",
+           [](const io::RecordFormat& f) { return "<RecordFormat " + std::string(f.name) + ">"; });
+  m.def(
+      "record_formats",
+      [] {
+        std::vector<const io::RecordFormat*> v;
+        for (const io::RecordFormat& f : io::record_formats()) v.push_back(&f);
+        return v;
+      },
+      py::return_value_policy::reference,
+      R"doc(Every record format: the one table case files, study files and read_record use.
+
+Returns
+-------
+list of RecordFormat)doc");
+  m.def("_read_record", &io::read_record, py::arg("path"), py::arg("format"), py::arg("dt"),
+        py::arg("units"));
   m.def(
       "combine",
       [](const io::Record& h, const io::Record* v, double scale) {

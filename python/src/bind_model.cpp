@@ -70,6 +70,9 @@ void bind_model(py::module_& m) {
 
   py::class_<Body>(m, "Body", "A validated body; bad parameters raise InputError.")
       .def(py::init<BodyParameters>(), py::arg("params"))
+      // a body is its parameters: pickled as them, rebuilt (and checked) by the constructor
+      .def(py::pickle([](const Body& b) { return py::make_tuple(b.params()); },
+                      [](const py::tuple& t) { return Body(t[0].cast<BodyParameters>()); }))
       .def_property_readonly("params", &Body::params)
       .def_property_readonly("modes", &Body::modes)
       .def_property_readonly("alpha1", &Body::alpha1)

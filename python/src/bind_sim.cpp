@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "bindings.hpp"
+#include "field_pickle.hpp"
 #include "flexrock/sim/simulate.hpp"
 #include "flexrock/sim/solver_keys.hpp"
 
@@ -147,7 +148,8 @@ void bind_sim(py::module_& m) {
     }
   }
 
-  py::class_<Event>(m, "Event", "Something that happened; fields not meaningful are zero.")
+  FieldPickle<Event>(
+      py::class_<Event>(m, "Event", "Something that happened; fields not meaningful are zero."))
       .def_readonly("time", &Event::time)
       .def_readonly("kind", &Event::kind)
       .def_readonly("edge", &Event::edge)
@@ -161,11 +163,15 @@ void bind_sim(py::module_& m) {
       .def_readonly("offset", &Event::offset, "[m] horizontal offset of the base centre")
       .def_readonly("force_estimate", &Event::force_estimate,
                     "[N] pi |impulse| / (2 impact_duration); compliant: the resolved peak")
-      .def("__repr__", [](const Event& e) {
-        return "<Event " + std::string(to_string(e.kind)) + " t=" + std::to_string(e.time) + ">";
-      });
+      .def("__repr__",
+           [](const Event& e) {
+             return "<Event " + std::string(to_string(e.kind)) + " t=" + std::to_string(e.time) +
+                    ">";
+           })
+      .pickled();
 
-  py::class_<History>(m, "History", "Time history at the output times; each a numpy copy.")
+  FieldPickle<History>(
+      py::class_<History>(m, "History", "Time history at the output times; each a numpy copy."))
       .def_readonly("modes", &History::modes)
       .def("__len__", &History::size)
       .def_property_readonly("time", [](const History& h) { return column(h.time); })
@@ -188,9 +194,29 @@ void bind_sim(py::module_& m) {
                              [](const History& h) { return column(h.damping_loss); })
       .def_property_readonly("impact_loss", [](const History& h) { return column(h.impact_loss); })
       .def_property_readonly("offset", [](const History& h) { return column(h.offset); })
-      .def_property_readonly("lift", [](const History& h) { return column(h.lift); });
+      .def_property_readonly("lift", [](const History& h) { return column(h.lift); })
+      .field("time", &History::time)
+      .field("phase", &History::phase)
+      .field("theta", &History::theta)
+      .field("theta_dot", &History::theta_dot)
+      .field("q", &History::q)
+      .field("q_dot", &History::q_dot)
+      .field("base_acc_x", &History::base_acc_x)
+      .field("base_acc_y", &History::base_acc_y)
+      .field("reaction_x", &History::reaction_x)
+      .field("reaction_y", &History::reaction_y)
+      .field("resultant", &History::resultant)
+      .field("friction_demand", &History::friction_demand)
+      .field("kinetic", &History::kinetic)
+      .field("potential", &History::potential)
+      .field("input_work", &History::input_work)
+      .field("damping_loss", &History::damping_loss)
+      .field("impact_loss", &History::impact_loss)
+      .field("offset", &History::offset)
+      .field("lift", &History::lift)
+      .pickled();
 
-  py::class_<Extremes>(m, "Extremes")
+  FieldPickle<Extremes>(py::class_<Extremes>(m, "Extremes"))
       .def_readonly("max_theta_edge1", &Extremes::max_theta_edge1)
       .def_readonly("max_theta_edge2", &Extremes::max_theta_edge2)
       .def_readonly("max_uplift", &Extremes::max_uplift)
@@ -228,9 +254,10 @@ void bind_sim(py::module_& m) {
       .def_readonly("tensile_landings", &Extremes::tensile_landings,
                     "landings/impacts that needed a pulling impulse (tensile_landing events)")
       .def_readonly("max_tensile_impulse", &Extremes::max_tensile_impulse,
-                    "[N s] largest pulling vertical impulse of such a landing, -min I_y (0: none)");
+                    "[N s] largest pulling vertical impulse of such a landing, -min I_y (0: none)")
+      .pickled();
 
-  py::class_<EnergyBalance>(m, "EnergyBalance")
+  FieldPickle<EnergyBalance>(py::class_<EnergyBalance>(m, "EnergyBalance"))
       .def_readonly("input_work", &EnergyBalance::input_work)
       .def_readonly("kinetic_change", &EnergyBalance::kinetic_change)
       .def_readonly("potential_change", &EnergyBalance::potential_change)
@@ -239,9 +266,10 @@ void bind_sim(py::module_& m) {
       .def_readonly("chatter_loss", &EnergyBalance::chatter_loss)
       .def_readonly("friction_loss", &EnergyBalance::friction_loss, "[J] work of friction")
       .def_readonly("residual", &EnergyBalance::residual)
-      .def_readonly("scale", &EnergyBalance::scale);
+      .def_readonly("scale", &EnergyBalance::scale)
+      .pickled();
 
-  py::class_<SimulationResult>(m, "SimulationResult")
+  FieldPickle<SimulationResult>(py::class_<SimulationResult>(m, "SimulationResult"))
       .def_readonly("status", &SimulationResult::status)
       .def_readonly("message", &SimulationResult::message)
       .def_readonly("t_end", &SimulationResult::t_end)
@@ -262,7 +290,8 @@ void bind_sim(py::module_& m) {
       .def_readonly("events", &SimulationResult::events)
       .def_readonly("steps", &SimulationResult::steps)
       .def_readonly("rejected_steps", &SimulationResult::rejected_steps)
-      .def_readonly("rhs_evaluations", &SimulationResult::rhs_evaluations);
+      .def_readonly("rhs_evaluations", &SimulationResult::rhs_evaluations)
+      .pickled();
 
   m.def("simulate", &simulate, py::arg("body"), py::arg("motion"),
         py::arg("initial") = InitialState{}, py::arg("options") = SimulationOptions{},

@@ -6,6 +6,7 @@
 #include <pybind11/stl.h>
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <chrono>
 #include <cmath>
@@ -18,6 +19,7 @@
 #include <vector>
 
 #include "bindings.hpp"
+#include "field_pickle.hpp"
 #include "flexrock/core/enum_names.hpp"
 #include "flexrock/core/error.hpp"
 #include "flexrock/excitation/intensity.hpp"
@@ -153,7 +155,8 @@ Returns
 -------
 bool)doc");
 
-  py::class_<RunSummary>(m, "RunSummary", "What a study keeps of one simulation.")
+  FieldPickle<RunSummary>(
+      py::class_<RunSummary>(m, "RunSummary", "What a study keeps of one simulation."))
       .def_readonly("outcome", &RunSummary::outcome)
       .def_readonly("status", &RunSummary::status)
       .def_readonly("max_theta_over_alpha", &RunSummary::max_theta_over_alpha)
@@ -180,7 +183,8 @@ bool)doc");
       .def_readonly("tensile_landings", &RunSummary::tensile_landings,
                     "landings that needed a pulling impulse")
       .def_readonly("max_tensile_impulse", &RunSummary::max_tensile_impulse,
-                    "[N s] largest pulling impulse of a landing (0: none)");
+                    "[N s] largest pulling impulse of a landing (0: none)")
+      .pickled();
   m.def("summarize", &summarize, py::arg("body"), py::arg("result"),
         R"doc(The study outcome class and peaks of a finished simulation.
 
@@ -532,7 +536,8 @@ list of SweepRow
     In index order.)doc");
 
   // fragility
-  py::class_<FragilityFit>(m, "FragilityFit", "Lognormal fragility P = Phi(ln(x/theta)/beta).")
+  FieldPickle<FragilityFit>(
+      py::class_<FragilityFit>(m, "FragilityFit", "Lognormal fragility P = Phi(ln(x/theta)/beta)."))
       .def_readonly("theta", &FragilityFit::theta)
       .def_readonly("beta", &FragilityFit::beta)
       .def_readonly("se_ln_theta", &FragilityFit::se_ln_theta)
@@ -547,19 +552,30 @@ list of SweepRow
                              [](const FragilityFit& f) {
                                return py::make_tuple(f.cov_ab[0], f.cov_ab[1], f.cov_ab[2]);
                              })
+      .field(
+          "cov_ab",
+          [](const FragilityFit& f) {
+            return std::array<double, 3>{f.cov_ab[0], f.cov_ab[1], f.cov_ab[2]};
+          },
+          [](FragilityFit& f, const py::handle& v) {
+            const auto a = v.cast<std::array<double, 3>>();
+            std::copy(a.begin(), a.end(), f.cov_ab);
+          })
       .def_readonly("log_likelihood", &FragilityFit::log_likelihood)
       .def_readonly("iterations", &FragilityFit::iterations)
       .def_readonly("samples", &FragilityFit::samples)
       .def_readonly("failures", &FragilityFit::failures)
-      .def("__repr__", [](const FragilityFit& f) {
-        std::ostringstream o;
-        o.precision(4);
-        o << "<FragilityFit theta = " << f.theta << " [" << f.theta_lower << ", " << f.theta_upper
-          << "], beta = " << f.beta << " [" << f.beta_lower << ", " << f.beta_upper << "] ("
-          << 100.0 * f.confidence << "% bounds), " << f.failures << " failures in " << f.samples
-          << " runs>";
-        return o.str();
-      });
+      .def("__repr__",
+           [](const FragilityFit& f) {
+             std::ostringstream o;
+             o.precision(4);
+             o << "<FragilityFit theta = " << f.theta << " [" << f.theta_lower << ", "
+               << f.theta_upper << "], beta = " << f.beta << " [" << f.beta_lower << ", "
+               << f.beta_upper << "] (" << 100.0 * f.confidence << "% bounds), " << f.failures
+               << " failures in " << f.samples << " runs>";
+             return o.str();
+           })
+      .pickled();
   m.def("fit_lognormal", &fit_lognormal, py::arg("im"), py::arg("failed"),
         py::arg("confidence") = 0.95,
         R"doc(Maximum-likelihood lognormal fragility P(failure | IM = x) = Phi(ln(x/theta)/beta).
@@ -1063,12 +1079,16 @@ CsvTable)doc");
       .def_readwrite("outcome", &io::FragilityQuery::outcome)
       .def_readwrite("level", &io::FragilityQuery::level)
       .def_readwrite("body", &io::FragilityQuery::body);
-  py::class_<io::FragilityData>(m, "FragilityData")
+  FieldPickle<io::FragilityData>(py::class_<io::FragilityData>(m, "FragilityData"))
       .def_readonly("body", &io::FragilityData::body)
       .def_readonly("im", &io::FragilityData::im)
       .def_readonly("failed", &io::FragilityData::failed)
       .def_readonly("excluded", &io::FragilityData::excluded)
-      .def_readonly("record", &io::FragilityData::record);
+      .def_readonly("record", &io::FragilityData::record)
+      .def_readonly("im_name", &io::FragilityData::im_name,
+                    "the intensity measure, as --im names it")
+      .def_readonly("im_unit", &io::FragilityData::im_unit, "its unit")
+      .pickled();
   m.def("fragility_data",
         py::overload_cast<const io::CsvTable&, const io::FragilityQuery&>(&io::fragility_data),
         py::arg("table"), py::arg("query"),
@@ -1176,7 +1196,22 @@ as ``flexrock fragility`` makes them (the same checks, observations, fits and fi
       .def("data", &io::FragilitySession::data, py::arg("state"), py::arg("body"),
            py::return_value_policy::copy)
       .def("fit", &io::FragilitySession::fit, py::arg("state"), py::arg("body"),
-           py::return_value_policy::copy)
+           py::return_value_policy::copy,
+           "The fit of a state and body; raises InputError with the reason if it has none.")
+      .def("fitted", &io::FragilitySession::fitted, py::arg("state"), py::arg("body"),
+           "Whether a state and body could be fitted.")
+      .def(
+          "not_fitted",
+          [](const io::FragilitySession& s) {
+            std::vector<std::tuple<std::size_t, std::size_t, std::string>> out;
+            for (std::size_t st = 0; st < s.states().size(); ++st) {
+              for (std::size_t k = 0; k < s.bodies(); ++k) {
+                if (!s.fitted(st, k)) out.emplace_back(st, k, s.not_fitted(st, k));
+              }
+            }
+            return out;
+          },
+          "The states and bodies that could not be fitted: (state, body, reason) each.")
       .def(
           "stripes",
           [](const io::FragilitySession& s, std::size_t state, std::size_t body) {

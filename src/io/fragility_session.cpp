@@ -89,19 +89,50 @@ FragilitySession::FragilitySession(CsvTable table, FragilityOptions options)
     }
     return study::fit_lognormal(d.im, d.failed, confidence);
   };
+  // one body or state that cannot be fitted does not stop the others: its reason is kept
+  std::vector<std::string> reasons;
   for (const DamageState& st : states_) {
     data_.push_back(fragility_data(table_, measure_, st, options_.body));
     fits_.emplace_back();
+    not_fitted_.emplace_back();
     for (const FragilityData& d : data_.back()) {
       try {
         fits_.back().push_back(fit_data(d));
+        not_fitted_.back().emplace_back();
       } catch (const InputError& e) {
-        throw InputError(table_.source + ": body '" + d.body + "'" +
-                         (several_ ? ", state '" + st.label + "'" : std::string()) + ": " +
-                         e.what());
+        fits_.back().emplace_back();
+        not_fitted_.back().push_back(table_.source + ": body '" + d.body + "'" +
+                                     (several_ ? ", state '" + st.label + "'" : std::string()) +
+                                     ": " + e.what());
+        reasons.push_back(not_fitted_.back().back());
       }
     }
   }
+  if (fitted_count() == 0) {
+    // the one reason as it is, or every one
+    std::string all = reasons.front();
+    if (reasons.size() > 1) {
+      all = "nothing could be fitted:";
+      for (const std::string& r : reasons) all += "\n  " + r;
+    }
+    throw InputError(all);
+  }
+}
+
+bool FragilitySession::fitted(std::size_t state, std::size_t body) const {
+  return not_fitted_.at(state).at(body).empty();
+}
+
+const std::string& FragilitySession::not_fitted(std::size_t state, std::size_t body) const {
+  return not_fitted_.at(state).at(body);
+}
+
+std::size_t FragilitySession::fitted_count() const {
+  std::size_t n = 0;
+  for (const std::vector<std::string>& st : not_fitted_) {
+    for (const std::string& r : st) n += r.empty() ? 1 : 0;
+  }
+  return n;
 }
 
 const FragilityData& FragilitySession::data(std::size_t state, std::size_t body) const {
@@ -109,6 +140,7 @@ const FragilityData& FragilitySession::data(std::size_t state, std::size_t body)
 }
 
 const study::FragilityFit& FragilitySession::fit(std::size_t state, std::size_t body) const {
+  if (!fitted(state, body)) throw InputError(not_fitted(state, body));
   return fits_.at(state).at(body);
 }
 
@@ -129,6 +161,7 @@ std::vector<FragilityOrderNote> FragilitySession::order_notes() const {
   std::vector<FragilityOrderNote> notes;
   for (std::size_t k = 0; k < bodies(); ++k) {
     for (std::size_t s = 1; s < states_.size(); ++s) {
+      if (!fitted(s - 1, k) || !fitted(s, k)) continue;
       const study::FragilityFit &a = fit(s - 1, k), &b = fit(s, k);
       const auto [lo, hi] = range(k, s - 1, s);
       FragilityOrderNote n;
@@ -149,6 +182,7 @@ void FragilitySession::write_fits(std::ostream& out) const {
   out << joined(several_ ? fragility_state_columns() : fragility_columns()) << '\n';
   for (std::size_t k = 0; k < bodies(); ++k) {
     for (std::size_t s = 0; s < states_.size(); ++s) {
+      if (!fitted(s, k)) continue;
       out << (several_ ? fragility_state_row(data(s, k), fit(s, k), states_[s].label)
                        : fragility_row(data(s, k), fit(s, k)))
           << '\n';

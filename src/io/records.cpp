@@ -11,131 +11,21 @@
 #include <utility>
 #include <vector>
 
-#include "decimal_comma.hpp"
 #include "flexrock/core/error.hpp"
 #include "flexrock/core/format.hpp"
 #include "flexrock/core/types.hpp"
 #include "flexrock/io/files.hpp"
+#include "record_text.hpp"
 
 namespace flexrock::io {
 
 namespace {
 
+using namespace detail;  // NOLINT(google-build-using-namespace): the text helpers
+
 // what AT2 line 4 must hold, for messages
 constexpr const char* kLine4Expected =
     "NPTS and DT, e.g. \"NPTS=   4096, DT=   .0100 SEC\" or \"4096    0.0100    NPTS, DT\"";
-// the largest point count we accept (guards against a garbled NPTS allocating gigabytes)
-constexpr double kMaxPoints = 1e8;
-
-// a line of a file with its 1-based number
-struct Line {
-  std::size_t number;
-  std::string text;
-};
-
-// shortest round-trip text of a double
-std::string show(double v) { return format_number(v); }
-
-// the text in quotes, shortened to 80 characters
-std::string quote(std::string_view s) {
-  // appends rather than "\"" + std::string(...): GCC 12 warns falsely on the latter (PR 105651)
-  constexpr std::size_t kMax = 80;
-  std::string q;
-  q.reserve(std::min(s.size(), kMax) + 5);
-  q.push_back('"');
-  q.append(s.substr(0, kMax));
-  if (s.size() > kMax) q.append("...");
-  q.push_back('"');
-  return q;
-}
-
-// "path:line: message"
-[[noreturn]] void fail(const std::string& path, std::size_t line, const std::string& message) {
-  throw InputError(path, line, "", message);
-}
-
-std::string_view trim(std::string_view s) {
-  const auto space = [](char c) { return std::isspace(static_cast<unsigned char>(c)) != 0; };
-  while (!s.empty() && space(s.front())) s.remove_prefix(1);
-  while (!s.empty() && space(s.back())) s.remove_suffix(1);
-  return s;
-}
-
-bool is_blank(std::string_view s) { return trim(s).empty(); }
-
-std::string upper(std::string_view s) {
-  std::string u(s);
-  for (char& c : u) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-  return u;
-}
-
-// the whole file as lines, without line ends (LF or CRLF) and without a UTF-8 byte-order mark
-std::vector<Line> read_lines(const std::string& path) {
-  // a regular file only: a FIFO would block, a device (/dev/zero) would never end
-  const std::string text = read_input_file(path, "record");
-  std::vector<Line> lines;
-  std::size_t start = 0;
-  while (start < text.size()) {
-    std::size_t end = text.find('\n', start);
-    if (end == std::string::npos) end = text.size();
-    std::string line = text.substr(start, end - start);
-    if (!line.empty() && line.back() == '\r') line.pop_back();
-    if (lines.empty() && line.starts_with("\xEF\xBB\xBF")) line.erase(0, 3);
-    lines.push_back({lines.size() + 1, std::move(line)});
-    start = end + 1;
-  }
-  return lines;
-}
-
-// splits on whitespace, and on commas too when `commas` is set (empty fields are dropped)
-std::vector<std::string_view> split(std::string_view s, bool commas) {
-  std::vector<std::string_view> out;
-  const auto sep = [commas](char c) {
-    return std::isspace(static_cast<unsigned char>(c)) != 0 || (commas && c == ',');
-  };
-  std::size_t i = 0;
-  while (i < s.size()) {
-    while (i < s.size() && sep(s[i])) ++i;
-    const std::size_t start = i;
-    while (i < s.size() && !sep(s[i])) ++i;
-    if (i > start) out.push_back(s.substr(start, i - start));
-  }
-  return out;
-}
-
-// a number token: plain or E notation, optional sign, leading zero optional (".139E-02")
-enum class Parsed { kOk, kNotANumber, kNotFinite };
-
-Parsed parse_number(std::string_view token, double& value) {
-  std::string_view t = token;
-  if (t.size() > 1 && t.front() == '+' && t[1] != '-' && t[1] != '+') t.remove_prefix(1);
-  if (t.empty()) return Parsed::kNotANumber;
-  const auto [ptr, ec] = std::from_chars(t.data(), t.data() + t.size(), value);
-  if (ec == std::errc::result_out_of_range) return Parsed::kNotFinite;
-  if (ec != std::errc() || ptr != t.data() + t.size()) return Parsed::kNotANumber;
-  return std::isfinite(value) ? Parsed::kOk : Parsed::kNotFinite;
-}
-
-// parses a value token or fails with the file position and what it is
-double value_or_fail(const std::string& path, std::size_t line, std::string_view token,
-                     const std::string& what) {
-  double v = 0.0;
-  switch (parse_number(token, v)) {
-    case Parsed::kOk:
-      return v;
-    case Parsed::kNotFinite:
-      fail(path, line,
-           "expected a finite number for " + what + ", got " + quote(token) +
-               " (NaN or infinite values are not allowed)");
-    case Parsed::kNotANumber:
-      break;
-  }
-  fail(path, line, "expected a number for " + what + ", got " + quote(token));
-}
-
-// "value 12" for messages
-std::string nth_value(std::size_t k) { return "value " + std::to_string(k); }
-
 // units named in AT2 line 3 ("... IN UNITS OF G")
 AccelUnit at2_units(const std::string& path, const Line& line) {
   const std::string u = upper(line.text);
@@ -151,16 +41,7 @@ AccelUnit at2_units(const std::string& path, const Line& line) {
   if (at != std::string::npos) {
     const std::vector<std::string_view> words = split(std::string_view(u).substr(at + 8), true);
     if (!words.empty()) {
-      std::string_view w = words.front();
-      while (!w.empty() && (w.back() == '.' || w.back() == ';')) w.remove_suffix(1);
-      if (w == "G") return AccelUnit::kG;
-      for (const char* s :
-           {"CM/S/S", "CM/SEC/SEC", "CM/S^2", "CM/S2", "CM/SEC^2", "CM/SEC2", "GAL", "GALS"}) {
-        if (w == s) return AccelUnit::kCentimetersPerSecond2;
-      }
-      for (const char* s : {"M/S/S", "M/SEC/SEC", "M/S^2", "M/S2", "M/SEC^2", "M/SEC2"}) {
-        if (w == s) return AccelUnit::kMetersPerSecond2;
-      }
+      if (const std::optional<AccelUnit> unit = accel_unit_from_text(words.front())) return *unit;
     }
   }
   fail(path, line.number, "expected " + expected + ", got " + quote(line.text));
@@ -285,51 +166,6 @@ std::pair<std::size_t, double> at2_npts_dt(const std::string& path, const Line& 
              quote(line.text));
   }
   return {static_cast<std::size_t>(n), dt->value};
-}
-
-// times i * dt
-std::vector<double> uniform_times(std::size_t n, double dt) {
-  std::vector<double> t(n);
-  for (std::size_t i = 0; i < n; ++i) t[i] = static_cast<double>(i) * dt;
-  return t;
-}
-
-// a comment line: '#' as the first non-blank character
-bool is_comment(std::string_view s) {
-  s = trim(s);
-  return !s.empty() && s.front() == '#';
-}
-
-// the line up to an inline '#' comment
-std::string_view strip_comment(std::string_view s) {
-  const std::size_t hash = s.find('#');
-  return hash == std::string_view::npos ? s : s.substr(0, hash);
-}
-
-// fields of a two-column line: split on commas (CSV, empty fields kept) or whitespace
-std::vector<std::string_view> fields(std::string_view s) {
-  if (s.find(',') == std::string_view::npos) return split(s, false);
-  std::vector<std::string_view> out;
-  std::size_t start = 0;
-  while (true) {
-    const std::size_t comma = s.find(',', start);
-    out.push_back(trim(s.substr(start, comma == std::string_view::npos ? comma : comma - start)));
-    if (comma == std::string_view::npos) break;
-    start = comma + 1;
-  }
-  // a trailing comma at the end of a line is allowed
-  if (out.size() > 1 && out.back().empty()) out.pop_back();
-  return out;
-}
-
-// a number with a decimal comma would be split in two at the comma: refused, never split
-void refuse_decimal_commas(const std::string& path, const Line& line, std::size_t min_tokens) {
-  const std::string n = detail::decimal_comma_number(strip_comment(line.text), min_tokens);
-  if (!n.empty()) fail(path, line.number, detail::decimal_comma_message(n));
-}
-
-bool all_blank(const std::vector<Line>& lines) {
-  return std::all_of(lines.begin(), lines.end(), [](const Line& l) { return is_blank(l.text); });
 }
 
 }  // namespace
@@ -460,15 +296,85 @@ Record read_single_column(const std::string& path, double dt, AccelUnit units) {
   return r;
 }
 
-Record read_time_series(const std::string& path, AccelUnit units) {
+namespace {
+
+// fields of a two-column line: split on semicolons (a comma then being a decimal mark), on commas
+// (CSV, empty fields kept) or on whitespace
+std::vector<std::string> row_fields(std::string_view s) {
+  std::vector<std::string> out;
+  const char sep = s.find(';') != std::string_view::npos   ? ';'
+                   : s.find(',') != std::string_view::npos ? ','
+                                                           : ' ';
+  if (sep == ' ') {
+    // a bracketed unit after a name belongs to it: "time [s]   acc [g]" is two fields
+    for (std::string_view w : split(s, false)) {
+      if (!out.empty() && (w.front() == '[' || w.front() == '(')) {
+        out.back() += " " + std::string(w);
+      } else {
+        out.emplace_back(w);
+      }
+    }
+    return out;
+  }
+  std::size_t start = 0;
+  while (true) {
+    const std::size_t at = s.find(sep, start);
+    std::string f(trim(s.substr(start, at == std::string_view::npos ? at : at - start)));
+    if (sep == ';' && detail::decimal_comma_token(f)) std::replace(f.begin(), f.end(), ',', '.');
+    out.push_back(std::move(f));
+    if (at == std::string_view::npos) break;
+    start = at + 1;
+  }
+  // a trailing separator at the end of a line is allowed
+  if (out.size() > 1 && out.back().empty()) out.pop_back();
+  return out;
+}
+
+// the unit a header field states: the whole field ("g", "[s]") or its last bracketed part
+// ("acc [cm/s^2]", "t(s)"); empty when it states none
+std::string stated_unit(std::string_view field) {
+  field = trim(field);
+  for (const auto& [open, close] : {std::pair{'[', ']'}, std::pair{'(', ')'}}) {
+    if (!field.empty() && field.back() == close) {
+      const std::size_t at = field.rfind(open);
+      if (at != std::string_view::npos)
+        return std::string(trim(field.substr(at + 1, field.size() - at - 2)));
+    }
+  }
+  return std::string(field);
+}
+
+bool is_seconds(std::string_view u) {
+  const std::string x = upper(u);
+  return x == "S" || x == "SEC" || x == "SECS" || x == "SECOND" || x == "SECONDS";
+}
+
+// text that names a unit ("ft/s^2", "mg"), not a word such as "horizontal"
+bool looks_like_unit(std::string_view u) {
+  const std::string x = upper(u);
+  return x.find_first_of("/^*") != std::string::npos || x == "MG" || x == "UG" || x == "MGAL";
+}
+
+// a time unit other than seconds, which flexrock does not convert
+bool is_other_time_unit(std::string_view u) {
+  const std::string x = upper(u);
+  return x == "MS" || x == "MSEC" || x == "MIN" || x == "H" || x == "HR" || x == "US";
+}
+
+}  // namespace
+
+Record read_time_series(const std::string& path, std::optional<AccelUnit> units) {
   const std::vector<Line> lines = read_lines(path);
   if (all_blank(lines)) fail(path, 1, "empty file; expected time, acceleration pairs");
 
   Record r;
   r.source = path;
-  r.units = units;
+  std::optional<AccelUnit> stated;  // the acceleration unit the header rows state
+  std::size_t stated_line = 0;
   std::size_t previous_line = 0;
-  bool first_row = true;
+  std::size_t header_rows = 0;  // rows of names or units before the first pair (at most 2)
+  std::size_t columns = 0;      // fields of the first pair's row
+  std::size_t columns_line = 0;
   for (const Line& line : lines) {
     if (is_comment(line.text)) {
       r.header.push_back(line.text);
@@ -476,28 +382,57 @@ Record read_time_series(const std::string& path, AccelUnit units) {
     }
     const std::string_view body = strip_comment(line.text);
     if (is_blank(body)) continue;
-    refuse_decimal_commas(path, line, 2);
-    const std::vector<std::string_view> f = fields(body);
-    // an optional header row: the first row, if its first field is not a number
+    if (body.find(';') == std::string_view::npos) refuse_decimal_commas(path, line, 2);
+    const std::vector<std::string> f = row_fields(body);
+    // rows of names or units before the first pair: their first field is not a number
     double probe = 0.0;
-    if (first_row && parse_number(f.front(), probe) == Parsed::kNotANumber) {
-      first_row = false;
+    if (r.time.empty() && header_rows < 2 &&
+        parse_number(f.front(), probe) == Parsed::kNotANumber) {
+      ++header_rows;
       r.header.push_back(line.text);
+      if (f.size() >= 2) {
+        const std::string tu = stated_unit(f[0]);
+        if (is_other_time_unit(tu)) {
+          throw InputError(path, line.number, "column 1",
+                           "expected the time in seconds, got \"" + tu + "\" in " +
+                               quote(line.text) + "; convert the times to s");
+        }
+        const std::string au = stated_unit(f[1]);
+        const std::optional<AccelUnit> u = accel_unit_from_text(au);
+        if (u) {
+          stated = u;
+          stated_line = line.number;
+        } else if ((f[1] != au || is_seconds(tu)) && looks_like_unit(au)) {
+          // a unit (bracketed, or in a units row) that is no acceleration unit flexrock knows
+          throw InputError(path, line.number, "column 2",
+                           "expected an acceleration unit (g, m/s^2, cm/s^2, gal), got \"" + au +
+                               "\" in " + quote(line.text));
+        }
+      }
       continue;
     }
-    first_row = false;
-    if (f.size() != 2) {
+    if (columns == 0) {
+      if (f.size() < 2) {
+        fail(path, line.number,
+             "expected 2 columns (time [s], acceleration), got " + std::to_string(f.size()) +
+                 " in " + quote(line.text));
+      }
+      columns = f.size();
+      columns_line = line.number;
+    }
+    if (f.size() != columns) {
       fail(path, line.number,
-           "expected 2 columns (time [s], acceleration), got " + std::to_string(f.size()) + " in " +
+           "expected " + std::to_string(columns) + " columns (time [s], acceleration" +
+               (columns > 2 ? ", and the columns not read" : "") + ") as on line " +
+               std::to_string(columns_line) + ", got " + std::to_string(f.size()) + " in " +
                quote(line.text));
     }
     const double t = value_or_fail(path, line.number, f[0], "the time");
     const double a = value_or_fail(path, line.number, f[1], "the acceleration");
     if (!r.time.empty() && !(t > r.time.back())) {
       fail(path, line.number,
-           "expected strictly increasing times, got t = " + std::string(f[0]) +
-               " s, not after t = " + show(r.time.back()) + " s on line " +
-               std::to_string(previous_line));
+           "expected strictly increasing times, got t = " + f[0] + " s, not after t = " +
+               show(r.time.back()) + " s on line " + std::to_string(previous_line));
     }
     r.time.push_back(t);
     r.values.push_back(a);
@@ -506,6 +441,18 @@ Record read_time_series(const std::string& path, AccelUnit units) {
   if (r.values.empty()) {
     fail(path, lines.size(), "expected time, acceleration pairs, got none");
   }
+  if (stated && units && *stated != *units) {
+    throw InputError(path, stated_line, "column 2",
+                     "the file states the accelerations in " + std::string(unit_name(*stated)) +
+                         ", but " + std::string(unit_name(*units)) +
+                         " was given; expected the units the file states");
+  }
+  if (!stated && !units) {
+    fail(path, 1,
+         "the file does not state the units of its accelerations (no units row such as \"s, g\" "
+         "or \"time [s], acc [cm/s^2]\"); expected the units to be given (g, m/s^2 or cm/s^2)");
+  }
+  r.units = stated ? *stated : *units;
 
   // uniform sampling: every time within 1e-9 dt of t0 + i dt
   const std::size_t n = r.time.size();
@@ -563,6 +510,118 @@ GroundMotion combine(const Record& horizontal, const Record* vertical, double sc
   }
   if (h.dt > 0.0) return GroundMotion::uniform(h.dt, std::move(ax), std::move(ay), h.time.front());
   return GroundMotion::sampled(h.time, std::move(ax), std::move(ay));
+}
+
+// ---- the table of formats ------------------------------------------------------------------
+
+const std::vector<RecordFormat>& record_formats() {
+  using U = std::optional<AccelUnit>;
+  static const std::vector<RecordFormat> formats = {
+      {"at2", ".at2", false, RecordUnits::kFile, "PEER (NGA, NGA-West2)",
+       "4 header lines (units on line 3, NPTS and DT in any of their forms on line 4), then NPTS "
+       "values",
+       [](const std::string& p, double, U) { return read_at2(p); }},
+      {"smc", ".smc", false, RecordUnits::kFile, "USGS (strong-motion CD-ROMs; PEER's PEA2SMC)",
+       "11 text lines, 48 integers (samples: the 17th), 50 reals (sampling rate: the 2nd), "
+       "comment lines, then the values in cm/s^2",
+       [](const std::string& p, double, U) { return read_smc(p); }},
+      {"knet", ".ns .ew .ud .ns1 .ew1 .ud1 .ns2 .ew2 .ud2", false, RecordUnits::kFile,
+       "NIED (K-NET, KiK-net)",
+       "17 header lines (sampling frequency, scale factor), then counts; values = counts x scale "
+       "factor [cm/s^2], offset kept",
+       [](const std::string& p, double, U) { return read_knet(p); }},
+      {"esm", ".acc.asc", false, RecordUnits::kFile,
+       "ESM (Engineering Strong Motion database, ORFEUS)",
+       "\"KEY: value\" header lines (NDATA, SAMPLING_INTERVAL_S, UNITS), then NDATA values",
+       [](const std::string& p, double, U) { return read_esm(p); }},
+      {"cosmos", ".v1 .v2 .v1c .v2c", false, RecordUnits::kFile, "COSMOS V1/V2 (CESMD, CGS, USGS)",
+       "text, integer, real and comment headers, then the first acceleration block in its "
+       "Fortran format (sample interval: real value 62, ms)",
+       [](const std::string& p, double, U) { return read_cosmos(p); }},
+      {"single_column", "", true, RecordUnits::kGiven, "any",
+       "values every `dt`, any count a line, blanks or commas between them; '#' comments",
+       [](const std::string& p, double dt, U u) {
+         return read_single_column(p, dt, u.value_or(AccelUnit::kG));
+       }},
+      {"time_series", "", false, RecordUnits::kFileOrGiven, "any (spreadsheets, CSV exports)",
+       "time [s], acceleration pairs; blanks, commas or semicolons (then a decimal comma); an "
+       "optional names row and units row (`s, g`); columns after the second not read",
+       [](const std::string& p, double, U u) { return read_time_series(p, u); }},
+  };
+  return formats;
+}
+
+const RecordFormat* find_record_format(std::string_view name) {
+  for (const RecordFormat& f : record_formats()) {
+    if (name == f.name) return &f;
+  }
+  return nullptr;
+}
+
+const RecordFormat* record_format_for(const std::string& path) {
+  std::string name = path;
+  for (char& c : name) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  for (const RecordFormat& f : record_formats()) {
+    for (std::string_view suffix : split(f.suffixes, false)) {
+      if (name.size() > suffix.size() && name.ends_with(suffix)) return &f;
+    }
+  }
+  return nullptr;
+}
+
+std::string record_format_names() {
+  std::string s;
+  for (const RecordFormat& f : record_formats()) s += (s.empty() ? "" : ", ") + std::string(f.name);
+  return s;
+}
+
+Record read_record(const std::string& path, const std::string& format, double dt,
+                   std::optional<AccelUnit> units) {
+  const RecordFormat* f = format.empty() ? record_format_for(path) : find_record_format(format);
+  if (f == nullptr) {
+    throw InputError(path + ": format: " +
+                     (format.empty() ? std::string("the file name does not say the format")
+                                     : "unknown format \"" + format + "\"") +
+                     "; expected one of: " + record_format_names());
+  }
+  if (f->needs_dt && !(std::isfinite(dt) && dt > 0.0)) {
+    throw InputError(path + ": dt: expected a positive sample spacing [s] for the " +
+                     std::string(f->name) + " format, got " + show(dt));
+  }
+  if (f->units == RecordUnits::kGiven && !units) {
+    throw InputError(path +
+                     ": units: expected the units of the file's values (g, m/s^2 or "
+                     "cm/s^2) for the " +
+                     std::string(f->name) + " format");
+  }
+  Record r = f->read(path, dt, units);
+  if (units && *units != r.units) {
+    throw InputError(path + ": units: the file states its values in " +
+                     std::string(unit_name(r.units)) + ", but " + std::string(unit_name(*units)) +
+                     " was given; expected the units the file states (or none)");
+  }
+  return r;
+}
+
+std::string record_format_reference() {
+  std::string s =
+      "<!-- begin: written by `flexrock keys --markdown` from the table of record formats "
+      "(src/io/records.cpp); edit the table, not these lines -->\n"
+      "| `format` | chosen for names ending in | `dt` | `units` | published by | layout |\n"
+      "|---|---|---|---|---|---|\n";
+  for (const RecordFormat& f : record_formats()) {
+    std::string suffixes;
+    for (std::string_view x : split(f.suffixes, false)) {
+      suffixes += (suffixes.empty() ? "`" : ", `") + std::string(x) + "`";
+    }
+    s += "| `" + std::string(f.name) + "` | " + (suffixes.empty() ? "(give `format`)" : suffixes) +
+         " | " + (f.needs_dt ? "required" : "from the file") + " | " +
+         (f.units == RecordUnits::kGiven         ? "required"
+          : f.units == RecordUnits::kFileOrGiven ? "from a units row, else required"
+                                                 : "from the file") +
+         " | " + f.publisher + " | " + f.doc + " |\n";
+  }
+  return s + "<!-- end: written by `flexrock keys --markdown` -->\n";
 }
 
 }  // namespace flexrock::io

@@ -1,8 +1,9 @@
 # SPDX-License-Identifier: BSD-3-Clause
 # included from src/CMakeLists.txt; paths are relative to src/
 
-# flexrock::io: record files (PEER .AT2, single-column, time/acceleration text and CSV)
-add_library(flexrock_io io/records.cpp io/files.cpp)
+# flexrock::io: record files (PEER .AT2, USGS SMC, K-NET, ESM, COSMOS, single-column,
+# time/acceleration text and CSV)
+add_library(flexrock_io io/records.cpp io/agency_records.cpp io/files.cpp)
 add_library(flexrock::io ALIAS flexrock_io)
 set_target_properties(flexrock_io PROPERTIES EXPORT_NAME io)
 target_link_libraries(flexrock_io PUBLIC flexrock::core

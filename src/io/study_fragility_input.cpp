@@ -200,6 +200,13 @@ std::vector<FragilityData> observations(const CsvTable& t, const FragilityMeasur
     }
     return v;
   };
+  // the measure's unit: requested levels are in the sweep's requested_units
+  std::string unit = m.unit;
+  const std::size_t cu = static_cast<std::size_t>(
+      std::find(t.columns.begin(), t.columns.end(), "requested_units") - t.columns.begin());
+  if (m.kind == FragilityMeasureKind::kRequestedLevel && cu < t.columns.size() && !t.rows.empty()) {
+    unit = t.rows.front()[cu];
+  }
   std::vector<FragilityData> out;
   for (std::size_t r = 0; r < t.rows.size(); ++r) {
     const std::string& body = t.rows[r][cb];
@@ -207,7 +214,7 @@ std::vector<FragilityData> observations(const CsvTable& t, const FragilityMeasur
     auto it = std::find_if(out.begin(), out.end(),
                            [&](const FragilityData& d) { return d.body == body; });
     if (it == out.end()) {
-      out.push_back({body, {}, {}, 0, {}});
+      out.push_back({body, {}, {}, 0, {}, m.name, unit});
       it = out.end() - 1;
     }
     // not classified: the run could not go on (`contact_lost`: rows written before the engine
@@ -298,6 +305,11 @@ const FragilityColumn kFragilityColumns[] = {
      [](const FragilityData&, const Fit& f) { return field(f.beta_upper); }},
     {"log_likelihood", "-", "at the maximum",
      [](const FragilityData&, const Fit& f) { return field(f.log_likelihood); }},
+    {"im_name", "-",
+     "the intensity measure fitted, as `--im` names it (`pga_g`, `sa:1`, `requested_level`, ...)",
+     [](const FragilityData& d, const Fit&) { return d.im_name; }},
+    {"im_unit", "-", "its unit: the unit of `theta`, `theta_lower` and `theta_upper`",
+     [](const FragilityData& d, const Fit&) { return d.im_unit; }},
 };
 
 }  // namespace

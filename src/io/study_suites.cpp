@@ -147,32 +147,31 @@ SuiteComponent suite_component(Keys& r, const std::string& key) {
 Record read_suite_file(Keys& r, const std::string& key, std::size_t line, const std::string& path,
                        const std::optional<std::string>& format,
                        const std::optional<std::string>& units, double dt) {
-  std::string ext = fs::path(path).extension().string();
-  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  const std::string fmt = format.value_or(ext == ".at2" ? "at2" : "");
+  const RecordFormat* by_name = record_format_for(path);
+  const std::string fmt = format.value_or(by_name != nullptr ? by_name->name : "");
   if (fmt.empty())
     r.fail_at(line, key,
-              "file " + path + " is no .AT2 file; expected 'format' in this [[suite]] (" +
-                  "at2, single_column or time_series)");
-  const detail::RecordFormat* rf = nullptr;
-  for (const detail::RecordFormat& f : detail::record_formats()) {
-    if (fmt == f.name) rf = &f;
-  }
+              "the name of file " + path + " does not say its format; expected 'format' in this " +
+                  "[[suite]] (" + record_format_names() + ")");
+  const RecordFormat* rf = find_record_format(fmt);
   if (rf->needs_dt && !(dt > 0.0))
     r.fail("dt", "missing; expected 'dt' [s] (sample spacing) for the single_column files");
-  if (rf->needs_units && !units)
+  if (rf->units == RecordUnits::kGiven && !units)
     r.fail("units", "missing; expected one of: " + join(detail::accel_unit_names()) +
                         " (the units of the files' values)");
+  const std::optional<AccelUnit> given =
+      units ? std::optional<AccelUnit>(detail::accel_unit(*units)) : std::nullopt;
   Record rec;
   try {
-    rec = rf->read(path, dt, units ? detail::accel_unit(*units) : AccelUnit::kG);
+    rec = rf->read(path, dt, given);
   } catch (const InputError& e) {
     throw InputError(std::string(e.what()) + " (record matched by key '" + r.full(key) + "' at " +
                      r.file() + ":" + std::to_string(line) + ")");
   }
-  if (units && detail::accel_unit(*units) != rec.units) {
-    r.fail("units", "expected the units the AT2 file " + path + " states (" +
-                        std::string(unit_name(rec.units)) + "), got \"" + *units + "\"");
+  if (given && *given != rec.units) {
+    r.fail("units", "expected the units the " + std::string(rf->name) + " file " + path +
+                        " states (" + std::string(unit_name(rec.units)) + "), got \"" + *units +
+                        "\"");
   }
   if (rec.npts() < 2) r.fail_at(line, key, "expected a record with at least 2 samples in " + path);
   return rec;
@@ -193,7 +192,7 @@ std::vector<study::SweepRecord> read_suite(Keys& r, std::uint64_t& hash,
   std::optional<std::string> format;
   if (r.has("format")) {
     std::vector<std::string> names;
-    for (const detail::RecordFormat& f : detail::record_formats()) names.emplace_back(f.name);
+    for (const RecordFormat& f : record_formats()) names.emplace_back(f.name);
     format = r.choice("format", names);
   }
   std::optional<std::string> units;

@@ -439,25 +439,6 @@ inline AccelUnit accel_unit(const std::string& name) {
                    "; got \"" + name + "\"");
 }
 
-// one entry a record format: its name in `format`, whether it needs `dt` and `units` (an AT2
-// file states its own), and its reader (records.hpp)
-struct RecordFormat {
-  const char* name;
-  bool needs_dt;
-  bool needs_units;
-  Record (*read)(const std::string& path, double dt, AccelUnit units);
-};
-inline const std::vector<RecordFormat>& record_formats() {
-  static const std::vector<RecordFormat> formats = {
-      {"at2", false, false, [](const std::string& p, double, AccelUnit) { return read_at2(p); }},
-      {"single_column", true, true,
-       [](const std::string& p, double dt, AccelUnit u) { return read_single_column(p, dt, u); }},
-      {"time_series", false, true,
-       [](const std::string& p, double, AccelUnit u) { return read_time_series(p, u); }},
-  };
-  return formats;
-}
-
 // the keys of a record table: file, format, units, dt (the caller reads its own: scale, name)
 struct RecordKeys {
   std::string file;  // as written
@@ -473,17 +454,15 @@ inline RecordKeys read_record_keys(TableReader& r, const std::string& file_what)
   k.file = r.string("file", file_what);
   k.path = resolve_path(r.file(), k.file);
   k.line = line_of(*r.node("file"));
-  std::string ext = std::filesystem::path(k.file).extension().string();
-  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   std::vector<std::string> names;
   for (const RecordFormat& f : record_formats()) names.emplace_back(f.name);
-  const std::string format = r.choice("format", names, ext == ".at2" ? "at2" : "");
-  for (const RecordFormat& f : record_formats()) {
-    if (format == f.name) k.format = &f;
-  }
+  // the format the file name selects (the suffixes of record_formats()), else required
+  const RecordFormat* by_name = record_format_for(k.file);
+  const std::string format = r.choice("format", names, by_name != nullptr ? by_name->name : "");
+  k.format = find_record_format(format);
   if (r.has("units")) k.units = r.choice("units", accel_unit_names());
   if (k.format->needs_dt) k.dt = r.positive("dt", "[s] (sample spacing)");
-  if (k.format->needs_units && !k.units) {
+  if (k.format->units == RecordUnits::kGiven && !k.units) {
     r.fail_at(r.line(), "units",
               "missing; expected one of: " + join(accel_unit_names()) +
                   " (the units of the file's values)");
@@ -495,9 +474,11 @@ inline RecordKeys read_record_keys(TableReader& r, const std::string& file_what)
 inline Record read_record_file(TableReader& r, const RecordKeys& k) {
   Record rec;
   try {
-    rec = k.format->read(k.path, k.dt, k.units ? accel_unit(*k.units) : AccelUnit::kG);
-    if (k.units && accel_unit(*k.units) != rec.units) {
-      r.fail("units", "expected the units the AT2 file states (" +
+    const std::optional<AccelUnit> given =
+        k.units ? std::optional<AccelUnit>(accel_unit(*k.units)) : std::nullopt;
+    rec = k.format->read(k.path, k.dt, given);
+    if (given && *given != rec.units) {
+      r.fail("units", "expected the units the " + std::string(k.format->name) + " file states (" +
                           std::string(unit_name(rec.units)) + "), got \"" + *k.units + "\"");
     }
   } catch (const InputError& e) {

@@ -49,7 +49,7 @@ TEST_P(FuzzReplay, EveryCorpusAndRegressionInputIsReadOrRefusedCleanly) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Targets, FuzzReplay,
-                         ::testing::Values("fuzz_at2", "fuzz_values", "fuzz_csv", "fuzz_case",
-                                           "fuzz_sweep", "fuzz_spectrum"));
+                         ::testing::Values("fuzz_at2", "fuzz_values", "fuzz_csv", "fuzz_agency",
+                                           "fuzz_case", "fuzz_sweep", "fuzz_spectrum"));
 
 }  // namespace

@@ -57,9 +57,11 @@ struct FragilityOrderNote {
 /// The fits of every damage state and body of a sweep CSV.
 class FragilitySession {
  public:
-  /// Checks the options and the table (check_sweep_table), then fits every state and body.
-  /// Throws InputError: options as `flexrock fragility` names them, data with the file, body
-  /// and state.
+  /// Checks the options and the table (check_sweep_table), then fits every state and body. A
+  /// body or state that cannot be fitted (it never fails, the measure separates its outcomes
+  /// perfectly, ...) is kept with the reason (fitted(), not_fitted()) and the others are fitted.
+  /// Throws InputError: options as `flexrock fragility` names them, data with the file, and,
+  /// naming every body and state with its reason, when nothing could be fitted.
   FragilitySession(CsvTable table, FragilityOptions options);
   /// The same for the sweep CSV at `path`.
   FragilitySession(const std::string& path, FragilityOptions options);
@@ -76,16 +78,24 @@ class FragilitySession {
   /// Bodies in the order of their first row (the same for every state).
   std::size_t bodies() const { return data_.front().size(); }
   const FragilityData& data(std::size_t state, std::size_t body) const;
+  /// The fit of a state and body; throws InputError with the reason when it could not be fitted.
   const study::FragilityFit& fit(std::size_t state, std::size_t body) const;
+  /// Whether a state and body could be fitted.
+  bool fitted(std::size_t state, std::size_t body) const;
+  /// Why a state and body could not be fitted ("<file>: body 'b', state 's': ..."); "" if fitted.
+  const std::string& not_fitted(std::size_t state, std::size_t body) const;
+  /// The number of states and bodies fitted (at least 1).
+  std::size_t fitted_count() const;
   /// The stripes of a multiple-stripe analysis (the sweep's levels).
   std::vector<study::Stripe> stripes(std::size_t state, std::size_t body) const;
   /// The observed range of the measure over two states of a body (or one: a == b).
   std::pair<double, double> range(std::size_t body, std::size_t a, std::size_t b) const;
-  /// Medians out of order and curves that cross inside the data, every body, state after state.
+  /// Medians out of order and curves that cross inside the data, every body, state after state
+  /// (pairs of fitted states only).
   std::vector<FragilityOrderNote> order_notes() const;
 
   /// The fit CSV (fragility_columns, or fragility_state_columns with several states): bodies in
-  /// order, their states in order.
+  /// order, their states in order; the states and bodies not fitted have no row.
   void write_fits(std::ostream& out) const;
 
  private:
@@ -97,6 +107,7 @@ class FragilitySession {
   bool several_ = false;
   std::vector<std::vector<FragilityData>> data_;        // [state][body]
   std::vector<std::vector<study::FragilityFit>> fits_;  // [state][body]
+  std::vector<std::vector<std::string>> not_fitted_;    // [state][body]: why not; "" fitted
 };
 
 }  // namespace flexrock::io

@@ -265,6 +265,8 @@ struct FragilityData {
   std::size_t excluded = 0;  // rows left out: status stopped or contact_lost
   // the record of each observation (its `record` column; empty names if the file has none)
   std::vector<std::string> record;
+  std::string im_name;  // the intensity measure, as --im names it ("pga_g", "sa:1", ...)
+  std::string im_unit;  // its unit ("g", "m/s^2"; requested_level: the sweep's requested_units)
 };
 
 /// Checks a sweep CSV read without its manifest as a resume checks a journal line, so far as
