@@ -60,8 +60,10 @@ bool Simulator<N, MaxN>::start_mode(double t, State& x) {
   const ModeSpec& spec = mode_spec(mode_);
   for (int j = 0; j < spec.count; ++j) {
     const auto k = static_cast<std::size_t>(j);
+    if (latch_.friction_tie && spec.guards[k] == Guard::kFrictionLimit) continue;
     if (latch_.zero_start[k] && s0_.v[k] != 0.0) latch_.zero_start[k] = false;
   }
+  latch_.friction_tie = false;
   auto at_or_below = [&](Guard g) {
     const int j = guard_slot(mode_, g);
     return j >= 0 && !latch_.zero_start[static_cast<std::size_t>(j)] &&

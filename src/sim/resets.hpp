@@ -361,9 +361,14 @@ bool Simulator<N, MaxN>::uplift_holds(double t, int e) {
 }
 
 // the slip velocity reached zero: the base sticks if static friction can hold it (a strictly
-// positive margin), else it slides the way the floor cannot hold (theory §18)
+// positive margin), else it slides the way the floor cannot hold (theory §18). A slide that began
+// here from rest and could not be resolved as growing (its slip_stop fired where it started) has
+// already shown that the floor holds: the margin is zero to rounding, and the base sticks
 template <int N, int MaxN>
 bool Simulator<N, MaxN>::stick(double t, State& x) {
+  const bool never_grew =
+      latch_.zero_start[static_cast<std::size_t>(guard_slot(mode_, Guard::kSlipStop))] &&
+      t == ledger_.slide_start;
   ledger_.offset = x(isd());
   x(isv()) = 0.0;
   const int pivot = mode_spec(mode_).pivot, was = slip();
@@ -371,14 +376,20 @@ bool Simulator<N, MaxN>::stick(double t, State& x) {
   switch_mode(contact_mode(pivot, 0), t, x);
   GuardSample now;
   evaluate(t, x, now);
-  const StickOrSlip after = stick_or_slip(
-      now.fi, now.v[static_cast<std::size_t>(guard_slot(mode_, Guard::kFrictionLimit))]);
+  const int limit = guard_slot(mode_, Guard::kFrictionLimit);
+  const double margin = now.v[static_cast<std::size_t>(limit)];
+  const StickOrSlip after = stick_or_slip(now.fi, margin, never_grew);
   Event ev = make_event(t, after.sticks ? EventKind::kStick : EventKind::kSlipReversal,
                         rocking() ? edge() : 0);
   ev.theta = th;
   ev.friction_demand = friction_ratio(now.fi, now.fj);
   rec_.event(ev);
   latch_.zero_start.fill(false);
+  if (after.tie) {
+    // the friction limit starts at zero and fires only where the margin falls below it later
+    latch_.zero_start[static_cast<std::size_t>(limit)] = true;
+    latch_.friction_tie = true;
+  }
   if (after.slip != 0) {
     if (after.slip != was) ++res_.extremes.slips;
     switch_mode(contact_mode(pivot, after.slip), t, x);

@@ -456,6 +456,9 @@ class Simulator final : private GuardProbe {
     // body would lift off and land again without end
     bool hold_tension = false;
     bool suppress_uplift_at_start = false;
+    // a slide that could not grow ended where it began, the margin m_s = 0 to rounding (a tie):
+    // the sticking mode's friction limit starts at zero, whatever the sign its rounding gives
+    bool friction_tie = false;
     bool entry_pending = false;  // a reset changed the mode at t: enter_mode starts it next
   } latch_;
   // the run's account: where the base is, when contact last changed, the energies, the outputs

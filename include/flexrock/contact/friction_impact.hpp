@@ -39,13 +39,19 @@ inline int slip_direction(double f_i) { return f_i > 0.0 ? -1 : 1; }
 
 /// A sliding contact whose slip velocity reached zero (theory §18): it sticks where static
 /// friction holds with a strictly positive margin mu_s F_J - |F_I|; where the margin is <= 0 it
-/// slides the way the floor cannot hold it.
+/// slides the way the floor cannot hold it. The tie: a slide that started here from rest and did
+/// not grow (`never_grew`: its slip velocity had no value of its sign to resolution) is the floor
+/// holding at m_s = 0 (Coulomb's law holds up to and including |F_I| = mu_s F_J; a margin that is
+/// not positive there is zero to rounding, since a negative one makes the slide grow): it sticks.
 struct StickOrSlip {
   bool sticks = true;
-  int slip = 0;  // the slide after: 0 none, +1 along I, -1 against
+  int slip = 0;      // the slide after: 0 none, +1 along I, -1 against
+  bool tie = false;  // it sticks at a margin <= 0 (zero to rounding): the limit starts at zero
 };
-inline StickOrSlip stick_or_slip(double f_i, double margin) {
-  return {margin > 0.0, margin <= 0.0 ? slip_direction(f_i) : 0};
+inline StickOrSlip stick_or_slip(double f_i, double margin, bool never_grew = false) {
+  if (margin > 0.0) return {true, 0, false};
+  if (never_grew) return {true, 0, true};
+  return {false, slip_direction(f_i), false};
 }
 
 /// What an impact with friction did.
