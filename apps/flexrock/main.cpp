@@ -200,7 +200,7 @@ void print_summary(const io::Case& c, const Body& body, const SimulationResult& 
         "warning: the {} impact law would have added energy at {} impact(s); {} took them "
         "(events: impact_law_fallback)\n",
         to_string(c.options.impact_law), x.impact_law_fallbacks,
-        c.options.impact_law == ImpactLaw::kRestitution
+        takes_measured_ratio(c.options.impact_law)
             ? "the elastic ratio sqrt(S_pre/S_post) of each"
             : "the paper's law (the modes moved fast against the tilt rate)");
   }

@@ -720,7 +720,7 @@ std::string summary_json(const Case& c, const Body& body, const SimulationResult
       {"rejected_steps", r.rejected_steps},
       {"rhs_evaluations", r.rhs_evaluations},
       {"events", r.events.size()}};
-  if (o.impact_law == ImpactLaw::kRestitution) {
+  if (takes_measured_ratio(o.impact_law)) {
     j["solver"]["restitution_ratio_edge1"] = o.restitution_ratio_edge1;
     j["solver"]["restitution_ratio_edge2"] = o.restitution_ratio_edge2;
   }

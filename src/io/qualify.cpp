@@ -1266,7 +1266,7 @@ QualifyReport QualifySession::finish() {
     };
     const SimulationOptions base = study::run_options(spec, row);
     variant("as qualified (" + std::string(to_string(base.impact_law)) + ")", base);
-    if (base.impact_law != ImpactLaw::kRestitution) {
+    if (!takes_measured_ratio(base.impact_law)) {
       SimulationOptions o2 = base;
       o2.impact_law =
           base.impact_law == ImpactLaw::kPaper ? ImpactLaw::kRigidBody : ImpactLaw::kPaper;

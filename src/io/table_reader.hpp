@@ -365,7 +365,7 @@ inline void read_solver_keys(TableReader& r, SimulationOptions& o, bool case_fil
   for (const SolverKey& k : kSolverKeys) {
     if (!ours(k) || !r.has(k.name) || solver_key_applies(k, o)) continue;
     const std::string no = std::string("no ") + k.name;
-    if (k.scope == SolverScope::kRestitutionLaw && o.impact_law != ImpactLaw::kRestitution)
+    if (k.scope == SolverScope::kRestitutionLaw && !takes_measured_ratio(o.impact_law))
       r.expected(k.name, no + ": it applies to impact_law = \"restitution\" (impact_law is \"" +
                              law + "\")");
     if (k.scope == SolverScope::kCompliant)
@@ -382,7 +382,7 @@ inline void read_solver_keys(TableReader& r, SimulationOptions& o, bool case_fil
   const bool edge1 = r.has("restitution_ratio_edge1"), edge2 = r.has("restitution_ratio_edge2");
   if (both && !edge1) o.restitution_ratio_edge1 = *both;
   if (both && !edge2) o.restitution_ratio_edge2 = *both;
-  const bool restitution = o.impact_law == ImpactLaw::kRestitution;
+  const bool restitution = takes_measured_ratio(o.impact_law);
   if (restitution && !both && !(edge1 && edge2))
     r.expected("restitution_ratio",
                "the measured theta_dot+/theta_dot- in [0, 1] with impact_law = \"restitution\" "

@@ -97,7 +97,7 @@ void read_uncertainty(TableReader& top, study::SweepSpec& spec) {
         t.fail("parameter", "body '" + b.name + "': " + e.what());
       }
     }
-    const bool restitution_law = spec.solver.impact_law == ImpactLaw::kRestitution;
+    const bool restitution_law = takes_measured_ratio(spec.solver.impact_law);
     if (p.kind == study::UncertainKind::kRestitutionRatio && !restitution_law) {
       t.fail("parameter",
              "restitution_ratio is the ratio of impact_law = \"restitution\"; expected that law "

@@ -123,7 +123,7 @@ void check_options(const Body& body, const InitialState& init, const SimulationO
       std::isfinite(o.output_dt) && o.output_dt >= 0.0,
       "options: output_dt must be >= 0 (0: no time history), got " + format_number(o.output_dt));
   FLEXROCK_THROW_UNLESS(std::isfinite(o.t_end), "options: t_end must be finite");
-  FLEXROCK_THROW_UNLESS(o.impact_law != ImpactLaw::kRestitution || o.restitution_factor == 1.0,
+  FLEXROCK_THROW_UNLESS(!takes_measured_ratio(o.impact_law) || o.restitution_factor == 1.0,
                         "options: restitution_factor = " + format_number(o.restitution_factor) +
                             " with impact_law = restitution: give the measured ratio as "
                             "restitution_ratio instead (the factor applies to paper and "

@@ -184,7 +184,7 @@ void check_uncertainty(const SweepSpec& spec) {
     throw InputError(std::string("sweep: ") + e.what());
   }
   for (const UncertainParameter& p : spec.uncertainty.parameters) {
-    const bool restitution_law = spec.solver.impact_law == ImpactLaw::kRestitution;
+    const bool restitution_law = takes_measured_ratio(spec.solver.impact_law);
     FLEXROCK_THROW_UNLESS(p.kind != UncertainKind::kRestitutionRatio || restitution_law,
                           "sweep: uncertain restitution_ratio: expected [solver] impact_law = "
                           "\"restitution\" (the ratio is that law's; other laws have "

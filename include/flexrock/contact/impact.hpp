@@ -78,6 +78,12 @@ constexpr const ImpactLawInfo& impact_law_info(ImpactLaw law) {
   return kImpactLaws[0];
 }
 
+/// Whether `law` takes a measured rebound ratio (restitution_ratio) rather than its own map: the
+/// readers, checks and outputs ask this, not the law's name.
+constexpr bool takes_measured_ratio(ImpactLaw law) {
+  return impact_law_info(law).rebound == Rebound::kMeasuredRatio;
+}
+
 inline const char* to_string(ImpactLaw law) {
   for (const auto& i : kImpactLaws)
     if (i.law == law) return i.name;

@@ -285,7 +285,7 @@ inline bool solver_key_applies(const SolverKey& k, const SimulationOptions& o) {
     case SolverScope::kImpulsive:
       return o.contact_model == ContactModel::kImpulsive;
     case SolverScope::kRestitutionLaw:
-      return o.contact_model == ContactModel::kImpulsive && o.impact_law == ImpactLaw::kRestitution;
+      return o.contact_model == ContactModel::kImpulsive && takes_measured_ratio(o.impact_law);
     case SolverScope::kCompliant:
       return o.contact_model == ContactModel::kCompliant;
   }
