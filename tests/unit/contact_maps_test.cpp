@@ -20,49 +20,19 @@
 #include "flexrock/contact/friction_impact.hpp"
 #include "flexrock/contact/impact.hpp"
 #include "flexrock/model/dynamics.hpp"
+#include "sympy_reference.hpp"
 
 namespace flexrock {
 namespace {
 
 using json = nlohmann::json;
+using sympy_reference::params_of;
+using sympy_reference::vec;
 using DynX = Dynamics<Eigen::Dynamic, Eigen::Dynamic>;
 using State = ImpactState<VectorX>;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-VectorX vec(const json& j) {
-  VectorX v(static_cast<Eigen::Index>(j.size()));
-  for (std::size_t i = 0; i < j.size(); ++i) v(static_cast<Eigen::Index>(i)) = j[i].get<double>();
-  return v;
-}
 Eigen::Vector2d vec2(const json& j) { return {j[0].get<double>(), j[1].get<double>()}; }
-MatrixX mat(const json& j, Eigen::Index n) {
-  MatrixX m(n, n);
-  for (Eigen::Index r = 0; r < n; ++r)
-    for (Eigen::Index c = 0; c < n; ++c)
-      m(r, c) = j[static_cast<std::size_t>(r)][static_cast<std::size_t>(c)].get<double>();
-  return m;
-}
-
-BodyParameters params_of(const json& c, double g) {
-  const auto n = c["n"].get<Eigen::Index>();
-  const json& p = c["params"];
-  BodyParameters b;
-  b.mass = p["M"];
-  b.height = p["h"];
-  b.b1 = p["b1"];
-  b.b2 = p["b2"];
-  b.zeta2 = p["zeta2"];
-  b.mu = mat(p["mu"], n);
-  b.kappa = mat(p["kappa"], n);
-  b.gamma = mat(p["gamma"], n);
-  b.psi_x = vec(p["psi_x"]);
-  b.psi_y = vec(p["psi_y"]);
-  b.delta = vec(p["delta"]);
-  b.beta = vec(p["beta"]);
-  b.gravity = g;
-  return b;
-}
-
 // the reference (tools/derive/derive.py, run by the ctest fixture)
 const json& reference() {
   static const json ref = [] {

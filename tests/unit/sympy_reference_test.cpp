@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // The C++ equations against the machine-checked derivation (tools/derive/derive.py): mass matrix,
 // forces, reaction, resultant, energies and impacts at random states of random point-mass bodies.
+#include "sympy_reference.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -17,19 +19,9 @@ namespace {
 
 using json = nlohmann::json;
 using DynX = Dynamics<Eigen::Dynamic, Eigen::Dynamic>;
-
-VectorX vec(const json& j) {
-  VectorX v(static_cast<Eigen::Index>(j.size()));
-  for (std::size_t i = 0; i < j.size(); ++i) v(static_cast<Eigen::Index>(i)) = j[i].get<double>();
-  return v;
-}
-MatrixX mat(const json& j, Eigen::Index n) {
-  MatrixX m(n, n);
-  for (Eigen::Index r = 0; r < n; ++r)
-    for (Eigen::Index c = 0; c < n; ++c)
-      m(r, c) = j[static_cast<std::size_t>(r)][static_cast<std::size_t>(c)].get<double>();
-  return m;
-}
+using sympy_reference::mat;
+using sympy_reference::params_of;
+using sympy_reference::vec;
 
 json load() {
   std::ifstream in(FLEXROCK_BINARY_DIR "/sympy_reference.json");
@@ -56,26 +48,6 @@ class SympyReference : public ::testing::Test {
   static json* ref_;
 };
 json* SympyReference::ref_ = nullptr;
-
-BodyParameters params_of(const json& c, double g) {
-  const auto n = c["n"].get<Eigen::Index>();
-  const json& p = c["params"];
-  BodyParameters b;
-  b.mass = p["M"];
-  b.height = p["h"];
-  b.b1 = p["b1"];
-  b.b2 = p["b2"];
-  b.zeta2 = p["zeta2"];
-  b.mu = mat(p["mu"], n);
-  b.kappa = mat(p["kappa"], n);
-  b.gamma = mat(p["gamma"], n);
-  b.psi_x = vec(p["psi_x"]);
-  b.psi_y = vec(p["psi_y"]);
-  b.delta = vec(p["delta"]);
-  b.beta = vec(p["beta"]);
-  b.gravity = g;
-  return b;
-}
 
 TEST_F(SympyReference, CoversEveryModeCount) {
   ASSERT_FALSE(ref_->is_null()) << "run tools/derive/derive.py (the ctest fixture does)";
