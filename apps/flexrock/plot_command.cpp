@@ -52,25 +52,29 @@ CLI::App* add_plot_command(CLI::App& app, PlotOptions& options) {
   return plot;
 }
 
-int run_plot(const PlotOptions& options) {
-  // FLEXROCK_PYTHON overrides the interpreter found at build time
+std::string drawing_python(const char* module_file, const char* need, const char* then) {
   const char* env_python = std::getenv("FLEXROCK_PYTHON");
   const std::string python = env_python && *env_python ? env_python : FLEXROCK_PYTHON_EXECUTABLE;
   if (::access(python.c_str(), X_OK) != 0) {
-    fmt::print(stderr,
-               "flexrock: error: flexrock plot needs Python 3 with numpy and matplotlib, but {} "
-               "cannot be run ({}); install them with scripts/install-deps.sh --python\n",
-               python, std::strerror(errno));
-    return 1;
+    fmt::print(stderr, "flexrock: error: {}, but {} cannot be run ({}); {}\n", need, python,
+               std::strerror(errno), then);
+    return {};
   }
-  // the build's package first; without it an installed `flexrock` package is used
   const std::string dir = FLEXROCK_PYTHON_DIR;
   std::error_code ec;
-  if (!dir.empty() && std::filesystem::exists(dir + "/flexrock/plot.py", ec)) {
+  if (!dir.empty() && std::filesystem::exists(dir + "/" + module_file, ec)) {
     const char* old = std::getenv("PYTHONPATH");
     const std::string path = old && *old ? dir + ":" + old : dir;
     ::setenv("PYTHONPATH", path.c_str(), 1);
   }
+  return python;
+}
+
+int run_plot(const PlotOptions& options) {
+  const std::string python =
+      drawing_python("flexrock/plot.py", "flexrock plot needs Python 3 with numpy and matplotlib",
+                     "install them with scripts/install-deps.sh --python");
+  if (python.empty()) return 1;
   std::vector<std::string> args = {
       python,   "-m",         "flexrock.plot", options.file,
       "--kind", options.kind, "--dpi",         std::to_string(options.dpi)};

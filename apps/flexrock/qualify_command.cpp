@@ -19,6 +19,7 @@
 #include "flexrock/io/files.hpp"
 #include "flexrock/io/outputs.hpp"
 #include "flexrock/io/qualify.hpp"
+#include "plot_command.hpp"
 
 #ifndef FLEXROCK_PYTHON_DIR
 #define FLEXROCK_PYTHON_DIR ""
@@ -57,22 +58,10 @@ struct StopOnSignal {
 
 // python3 -m flexrock.report JSON --html H --pdf P; its exit code
 int render(const std::string& json, const std::string& html, const std::string& pdf) {
-  const char* env_python = std::getenv("FLEXROCK_PYTHON");
-  const std::string python = env_python && *env_python ? env_python : FLEXROCK_PYTHON_EXECUTABLE;
-  if (::access(python.c_str(), X_OK) != 0) {
-    fmt::print(stderr,
-               "flexrock: error: the HTML and PDF report need Python 3 with matplotlib, but {} "
-               "cannot be run ({}); the JSON is written (--no-render skips the report)\n",
-               python, std::strerror(errno));
-    return 1;
-  }
-  const std::string dir = FLEXROCK_PYTHON_DIR;
-  std::error_code ec;
-  if (!dir.empty() && fs::exists(dir + "/flexrock/report.py", ec)) {
-    const char* old = std::getenv("PYTHONPATH");
-    const std::string path = old && *old ? dir + ":" + old : dir;
-    ::setenv("PYTHONPATH", path.c_str(), 1);
-  }
+  const std::string python =
+      drawing_python("flexrock/report.py", "the HTML and PDF report need Python 3 with matplotlib",
+                     "the JSON is written (--no-render skips the report)");
+  if (python.empty()) return 1;
   std::vector<std::string> args = {python,   "-m", "flexrock.report", json,
                                    "--html", html, "--pdf",           pdf};
   std::vector<char*> argv;
