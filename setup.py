@@ -26,6 +26,41 @@ from setuptools.command.build_ext import build_ext
 SOURCE_DIR = Path(__file__).resolve().parent
 
 
+def missing_for_build(commands: list) -> list:
+    """What this interpreter lacks to run the setuptools `commands`, each with the Debian
+    package that provides it for /usr/bin/python3. pip runs this file with the interpreter of the
+    environment, and a python3 that is not Debian's (pyenv, conda, a venv without
+    --system-site-packages) often lacks `wheel`: setuptools before 70.1 then fails with
+    "invalid command 'bdist_wheel'", which names neither the cause nor the fix."""
+    import importlib.util
+    import sysconfig
+
+    missing = []
+    # pip's metadata step (dist_info) goes through bdist_wheel too
+    if {"bdist_wheel", "dist_info"}.intersection(commands) \
+            and importlib.util.find_spec("setuptools.command.bdist_wheel") is None \
+            and importlib.util.find_spec("wheel") is None:
+        missing.append("the `wheel` package (python3-wheel)")
+    compiles = {"bdist_wheel", "build", "build_ext", "install", "develop", "editable_wheel"}
+    include = sysconfig.get_paths().get("include", "")
+    if compiles.intersection(commands) and not (Path(include) / "Python.h").is_file():
+        missing.append(f"the C headers, Python.h in {include} (python3-dev)")
+    return missing
+
+
+_missing = missing_for_build(sys.argv[1:])
+if _missing:
+    sys.exit(
+        f"setup.py: {sys.executable} (Python {sys.version.split()[0]}) cannot build flexrock: it "
+        f"lacks {'; '.join(_missing)}.\n"
+        "Either make the environment from Debian's interpreter, which has them after "
+        "scripts/install-deps.sh:\n"
+        "  /usr/bin/python3 -m venv --system-site-packages ~/venv/flexrock\n"
+        "  ~/venv/flexrock/bin/pip install --no-build-isolation .\n"
+        "or run scripts/pip-install.sh, which picks such an interpreter, or install what is "
+        "missing into this one.")
+
+
 def project_version() -> str:
     """The one version: project(flexrock VERSION x.y.z) in CMakeLists.txt."""
     text = (SOURCE_DIR / "CMakeLists.txt").read_text()
@@ -44,6 +79,8 @@ class CMakeExtension(Extension):
 
 class CMakeBuild(build_ext):
     def run_cmake(self, *args: str) -> None:
+        # pip shows this output with -v (scripts/pip-install.sh passes it and keeps the build's
+        # progress lines on screen); without -v pip shows a spinner until the end
         print("setup.py:", " ".join(args), flush=True)
         subprocess.run(args, check=True)
 

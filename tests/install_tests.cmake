@@ -4,6 +4,8 @@
 #                    find_package(flexrock) (about a minute: one small C++ project)
 #  install_pip:      `pip install .` into a fresh venv with the system site packages, packaging
 #                    this build's module and command (FLEXROCK_BUILD_DIR: no second build)
+#  install_pip_interpreter: the same through scripts/pip-install.sh with a python3 first on PATH
+#                    that cannot build (no wheel, no numpy), and setup.py's message for it
 if(FLEXROCK_INSTALL AND TARGET flexrock)
   # a sanitized build installs an instrumented library: its consumer must link the same runtime
   set(_consumer_flags "")
@@ -20,5 +22,10 @@ if(TARGET _flexrock AND TARGET flexrock)
   add_test(NAME install_pip
            COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/install/pip.sh ${PROJECT_SOURCE_DIR}
                    ${PROJECT_BINARY_DIR})
-  set_tests_properties(install_pip PROPERTIES LABELS install TIMEOUT 600)
+  add_test(NAME install_pip_interpreter
+           COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/install/pip_interpreter.sh ${PROJECT_SOURCE_DIR}
+                   ${PROJECT_BINARY_DIR})
+  # both bring the build's two targets up to date: one build tool in the directory at a time
+  set_tests_properties(install_pip install_pip_interpreter PROPERTIES LABELS install TIMEOUT 600
+                       RESOURCE_LOCK flexrock_build_dir)
 endif()
