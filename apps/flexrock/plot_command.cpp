@@ -37,8 +37,15 @@ CLI::App* add_plot_command(CLI::App& app, PlotOptions& options) {
   plot->add_option("-o,--output", options.output,
                    "figure file, .png, .svg or .pdf (default: the CSV's name with .png)");
   plot->add_option("--kind", options.kind,
-                   "auto (by the CSV header), response, loop, spectrum, fragility")
-      ->check(CLI::IsMember({"auto", "response", "loop", "spectrum", "fragility"}));
+                   "auto (by the CSV header), response, loop, spectrum, fragility, ida (a "
+                   "sweep's response against its intensity measure, a curve per record)")
+      ->check(CLI::IsMember({"auto", "response", "loop", "spectrum", "fragility", "ida"}));
+  plot->add_option("--tlim,--xlim", options.tlim, "T0 T1: a time history's window [s]")
+      ->expected(2);
+  plot->add_option("--measure", options.measure,
+                   "the response of an ida figure: max_theta_over_alpha (default), "
+                   "max_theta_rad, max_uplift_m, max_impulse_N_s, max_friction_demand, "
+                   "energy_lost_J");
   plot->add_option("--im", options.im,
                    "intensity measure of a sweep's fragility: pga (m/s^2), pga_g (default), pgv "
                    "(m/s), scale, requested_level, or one the sweep wrote (pgd, arias, cav, "
@@ -84,6 +91,16 @@ int run_plot(const PlotOptions& options) {
     if (value->empty()) continue;
     args.push_back(flag);
     args.push_back(*value);
+  }
+  if (!options.measure.empty()) {
+    args.push_back("--measure");
+    args.push_back(options.measure);
+  }
+  if (options.tlim.size() == 2) {
+    // the shortest text that reads back as the same double
+    args.push_back("--tlim");
+    args.push_back(fmt::format("{}", options.tlim[0]));
+    args.push_back(fmt::format("{}", options.tlim[1]));
   }
   if (!options.output.empty()) {
     args.push_back("--output");

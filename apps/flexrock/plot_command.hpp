@@ -5,18 +5,21 @@
 
 #include <CLI/CLI.hpp>
 #include <string>
+#include <vector>
 
 namespace flexrock::cli {
 
 struct PlotOptions {
   std::string file;           // a run's time-history, spectrum, sweep or fragility CSV
   std::string output;         // .png, .svg or .pdf; empty: next to `file`
-  std::string kind = "auto";  // auto, response, loop, spectrum, fragility
+  std::string kind = "auto";  // auto, response, loop, spectrum, fragility, ida
   std::string im;             // intensity measure of a sweep's fragility (empty: pga_g, or
                               // the one a fit or curve CSV records)
   std::string body;           // a fragility's body only (empty: each)
   std::string state;          // a fragility's damage state only (empty: each, or overturning)
   int dpi = 110;              // [1/inch] PNG resolution
+  std::vector<double> tlim;   // [s] a time history's window: T0, T1 (empty: the whole run)
+  std::string measure;        // the response of an IDA figure (empty: max_theta_over_alpha)
 };
 
 /// Adds the `plot` subcommand to `app`, filling `options`.

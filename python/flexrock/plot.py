@@ -2,8 +2,9 @@
 """``python3 -m flexrock.plot FILE [-o OUT.png|.svg|.pdf] [--kind ...]``: what ``flexrock plot`` runs.
 
 FILE is a run's time-history CSV (its summary JSON and event log are read when next to it), a
-spectrum CSV, a sweep CSV (its fragility: fit, band and observed fractions) or an output of
-``flexrock fragility`` (the fit CSV or the curve CSV); the kind is told by the header. Exit codes
+spectrum CSV, a sweep CSV (its fragility: fit, band and observed fractions; with ``--kind ida``
+its IDA curves) or an output of ``flexrock fragility`` (the fit CSV or the curve CSV); the kind is
+told by the header. Exit codes
 as the command line's: 0 ok, 1 the figure could not be made or written, 2 bad input. Rows that
 are not whole, or nan where a figure needs a number, are drawn around with a warning.
 """
@@ -59,9 +60,25 @@ def main(argv=None) -> int:
     )
     parser.add_argument(
         "--kind",
-        choices=["auto", "response", "loop", "spectrum", "fragility"],
+        choices=["auto", "response", "loop", "spectrum", "fragility", "ida"],
         default="auto",
-        help="figure: auto (by the header), response, loop (moment vs theta), spectrum, fragility",
+        help="figure: auto (by the header), response, loop (moment vs theta), spectrum, fragility, "
+        "ida (a sweep's response against its intensity measure, one curve per record)",
+    )
+    parser.add_argument(
+        "--tlim",
+        "--xlim",
+        nargs=2,
+        type=float,
+        metavar=("T0", "T1"),
+        default=None,
+        help="a time history's window [s] (response and loop figures)",
+    )
+    parser.add_argument(
+        "--measure",
+        default="max_theta_over_alpha",
+        help="the response of an ida figure: max_theta_over_alpha (default), max_theta_rad, "
+        "max_uplift_m, max_impulse_N_s, max_friction_demand, energy_lost_J",
     )
     parser.add_argument(
         "--im",
@@ -99,8 +116,13 @@ def main(argv=None) -> int:
         kind = _kind_of(args.file) if args.kind == "auto" else args.kind
     except (OSError, UnicodeDecodeError) as e:
         return _error(f"{args.file}: cannot read: {e}", 2)
+    if args.tlim is not None:
+        if kind not in ("response", "loop"):
+            return _error(f"--tlim applies to a time history (response or loop figure), not a {kind} figure", 2)
+        if not args.tlim[0] < args.tlim[1]:
+            return _error(f"--tlim {args.tlim[0]:g} {args.tlim[1]:g}: expected T0 < T1", 2)
     stem = args.file[:-4] if args.file.endswith(".csv") else args.file
-    suffix = {"loop": ".loop.png", "fragility": ".fragility.png"}.get(kind, ".png")
+    suffix = {"loop": ".loop.png", "fragility": ".fragility.png", "ida": ".ida.png"}.get(kind, ".png")
     out = args.output or (stem + suffix)
     if os.path.splitext(out)[1].lower() not in _FORMATS:
         return _error(f"{out}: expected an output name ending in .png, .svg or .pdf", 2)
@@ -111,10 +133,13 @@ def main(argv=None) -> int:
         try:
             if kind == "response":
                 fig.set_size_inches(9, 11)
-                plots.response_figure(args.file, fig=fig)
+                plots.response_figure(args.file, xlim=args.tlim, fig=fig)
             elif kind == "loop":
                 fig.set_size_inches(6, 5)
-                plots.moment_rotation_loop(args.file, fig=fig)
+                plots.moment_rotation_loop(args.file, tlim=args.tlim, fig=fig)
+            elif kind == "ida":
+                fig.set_size_inches(6, 4.5)
+                plots.ida_curves(args.file, im=args.im or "pga_g", measure=args.measure, body=args.body, fig=fig)
             elif kind == "spectrum":
                 fig.set_size_inches(7, 5)
                 plots.spectrum_map(args.file, fig=fig)

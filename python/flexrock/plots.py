@@ -36,6 +36,7 @@ __all__ = [
     "spectrum_map",
     "read_spectrum",
     "fragility_curve",
+    "ida_curves",
     "save",
 ]
 
@@ -134,6 +135,17 @@ def _spans(t: np.ndarray, phase: np.ndarray, value: int):
     return spans
 
 
+def _impacts_from_history(t: np.ndarray, phase: np.ndarray, impact_loss) -> np.ndarray:
+    # a history without its event log: an impact lies between two rows where the impact loss
+    # rises (a landing that dissipates: onto the other pivot, or a flexible body's onto its base)
+    # or the pivot changes from one edge to the other (a lossless law); marked at the later row
+    hit = (phase[1:] != phase[:-1]) & (phase[1:] > 0) & (phase[:-1] > 0)
+    if impact_loss is not None:
+        loss = np.asarray(impact_loss, dtype=float)
+        hit |= loss[1:] > loss[:-1]
+    return t[1:][hit]
+
+
 def _event_times(events, kind: str) -> np.ndarray:
     if events is None or "event" not in events:
         return np.array([])
@@ -154,14 +166,16 @@ def response_figure(
     figsize=(9, 11),
     fig: Optional[Figure] = None,
 ) -> Figure:
-    """The response of one run against time, in six panels.
+    """The response of one run against time, in six panels (five for a rigid body).
 
     Base accelerations [m/s^2]; theta [rad] with the rocking phases shaded (edge 1 and edge 2 in
     two colours), the landings marked (``impact`` events as red crosses; ``rocking_ended``, a
     landing that ends rocking, as green circles; ``chatter_cutoff`` as blue diamonds) and the
-    overturning angles dashed (theta/alpha on the right axis); deformation q [-]; floor
-    reactions [N]; friction demand [-]; energy budget [J] (input work = stored + dissipated +
-    residual).
+    overturning angles dashed (theta/alpha on the right axis); deformation q [-] (a flexible
+    body only); floor reactions [N]; friction demand [-]; energy budget [J] (input work = stored
+    + dissipated + residual). Without an event log the impacts are read from the history: at the
+    first row after each rise of the impact loss or change of pivot, so within one output
+    interval of the impact (legend "impact (from the history)").
 
     Parameters
     ----------
@@ -182,7 +196,8 @@ def response_figure(
     Returns
     -------
     matplotlib.figure.Figure
-        The figure; its six Axes are ``fig.axes``.
+        The figure; its Axes are ``fig.axes``: accelerations, theta, q (a flexible body only),
+        reactions, friction demand, energies.
     """
     cols, events, summary = _run_data(source, events, summary)
     t = np.asarray(cols["time_s"], dtype=float)
@@ -190,8 +205,11 @@ def response_figure(
         import matplotlib.pyplot as plt
 
         fig = plt.figure(figsize=figsize, layout="constrained")
-    axes = fig.subplots(6, 1, sharex=True)
-    ax_acc, ax_th, ax_q, ax_r, ax_f, ax_e = axes
+    qs = sorted((k for k in cols if k.startswith("q") and k[1:].isdigit()), key=lambda k: int(k[1:]))
+    if qs:
+        ax_acc, ax_th, ax_q, ax_r, ax_f, ax_e = fig.subplots(6, 1, sharex=True)
+    else:  # a rigid body has no deformation to show: no empty panel
+        ax_acc, ax_th, ax_r, ax_f, ax_e = fig.subplots(5, 1, sharex=True)
 
     # base accelerations
     ax_acc.plot(t, cols["base_acc_x_m_per_s2"], lw=0.8, label="horizontal $\\ddot X$")
@@ -208,12 +226,12 @@ def response_figure(
             ax_th.axvspan(a, b, color=_EDGE_COLOURS[edge], alpha=0.18, lw=0, gid=f"phase_edge{edge}")
     ax_th.plot(t, theta, color="k", lw=0.9, label="θ")
     impacts = _event_times(events, "impact")
-    if impacts.size == 0 and events is None:
-        # no event log: impacts where the pivot changes between the edges
-        switch = (phase[1:] != phase[:-1]) & (phase[1:] > 0) & (phase[:-1] > 0)
-        impacts = t[1:][switch]
+    impact_label = "impact"
+    if events is None:
+        impacts = _impacts_from_history(t, phase, cols.get("impact_loss_J"))
+        impact_label = "impact (from the history)"
     if impacts.size:
-        ax_th.plot(impacts, np.zeros_like(impacts), "x", color="tab:red", ms=5, label="impact", gid="impacts")
+        ax_th.plot(impacts, np.zeros_like(impacts), "x", color="tab:red", ms=5, label=impact_label, gid="impacts")
     # landings that end rocking (a flexible body settles rather than bounces): marked apart
     for kind, style, colour, label in (
         ("rocking_ended", "o", "tab:green", "rocking ended"),
@@ -242,14 +260,11 @@ def response_figure(
     ax_th.legend(handles, labels, loc="upper right", fontsize="small", ncol=2)
 
     # deformation
-    qs = sorted((k for k in cols if k.startswith("q") and k[1:].isdigit()), key=lambda k: int(k[1:]))
-    for k in qs:
-        ax_q.plot(t, cols[k], lw=0.8, label=k)
     if qs:
+        for k in qs:
+            ax_q.plot(t, cols[k], lw=0.8, label=k)
         ax_q.legend(loc="upper right", fontsize="small")
-    else:
-        ax_q.text(0.5, 0.5, "rigid body: no deformation modes", transform=ax_q.transAxes, ha="center", va="center", color="0.4")
-    ax_q.set_ylabel("q [-]")
+        ax_q.set_ylabel("q [-]")
 
     # reactions and friction demand
     ax_r.plot(t, cols["reaction_x_N"], lw=0.8, label="$F_I$ (shear)")
@@ -290,7 +305,7 @@ def response_figure(
 
 
 def moment_rotation_loop(
-    source, events=None, summary=None, *, figsize=(6, 5), ax=None, fig: Optional[Figure] = None
+    source, events=None, summary=None, *, tlim=None, figsize=(6, 5), ax=None, fig: Optional[Figure] = None
 ):
     """The base moment against theta: the rocking hysteresis loop.
 
@@ -303,6 +318,8 @@ def moment_rotation_loop(
     ----------
     source, events, summary
         As for :func:`response_figure`.
+    tlim : (float, float), optional
+        Only the rows in this time window [s].
     figsize : (float, float)
         [in], for a new figure.
     ax : matplotlib.axes.Axes, optional
@@ -316,6 +333,12 @@ def moment_rotation_loop(
     cols, events, summary = _run_data(source, events, summary)
     theta = np.asarray(cols["theta_rad"], dtype=float)
     moment = np.asarray(cols["reaction_y_N"], dtype=float) * np.asarray(cols["resultant_m"], dtype=float)
+    if tlim is not None:
+        t = np.asarray(cols["time_s"], dtype=float)
+        keep = (t >= tlim[0]) & (t <= tlim[1])
+        if not np.any(keep):
+            raise ValueError(f"no rows between {tlim[0]:g} s and {tlim[1]:g} s")
+        theta, moment = theta[keep], moment[keep]
     ax = _axes(ax, fig, figsize)
     ax.plot(theta, moment, lw=0.7, color="k", label="base moment", gid="loop")
     if summary:
@@ -785,6 +808,134 @@ def fragility_curve(
 # --- files -------------------------------------------------------------------------------------
 
 _FORMATS = (".png", ".svg", ".pdf")
+
+
+# --- incremental dynamic analysis ---------------------------------------------------------------
+
+# response measures of a sweep CSV an IDA curve can show: column -> axis label
+_IDA_MEASURES = {
+    "max_theta_over_alpha": "largest tilt θ/α [-]",
+    "max_theta_rad": "largest tilt θ [rad]",
+    "max_uplift_m": "largest uplift [m]",
+    "max_impulse_N_s": "largest impulse [N s]",
+    "max_friction_demand": "largest friction demand [-]",
+    "energy_lost_J": "energy lost [J]",
+}
+
+
+def _ida_im_values(path, cols, rows, body, im):
+    # the intensity measure of the given rows: a column of the sweep, else as flexrock fragility
+    # --im computes it (sa:T, the library's measures), in the rows' order
+    if im in cols:
+        return np.asarray(cols[im], dtype=float)[rows], (im, None)
+    from . import studies
+
+    data = studies.fragility_session(path, im, "overturned", 0.0, body).data(0, 0)
+    kept = [r for r in rows if str(cols["outcome"][r]) not in ("stopped", "contact_lost")]
+    values = np.full(len(rows), np.nan)
+    if len(kept) != len(data.im):
+        raise ValueError(f"{path}: cannot align the intensity measure {im} with the rows of {body}")
+    where = {r: k for k, r in enumerate(kept)}
+    for j, r in enumerate(rows):
+        if r in where:
+            values[j] = data.im[where[r]]
+    return values, (data.im_name or im, data.im_unit or None)
+
+
+def ida_curves(
+    source,
+    *,
+    im: str = "pga_g",
+    measure: str = "max_theta_over_alpha",
+    body: str = "",
+    figsize=(6, 4.5),
+    ax=None,
+    fig: Optional[Figure] = None,
+):
+    """Incremental dynamic analysis: one curve per record of a sweep, the response measure
+    against the intensity measure, with where each record overturns the body.
+
+    Each record's runs are joined in the order of the intensity measure (``gid`` "ida:RECORD");
+    runs that overturn are red crosses (``gid`` "overturned:RECORD") in a column at the right
+    edge, 10 % beyond the largest response of a run that stands (or theta/alpha = 1, the static
+    tipping tilt, if larger): an overturned body's response is its fall, which would crush the
+    scale of the others. The lowest intensity that overturns the body under that record is a dotted level
+    (``gid`` "margin:RECORD"): the record's overturning margin. The title gives the median of
+    those levels over the records that overturn it, and how many do not within the sweep. Runs
+    whose outcome is ``stopped`` or ``contact_lost`` are left out.
+
+    Parameters
+    ----------
+    source : str or os.PathLike
+        A sweep CSV of ``flexrock sweep``.
+    im : str
+        A column of the sweep (``pga_g``, ``pga_m_per_s2``, ``pgv_m_per_s``, ``scale``,
+        ``requested_level``) or any measure ``flexrock fragility --im`` takes (``sa:1.0``, ...).
+    measure : str
+        The response: one of ``max_theta_over_alpha``, ``max_theta_rad``, ``max_uplift_m``,
+        ``max_impulse_N_s``, ``max_friction_demand``, ``energy_lost_J``.
+    body : str
+        The sweep's body to draw (default: the only one; a sweep of several needs it).
+    figsize, ax, fig
+        As for :func:`moment_rotation_loop`.
+
+    Returns
+    -------
+    matplotlib.axes.Axes
+    """
+    path = os.fspath(source)
+    cols = _read_columns(path, require_rows=True)
+    for need in ("body", "record", "overturned", "outcome"):
+        if need not in cols:
+            raise ValueError(f"{path}: not a sweep CSV (no column {need})")
+    if measure not in _IDA_MEASURES:
+        raise ValueError(f"unknown response measure {measure!r}: expected one of {', '.join(_IDA_MEASURES)}")
+    bodies = list(dict.fromkeys(str(b) for b in cols["body"]))
+    if not body:
+        if len(bodies) > 1:
+            raise ValueError(f"{path}: a sweep of {len(bodies)} bodies ({', '.join(bodies)}): choose one (body=, or --body of flexrock plot)")
+        body = bodies[0]
+    elif body not in bodies:
+        raise ValueError(f"{path}: no body {body!r} in the sweep (it has {', '.join(bodies)})")
+    rows = [k for k, b in enumerate(cols["body"]) if str(b) == body]
+    ims, (im_name, im_unit) = _ida_im_values(path, cols, rows, body, im)
+    response = np.asarray(cols[measure], dtype=float)[rows]
+    over = np.asarray(cols["overturned"], dtype=float)[rows] != 0
+    valid = np.array([str(cols["outcome"][r]) not in ("stopped", "contact_lost") for r in rows])
+    records = [str(cols["record"][r]) for r in rows]
+
+    ax = _axes(ax, fig, figsize)
+    standing_max = response[valid & ~over & np.isfinite(response)]
+    edge = max(float(np.max(standing_max)) if standing_max.size else 0.0,
+               1.0 if measure == "max_theta_over_alpha" else 0.0)
+    edge = 1.1 * edge if edge > 0.0 else 1.0
+    margins = []
+    for j, rec in enumerate(dict.fromkeys(records)):
+        sel = np.array([r == rec for r in records]) & valid & np.isfinite(ims)
+        order = np.argsort(ims[sel], kind="stable")
+        x, y, o = response[sel][order], ims[sel][order], over[sel][order]
+        colour = f"C{j % 10}"
+        standing = ~o
+        ax.plot(x[standing], y[standing], "o-", ms=3, lw=1.0, color=colour, label=rec, gid=f"ida:{rec}")
+        if np.any(o):
+            ax.plot(np.full(np.count_nonzero(o), edge), y[o], "x", ms=6, color="tab:red", gid=f"overturned:{rec}")
+            level = float(np.min(y[o]))
+            margins.append(level)
+            ax.axhline(level, color=colour, ls=":", lw=0.8, gid=f"margin:{rec}")
+    if margins:
+        ax.plot([], [], "x", color="tab:red", label="overturned")
+        ax.axvline(edge, color="0.8", lw=0.6)
+    ax.set_xlabel(_IDA_MEASURES[measure])
+    ax.set_ylabel(_im_label(im_name, im_unit))
+    n_records = len(dict.fromkeys(records))
+    if margins:
+        unit = im_unit if im_unit is not None else _im_title(im_name)[1]
+        what = f"overturns from median {np.median(margins):.3g} {_pretty_unit(unit)} ({len(margins)} of {n_records} records)"
+    else:
+        what = f"no overturning in the sweep ({n_records} records)"
+    ax.set_title(f"{body}: IDA, {what}", fontsize="medium")
+    ax.legend(loc="lower right", fontsize="small")
+    return ax
 
 
 def save(fig, path: str, *, dpi: int = 110) -> str:

@@ -95,7 +95,7 @@ def test_functions_draw_into_the_given_axes_or_a_pyplot_figure(cabinet, tmp_path
     assert plots.moment_rotation_loop(cabinet, ax=ax) is ax
     assert len(ax.lines) >= 3 and fig.axes == [ax]
     f = Figure()
-    assert plots.response_figure(cabinet, fig=f) is f and len(f.axes) == 6
+    assert plots.response_figure(cabinet, fig=f) is f and len(f.axes) == 5  # rigid: no q panel
     # neither: a new pyplot figure, so that plt.show() shows it
     before = set(plt.get_fignums())
     ax = plots.moment_rotation_loop(cabinet)
