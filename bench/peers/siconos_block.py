@@ -24,7 +24,7 @@ ratio, with no restitution coefficient put in by hand. (With q = (x, y, theta) a
 contacts the horizontal momentum would survive the impact and the block would slide instead.)
 
 Base acceleration a(t) enters as the inertial force -m a(t) along x, i.e. the generalized force
--m a X'(theta) on theta. Overturning is |theta| = alpha, two more unilateral constraints whose
+-m a X'(theta) on theta. Overturning is |theta| = pi/2 (flexrock's rule), two more unilateral constraints whose
 root Siconos locates (the run stops there). Housner's chatter cut-off of compare.py is kept: an
 impact within CHATTER of the last uplift/impact puts the block at rest, which here restarts the
 simulation from rest.
@@ -235,8 +235,8 @@ def _episode(t0, t_end, theta0, thd0, rtol, hmax, plugin):
         rel = sk.LagrangianScleronomousR(f"{plugin}:h_{side}", f"{plugin}:jac_{side}",
                                          f"{plugin}:djac_{side}")
         nsds.link(sk.Interaction(law, rel), ds)
-    for sgn in (-1.0, 1.0):  # alpha -+ theta >= 0: overturn, located by lsodar's root finder
-        rel = sk.LagrangianLinearTIR(np.array([[sgn, 0.0]]), np.array([ALPHA]))
+    for sgn in (-1.0, 1.0):  # pi/2 -+ theta >= 0: overturn (flexrock's rule), by lsodar's roots
+        rel = sk.LagrangianLinearTIR(np.array([[sgn, 0.0]]), np.array([compare.OVERTURN]))
         nsds.link(sk.Interaction(sk.NewtonImpactNSL(0.0), rel), ds)
     osi = sk.LsodarOSI()
     td = sk.TimeDiscretisation(t0, hmax)
@@ -297,8 +297,8 @@ def simulate(spec, rtol):
             cur = (tn, float(q[0]), float(v[0]))
             if side != 0 and prev[2] * cur[2] < 0.0:
                 max_theta = max(max_theta, _peak(prev, cur, side, accel))
-            if ns and abs(cur[1]) >= ALPHA * (1.0 - 1e-6):
-                return first_uplift, impacts, "overturned", 1 if cur[1] > 0 else 2, ALPHA, tn
+            if ns and abs(cur[1]) >= compare.OVERTURN * (1.0 - 1e-6):
+                return first_uplift, impacts, "overturned", 1 if cur[1] > 0 else 2, compare.OVERTURN, tn
             if ns:  # see TOL_ED_IMPACT
                 sim.setToleranceED(max(TOL_ED * rtol, TOL_ED_IMPACT * cur[2] * cur[2]))
             sim.processEvents()

@@ -40,6 +40,9 @@ inline bool decimal_comma_token(std::string_view t) {
 // for a reader of comma-separated pairs (min_tokens 2) and a decimal comma for a reader of
 // values (min_tokens 1), where it is refused as ambiguous.
 inline std::string decimal_comma_number(std::string_view line, std::size_t min_tokens) {
+  // no comma, no decimal comma: the common line returns before any work (a record's reader
+  // calls this once a line)
+  if (line.find(',') == std::string_view::npos) return {};
   std::vector<std::string_view> tokens;
   std::size_t i = 0;
   const auto sep = [](char c) { return std::isspace(static_cast<unsigned char>(c)) || c == ';'; };

@@ -118,20 +118,21 @@ inline Parsed parse_number(std::string_view token, double& value) {
 }
 
 // parses a value token or fails with the file position and what it is
+// (`what` is a view: the readers call this once a value, and build no string unless it fails)
 inline double value_or_fail(const std::string& path, std::size_t line, std::string_view token,
-                            const std::string& what) {
+                            std::string_view what) {
   double v = 0.0;
   switch (parse_number(token, v)) {
     case Parsed::kOk:
       return v;
     case Parsed::kNotFinite:
       fail(path, line,
-           "expected a finite number for " + what + ", got " + quote(token) +
+           "expected a finite number for " + std::string(what) + ", got " + quote(token) +
                " (NaN or infinite values are not allowed)");
     case Parsed::kNotANumber:
       break;
   }
-  fail(path, line, "expected a number for " + what + ", got " + quote(token));
+  fail(path, line, "expected a number for " + std::string(what) + ", got " + quote(token));
 }
 
 // "value 12" for messages
