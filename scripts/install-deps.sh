@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: BSD-3-Clause
 # Installs the Debian packages flexrock builds and tests with, only those missing.
-# Usage: scripts/install-deps.sh [--python] [--bench] [--lint] [--mpi] [--fuzz]
+# Usage: scripts/install-deps.sh [--python] [--bench] [--lint] [--mpi] [--fuzz] [--docs]
 # (the Python module, its tests and the validation checks are part of the release build: their
 # packages are always installed; --python is accepted and adds nothing)
 set -euo pipefail
@@ -22,7 +22,8 @@ for arg in "$@"; do
     --lint) pkgs+=(clang-format) ;;
     --mpi) pkgs+=(openmpi-bin libopenmpi-dev) ;;  # studies across processes
     --fuzz) pkgs+=(clang-14 libclang-rt-14-dev) ;;  # libFuzzer targets (fuzz/, preset "fuzz")
-    *) echo "install-deps.sh: unknown option '$arg' (expected --python, --bench, --lint, --mpi or --fuzz)" >&2; exit 2 ;;
+    --docs) pkgs+=(doxygen python3-sphinx) ;;  # the API reference (scripts/api-docs.sh)
+    *) echo "install-deps.sh: unknown option '$arg' (expected --python, --bench, --lint, --mpi, --fuzz or --docs)" >&2; exit 2 ;;
   esac
 done
 

@@ -70,8 +70,8 @@ inline constexpr double kMinSpectralPeriod = 1e-6;
 /// Throws InputError naming `key` unless `period` is finite and >= kMinSpectralPeriod.
 void require_spectral_period(double period, const std::string& key);
 
-/// The largest |u| of the oscillator's free vibration from (u0, v0) sampled at s = k h, k = 1
-/// .. ceil(period / h) (one natural period), in closed form from the extrema of u (wd s =
+/// The largest |u| of the oscillator's free vibration from (u0, v0) sampled at s = k h, k = 1,
+/// 2, ..., ceil(period / h) (one natural period), in closed form from the extrema of u (wd s =
 /// atan2(v0 q, w u0 + z v0) mod pi, q = sqrt(1 - z^2)): its cost does not grow with the period.
 double free_vibration_peak(double u0, double v0, double omega, double zeta, double h,
                            double period);

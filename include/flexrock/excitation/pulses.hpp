@@ -35,6 +35,7 @@ enum class Component {
 /// Steady harmonic excitation over the whole duration:
 ///   a(t) = amplitude * sin(omega * t + phase),   0 <= t <= duration.
 /// \param amplitude [m/s^2]  \param omega [rad/s] > 0  \param duration [s] > 0  \param phase [rad]
+/// \param component the base acceleration it drives (horizontal or vertical)
 GroundMotion harmonic(double amplitude, double omega, double duration, double phase = 0.0,
                       Component component = Component::kHorizontal);
 
