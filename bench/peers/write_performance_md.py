@@ -277,7 +277,11 @@ def main():
         "solution (energy quadrature between impacts); for (b) max |theta|, or the overturning "
         "time when it overturns, "
         "and the first uplift and impact times; for (c) the first uplift time, the first five "
-        "impact times, and whether and to which side it overturns (1 when that differs).",
+        "impact times, and whether and to which side it overturns (1 when that differs). Like "
+        "with like: every solver ends an overturning run where flexrock does, at |theta| = pi/2 "
+        "(not at alpha, where the c.g. passes over the pivot), and the peers run with one BLAS "
+        "thread (OPENBLAS_NUM_THREADS=1, set by compare.py): an idle OpenBLAS worker spinning on "
+        "the second core was counted as their CPU time before.",
         "",
         "![work-precision](img/work_precision.png)",
         ptab,
