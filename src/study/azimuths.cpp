@@ -63,9 +63,18 @@ AzimuthEnvelope envelope(const std::vector<AzimuthRun>& runs) {
       where = az;
     }
   };
+  bool overturn_governs = false;
   for (const AzimuthRun& r : runs) {
     const RunSummary& s = r.summary;
-    raise(s.max_theta, r.azimuth_deg, e.max_theta, e.max_theta_azimuth);
+    // an overturning governs the tilt: the first overturned azimuth of the grid (the tilts at
+    // which runs stop differ only by where the criterion was located)
+    if (overturned(s.outcome) && !overturn_governs) {
+      overturn_governs = true;
+      e.max_theta = s.max_theta;
+      e.max_theta_azimuth = r.azimuth_deg;
+    } else if (!overturn_governs) {
+      raise(s.max_theta, r.azimuth_deg, e.max_theta, e.max_theta_azimuth);
+    }
     e.max_theta_over_alpha = std::max(e.max_theta_over_alpha, s.max_theta_over_alpha);
     raise(s.max_offset, r.azimuth_deg, e.max_offset, e.max_offset_azimuth);
     raise(r.max_impact_force, r.azimuth_deg, e.max_impact_force, e.max_impact_force_azimuth);

@@ -200,6 +200,12 @@ TEST(AzimuthSweep, EnvelopeTakesTheLargestOfEachAndItsFirstAzimuth) {
   EXPECT_EQ(e.overturned_azimuths, (std::vector<double>{90.0, 270.0}));
   EXPECT_EQ(e.first_overturn_time, 12.0);
   EXPECT_EQ(e.first_overturn_azimuth, 270.0);
+  // an overturning governs the tilt, whatever tilt the run stopped at
+  runs[3].summary.max_theta = 1.6;
+  runs[1].summary.max_theta = 1.5708;
+  const study::AzimuthEnvelope f = study::envelope(runs);
+  EXPECT_EQ(f.max_theta, 1.5708);
+  EXPECT_EQ(f.max_theta_azimuth, 90.0);
 }
 
 TEST(AzimuthSweep, GridCoversTheCircleAndRefusesStepsThatDoNotDivideIt) {

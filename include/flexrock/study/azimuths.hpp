@@ -28,7 +28,8 @@ struct AzimuthRun {
 };
 
 /// The envelope over azimuths: each largest value with its governing azimuth (the first azimuth
-/// of the grid that reaches it), and the azimuths at which the body overturns.
+/// of the grid that reaches it), and the azimuths at which the body overturns. Where the body
+/// overturns at some azimuth, the tilt is governed by the first overturned azimuth of the grid.
 struct AzimuthEnvelope {
   std::size_t azimuths = 0;                 // runs
   double max_theta = 0.0;                   // [rad] largest |theta|
