@@ -62,3 +62,41 @@ def test_rotd_of_one_component_is_sa_and_its_median_over_angles():
     assert d["by_angle"].shape == (180,)
     assert d["rotd100"] == sa
     assert math.isclose(d["rotd50"], sa * math.sqrt(0.5), rel_tol=1e-12)
+
+
+def test_worst_and_random_azimuth_outcomes(tmp_path):
+    # a slender block (b = 0.25 m, h = 1.5 m) under the Anaheim pair: at 6 times the record it
+    # overturns at some azimuths, not at others; at 1 it overturns nowhere
+    p = tmp_path / "anaheim.toml"
+    p.write_text(
+        '[body]\ntype = "rigid_block"\nwidth = 0.5\nheight = 3.0\nmass = 1000.0\n'
+        '[excitation.horizontal]\ntype = "record"\n'
+        f'file = "{DATA / "RSN8883_14383980_13849090.AT2"}"\n'
+        '[excitation.horizontal2]\ntype = "record"\n'
+        f'file = "{DATA / "RSN8883_14383980_13849360.AT2"}"\n'
+    )
+    rows, runs = fr.azimuth_outcomes([p], [1.0, 6.0], step_deg=30, threads=2)
+    assert list(rows["scale"]) == [1.0, 6.0]
+    assert rows["worst_overturned"].dtype == np.int64
+    c = fr.load_case(str(p))
+    for k, s in enumerate([1.0, 6.0]):
+        c.excitation_scale = s
+        table, env = fr.run_azimuths(c, 30.0, 2)
+        over = [o.startswith("overturned") for o in table["outcome"]]
+        assert rows["worst_overturned"][k] == int(any(over))
+        assert rows["overturned_fraction"][k] == sum(over) / len(over)
+        assert len(env["overturned_azimuths_deg"]) == sum(over)
+    assert rows["worst_overturned"][0] == 0 and rows["worst_overturned"][1] == 1
+    assert 0 < rows["overturned_fraction"][1] < 1
+    # the IM: RotD50 of the peak acceleration of the scaled pair, linear in the scale
+    r1 = fr.read_record(DATA / "RSN8883_14383980_13849090.AT2")
+    r2 = fr.read_record(DATA / "RSN8883_14383980_13849360.AT2")
+    t = np.asarray(r1.time)
+    im6 = fr.rotd(t, 6 * 9.80665 * np.asarray(r1.values), 6 * 9.80665 * np.asarray(r2.values), 1e-6)
+    assert math.isclose(rows["rotd50_m_per_s2"][1], im6["rotd50"], rel_tol=1e-12)
+    # RotD100 of the peak acceleration is the peak of the horizontal vector's largest projection
+    peak = 6 * 9.80665 * max(max(abs(math.cos(math.radians(a)) * x + math.sin(math.radians(a)) * y)
+                                 for x, y in zip(r1.values, r2.values)) for a in range(180))
+    assert math.isclose(rows["rotd100_m_per_s2"][1], peak, rel_tol=1e-6)
+    # the random-azimuth observations: one per azimuth run
+    assert len(runs["im"]) == 24 and runs["overturned"].sum() == round(12 * rows["overturned_fraction"][1])
