@@ -390,6 +390,13 @@ int cmd_azimuths(const std::string& file, const std::string& output_dir, bool qu
   fmt::print("azimuths: {} (every {:g} deg over [0, 360))\n", grid.size(), c.azimuth_step);
   fmt::print("envelope: max tilt {:.6g} rad (theta/alpha {:.4g}) at {:g} deg\n", e.max_theta,
              e.max_theta_over_alpha, e.max_theta_azimuth);
+  // what the planar model leaves out, with its size: the motion across the plane
+  fmt::print(
+      "planar model: the component across the plane is ignored; at {:g} deg it peaks at {:.4g} "
+      "m/s^2, {:.3g} times the in-plane peak {:.4g} m/s^2\n",
+      e.max_theta_azimuth, e.pga_across_at_max_theta,
+      e.pga_along_at_max_theta > 0.0 ? e.pga_across_at_max_theta / e.pga_along_at_max_theta : 0.0,
+      e.pga_along_at_max_theta);
   if (e.max_offset > 0.0) {
     fmt::print("envelope: max sliding offset {:.6g} m at {:g} deg\n", e.max_offset,
                e.max_offset_azimuth);

@@ -296,10 +296,14 @@ sin(beta), beta [deg] from H1 toward H2, scaled and with the vertical as the cas
         col("max_impact_force_N", [](const R& r) { return r.max_impact_force; });
         col("max_offset_m", [](const R& r) { return r.summary.max_offset; });
         col("final_offset_m", [](const R& r) { return r.summary.final_offset; });
+        col("pga_along_m_per_s2", [](const R& r) { return r.pga_along; });
+        col("pga_across_m_per_s2", [](const R& r) { return r.pga_across; });
         py::dict env;
         env["max_theta_rad"] = e.max_theta;
         env["max_theta_azimuth_deg"] = e.max_theta_azimuth;
         env["max_theta_over_alpha"] = e.max_theta_over_alpha;
+        env["pga_along_at_max_theta_m_per_s2"] = e.pga_along_at_max_theta;
+        env["pga_across_at_max_theta_m_per_s2"] = e.pga_across_at_max_theta;
         env["max_offset_m"] = e.max_offset;
         env["max_offset_azimuth_deg"] = e.max_offset_azimuth;
         env["max_impact_force_N"] = e.max_impact_force;

@@ -62,6 +62,12 @@ const std::vector<AzimuthColumn>& azimuth_columns() {
       {"max_friction_demand", "-", "largest \\|F_I\\|/F_J, impulses included",
        [](const R& r) { return n(r.summary.max_friction_demand); }},
       {"t_end_s", "s", "time reached", [](const R& r) { return n(r.summary.t_end); }},
+      {"pga_along_m_per_s2", "m/s^2", "peak of the component along the plane (the run's input)",
+       [](const R& r) { return n(r.pga_along); }},
+      {"pga_across_m_per_s2", "m/s^2",
+       "peak of the component across the plane, which the planar model ignores (no "
+       "out-of-plane motion)",
+       [](const R& r) { return n(r.pga_across); }},
   };
   return kColumns;
 }
@@ -113,6 +119,8 @@ std::string azimuth_summary_json(const Case& c, const Body& body,
   env["max_theta_rad"] = e.max_theta;
   env["max_theta_azimuth_deg"] = e.max_theta_azimuth;
   env["max_theta_over_alpha"] = e.max_theta_over_alpha;
+  env["pga_along_at_max_theta_m_per_s2"] = e.pga_along_at_max_theta;
+  env["pga_across_at_max_theta_m_per_s2"] = e.pga_across_at_max_theta;
   env["max_offset_m"] = e.max_offset;
   // an azimuth governs only a value that happened: none without sliding or impacts
   env["max_offset_azimuth_deg"] = e.max_offset > 0.0 ? Json(e.max_offset_azimuth) : Json();

@@ -6,6 +6,7 @@
 
 #include "flexrock/core/error.hpp"
 #include "flexrock/core/format.hpp"
+#include "flexrock/excitation/intensity.hpp"
 
 namespace flexrock::study {
 
@@ -47,6 +48,8 @@ std::vector<AzimuthRun> run_azimuths(const Body& body, const std::vector<double>
       [&](std::size_t i) {
         const GroundMotion m = motion_at(azimuths_deg[i]);
         rows[i] = azimuth_run(body, azimuths_deg[i], simulate(body, m, initial, o));
+        rows[i].pga_along = peak_acceleration(m).x;
+        rows[i].pga_across = peak_acceleration(motion_at(azimuths_deg[i] + 90.0)).x;
         if (run.completed) run.completed->fetch_add(1, std::memory_order_relaxed);
       },
       run.cancel);
@@ -86,6 +89,13 @@ AzimuthEnvelope envelope(const std::vector<AzimuthRun>& runs) {
       }
     }
     if (s.status == Status::kStopped) e.stopped_azimuths.push_back(r.azimuth_deg);
+  }
+  for (const AzimuthRun& r : runs) {
+    if (r.azimuth_deg == e.max_theta_azimuth) {
+      e.pga_along_at_max_theta = r.pga_along;
+      e.pga_across_at_max_theta = r.pga_across;
+      break;
+    }
   }
   return e;
 }

@@ -117,6 +117,10 @@ void expect_sweep_equals_file_runs(bool flexible) {
     EXPECT_EQ(got.summary.t_end, want.summary.t_end);
     EXPECT_EQ(got.summary.energy_lost, want.summary.energy_lost);
     EXPECT_GT(got.summary.max_theta, 0.0);  // the body rocks: the comparison means something
+    // the peaks along and across the plane: the projected file's, and the file's at beta + 90
+    EXPECT_EQ(got.pga_along, peak_acceleration(c.motion).x);
+    EXPECT_EQ(got.pga_across, peak_acceleration(io::azimuth_motion(pc, azimuths[k] + 90.0)).x);
+    EXPECT_NE(got.pga_across, got.pga_along);
   }
 }
 
@@ -246,6 +250,28 @@ TEST(RecordPairCase, ComponentsOfDifferentLengthsAreCutToTheShorter) {
   EXPECT_EQ(c.pair->h2.npts(), 16396u);
   ASSERT_FALSE(c.notes.empty());
   EXPECT_NE(c.notes.back().find("cut to the shorter"), std::string::npos) << c.notes.back();
+}
+
+TEST(RecordPairCase, TheVerticalIsTheSameAtEveryAzimuth) {
+  Scratch s;
+  std::string v;
+  char buf[40];
+  for (int i = 0; i < 4000; ++i) {
+    std::snprintf(buf, sizeof buf, "%.17g\n", 0.1 * std::sin(0.01 * i));
+    v += buf;
+  }
+  const std::string vf = s.write("v.txt", v);
+  const std::string text = pair_case(false, kH1, kH2, "") +
+                           "[excitation.vertical]\ntype = \"record\"\nfile = \"" + vf +
+                           "\"\nformat = \"single_column\"\ndt = 0.005\nunits = \"g\"\n";
+  const io::Case c = io::load_case(s.write("a.toml", text));
+  const GroundMotion m0 = io::azimuth_motion(c, 0.0), m1 = io::azimuth_motion(c, 123.0);
+  ASSERT_TRUE(m0.has_vertical());
+  EXPECT_EQ(m0.vertical(), m1.vertical());
+  // scaled like the horizontal (excitation.scale = 3), zero past its end
+  EXPECT_NEAR(m0.vertical()[100], 3.0 * 0.1 * std::sin(1.0) * kStandardGravity, 1e-14);
+  EXPECT_EQ(m0.vertical()[5000], 0.0);
+  EXPECT_NE(m0.horizontal(), m1.horizontal());
 }
 
 void expect_error(const std::string& text, const std::vector<std::string>& parts) {

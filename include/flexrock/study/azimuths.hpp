@@ -25,6 +25,10 @@ struct AzimuthRun {
   double max_impact_force = 0.0;  // [N] largest impact force: the estimate of an impulsive
                                   // impact (impact_duration) or the compliant corner force
   std::string message;            // why a stopped run stopped
+  // the planar model's input and what it leaves out: the peaks of the component along the plane
+  // (run) and of the one across it (ignored: no out-of-plane motion is modelled)
+  double pga_along = 0.0;   // [m/s^2]
+  double pga_across = 0.0;  // [m/s^2]
 };
 
 /// The envelope over azimuths: each largest value with its governing azimuth (the first azimuth
@@ -34,6 +38,8 @@ struct AzimuthEnvelope {
   std::size_t azimuths = 0;                 // runs
   double max_theta = 0.0;                   // [rad] largest |theta|
   double max_theta_azimuth = 0.0;           // [deg]
+  double pga_along_at_max_theta = 0.0;      // [m/s^2] at the tilt's governing azimuth
+  double pga_across_at_max_theta = 0.0;     // [m/s^2] the ignored component there
   double max_theta_over_alpha = 0.0;        // [-] largest |theta| / tipping angle
   double max_offset = 0.0;                  // [m] largest |offset| of the base (sliding)
   double max_offset_azimuth = 0.0;          // [deg]
@@ -51,7 +57,8 @@ std::vector<double> azimuth_grid(double step_deg);
 
 /// Runs `body` under `motion_at(beta)` for every beta of `azimuths_deg` (in parallel over
 /// `run.threads`; the result does not depend on them), from `initial` with `options` (no time
-/// history is kept: output_dt is set to 0). `motion_at` is called from several threads.
+/// history is kept: output_dt is set to 0). `motion_at` is called from several threads, at beta
+/// and at beta + 90 (the component across the plane, whose peak is reported).
 std::vector<AzimuthRun> run_azimuths(const Body& body, const std::vector<double>& azimuths_deg,
                                      const std::function<GroundMotion(double)>& motion_at,
                                      const InitialState& initial, const SimulationOptions& options,
