@@ -156,27 +156,35 @@ TEST(AzimuthSweep, SwappingTheComponentsMapsBetaToNinetyMinusBeta) {
   EXPECT_NE(ra[1].summary.max_theta, ra[3].summary.max_theta);
 }
 
-TEST(AzimuthSweep, HalfATurnMirrorsASymmetricBody) {
-  // b1 = b2: the record at beta + 180 is exactly minus the one at beta, and the body's response
-  // is its mirror image (theta -> -theta): edge 1 and edge 2 swap. So [0, 180) holds the whole
-  // envelope of a symmetric body
+// b1 = b2: the record at beta + 180 is exactly minus the one at beta, and the body's response is
+// its mirror image (theta -> -theta): edge 1 and edge 2 swap. So [0, 180) holds the whole envelope
+// of a symmetric body. (The engine keeps it bit for bit today; 1e-12 leaves room for arithmetic
+// that is not written symmetrically.)
+void expect_half_turn_mirrors(bool flexible) {
   Scratch s;
-  const io::Case c = io::load_case(s.write("a.toml", pair_case(false, kH1, kH2, "")));
+  const io::Case c = io::load_case(s.write("a.toml", pair_case(flexible, kH1, kH2, "")));
   const Body body(c.body);
-  const std::vector<double> betas{10.0, 190.0, 75.0, 255.0};
+  ASSERT_EQ(c.body.b1, c.body.b2);
+  const std::vector<double> betas{10.0, 190.0, 75.0, 255.0, 135.0, 315.0};
   const auto r = study::run_azimuths(
       body, betas, [&](double x) { return io::azimuth_motion(c, x); }, c.initial, c.options);
   for (std::size_t k = 0; k < betas.size(); k += 2) {
+    SCOPED_TRACE("beta " + std::to_string(betas[k]));
     const std::vector<double> p = io::projected_record(*c.pair, betas[k]);
     std::vector<double> q = io::projected_record(*c.pair, betas[k + 1]);
     for (double& v : q) v = -v;
     EXPECT_EQ(p, q);
-    EXPECT_GT(std::abs(r[k].max_theta_edge1 - r[k].max_theta_edge2), 1e-4);  // not symmetric
-    EXPECT_NEAR(r[k].max_theta_edge1, r[k + 1].max_theta_edge2, 1e-7 * r[k].summary.max_theta);
-    EXPECT_NEAR(r[k].max_theta_edge2, r[k + 1].max_theta_edge1, 1e-7 * r[k].summary.max_theta);
+    EXPECT_GT(std::abs(r[k].max_theta_edge1 - r[k].max_theta_edge2),
+              1e-3 * r[k].summary.max_theta);  // the response itself is not symmetric
+    EXPECT_NEAR(r[k].max_theta_edge1, r[k + 1].max_theta_edge2, 1e-12 * r[k].summary.max_theta);
+    EXPECT_NEAR(r[k].max_theta_edge2, r[k + 1].max_theta_edge1, 1e-12 * r[k].summary.max_theta);
     EXPECT_EQ(r[k].summary.impacts, r[k + 1].summary.impacts);
   }
 }
+
+TEST(AzimuthSweep, HalfATurnMirrorsASymmetricRigidBlock) { expect_half_turn_mirrors(false); }
+
+TEST(AzimuthSweep, HalfATurnMirrorsASymmetricOneModeBody) { expect_half_turn_mirrors(true); }
 
 TEST(AzimuthSweep, EnvelopeTakesTheLargestOfEachAndItsFirstAzimuth) {
   std::vector<study::AzimuthRun> runs(4);
