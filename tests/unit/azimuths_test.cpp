@@ -75,7 +75,7 @@ void expect_sweep_equals_file_runs(bool flexible) {
   Scratch s;
   const io::Case pc = io::load_case(s.write("pair.toml", pair_case(flexible, kH1, kH2, "")));
   const Body body(pc.body);
-  const std::vector<double> azimuths{0.0, 35.0, 90.0, 215.0, 302.5};
+  const std::vector<double> azimuths{0.0, 35.0, 90.0, 130.0, 215.0, 302.5};
   const auto rows = study::run_azimuths(
       body, azimuths, [&](double b) { return io::azimuth_motion(pc, b); }, pc.initial, pc.options);
   // the projection computed here from the two files as read, in m/s^2
