@@ -387,6 +387,9 @@ int cmd_azimuths(const std::string& file, const std::string& output_dir, bool qu
   fmt::print("case: {}\n", c.name);
   fmt::print("pair: H1 {}, H2 {}; beta from H1 toward H2, a = H1 cos(beta) + H2 sin(beta)\n",
              c.horizontal.file, c.horizontal2.file);
+  const RotD pga = io::pair_peak_rotd(c);
+  fmt::print("pair as run: RotD50 of the PGA {:.4g} g, RotD100 {:.4g} g\n",
+             pga.rotd50 / kStandardGravity, pga.rotd100 / kStandardGravity);
   fmt::print("azimuths: {} (every {:g} deg over [0, 360))\n", grid.size(), c.azimuth_step);
   fmt::print("envelope: max tilt {:.6g} rad (theta/alpha {:.4g}) at {:g} deg\n", e.max_theta,
              e.max_theta_over_alpha, e.max_theta_azimuth);

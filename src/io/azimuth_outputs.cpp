@@ -13,6 +13,7 @@
 
 #include "flexrock/core/error.hpp"
 #include "flexrock/core/format.hpp"
+#include "flexrock/excitation/intensity.hpp"
 #include "flexrock/io/files.hpp"
 #include "flexrock/io/outputs.hpp"
 
@@ -112,6 +113,11 @@ std::string azimuth_summary_json(const Case& c, const Body& body,
   pair["samples"] = c.pair ? c.pair->h1.npts() : 0;
   pair["scale"] = c.excitation_scale;
   pair["convention"] = "a(t) = H1(t) cos(beta) + H2(t) sin(beta), beta from H1 toward H2";
+  if (c.pair) {
+    const RotD r = pair_peak_rotd(c);
+    pair["rotd50_pga_m_per_s2"] = r.rotd50;
+    pair["rotd100_pga_m_per_s2"] = r.rotd100;
+  }
   j["pair"] = pair;
   j["azimuth_step_deg"] = c.azimuth_step;
   j["azimuths"] = runs.size();
@@ -136,6 +142,13 @@ std::string azimuth_summary_json(const Case& c, const Body& body,
   j["envelope"] = env;
   j["outputs"] = {{"table", table_path}};
   return j.dump(2) + "\n";
+}
+
+RotD pair_peak_rotd(const Case& c) {
+  // the pair as run (scaled), at beta = 0 and 90: H1 and H2 themselves
+  const GroundMotion h1 = azimuth_motion(c, 0.0), h2 = azimuth_motion(c, 90.0);
+  return rotd_spectral_acceleration(h1.times(), h1.horizontal(), h2.horizontal(),
+                                    kMinSpectralPeriod);
 }
 
 AzimuthPaths azimuth_paths(const Case& c, const std::string& output_dir) {

@@ -39,6 +39,20 @@ expect_in "$WORK/out" "envelope: max tilt"
 head -1 "$WORK/o/pair.azimuths.csv" | grep -q '^azimuth_deg,outcome,max_theta_rad,' ||
   fail "columns of the azimuth table"
 json_get "$WORK/o/pair.azimuths.json" envelope.max_theta_rad >/dev/null
+# RotD100 of the PGA is the largest peak over the 180 directions, computed here from the files
+python3 - "$WORK/o/pair.azimuths.json" "$DATA" <<'PY' || fail "RotD of the PGA"
+import json, math, sys
+j = json.load(open(sys.argv[1]))["pair"]
+def values(name):
+    lines = open(sys.argv[2] + "/" + name).read().split("\n")[4:]
+    return [float(x) for l in lines for x in l.split()]
+a1 = values("RSN8884_14383980_13873090.AT2")
+a2 = values("RSN8884_14383980_13873360.AT2")
+peaks = sorted(3 * 9.80665 * max(abs(math.cos(math.radians(k)) * x + math.sin(math.radians(k)) * y)
+                                 for x, y in zip(a1, a2)) for k in range(180))
+assert math.isclose(j["rotd100_pga_m_per_s2"], peaks[-1], rel_tol=1e-6), (j, peaks[-1])
+assert math.isclose(j["rotd50_pga_m_per_s2"], 0.5 * (peaks[89] + peaks[90]), rel_tol=1e-6), j
+PY
 
 # the row at 135 deg is `flexrock run` at azimuth_deg = 135, number for number
 pair_case "azimuth_deg = 135" "$H2" >"$WORK/cases/one.toml"

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "flexrock/excitation/intensity.hpp"
 #include "flexrock/io/case_file.hpp"
 #include "flexrock/model/body.hpp"
 #include "flexrock/study/azimuths.hpp"
@@ -38,6 +39,11 @@ std::string azimuth_summary_json(const Case& c, const Body& body,
                                  const std::vector<study::AzimuthRun>& runs,
                                  const study::AzimuthEnvelope& envelope,
                                  const std::string& table_path);
+
+/// RotD50 and RotD100 of the peak acceleration of a case's pair as it is run (scaled): of Sa at
+/// kMinSpectralPeriod, where the oscillator follows the ground (intensity.hpp). The summary
+/// JSON's pair.rotd50_pga_m_per_s2 and rotd100_pga_m_per_s2.
+RotD pair_peak_rotd(const Case& c);
 
 /// Where the sweep's outputs go: "<stem>.azimuths.csv" and "<stem>.azimuths.json" in
 /// `output_dir` (the working directory when empty).
