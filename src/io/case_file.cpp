@@ -624,22 +624,32 @@ RecordPair make_pair(Reader& h2r, Record h1, Record h2, Case& c) {
   return p;
 }
 
+// a key of kPairKeys as the reader takes it: "[excitation.horizontal2]" is the table
+// "horizontal2" of [excitation]
+std::string pair_key(std::size_t i) {
+  std::string_view n = kPairKeys[i].name;
+  constexpr std::string_view kTable = "[excitation.";
+  if (n.starts_with(kTable)) n = n.substr(kTable.size(), n.size() - kTable.size() - 1);
+  return std::string(n);
+}
+
 // excitation.azimuth_deg and azimuth_step_deg (kPairKeys), only with a pair
 void read_azimuths(Reader& r, Case& c) {
-  const auto az = r.number_opt("azimuth_deg", "a number [deg] (the azimuth from H1 toward H2)");
-  const auto step = r.number_opt("azimuth_step_deg", "a number in (0, 360] [deg] dividing 360");
+  const std::string az_key = pair_key(1), step_key = pair_key(2);
+  const auto az = r.number_opt(az_key, "a number [deg] (the azimuth from H1 toward H2)");
+  const auto step = r.number_opt(step_key, "a number in (0, 360] [deg] dividing 360");
   if (!c.pair) {
     if (az || step) {
-      r.fail(az ? "azimuth_deg" : "azimuth_step_deg",
-             "expected only with a record pair ([excitation.horizontal2])");
+      r.fail(az ? az_key : step_key,
+             "expected only with a record pair ([excitation." + pair_key(0) + "])");
     }
     return;
   }
   if (az) c.azimuth = *az;
-  const double st = step.value_or(5.0);
+  const double st = step.value_or(std::stod(kPairKeys[2].default_text));
   const double count = 360.0 / st;
   if (!(st > 0.0 && st <= 360.0) || std::abs(count - std::round(count)) > 1e-9 * count) {
-    r.expected("azimuth_step_deg", "a step in (0, 360] [deg] that divides 360 (e.g. 5, 7.5, 10)");
+    r.expected(step_key, "a step in (0, 360] [deg] that divides 360 (e.g. 5, 7.5, 10)");
   }
   c.azimuth_step = st;
 }
@@ -649,7 +659,7 @@ void read_excitation(Reader& r, Case& c) {
   Reader hr = r.table("horizontal");
   Built h = read_component(hr, false, c.horizontal);
   std::optional<Built> h2;
-  std::optional<Reader> h2r = r.table_opt("horizontal2");
+  std::optional<Reader> h2r = r.table_opt(pair_key(0));
   if (h2r) {
     h2 = read_component(*h2r, false, c.horizontal2);
     if (!h2->record) {

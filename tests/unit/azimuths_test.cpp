@@ -250,6 +250,26 @@ TEST(RecordPairCase, AzimuthDegRunsTheProjectionScaled) {
   EXPECT_NE(std::find(c.input_files.begin(), c.input_files.end(), kH2), c.input_files.end());
 }
 
+TEST(RecordPairCase, TheKeysOfTheTableAreTheKeysTheReaderTakes) {
+  // the docs and `flexrock keys` are written from kPairKeys: each of its names, spelt as there,
+  // is read (and an azimuth set through it changes the motion)
+  Scratch s;
+  ASSERT_EQ(std::size(io::kPairKeys), 3u);
+  const std::string h2 = io::kPairKeys[0].name;
+  ASSERT_EQ(h2, "[excitation.horizontal2]");
+  const std::string text = body_toml(false) + "[excitation]\n" + io::kPairKeys[1].name + " = 90\n" +
+                           io::kPairKeys[2].name + " = 10\n" +
+                           "[excitation.horizontal]\ntype = \"record\"\nfile = \"" + kH1 + "\"\n" +
+                           h2 + "\ntype = \"record\"\nfile = \"" + kH2 + "\"\n";
+  const io::Case c = io::load_case(s.write("a.toml", text));
+  EXPECT_EQ(*c.azimuth, 90.0);
+  EXPECT_EQ(c.azimuth_step, 10.0);
+  EXPECT_EQ(c.motion.horizontal()[1000], c.pair->h2.to_si()[1000]);
+  // the default step is the table's
+  const io::Case d = io::load_case(s.write("b.toml", pair_case(false, kH1, kH2, "")));
+  EXPECT_EQ(d.azimuth_step, std::stod(io::kPairKeys[2].default_text));
+}
+
 TEST(RecordPairCase, ComponentsOfDifferentLengthsAreCutToTheShorter) {
   Scratch s;
   const std::string h1 = kData + "RSN8883_14383980_13849090.AT2";  // 16396 samples
