@@ -11,3 +11,9 @@ flexrock_add_test(flexrock_io_tests
 flexrock_add_test(flexrock_excitation_tests
   SOURCES unit/pulses_test.cpp unit/intensity_test.cpp unit/intensity_period_test.cpp
   LABEL unit)
+
+# two horizontal components: record pairs, the azimuth sweep and its envelope, RotD50/RotD100
+flexrock_add_test(flexrock_azimuth_tests
+  SOURCES unit/azimuths_test.cpp
+  LIBS flexrock::io
+  LABEL unit)

@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "flexrock/core/error.hpp"
+#include "flexrock/io/azimuth_outputs.hpp"
 #include "flexrock/io/case_file.hpp"
 #include "flexrock/io/outputs.hpp"
 #include "flexrock/io/qualify.hpp"
@@ -29,6 +30,7 @@
 #include "flexrock/io/study_files.hpp"
 #include "flexrock/sim/simulate.hpp"
 #include "flexrock/sim/step_cost.hpp"
+#include "flexrock/study/azimuths.hpp"
 #include "flexrock/version.hpp"
 #include "plot_command.hpp"
 #include "progress.hpp"
@@ -222,20 +224,27 @@ void print_summary(const io::Case& c, const Body& body, const SimulationResult& 
 // each record of a case: its file's PGA, PGV, duration and dt, and the factor it is run with
 void print_records(const io::Case& c) {
   const double g = kStandardGravity;
-  for (const auto* comp : {&c.horizontal, &c.vertical}) {
+  for (const auto* comp : {&c.horizontal, &c.horizontal2, &c.vertical}) {
     if (comp->type != "record") continue;
     const double factor = comp->scale * c.excitation_scale;
     fmt::print(
         "  record {}: {}: PGA {:.4g} g ({:.4g} m/s^2), PGV {:.4g} m/s, duration {:.4g} s, "
         "dt {}\n",
-        comp == &c.horizontal ? "horizontal" : "vertical", comp->file, comp->pga / g, comp->pga,
-        comp->pgv, comp->duration,
+        comp == &c.horizontal    ? (c.pair ? "horizontal (H1)" : "horizontal")
+        : comp == &c.horizontal2 ? "horizontal2 (H2)"
+                                 : "vertical",
+        comp->file, comp->pga / g, comp->pga, comp->pgv, comp->duration,
         comp->dt > 0.0 ? fmt::format("{:.4g} s", comp->dt) : std::string("not uniform"));
     if (factor != 1.0) {
       fmt::print("    run scaled by {:.6g}{}: PGA {:.4g} g, PGV {:.4g} m/s\n", factor,
                  c.scaled_to.empty() ? "" : " (to " + c.scaled_to + ")", factor * comp->pga / g,
                  factor * comp->pgv);
     }
+  }
+  if (c.pair) {
+    fmt::print("  pair: a = H1 cos(beta) + H2 sin(beta), beta from H1 toward H2; {}\n",
+               c.azimuth ? fmt::format("run at azimuth {:g} deg", *c.azimuth)
+                         : fmt::format("every {:g} deg with 'flexrock azimuths'", c.azimuth_step));
   }
 }
 
@@ -287,6 +296,14 @@ int cmd_run_one(const std::string& file, const std::string& output_dir, bool qui
   } catch (const std::bad_alloc&) {
     return error(file + ": out of memory while reading the case and its records", kExitRunFailed);
   }
+  if (c.pair && !c.azimuth) {
+    return error(file +
+                     ": [excitation] has a record pair ([excitation.horizontal2]) but no "
+                     "azimuth_deg: give azimuth_deg to run one azimuth, or run every azimuth "
+                     "with 'flexrock azimuths " +
+                     file + "'",
+                 kExitBadInput);
+  }
   print_notes(c);
   const Body body(c.body);
   print_step_cost_warning(c, body);
@@ -320,6 +337,96 @@ int cmd_run_one(const std::string& file, const std::string& output_dir, bool qui
   print_summary(c, body, r, paths, quiet);
   if (r.status == Status::kStopped) {
     return error("the run could not complete: " + r.message, kExitRunFailed);
+  }
+  return kExitOk;
+}
+
+// a case with a record pair at every azimuth of its grid: the per-azimuth CSV, the envelope in a
+// summary JSON and on the console
+int cmd_azimuths(const std::string& file, const std::string& output_dir, bool quiet, int threads) {
+  io::Case c;
+  io::AzimuthPaths paths;
+  try {
+    c = io::load_case(file);
+    if (!c.pair) {
+      throw InputError(file +
+                       ": expected a record pair: [excitation.horizontal2] (a second "
+                       "horizontal record) beside [excitation.horizontal]");
+    }
+    if (c.azimuth) {
+      throw InputError(file +
+                       ": [excitation] azimuth_deg fixes one azimuth ('flexrock run'); "
+                       "remove it to run every azimuth of the grid (azimuth_step_deg)");
+    }
+    paths = io::azimuth_paths(c, output_dir);
+    io::check_azimuth_paths(c, paths);
+  } catch (const InputError& e) {
+    return error(e.what(), kExitBadInput);
+  }
+  print_notes(c);
+  const Body body(c.body);
+  const std::vector<double> grid = study::azimuth_grid(c.azimuth_step);
+  std::atomic<std::size_t> done{0};
+  study::RunOptions run;
+  run.threads = threads;
+  run.completed = &done;
+  std::vector<study::AzimuthRun> rows;
+  try {
+    rows = study::run_azimuths(
+        body, grid, [&](double beta) { return io::azimuth_motion(c, beta); }, c.initial, c.options,
+        run);
+  } catch (const InputError& e) {
+    return error(file + ": " + e.what(), kExitBadInput);
+  }
+  const study::AzimuthEnvelope e = study::envelope(rows);
+  try {
+    io::write_azimuth_outputs(c, body, rows, e, paths);
+  } catch (const std::exception& ex) {
+    return error(std::string("could not write the outputs: ") + ex.what(), kExitRunFailed);
+  }
+  fmt::print("case: {}\n", c.name);
+  fmt::print("pair: H1 {}, H2 {}; beta from H1 toward H2, a = H1 cos(beta) + H2 sin(beta)\n",
+             c.horizontal.file, c.horizontal2.file);
+  const RotD pga = io::pair_peak_rotd(c);
+  fmt::print("pair as run: RotD50 of the PGA {:.4g} g, RotD100 {:.4g} g\n",
+             pga.rotd50 / kStandardGravity, pga.rotd100 / kStandardGravity);
+  fmt::print("azimuths: {} (every {:g} deg over [0, 360))\n", grid.size(), c.azimuth_step);
+  fmt::print("envelope: max tilt {:.6g} rad (theta/alpha {:.4g}) at {:g} deg\n", e.max_theta,
+             e.max_theta_over_alpha, e.max_theta_azimuth);
+  // what the planar model leaves out, with its size: the motion across the plane
+  fmt::print(
+      "planar model: the component across the plane is ignored; at {:g} deg it peaks at {:.4g} "
+      "m/s^2, {:.3g} times the in-plane peak {:.4g} m/s^2\n",
+      e.max_theta_azimuth, e.pga_across_at_max_theta,
+      e.pga_along_at_max_theta > 0.0 ? e.pga_across_at_max_theta / e.pga_along_at_max_theta : 0.0,
+      e.pga_along_at_max_theta);
+  if (e.max_offset > 0.0) {
+    fmt::print("envelope: max sliding offset {:.6g} m at {:g} deg\n", e.max_offset,
+               e.max_offset_azimuth);
+  } else {
+    fmt::print("envelope: max sliding offset 0 (no sliding at any azimuth)\n");
+  }
+  if (e.max_impact_force > 0.0) {
+    fmt::print("envelope: max impact force {:.6g} N at {:g} deg\n", e.max_impact_force,
+               e.max_impact_force_azimuth);
+  } else {
+    fmt::print("envelope: max impact force 0 (no impact at any azimuth)\n");
+  }
+  if (e.overturned_azimuths.empty()) {
+    fmt::print("overturning: at no azimuth\n");
+  } else {
+    std::string list;
+    for (double a : e.overturned_azimuths)
+      list += (list.empty() ? "" : ", ") + fmt::format("{:g}", a);
+    fmt::print("overturning: at {} of {} azimuths ({} deg); first at t = {:.4f} s at {:g} deg\n",
+               e.overturned_azimuths.size(), grid.size(), list, e.first_overturn_time,
+               e.first_overturn_azimuth);
+  }
+  if (!quiet) fmt::print("wrote {}\nwrote {}\n", paths.table, paths.summary);
+  if (!e.stopped_azimuths.empty()) {
+    return error(fmt::format("{} of {} azimuths could not complete (outcome 'stopped' in {})",
+                             e.stopped_azimuths.size(), grid.size(), paths.table),
+                 kExitRunFailed);
   }
   return kExitOk;
 }
@@ -581,6 +688,20 @@ int main(int argc, char** argv) {
   run->add_flag("-q,--quiet", quiet, "print only the results: no progress, no file list");
   run->add_flag("--no-progress", no_progress, "no progress bar, even on a terminal");
 
+  std::string azimuth_file;
+  int azimuth_threads = 0;
+  CLI::App* azimuths = app.add_subcommand(
+      "azimuths",
+      "Run a case with a record pair at every azimuth of the body's plane: write the "
+      "per-azimuth CSV and the envelope (summary JSON), print the envelope");
+  azimuths->add_option("CASE", azimuth_file, "case file (TOML) with [excitation.horizontal2]")
+      ->required();
+  azimuths->add_option("-o,--output-dir", output_dir,
+                       "directory for the outputs (default: the working directory)");
+  azimuths->add_option("-j,--threads", azimuth_threads, "worker threads (0: every core)")
+      ->check(CLI::NonNegativeNumber);
+  azimuths->add_flag("-q,--quiet", quiet, "print only the results");
+
   CLI::App* check = app.add_subcommand("check", "Validate case files without running them");
   check->add_option("CASE", check_files, "case files (TOML)")->required();
   check->add_flag("-q,--quiet", quiet, "print nothing but errors");
@@ -619,12 +740,14 @@ int main(int argc, char** argv) {
 
   try {
     if (*run) return cmd_run(run_files, output_dir, quiet, no_progress);
+    if (*azimuths) return cmd_azimuths(azimuth_file, output_dir, quiet, azimuth_threads);
     if (*check) return cmd_check(check_files, quiet);
     if (*params) return cmd_params(params_file);
     if (*keys) {
-      fmt::print("{}{}{}{}{}{}{}{}{}", io::body_key_reference(), io::record_format_reference(),
-                 io::pulse_key_reference(), io::solver_key_reference(),
-                 io::time_history_column_reference(), io::event_column_reference(),
+      fmt::print("{}{}{}{}{}{}{}{}{}{}{}", io::body_key_reference(), io::pair_key_reference(),
+                 io::record_format_reference(), io::pulse_key_reference(),
+                 io::solver_key_reference(), io::time_history_column_reference(),
+                 io::event_column_reference(), io::azimuth_column_reference(),
                  io::study_column_reference(), cli::fragility_curve_column_reference(),
                  io::qualify_key_reference());
       return 0;

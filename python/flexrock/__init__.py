@@ -56,6 +56,7 @@ from ._flexrock import (  # noqa: F401  (re-exported API)
     SimulationOptions,
     SimulationResult,
     Status,
+    azimuth_motion,
     combine,
     cycloidal_c_phase,
     event_columns,
@@ -71,6 +72,8 @@ from ._flexrock import (  # noqa: F401  (re-exported API)
     read_smc,
     read_time_series,
     record_formats,
+    rotd,
+    run_azimuths,
     time_history_columns,
 )
 

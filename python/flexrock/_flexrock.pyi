@@ -152,11 +152,16 @@ class BodyParameters:
 class Case:
     """A case: everything a run needs (see load_case)."""
     def __init__(self) -> None: ...
+    azimuth_deg: Optional[float]
+    azimuth_step_deg: float
     body: BodyParameters
     body_type: str
     description: str
     excitation_scale: float
+    @property
+    def has_pair(self) -> bool: ...
     horizontal: ExcitationComponent
+    horizontal2: ExcitationComponent
     initial: InitialState
     motion: GroundMotion
     name: str
@@ -1436,6 +1441,11 @@ class Uncertainty:
     parameters: list[UncertainParameter]
     sampling: Sampling
 
+def azimuth_motion(case: Case, azimuth_deg: float) -> GroundMotion:
+    """The ground motion of a case with a record pair at one azimuth: H1 cos(beta) + H2
+    sin(beta), beta [deg] from H1 toward H2, scaled and with the vertical as the case says.
+    """
+
 def body_kinds() -> list[BodyKind]:
     """Every body type, in the order of the docs.
 
@@ -2323,6 +2333,47 @@ def ricker_wavelet(a_p: float, omega_p: float, t_c: float, duration: float, comp
     Returns
     -------
     GroundMotion
+    """
+
+def rotd(t: list[float], a1: list[float], a2: list[float], period: float, zeta: float = ...) -> dict:
+    """RotD50 and RotD100 of two orthogonal horizontal components (Boore 2010): for each
+    rotation angle 0, 1, ..., 179 deg the pseudo-spectral acceleration of a1 cos + a2 sin (as
+    ``intensity_measure("sa", ...)``); RotD50 the median over the angles, RotD100 the largest.
+
+    Parameters
+    ----------
+    t : array of float
+        [s] increasing sample times, shared by both components.
+    a1, a2 : array of float
+        [m/s^2] the two horizontal components at the samples.
+    period, zeta : float
+        [s] natural period of the oscillator, [-] its damping ratio.
+
+    Returns
+    -------
+    dict
+        ``rotd50``, ``rotd100`` [m/s^2] and ``by_angle`` (numpy array of 180 values, m/s^2).
+    """
+
+def run_azimuths(case: Case, step_deg: Optional[float] = ..., threads: int = ...) -> tuple:
+    """Runs a case with a record pair at every azimuth of the grid over [0, 360) (as
+    ``flexrock azimuths``), on threads with the GIL released.
+
+    Parameters
+    ----------
+    case : Case
+        From ``load_case`` of a file with ``[excitation.horizontal2]``.
+    step_deg : float, optional
+        [deg] the grid's step (default: the case's ``azimuth_step_deg``, 5).
+    threads : int
+        Worker threads (0: every core).
+
+    Returns
+    -------
+    (dict, dict)
+        The per-azimuth table (numpy arrays of float, ``outcome`` a list of str; the columns of the
+        azimuth CSV) and the envelope (largest tilt, offset and impact force with their governing
+        azimuths, the overturned azimuths).
     """
 
 def run_pulse_cell(body: Body, spec: SpectrumSpec, a_p: float, omega_p: float) -> RunSummary:

@@ -628,6 +628,73 @@ def fragility(im: Sequence[float], failed: Sequence[int], confidence: float = 0.
     return fit_lognormal([float(x) for x in im], [int(f) for f in failed], confidence)
 
 
+def azimuth_outcomes(cases, scales: Sequence[float], *, step_deg: Optional[float] = None,
+                     im_period: Optional[float] = None, zeta: float = 0.05,
+                     threads: int = 0) -> Tuple[dict, dict]:
+    """Worst-azimuth and random-azimuth outcomes of record pairs at several scales: the data of
+    a fragility over azimuths (docs/studies.md, "Two horizontal components").
+
+    Each case (a ``Case`` with a record pair, or its path) is run at every azimuth of its grid
+    (``run_azimuths``) with its ``excitation.scale`` times each of ``scales``. The intensity
+    measure is RotD50 of the scaled pair (``rotd``): of Sa at ``im_period`` [s] and ``zeta``, or,
+    without a period, of the peak acceleration (Sa at 1e-6 s, where the oscillator follows the
+    ground). RotD50 of s a is s RotD50(a): it is computed once per pair.
+
+    Returns
+    -------
+    (dict, dict)
+        Per (pair, scale), numpy arrays: ``record`` (the case's name), ``scale``,
+        ``rotd50_m_per_s2``, ``rotd100_m_per_s2``, ``worst_overturned`` (int64: 1 if the body
+        overturns at any azimuth: the worst-azimuth outcome), ``overturned_fraction`` (the
+        share of azimuths that overturn: the probability for an azimuth drawn uniformly) and
+        ``worst_max_theta_over_alpha``. And per azimuth run, ``im`` and ``overturned`` (int64):
+        the random-azimuth outcomes, every azimuth one equally likely observation.
+        ``fragility(rows["rotd50_m_per_s2"], rows["worst_overturned"])`` fits the worst-azimuth
+        fragility, ``fragility(runs["im"], runs["overturned"])`` the random-azimuth one.
+    """
+    import numpy as np
+
+    from ._flexrock import InputError, azimuth_motion, load_case, rotd, run_azimuths
+
+    rows = {k: [] for k in ("record", "scale", "rotd50_m_per_s2", "rotd100_m_per_s2",
+                            "worst_overturned", "overturned_fraction",
+                            "worst_max_theta_over_alpha")}
+    runs = {"im": [], "overturned": []}
+    period = 1e-6 if im_period is None else float(im_period)
+    for case in cases:
+        c = load_case(os.fspath(case)) if not hasattr(case, "has_pair") else case
+        if not c.has_pair:
+            raise InputError(f"{c.source}: expected a record pair ([excitation.horizontal2])")
+        base = c.excitation_scale
+        # the IM of the pair as the case scales it, then linear in the scale
+        c.excitation_scale = 1.0
+        m = azimuth_motion(c, 0.0)
+        m90 = azimuth_motion(c, 90.0)
+        t = np.asarray(m.times)
+        im = rotd(t, np.asarray(m.horizontal) * base, np.asarray(m90.horizontal) * base, period,
+                  zeta)
+        try:
+            for s in scales:
+                c.excitation_scale = base * float(s)
+                table, _ = run_azimuths(c, step_deg, threads)
+                over = np.array([o.startswith("overturned") for o in table["outcome"]])
+                rows["record"].append(c.name)
+                rows["scale"].append(float(s))
+                rows["rotd50_m_per_s2"].append(float(s) * im["rotd50"])
+                rows["rotd100_m_per_s2"].append(float(s) * im["rotd100"])
+                rows["worst_overturned"].append(int(over.any()))
+                rows["overturned_fraction"].append(float(over.mean()))
+                rows["worst_max_theta_over_alpha"].append(float(table["max_theta_over_alpha"].max()))
+                runs["im"].extend([float(s) * im["rotd50"]] * len(over))
+                runs["overturned"].extend(int(v) for v in over)
+        finally:
+            c.excitation_scale = base
+    out = {k: np.array(v, dtype=object if k == "record" else None) for k, v in rows.items()}
+    out["worst_overturned"] = out["worst_overturned"].astype(np.int64)
+    return out, {"im": np.array(runs["im"]), "overturned": np.array(runs["overturned"],
+                                                                     dtype=np.int64)}
+
+
 def fragility_session(
     path: str,
     im: Optional[str] = None,

@@ -7,14 +7,18 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <variant>
 
 #include "bindings.hpp"
+#include "flexrock/core/error.hpp"
+#include "flexrock/io/azimuth_outputs.hpp"
 #include "flexrock/io/case_file.hpp"
 #include "flexrock/io/outputs.hpp"
 #include "flexrock/io/records.hpp"
+#include "flexrock/study/azimuths.hpp"
 
 namespace py = pybind11;
 
@@ -224,6 +228,10 @@ GroundMotion
       .def_readwrite("motion", &io::Case::motion)
       .def_readwrite("horizontal", &io::Case::horizontal)
       .def_readwrite("vertical", &io::Case::vertical)
+      .def_readwrite("horizontal2", &io::Case::horizontal2)
+      .def_property_readonly("has_pair", [](const io::Case& c) { return c.pair != nullptr; })
+      .def_readwrite("azimuth_deg", &io::Case::azimuth)
+      .def_readwrite("azimuth_step_deg", &io::Case::azimuth_step)
       .def_readwrite("excitation_scale", &io::Case::excitation_scale)
       .def_readwrite("initial", &io::Case::initial)
       .def_readwrite("options", &io::Case::options)
@@ -240,6 +248,93 @@ Returns
 Case
     Body, motion (m/s^2), initial state, solver options and outputs; bad input raises
     InputError naming file, line and key.)doc");
+  m.def(
+      "azimuth_motion",
+      [](const io::Case& c, double beta) {
+        if (!c.pair) throw flexrock::InputError(c.source + ": the case has no record pair");
+        return io::azimuth_motion(c, beta);
+      },
+      py::arg("case"), py::arg("azimuth_deg"),
+      R"doc(The ground motion of a case with a record pair at one azimuth: H1 cos(beta) + H2
+sin(beta), beta [deg] from H1 toward H2, scaled and with the vertical as the case says.)doc");
+  m.def(
+      "run_azimuths",
+      [](const io::Case& c, std::optional<double> step_deg, int threads) {
+        if (!c.pair) throw flexrock::InputError(c.source + ": the case has no record pair");
+        const Body body(c.body);
+        const std::vector<double> grid = study::azimuth_grid(step_deg.value_or(c.azimuth_step));
+        std::vector<study::AzimuthRun> rows;
+        {
+          py::gil_scoped_release nogil;
+          study::RunOptions run;
+          run.threads = threads;
+          rows = study::run_azimuths(
+              body, grid, [&](double b) { return io::azimuth_motion(c, b); }, c.initial, c.options,
+              run);
+        }
+        const study::AzimuthEnvelope e = study::envelope(rows);
+        // typed columns: numbers as numpy arrays, the outcome as a list of str
+        py::dict table;
+        auto col = [&](const char* name, auto get) {
+          py::array_t<double> a(static_cast<py::ssize_t>(rows.size()));
+          auto v = a.mutable_unchecked<1>();
+          for (std::size_t i = 0; i < rows.size(); ++i)
+            v(static_cast<py::ssize_t>(i)) = get(rows[i]);
+          table[name] = a;
+        };
+        using R = study::AzimuthRun;
+        col("azimuth_deg", [](const R& r) { return r.azimuth_deg; });
+        py::list outcome;
+        for (const R& r : rows) outcome.append(study::to_string(r.summary.outcome));
+        table["outcome"] = outcome;
+        col("max_theta_rad", [](const R& r) { return r.summary.max_theta; });
+        col("max_theta_edge1_rad", [](const R& r) { return r.max_theta_edge1; });
+        col("max_theta_edge2_rad", [](const R& r) { return r.max_theta_edge2; });
+        col("max_theta_over_alpha", [](const R& r) { return r.summary.max_theta_over_alpha; });
+        col("overturn_time_s", [](const R& r) { return r.summary.overturn_time; });
+        col("impacts", [](const R& r) { return static_cast<double>(r.summary.impacts); });
+        col("max_impact_force_N", [](const R& r) { return r.max_impact_force; });
+        col("max_offset_m", [](const R& r) { return r.summary.max_offset; });
+        col("final_offset_m", [](const R& r) { return r.summary.final_offset; });
+        col("pga_along_m_per_s2", [](const R& r) { return r.pga_along; });
+        col("pga_across_m_per_s2", [](const R& r) { return r.pga_across; });
+        py::dict env;
+        env["max_theta_rad"] = e.max_theta;
+        env["max_theta_azimuth_deg"] = e.max_theta_azimuth;
+        env["max_theta_over_alpha"] = e.max_theta_over_alpha;
+        env["pga_along_at_max_theta_m_per_s2"] = e.pga_along_at_max_theta;
+        env["pga_across_at_max_theta_m_per_s2"] = e.pga_across_at_max_theta;
+        env["max_offset_m"] = e.max_offset;
+        env["max_offset_azimuth_deg"] = e.max_offset_azimuth;
+        env["max_impact_force_N"] = e.max_impact_force;
+        env["max_impact_force_azimuth_deg"] = e.max_impact_force_azimuth;
+        env["overturned_azimuths_deg"] = e.overturned_azimuths;
+        env["first_overturn_time_s"] = e.first_overturn_time;
+        env["first_overturn_azimuth_deg"] = e.first_overturn_time >= 0.0
+                                                ? py::object(py::float_(e.first_overturn_azimuth))
+                                                : py::object(py::none());
+        env["stopped_azimuths_deg"] = e.stopped_azimuths;
+        return py::make_tuple(table, env);
+      },
+      py::arg("case"), py::arg("step_deg") = py::none(), py::arg("threads") = 0,
+      R"doc(Runs a case with a record pair at every azimuth of the grid over [0, 360) (as
+``flexrock azimuths``), on threads with the GIL released.
+
+Parameters
+----------
+case : Case
+    From ``load_case`` of a file with ``[excitation.horizontal2]``.
+step_deg : float, optional
+    [deg] the grid's step (default: the case's ``azimuth_step_deg``, 5).
+threads : int
+    Worker threads (0: every core).
+
+Returns
+-------
+(dict, dict)
+    The per-azimuth table (numpy arrays of float, ``outcome`` a list of str; the columns of the
+    azimuth CSV) and the envelope (largest tilt, offset and impact force with their governing
+    azimuths, the overturned azimuths).)doc");
   m.def(
       "load_body",
       [](const std::string& path) {

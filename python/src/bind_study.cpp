@@ -439,6 +439,40 @@ Returns
 -------
 float
     In the measure's SI unit.)doc");
+  m.def(
+      "rotd",
+      [](const std::vector<double>& t, const std::vector<double>& a1, const std::vector<double>& a2,
+         double period, double zeta) {
+        RotD r;
+        {
+          py::gil_scoped_release nogil;
+          r = rotd_spectral_acceleration(t, a1, a2, period, zeta);
+        }
+        py::dict d;
+        d["rotd50"] = r.rotd50;
+        d["rotd100"] = r.rotd100;
+        d["by_angle"] =
+            py::array_t<double>(static_cast<py::ssize_t>(r.by_angle.size()), r.by_angle.data());
+        return d;
+      },
+      py::arg("t"), py::arg("a1"), py::arg("a2"), py::arg("period"), py::arg("zeta") = 0.05,
+      R"doc(RotD50 and RotD100 of two orthogonal horizontal components (Boore 2010): for each
+rotation angle 0, 1, ..., 179 deg the pseudo-spectral acceleration of a1 cos + a2 sin (as
+``intensity_measure("sa", ...)``); RotD50 the median over the angles, RotD100 the largest.
+
+Parameters
+----------
+t : array of float
+    [s] increasing sample times, shared by both components.
+a1, a2 : array of float
+    [m/s^2] the two horizontal components at the samples.
+period, zeta : float
+    [s] natural period of the oscillator, [-] its damping ratio.
+
+Returns
+-------
+dict
+    ``rotd50``, ``rotd100`` [m/s^2] and ``by_angle`` (numpy array of 180 values, m/s^2).)doc");
   m.def("intensity",
         py::overload_cast<const GroundMotion&, const std::vector<MeasureRequest>&, double>(
             &intensity),

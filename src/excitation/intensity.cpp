@@ -10,6 +10,7 @@
 #include "flexrock/core/error.hpp"
 #include "flexrock/core/format.hpp"
 #include "flexrock/core/types.hpp"
+#include "flexrock/excitation/azimuth.hpp"
 
 namespace flexrock {
 
@@ -337,6 +338,39 @@ double spectral_acceleration(const std::vector<double>& t, const std::vector<dou
   peak = std::max(peak, free_vibration_peak(x, v, omega, zeta, h, period));
   // w (w peak): w^2 underflows long before w peak does
   return omega * (omega * peak);
+}
+
+RotD rotd_spectral_acceleration(const std::vector<double>& t, const std::vector<double>& a1,
+                                const std::vector<double>& a2, double period, double zeta) {
+  require_spectral_period(period, "RotD: period");
+  FLEXROCK_THROW_UNLESS(a1.size() == a2.size(),
+                        "RotD: the two components must have the same samples, got " +
+                            std::to_string(a1.size()) + " and " + std::to_string(a2.size()));
+  const double omega = 2.0 * std::numbers::pi / period;
+  std::vector<double> u1, u2;
+  u1.reserve(t.size());
+  u2.reserve(t.size());
+  const auto [x1, v1] = integrate_sdof(t, a1, omega, zeta, [&](double u) { u1.push_back(u); });
+  const auto [x2, v2] = integrate_sdof(t, a2, omega, zeta, [&](double u) { u2.push_back(u); });
+  const double h = t[t.size() - 1] - t[t.size() - 2];
+  RotD r;
+  r.by_angle.resize(180);
+  for (int k = 0; k < 180; ++k) {
+    // the rotated component's response, by superposition (theta exact at 0: u1 itself)
+    double c = 0.0, s = 0.0;
+    direction_cosines(k, c, s);
+    double peak = 0.0;
+    for (std::size_t i = 0; i < u1.size(); ++i)
+      peak = std::max(peak, std::abs(c * u1[i] + s * u2[i]));
+    peak = std::max(peak,
+                    free_vibration_peak(c * x1 + s * x2, c * v1 + s * v2, omega, zeta, h, period));
+    r.by_angle[static_cast<std::size_t>(k)] = omega * (omega * peak);
+  }
+  std::vector<double> sorted = r.by_angle;
+  std::sort(sorted.begin(), sorted.end());
+  r.rotd50 = 0.5 * (sorted[89] + sorted[90]);
+  r.rotd100 = sorted.back();
+  return r;
 }
 
 namespace {

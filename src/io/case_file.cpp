@@ -17,6 +17,7 @@
 
 #include "decimal_comma.hpp"
 #include "flexrock/core/error.hpp"
+#include "flexrock/excitation/azimuth.hpp"
 #include "flexrock/excitation/intensity.hpp"
 #include "flexrock/excitation/pulses.hpp"
 #include "flexrock/io/files.hpp"
@@ -588,20 +589,118 @@ double target_scale(Reader& r, const Built& h, Case& c) {
   return want / measure;
 }
 
+// the two horizontal records of a pair on their common samples: the same time step (or the same
+// times), cut to the shorter; anything else is refused naming both files
+RecordPair make_pair(Reader& h2r, Record h1, Record h2, Case& c) {
+  const std::string both = "H1 '" + h1.source + "' and H2 '" + h2.source + "'";
+  const double tol = 1e-9 * std::max(std::abs(h1.dt), std::abs(h2.dt));
+  if ((h1.dt > 0.0) != (h2.dt > 0.0) || std::abs(h1.dt - h2.dt) > tol) {
+    h2r.fail("file", "expected the same time step in " + both + ", got " +
+                         (h1.dt > 0.0 ? num(h1.dt) + " s" : std::string("uneven times")) + " and " +
+                         (h2.dt > 0.0 ? num(h2.dt) + " s" : std::string("uneven times")) +
+                         " (resample one of them)");
+  }
+  const std::size_t n = std::min(h1.npts(), h2.npts());
+  for (std::size_t i = 0; i < n; ++i) {
+    const double dt = i + 1 < n ? h1.time[i + 1] - h1.time[i] : h1.time[i] - h1.time[i - 1];
+    if (std::abs(h1.time[i] - h2.time[i]) > 1e-9 * std::abs(dt)) {
+      h2r.fail("file", "expected the same sample times in " + both + ", got " + num(h1.time[i]) +
+                           " s and " + num(h2.time[i]) + " s at sample " + std::to_string(i + 1));
+    }
+  }
+  if (n < 2) h2r.fail("file", "expected at least 2 common samples in " + both);
+  if (h1.npts() != h2.npts()) {
+    c.notes.push_back("excitation: " + both + " have " + std::to_string(h1.npts()) + " and " +
+                      std::to_string(h2.npts()) + " samples: the pair is cut to the shorter (" +
+                      num(h1.time[n - 1]) + " s)");
+    for (Record* rec : {&h1, &h2}) {
+      rec->time.resize(n);
+      rec->values.resize(n);
+    }
+  }
+  RecordPair p;
+  p.h1 = std::move(h1);
+  p.h2 = std::move(h2);
+  return p;
+}
+
+// a key of kPairKeys as the reader takes it: "[excitation.horizontal2]" is the table
+// "horizontal2" of [excitation]
+std::string pair_key(std::size_t i) {
+  std::string_view n = kPairKeys[i].name;
+  constexpr std::string_view kTable = "[excitation.";
+  if (n.starts_with(kTable)) n = n.substr(kTable.size(), n.size() - kTable.size() - 1);
+  return std::string(n);
+}
+
+// excitation.azimuth_deg and azimuth_step_deg (kPairKeys), only with a pair
+void read_azimuths(Reader& r, Case& c) {
+  const std::string az_key = pair_key(1), step_key = pair_key(2);
+  const auto az = r.number_opt(az_key, "a number [deg] (the azimuth from H1 toward H2)");
+  const auto step = r.number_opt(step_key, "a number in (0, 360] [deg] dividing 360");
+  if (!c.pair) {
+    if (az || step) {
+      r.fail(az ? az_key : step_key,
+             "expected only with a record pair ([excitation." + pair_key(0) + "])");
+    }
+    return;
+  }
+  if (az) c.azimuth = *az;
+  const double st = step.value_or(std::stod(kPairKeys[2].default_text));
+  const double count = 360.0 / st;
+  if (!(st > 0.0 && st <= 360.0) || std::abs(count - std::round(count)) > 1e-9 * count) {
+    r.expected(step_key, "a step in (0, 360] [deg] that divides 360 (e.g. 5, 7.5, 10)");
+  }
+  c.azimuth_step = st;
+}
+
 void read_excitation(Reader& r, Case& c) {
   c.excitation_scale = r.number_or("scale", 1.0, "a number [-] (factor on both components)");
   Reader hr = r.table("horizontal");
   Built h = read_component(hr, false, c.horizontal);
+  std::optional<Built> h2;
+  std::optional<Reader> h2r = r.table_opt(pair_key(0));
+  if (h2r) {
+    h2 = read_component(*h2r, false, c.horizontal2);
+    if (!h2->record) {
+      h2r->fail("type", "expected \"record\" for the second horizontal component, got \"" +
+                            c.horizontal2.type + "\"");
+    }
+    if (!h.record) {
+      hr.fail("type",
+              "expected \"record\" for the first horizontal component of a pair "
+              "([excitation.horizontal2] is given), got \"" +
+                  c.horizontal.type + "\"");
+    }
+  }
   std::optional<Built> v;
   if (auto vr = r.table_opt("vertical")) v = read_component(*vr, true, c.vertical);
+  if (h2) {
+    for (const char* key : {"target_pga", "target_pgv", "target_sa"}) {
+      if (r.has(key)) {
+        r.fail(key,
+               "expected no target with a record pair (the target of a pair is not defined "
+               "by one component): use scale");
+      }
+    }
+    auto pair = std::make_shared<RecordPair>(make_pair(*h2r, *h.record, *h2->record, c));
+    if (v && v->record) pair->vertical_record = v->record;
+    if (v && !v->record) pair->vertical_motion = v->motion;
+    c.pair = std::move(pair);
+  }
+  read_azimuths(r, c);
   if (const double f = target_scale(r, h, c); f > 0.0) c.excitation_scale = f;
-  for (const ExcitationComponent* e : {&c.horizontal, &c.vertical}) {
+  for (const ExcitationComponent* e : {&c.horizontal, &c.horizontal2, &c.vertical}) {
     if (!e->file.empty()) c.input_files.push_back(e->file);
   }
   r.finish();
   const double s = c.excitation_scale;
   try {
-    if (!v) {
+    if (c.pair) {
+      // the motion at the azimuth asked for; without one, H1 alone (beta = 0) stands for the pair
+      // where a single motion is needed (`flexrock check`, the history-row bound)
+      c.motion = azimuth_motion(c, c.azimuth.value_or(0.0));
+    } else if (!v) {
       c.motion = h.record ? h.record->to_motion(s) : h.motion.scaled(s);
     } else if (h.record && v->record) {
       c.motion = combine(*h.record, &*v->record, s);
@@ -677,6 +776,41 @@ void check_history_rows(Reader& top, const Case& c) {
 toml::table parse(const std::string& path) { return detail::parse_toml(path, "case"); }
 
 }  // namespace
+
+std::vector<double> projected_record(const RecordPair& pair, double beta_deg) {
+  return project_horizontal(pair.h1.to_si(), pair.h2.to_si(), beta_deg);
+}
+
+GroundMotion azimuth_motion(const Case& c, double beta_deg) {
+  if (!c.pair) throw std::logic_error("azimuth_motion: the case has no record pair");
+  const RecordPair& p = *c.pair;
+  Record h;
+  h.source = p.h1.source;
+  h.units = AccelUnit::kMetersPerSecond2;
+  h.dt = p.h1.dt;
+  h.time = p.h1.time;
+  h.values = projected_record(p, beta_deg);
+  const double s = c.excitation_scale;
+  if (p.vertical_record) return combine(h, &*p.vertical_record, s);
+  if (p.vertical_motion) {
+    return combine_any(record_motion(h, false), *p.vertical_motion).scaled(s);
+  }
+  return h.to_motion(s);
+}
+
+std::string pair_key_reference() {
+  std::string s =
+      "<!-- begin: written by `flexrock keys --markdown` from the table of record-pair keys "
+      "(include/flexrock/io/case_file.hpp); edit the table, not these lines -->\n"
+      "| key | unit | default | meaning |\n"
+      "|---|---|---|---|\n";
+  for (const PairKey& k : kPairKeys) {
+    s.append("| `").append(k.name).append("` | ").append(k.unit).append(" | ");
+    s.append(k.default_text).append(" | ").append(k.doc).append(" |\n");
+  }
+  s += "<!-- end: written by `flexrock keys --markdown` -->\n";
+  return s;
+}
 
 Case load_case(const std::string& path) {
   const toml::table doc = parse(path);

@@ -640,6 +640,12 @@ std::string summary_json(const Case& c, const Body& body, const SimulationResult
                      {"pga_y_m_per_s2", pga_y},
                      {"pga_x_g", pga_x / kStandardGravity},
                      {"pga_y_g", pga_y / kStandardGravity}};
+  // a record pair run at one azimuth: the second component and the azimuth (absent otherwise, so
+  // that single-component summaries keep their bytes)
+  if (c.pair) {
+    j["excitation"]["horizontal2"] = component_json(c.horizontal2);
+    j["excitation"]["azimuth_deg"] = c.azimuth ? Json(*c.azimuth) : Json();
+  }
   j["outcome"] = {{"status", to_string(r.status)},
                   {"message", r.message},
                   {"t_end_s", r.t_end},

@@ -87,6 +87,24 @@ double free_vibration_peak(double u0, double v0, double omega, double zeta, doub
 double spectral_acceleration(const std::vector<double>& t, const std::vector<double>& a,
                              double period, double zeta = 0.05);
 
+/// Orientation-independent spectral accelerations of two orthogonal horizontal components (Boore
+/// 2010, "Orientation-independent, nongeometric-mean measures of seismic intensity from two
+/// horizontal components of motion", BSSA 100(4)): for each rotation angle theta = 0, 1, ...,
+/// 179 degrees the oscillator's peak response to the rotated component a1 cos(theta) + a2
+/// sin(theta), as spectral_acceleration() computes it (over the record and one period of free
+/// vibration after it, sampled at the record's steps). The oscillator is linear, so the rotated
+/// response is u1 cos(theta) + u2 sin(theta) of the two responses, computed once.
+struct RotD {
+  double rotd50 = 0.0;   // median over the 180 angles (mean of the two middle values) [units of a]
+  double rotd100 = 0.0;  // largest over the angles [units of a]
+  std::vector<double> by_angle;  // Sa at theta = 0, 1, ..., 179 degrees [units of a]
+};
+
+/// RotD50 and RotD100 of the pair (a1, a2) sampled at the same times `t` [s], at natural
+/// `period` [s] and damping ratio `zeta`. Throws InputError when the two differ in length.
+RotD rotd_spectral_acceleration(const std::vector<double>& t, const std::vector<double>& a1,
+                                const std::vector<double>& a2, double period, double zeta = 0.05);
+
 /// One intensity measure of the table: its name (as `flexrock fragility --im`, a sweep manifest's
 /// [intensity] measures and Python give it), the sweep CSV column it is written to, its unit and
 /// meaning, how it grows with a scale factor s on the record (value(s a) = s^power value(a)), and

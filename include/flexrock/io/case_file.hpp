@@ -7,11 +7,14 @@
 // and unknown keys are rejected with the closest known key ("did you mean ...").
 #pragma once
 
+#include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include "flexrock/excitation/ground_motion.hpp"
+#include "flexrock/io/records.hpp"
 #include "flexrock/model/body.hpp"
 #include "flexrock/sim/simulate.hpp"
 
@@ -50,6 +53,43 @@ struct BodyKeyRead {
   bool given = true;  // false: the default
 };
 
+/// Two horizontal components of one station, H1 and H2 (H2 90 degrees from H1), with the
+/// vertical component when one is given: the input of a planar body at every azimuth. The body's
+/// plane at azimuth beta, measured from H1 toward H2, receives a(t) = H1(t) cos(beta) + H2(t)
+/// sin(beta) (docs/theory.md, "Two horizontal components").
+struct RecordPair {
+  Record h1, h2;  // each with its component's scale applied, cut to their common samples
+  std::optional<Record> vertical_record;        // a vertical record
+  std::optional<GroundMotion> vertical_motion;  // a synthetic vertical motion
+};
+
+/// One key of [excitation] for a record pair, from the table that the reader, `flexrock keys`
+/// and docs/case-file.md share.
+struct PairKey {
+  const char* name;
+  const char* unit;
+  const char* default_text;
+  const char* doc;
+};
+
+/// The keys of a record pair in [excitation], in the order of the docs.
+inline constexpr PairKey kPairKeys[] = {
+    {"[excitation.horizontal2]", "table", "none",
+     "the second horizontal component H2, 90 degrees from `[excitation.horizontal]` (H1) toward "
+     "which azimuths are measured: `type = \"record\"` with the record keys below; the two must "
+     "have the same time step, and are cut to the shorter"},
+    {"azimuth_deg", "deg", "none",
+     "with a pair: the azimuth beta of the body's plane, from H1 toward H2; `flexrock run` runs "
+     "a(t) = H1 cos(beta) + H2 sin(beta). Without it a pair is run by `flexrock azimuths` only"},
+    {"azimuth_step_deg", "deg", "5",
+     "with a pair: the step of the azimuth grid of `flexrock azimuths` over [0, 360), > 0, "
+     "dividing 360"},
+};
+
+/// The key reference of a record pair, as the Markdown table of docs/case-file.md, written from
+/// kPairKeys with its begin and end marker lines (`flexrock keys --markdown`).
+std::string pair_key_reference();
+
 /// A case, loaded and checked: everything a run needs.
 struct Case {
   std::string source;       // path of the case file as given
@@ -61,7 +101,11 @@ struct Case {
   BodyParameters body;      // the paper's parameters (already validated by Body)
   GroundMotion motion;      // [m/s^2] both components, scaled
   ExcitationComponent horizontal;
-  ExcitationComponent vertical;   // type empty: no vertical component
+  ExcitationComponent vertical;            // type empty: no vertical component
+  ExcitationComponent horizontal2;         // type empty: one horizontal component, not a pair
+  std::shared_ptr<const RecordPair> pair;  // a record pair (horizontal2 given), else null
+  std::optional<double> azimuth;           // [deg] excitation.azimuth_deg (pairs only)
+  double azimuth_step = 0.0;               // [deg] excitation.azimuth_step_deg (pairs only)
   double excitation_scale = 1.0;  // [-] excitation.scale, or the factor to the target intensity
   InitialState initial;
   SimulationOptions options;  // options.output_dt is output.dt
@@ -71,6 +115,15 @@ struct Case {
   std::vector<std::string> input_files;  // the case file and its record files
   std::vector<BodyKeyRead> body_keys;    // the [body] keys read, in the table's order
 };
+
+/// The ground motion of a case with a record pair at azimuth `beta_deg` [deg] (from H1 toward H2):
+/// the projection H1 cos(beta) + H2 sin(beta) as a record in m/s^2, with the vertical component
+/// and excitation.scale applied as for a single record. Throws std::logic_error without a pair.
+GroundMotion azimuth_motion(const Case& c, double beta_deg);
+
+/// The projected horizontal record of a pair at azimuth `beta_deg` [deg], in m/s^2 on H1's
+/// samples, before excitation.scale: what azimuth_motion() runs (project_horizontal()).
+std::vector<double> projected_record(const RecordPair& pair, double beta_deg);
 
 /// Whether a case (or body) file has an [excitation] table. Throws InputError for a file that
 /// cannot be read or parsed.
