@@ -142,7 +142,7 @@ void bind_sim(py::module_& m) {
       std::visit(
           [&](auto field) {
             if constexpr (!std::is_same_v<decltype(field), std::monostate>)
-              options.def_readwrite(k.name, field, k.doc);
+              options.def_readwrite(k.name, field, solver_key_doc(k).c_str());
           },
           k.field);
     }

@@ -930,7 +930,7 @@ std::string solver_key_reference() {
     s.append("| `").append(k.name).append("` | ").append(k.unit);
     s.append(*k.unit ? " | " : "| ").append(k.default_text).append(" | ");
     // a bar in the meaning would end the cell
-    for (const char* c = k.doc; *c; ++c) s.append(*c == '|' ? "\\|" : std::string(1, *c));
+    for (const char c : solver_key_doc(k)) s.append(c == '|' ? "\\|" : std::string(1, c));
     s.append(" |\n");
   }
   s += "<!-- end: written by `flexrock keys --markdown` -->\n";

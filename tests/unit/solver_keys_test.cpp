@@ -159,5 +159,21 @@ TEST(SolverRules, EveryKeyAndEveryOptionOnce) {
   EXPECT_EQ(find_solver_key("nonsense"), nullptr);
 }
 
+// the impact_law key's reference lists every row of the impact laws' table with its description,
+// so that a new law is written in its row only (the reference once listed them by hand)
+TEST(SolverRules, ImpactLawReferenceListsTheLawsRows) {
+  const SolverKey* key = find_solver_key("impact_law");
+  ASSERT_NE(key, nullptr);
+  const std::string doc = solver_key_doc(*key);
+  const std::string reference = io::solver_key_reference();
+  EXPECT_NE(reference.find(doc), std::string::npos);
+  for (const ImpactLawInfo& law : kImpactLaws) {
+    const std::string entry = std::string("`") + law.name + "` (" + law.description + ")";
+    EXPECT_NE(doc.find(entry), std::string::npos) << law.name;
+  }
+  // keys without a table of their own keep their doc as written
+  EXPECT_EQ(solver_key_doc(*find_solver_key("rtol")), find_solver_key("rtol")->doc);
+}
+
 }  // namespace
 }  // namespace flexrock

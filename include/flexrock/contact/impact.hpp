@@ -51,7 +51,8 @@ enum class OnEnergyGain {
 struct ImpactLawInfo {
   ImpactLaw law;
   const char* name;         // as written in case files, studies and Python
-  const char* description;  // one line, for `--help` and the docs
+  const char* description;  // what it does (Markdown): the impact_law key's reference
+                            // (solver_key_doc) and Python's docstrings list the rows
   ModesInImpact modes;      // the modes during every impact of the law (rocking, landing, flat)
   Rebound rebound;          // theta_dot+ of the rocking impact
   OnEnergyGain on_gain;     // where the law would add energy
@@ -59,15 +60,18 @@ struct ImpactLawInfo {
 
 inline constexpr ImpactLawInfo kImpactLaws[] = {
     {ImpactLaw::kPaper, "paper",
-     "the paper's: an instantaneous impulse at the landing edge; modal momenta conserved",
+     "an instantaneous impulse at the landing edge, the modal momenta conserved: exact when the "
+     "contact is much shorter than the highest modal period",
      ModesInImpact::kMomentaConserved, Rebound::kMap, OnEnergyGain::kNothing},
     {ImpactLaw::kRigidBody, "rigid_body",
-     "the body is rigid during the impact: modal velocities continuous; Housner's law for a stiff "
-     "body",
+     "the body is rigid during the impact: the modal velocities are continuous; Housner's law for "
+     "a stiff body; an impact where it would add energy takes `paper` and is said as "
+     "`impact_law_fallback`",
      ModesInImpact::kVelocitiesKept, Rebound::kMap, OnEnergyGain::kPaperLaw},
     {ImpactLaw::kRestitution, "restitution",
-     "a measured ratio theta_dot+/theta_dot- per landing edge (restitution_ratio); modal momenta "
-     "conserved",
+     "a measured ratio theta_dot+/theta_dot-, the modal momenta conserved; an impact where the "
+     "ratio would add energy, as on an asymmetric body, takes the elastic ratio and is said as "
+     "`impact_law_fallback`",
      ModesInImpact::kMomentaConserved, Rebound::kMeasuredRatio, OnEnergyGain::kElasticRatio},
 };
 

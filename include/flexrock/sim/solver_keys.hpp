@@ -116,14 +116,7 @@ inline constexpr SolverKey kSolverKeys[] = {
      &SimulationOptions::restitution_factor, SolverRule::kBounded, nullptr,
      &kRestitutionFactorBound, SolverScope::kImpulsive},
     {"impact_law", "", "`paper`",
-     "how impacts and landings are resolved (docs/theory.md §21): `paper` (an instantaneous "
-     "impulse at the landing edge, the modal momenta conserved: exact when the contact is much "
-     "shorter than the highest modal period), `rigid_body` (the body is rigid during the impact: "
-     "the modal velocities are continuous; Housner's law for a stiff body; an impact where it "
-     "would add energy takes `paper` and is said as `impact_law_fallback`), `restitution` (a "
-     "measured ratio theta_dot+/theta_dot-, the modal momenta conserved; an impact where the "
-     "ratio would add energy, as on an asymmetric body, takes the elastic ratio and is said as "
-     "`impact_law_fallback`)",
+     "how impacts and landings are resolved (docs/theory.md §21)",  // + the laws' rows
      &SimulationOptions::impact_law, SolverRule::kChoice, nullptr, nullptr,
      SolverScope::kImpulsive},
     {"restitution_ratio", "-", "(required with `restitution`)",
@@ -218,6 +211,21 @@ inline const SolverKey* find_solver_key(std::string_view name) {
   for (const SolverKey& k : kSolverKeys)
     if (name == k.name) return &k;
   return nullptr;
+}
+
+/// The reference's meaning of `k` (the generated key reference, Python's docstrings): its doc, and
+/// for impact_law the laws, each with its row's description (kImpactLaws), so that a new law is
+/// written in its row only.
+inline std::string solver_key_doc(const SolverKey& k) {
+  std::string s = k.doc;
+  if (std::holds_alternative<ImpactLaw SimulationOptions::*>(k.field)) {
+    const char* sep = ": ";
+    for (const ImpactLawInfo& l : kImpactLaws) {
+      s.append(sep).append("`").append(l.name).append("` (").append(l.description).append(")");
+      sep = ", ";
+    }
+  }
+  return s;
 }
 
 /// The names an enum-valued option accepts, in the order messages list them.
