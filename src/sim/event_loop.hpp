@@ -158,7 +158,7 @@ void Simulator<N, MaxN>::start_ode(Ode& ode, double t, const State& x) {
 
 template <int N, int MaxN>
 template <class Ode>
-bool Simulator<N, MaxN>::advance_ode(Ode& ode, double& t, State& x) {
+StepEnd Simulator<N, MaxN>::advance_ode(Ode& ode, double& t, State& x) {
   return advance_with(ode.integ, ode_rhs(ode), ode.buf, t, x);
 }
 
@@ -197,14 +197,20 @@ void Simulator<N, MaxN>::configure_rocking_integrator() {
   rocking_.integ.configure(h, method, explicit_method);
 }
 
-// one accepted step plus whatever happens in it; false when the run ends
+// one accepted step plus whatever happens in it: the stepper stops at the step's end or at the
+// guard that crossed in it, and a guard's reset is applied here; false when the run ends
 template <int N, int MaxN>
 bool Simulator<N, MaxN>::advance(double& t, State& x) {
-  return on_stepper([&](auto& s) { return s.advance(*this, t, x); });
+  const StepEnd end = on_stepper([&](auto& s) {
+    static_assert(LoopStepper<std::remove_cvref_t<decltype(s)>, Simulator, State>);
+    return s.advance(*this, t, x);
+  });
+  if (end.why == StepEnd::Why::kGuard) return fire(end.slot, t, x);
+  return end.why == StepEnd::Why::kStepped;
 }
 
 template <int N, int MaxN>
-bool Simulator<N, MaxN>::advance_rocking(double& t, State& x) {
+StepEnd Simulator<N, MaxN>::advance_rocking(double& t, State& x) {
   auto sys = [this](double tt, const ContactState& xx, ContactState& dd) {
     eq_.contact_rhs(tt, xx, dd);
   };
@@ -212,16 +218,16 @@ bool Simulator<N, MaxN>::advance_rocking(double& t, State& x) {
 }
 
 template <int N, int MaxN>
-bool Simulator<N, MaxN>::advance_exact(double& t, State& x) requires(N != 0) {
+StepEnd Simulator<N, MaxN>::advance_exact(double& t, State& x) requires(N != 0) {
   // the exact propagator takes no right-hand side
   if (t >= step_stop_) step_stop_ = std::numeric_limits<double>::infinity();
-  if (can_walk(t)) return advance_walk(t, x);
+  if (can_walk(t)) return StepEnd::ran(advance_walk(t, x));
   return advance_with(
       exact_.prop, [](double, const State&, State&) {}, exact_.buf, t, x);
 }
 
 template <int N, int MaxN>
-bool Simulator<N, MaxN>::advance_series_step(double& t, State& x) requires(N == 0) {
+StepEnd Simulator<N, MaxN>::advance_series_step(double& t, State& x) requires(N == 0) {
   if (series_bounded()) return advance_series(t, x);
   series_.integ.set_max_step(ctl_.max_step);
   return advance_with(
@@ -283,18 +289,19 @@ bool Simulator<N, MaxN>::step_collapsed(double t) {
 // the step of `integ` (the integrator, or the exact propagator in full contact)
 template <int N, int MaxN>
 template <class Stepper, class System, class Buffer>
-bool Simulator<N, MaxN>::advance_with(Stepper& integ, System&& sys, Buffer& buf, double& t,
-                                      State& x) {
+StepEnd Simulator<N, MaxN>::advance_with(Stepper& integ, System&& sys, Buffer& buf, double& t,
+                                         State& x) {
   const double t_stop =
       std::min({setup_.t_end, eq_.motion.next_breakpoint(t, eq_.cursor.brk), step_stop_});
-  if (!count_step(t)) return false;
+  if (!count_step(t)) return StepEnd::ended();
   const auto status = integ.step(sys, t_stop);
-  if (status != std::remove_cv_t<decltype(status)>::kAccepted) return step_collapsed(t);
+  if (status != std::remove_cv_t<decltype(status)>::kAccepted)
+    return StepEnd::ran(step_collapsed(t));
   if (eq_.slide_inconsistent)
-    return stop(t, "no consistent slide near t = " + short_number(t) + " s in " +
-                       to_string(eq_.mode) +
-                       ": Coulomb friction with this coefficient would need the floor to push the "
-                       "slip forward (Painleve's paradox; docs/theory.md, \"Sliding\")");
+    return StepEnd::ran(
+        stop(t, "no consistent slide near t = " + short_number(t) + " s in " + to_string(eq_.mode) +
+                    ": Coulomb friction with this coefficient would need the floor to push the "
+                    "slip forward (Painleve's paradox; docs/theory.md, \"Sliding\")"));
   const double t0 = integ.t0(), t1 = integ.t1();
   if (opt_.progress) opt_.progress->store(t1, std::memory_order_relaxed);
   // sample the guards across the step, keeping the states for the extremes
@@ -340,11 +347,11 @@ bool Simulator<N, MaxN>::advance_with(Stepper& integ, System&& sys, Buffer& buf,
 }
 
 // a step's end: with no event (slot_hit < 0) the state moves to the step's end, whose guards are
-// s_end; else the step is cut at the event, which fires
+// s_end; else the step is cut at the event, whose guard the stepper returns for the loop to fire
 template <int N, int MaxN>
 template <class Stepper, class System>
-bool Simulator<N, MaxN>::end_step(Stepper& integ, System&& sys, int slot_hit, double t_hit,
-                                  const GuardSample& s_end, double& t, State& x) {
+StepEnd Simulator<N, MaxN>::end_step(Stepper& integ, System&& sys, int slot_hit, double t_hit,
+                                     const GuardSample& s_end, double& t, State& x) {
   if (slot_hit < 0) {
     emit_rows_until(integ.t1());
     t = integ.t1();
@@ -352,15 +359,15 @@ bool Simulator<N, MaxN>::end_step(Stepper& integ, System&& sys, int slot_hit, do
     s0_ = s_end;
     latch_.zero_start.fill(false);
     release_latches(s0_);
-    return true;
+    return StepEnd::stepped();
   }
-  // land exactly on the event and act on it
+  // land exactly on the event: the loop applies its reset
   const bool inside = t_hit > integ.t0();
   if (inside) integ.restep_to(sys, t_hit);
   emit_rows_until(t_hit);
   t = t_hit;
   put(inside ? integ.x1() : integ.x0(), x);
-  return fire(slot_hit, t, x);
+  return StepEnd::guard(slot_hit);
 }
 
 template <int N, int MaxN>

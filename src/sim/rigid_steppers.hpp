@@ -24,14 +24,14 @@ bool Simulator<N, MaxN>::series_bounded() const requires(N == 0) {
 }
 
 template <int N, int MaxN>
-bool Simulator<N, MaxN>::advance_series(double& t, State& x) requires(N == 0) {
+StepEnd Simulator<N, MaxN>::advance_series(double& t, State& x) requires(N == 0) {
   const double t_stop =
       std::min({setup_.t_end, eq_.motion.next_breakpoint(t, eq_.cursor.brk), step_stop_});
-  if (!count_step(t)) return false;
+  if (!count_step(t)) return StepEnd::ended();
   auto none = [](double, const ContactState&, ContactState&) {};
   series_.integ.set_max_step(std::numeric_limits<double>::infinity());
   if (series_.integ.step(none, t_stop) != RockingSeries<ContactState>::Status::kAccepted)
-    return step_collapsed(t);
+    return StepEnd::ran(step_collapsed(t));
   const double t0 = series_.integ.t0(), t1 = series_.integ.t1(), h = t1 - t0;
   if (opt_.progress) opt_.progress->store(t1, std::memory_order_relaxed);
   const int e = edge();
@@ -130,14 +130,14 @@ bool Simulator<N, MaxN>::advance_series(double& t, State& x) requires(N == 0) {
   }
   series_extremes(t0, tau_end, slot_hit >= 0, range, reaction);
   if (slot_hit < 0) observe(se, xe);
-  if (!end_step(series_.integ, none, slot_hit, t_hit, se, t, x)) return false;
+  const StepEnd end = end_step(series_.integ, none, slot_hit, t_hit, se, t, x);
   // where the floor has come to rest (a record's or a pulse's end, start_arc), the rest of the arc
   // in closed form
   if (slot_hit < 0) {
     dense_buf_ = x.head(2 * n_ + 4);
     start_arc(t, dense_buf_);
   }
-  return true;
+  return end;
 }
 
 // The closed form takes a rigid body's rocking (docs/theory.md, "Free rocking in closed form")
@@ -164,10 +164,10 @@ bool Simulator<N, MaxN>::start_arc(double t, const ContactState& x) requires(N =
 // One step of the closed form: to the impact, or to the run's end. The peak inside is recorded;
 // the extremes are the step's ends' and its interior critical points' (arc_extremes).
 template <int N, int MaxN>
-bool Simulator<N, MaxN>::advance_arc(double& t, State& x) requires(N == 0) {
+StepEnd Simulator<N, MaxN>::advance_arc(double& t, State& x) requires(N == 0) {
   const double t_stop =
       std::min({setup_.t_end, eq_.motion.next_breakpoint(t, eq_.cursor.brk), step_stop_});
-  if (!count_step(t)) return false;
+  if (!count_step(t)) return StepEnd::ended();
   arc_.arc.step(t_stop);
   const double t0 = arc_.arc.t0(), t1 = arc_.arc.t1();
   if (opt_.progress) opt_.progress->store(t1, std::memory_order_relaxed);
@@ -377,9 +377,9 @@ void Simulator<N, MaxN>::series_extremes(double t0, double tau_end, bool event,
 // each sample finds every crossing and the state jumps from sample to sample; an analytic motion
 // is checked at event_samples points per max_step.
 template <int N, int MaxN>
-bool Simulator<N, MaxN>::advance_still(double& t, State& x) requires(N == 0) {
+StepEnd Simulator<N, MaxN>::advance_still(double& t, State& x) requires(N == 0) {
   // each span checked counts as a step toward max_steps
-  if (!count_step(t)) return false;
+  if (!count_step(t)) return StepEnd::ended();
   double ta = t, tb = t;
   int samples = 1;
   if (eq_.motion.is_sampled()) {
@@ -439,12 +439,12 @@ bool Simulator<N, MaxN>::advance_still(double& t, State& x) requires(N == 0) {
     t = tb;
     s0_ = smp[static_cast<std::size_t>(samples)];
     release_latches(s0_);
-    return true;
+    return StepEnd::stepped();
   }
   emit_rows_until(t_hit);
   t = t_hit;
   x = still_.x;
-  return fire(slot_hit, t, x);
+  return StepEnd::guard(slot_hit);
 }
 
 // walks the record's samples after t while every guard stays positive there, folding their

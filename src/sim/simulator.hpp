@@ -159,26 +159,26 @@ class Simulator final : private GuardProbe {
   template <class Ode>
   void start_ode(Ode& ode, double t, const State& x);
   template <class Ode>
-  bool advance_ode(Ode& ode, double& t, State& x);
+  StepEnd advance_ode(Ode& ode, double& t, State& x);
   template <class Ode>
   auto ode_rhs(Ode& ode);
-  bool advance_rocking(double& t, State& x);
-  bool advance_exact(double& t, State& x) requires(N != 0);
-  bool advance_series_step(double& t, State& x) requires(N == 0);
+  StepEnd advance_rocking(double& t, State& x);
+  StepEnd advance_exact(double& t, State& x) requires(N != 0);
+  StepEnd advance_series_step(double& t, State& x) requires(N == 0);
   // `buf`: scratch for the stepper's dense output (a vector of the stepper's state)
   template <class Stepper, class System, class Buffer>
-  bool advance_with(Stepper& integ, System&& sys, Buffer& buf, double& t, State& x);
+  StepEnd advance_with(Stepper& integ, System&& sys, Buffer& buf, double& t, State& x);
   template <class Stepper, class System>
-  bool end_step(Stepper& integ, System&& sys, int slot_hit, double t_hit, const GuardSample& s_end,
-                double& t, State& x);
-  bool advance_still(double& t, State& x) requires(N == 0);
+  StepEnd end_step(Stepper& integ, System&& sys, int slot_hit, double t_hit,
+                   const GuardSample& s_end, double& t, State& x);
+  StepEnd advance_still(double& t, State& x) requires(N == 0);
   // a rigid body's rocking by its series with the guards bounded over the whole step
   bool series_bounded() const requires(N == 0);
-  bool advance_series(double& t, State& x) requires(N == 0);
+  StepEnd advance_series(double& t, State& x) requires(N == 0);
   // a rigid body rocking freely on a floor at rest, by its closed form (arc_): true where it
   // applies at (t, x) and the arc has started
   bool start_arc(double t, const ContactState& x) requires(N == 0);
-  bool advance_arc(double& t, State& x) requires(N == 0);
+  StepEnd advance_arc(double& t, State& x) requires(N == 0);
   // the shear's, the moment's and the friction demand's extremes over the arc's last step
   void arc_extremes(double t0, double t1) requires(N == 0);
   // the series' reaction polynomials series_.sp_fi, series_.sp_fj, series_.sp_moment on a step of

@@ -21,18 +21,35 @@
 
 namespace flexrock::detail {
 
+// where and why a stepper stopped: at the end of a step with the run going on (kStepped), at a
+// resetting guard's crossing (kGuard: the loop applies the reset of mode_spec(mode).guards[slot];
+// a stepper never fires one), or where the run ends (kEnded: the step limit, a collapsed step, an
+// inconsistent slide, the status says which). The time and state it stopped at are advance()'s t
+// and x.
+struct StepEnd {
+  enum class Why : unsigned char { kStepped, kGuard, kEnded };
+  Why why = Why::kStepped;
+  int slot = -1;  // the guard's slot in the mode's list (kGuard)
+  static StepEnd stepped() { return {}; }
+  static StepEnd guard(int slot) { return {Why::kGuard, slot}; }
+  static StepEnd ended() { return {Why::kEnded, -1}; }
+  // from a step that either went on (true) or ended the run (false)
+  static StepEnd ran(bool running) { return running ? stepped() : ended(); }
+};
+
 // What the loop asks of a stepper (the loop is the step context: the mode's equations and guards,
 // the recorder, the options, the end time):
-//   start(loop, t, x)           take the current mode's motion from the state x at t
-//   advance(loop, t, x) -> bool one step and whatever happens in it (a guard that fires resets
-//                               the mode); false when the run ends
-//   stepped_until() -> double   [s] the end of the last step taken
-//   state_at(loop, t, out)      the state at t within the last step
+//   start(loop, t, x)              take the current mode's motion from the state x at t
+//   advance(loop, t, x) -> StepEnd advance toward the next stop time (the step's end, the end
+//                                  time, the motion's next breakpoint) and return where (t, x) and
+//                                  why it stopped: a guard that crossed is returned, not reset
+//   stepped_until() -> double      [s] the end of the last step taken
+//   state_at(loop, t, out)         the state at t within the last step
 template <class S, class Loop, class State>
 concept LoopStepper = requires(S& s, const S& cs, Loop& loop, const Loop& cloop, double& t,
                                double tt, State& x) {
   { s.start(loop, tt, x) } -> std::same_as<void>;
-  { s.advance(loop, t, x) } -> std::same_as<bool>;
+  { s.advance(loop, t, x) } -> std::same_as<StepEnd>;
   { cs.stepped_until() } -> std::same_as<double>;
   { cs.state_at(cloop, tt, x) } -> std::same_as<void>;
 };
@@ -56,7 +73,7 @@ struct StillStepper {
     t1 = t;
   }
   template <class Loop>
-  bool advance(Loop& loop, double& t, State& s) {
+  StepEnd advance(Loop& loop, double& t, State& s) {
     return loop.advance_still(t, s);
   }
   double stepped_until() const { return t1; }
@@ -88,7 +105,7 @@ struct ExactStepper {
     prop.start(t, x);
   }
   template <class Loop>
-  bool advance(Loop& loop, double& t, State& x) {
+  StepEnd advance(Loop& loop, double& t, State& x) {
     return loop.advance_exact(t, x);
   }
   double stepped_until() const { return prop.t1(); }
@@ -110,7 +127,7 @@ struct SeriesStepper {
     loop.start_series(t, x);
   }
   template <class Loop, class State>
-  bool advance(Loop& loop, double& t, State& x) {
+  StepEnd advance(Loop& loop, double& t, State& x) {
     return loop.advance_series_step(t, x);
   }
   double stepped_until() const { return integ.t1(); }
@@ -128,7 +145,7 @@ struct ArcStepper {
   template <class Loop, class State>
   void start(Loop&, double, State&) {}  // started by the series, which found the floor at rest
   template <class Loop, class State>
-  bool advance(Loop& loop, double& t, State& x) {
+  StepEnd advance(Loop& loop, double& t, State& x) {
     return loop.advance_arc(t, x);
   }
   double stepped_until() const { return arc.t1(); }
@@ -150,7 +167,7 @@ struct RockingStepper {
     loop.start_rocking(t, x);
   }
   template <class Loop, class State>
-  bool advance(Loop& loop, double& t, State& x) {
+  StepEnd advance(Loop& loop, double& t, State& x) {
     return loop.advance_rocking(t, x);
   }
   double stepped_until() const { return integ.t1(); }
@@ -171,7 +188,7 @@ struct OdeStepper {
     loop.start_ode(*this, t, x);
   }
   template <class Loop, class State>
-  bool advance(Loop& loop, double& t, State& x) {
+  StepEnd advance(Loop& loop, double& t, State& x) {
     return loop.advance_ode(*this, t, x);
   }
   double stepped_until() const { return integ.t1(); }
