@@ -125,22 +125,22 @@ auto Simulator<N, MaxN>::choose_stepper() -> ActiveStepper {
 // the rigid body's rocking: the closed-form arc where the floor is at rest, else the series
 template <int N, int MaxN>
 void Simulator<N, MaxN>::start_series(double t, const State& x) requires(N == 0) {
-  dense_buf_ = x.head(2 * n_ + 4);
-  if (start_arc(t, dense_buf_)) return;  // the arc needs no series
+  series_.buf = x.head(2 * n_ + 4);
+  if (start_arc(t, series_.buf)) return;  // the arc needs no series
   const int e = edge();
   const double a = eq_.dyn.alpha(e);
   series_.integ.set_pivot(a, eq_.dyn.g_over_h() / eq_.dyn.inertia(a, eq_.scratch.q),
                           eq_.dyn.mass() * eq_.dyn.height() * eq_.dyn.g(), eq_.dyn.g());
-  series_.integ.start([](double, const ContactState&, ContactState&) {}, ctl_, t, dense_buf_);
+  series_.integ.start([](double, const ContactState&, ContactState&) {}, ctl_, t, series_.buf);
 }
 
 template <int N, int MaxN>
 void Simulator<N, MaxN>::start_rocking(double t, const State& x) {
-  dense_buf_ = x.head(2 * n_ + 4);
+  rocking_.buf = x.head(2 * n_ + 4);
   configure_rocking_integrator();
   rocking_.integ.start(
       [this](double tt, const ContactState& xx, ContactState& dd) { eq_.contact_rhs(tt, xx, dd); },
-      ctl_, t, dense_buf_);
+      ctl_, t, rocking_.buf);
 }
 
 // flight and the sliding modes: DOPRI5 on the mode's own equations and state
@@ -202,7 +202,7 @@ void Simulator<N, MaxN>::configure_rocking_integrator() {
 template <int N, int MaxN>
 bool Simulator<N, MaxN>::advance(double& t, State& x) {
   const StepEnd end = on_stepper([&](auto& s) {
-    static_assert(LoopStepper<std::remove_cvref_t<decltype(s)>, Simulator, State>);
+    static_assert(LoopStepper<std::remove_cvref_t<decltype(s)>, Simulator, Eq, State>);
     return s.advance(*this, t, x);
   });
   if (end.why == StepEnd::Why::kGuard) return fire(end.slot, t, x);
@@ -214,7 +214,7 @@ StepEnd Simulator<N, MaxN>::advance_rocking(double& t, State& x) {
   auto sys = [this](double tt, const ContactState& xx, ContactState& dd) {
     eq_.contact_rhs(tt, xx, dd);
   };
-  return advance_with(rocking_.integ, sys, dense_buf_, t, x);
+  return advance_with(rocking_.integ, sys, rocking_.buf, t, x);
 }
 
 template <int N, int MaxN>
@@ -231,7 +231,7 @@ StepEnd Simulator<N, MaxN>::advance_series_step(double& t, State& x) requires(N 
   if (series_bounded()) return advance_series(t, x);
   series_.integ.set_max_step(ctl_.max_step);
   return advance_with(
-      series_.integ, [](double, const ContactState&, ContactState&) {}, dense_buf_, t, x);
+      series_.integ, [](double, const ContactState&, ContactState&) {}, series_.buf, t, x);
 }
 
 // the earliest crossing of a resetting guard among the step's samples, after recording the
@@ -451,7 +451,7 @@ void Simulator<N, MaxN>::locate_step_extremes(int points) {
 // the state at t within the last step (or the still state)
 template <int N, int MaxN>
 void Simulator<N, MaxN>::state_at(double t, State& out) const {
-  on_stepper([&](const auto& s) { s.state_at(*this, t, out); });
+  on_stepper([&](const auto& s) { s.state_at(eq_, t, out); });
 }
 
 template <int N, int MaxN>

@@ -100,6 +100,24 @@ class ModeEquations {
   Eigen::Vector2d cg_velocity(const X& x) const {
     return {x(ixc() + 2), x(ixc() + 3)};
   }
+  // a stepper's state into a State: contact and flight states are its head; a slide state is its
+  // head of 2n + 4 and the slip's three entries
+  template <class X>
+  void put(const X& from, State& to) const {
+    if constexpr (X::RowsAtCompileTime != Eigen::Dynamic) {
+      if constexpr (X::RowsAtCompileTime == SL) {
+        to.template head<SC>() = from.template head<SC>();
+        to.template segment<3>(isd()) = from.template tail<3>();
+      } else {
+        to.template head<X::RowsAtCompileTime>() = from;
+      }
+    } else if (from.size() == 2 * n + 7) {
+      to.head(2 * n + 4) = from.head(2 * n + 4);
+      to.segment(isd(), 3) = from.tail(3);
+    } else {
+      to.head(from.size()) = from;
+    }
+  }
   // q and q_dot of a state into the scratch
   template <class X>
   void unpack(const X& x) {

@@ -62,10 +62,10 @@ StepEnd Simulator<N, MaxN>::advance_series(double& t, State& x) requires(N == 0)
         !(bernstein_piece(series_.sp_fj, 0.0, h, series_.sp_fj.c[0]).min() >
           series_.sp_fj.margin)) {
       --res_.steps;
-      dense_buf_ = series_.integ.x0();
-      series_.integ.start(none, ctl_, t0, dense_buf_);
+      series_.buf = series_.integ.x0();
+      series_.integ.start(none, ctl_, t0, series_.buf);
       series_.integ.set_max_step(ctl_.max_step);
-      return advance_with(series_.integ, none, dense_buf_, t, x);
+      return advance_with(series_.integ, none, series_.buf, t, x);
     }
   }
   // the guards at the step's end, exactly (the next step's start)
@@ -134,8 +134,8 @@ StepEnd Simulator<N, MaxN>::advance_series(double& t, State& x) requires(N == 0)
   // where the floor has come to rest (a record's or a pulse's end, start_arc), the rest of the arc
   // in closed form
   if (slot_hit < 0) {
-    dense_buf_ = x.head(2 * n_ + 4);
-    start_arc(t, dense_buf_);
+    series_.buf = x.head(2 * n_ + 4);
+    start_arc(t, series_.buf);
   }
   return end;
 }

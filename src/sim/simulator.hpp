@@ -77,7 +77,6 @@ class Simulator final : private GuardProbe {
   using ContactState = typename Eq::ContactState;
   using FlightState = typename Eq::FlightState;
   using SlideState = typename Eq::SlideState;
-  static constexpr int SC = Eq::SC, SL = Eq::SL;
   template <ContactMode M, Guard G>
   static constexpr std::size_t kSlot = Eq::template kSlot<M, G>;
 
@@ -115,23 +114,9 @@ class Simulator final : private GuardProbe {
   bool flying() const { return eq_.flying(); }
   int slip() const { return eq_.slip(); }
   bool sliding() const { return eq_.sliding(); }
-  // a stepper's state into a State: contact and flight states are its head; a slide state is its
-  // head of 2n + 4 and the slip's three entries
   template <class X>
   void put(const X& from, State& to) const {
-    if constexpr (X::RowsAtCompileTime != Eigen::Dynamic) {
-      if constexpr (X::RowsAtCompileTime == SL) {
-        to.template head<SC>() = from.template head<SC>();
-        to.template segment<3>(isd()) = from.template tail<3>();
-      } else {
-        to.template head<X::RowsAtCompileTime>() = from;
-      }
-    } else if (from.size() == 2 * n_ + 7) {
-      to.head(2 * n_ + 4) = from.head(2 * n_ + 4);
-      to.segment(isd(), 3) = from.tail(3);
-    } else {
-      to.head(from.size()) = from;
-    }
+    eq_.put(from, to);
   }
 
   double guard_value(int slot, double t) override;
@@ -312,9 +297,6 @@ class Simulator final : private GuardProbe {
   int n_;
   StepControl ctl_;
   int samples_ = 4;
-  // rocking, and full contact when not stepped exactly: DOPRI5, and the Rosenbrock method while a
-  // flexible body's stiffest rocking motion would hold the explicit step (theory, "Stiff rocking")
-  mutable ContactState dense_buf_;
   SimulationResult res_;
   Recorder rec_;
   // what steps the current mode's motion, chosen once in enter_mode (steppers.hpp): a loop holds
@@ -434,7 +416,11 @@ Simulator<N, MaxN>::Simulator(const Body& body, const GroundMotion& motion,
   ctl_.atol = opt.atol;
   ctl_.max_step = opt.max_step;
   for (State& xk : points_.states) xk.setZero(2 * n_ + 11);
-  dense_buf_.setZero(2 * n_ + 4);
+  rocking_.buf.setZero(2 * n_ + 4);
+  if constexpr (N == 0) {
+    series_.buf.setZero(2 * n_ + 4);
+    arc_.buf.setZero(2 * n_ + 4);
+  }
   slide_.buf.setZero(2 * n_ + 7);
   scratch_.xr.setZero(2 * n_ + 11);  // written through put(): sized once, as on the heap path
   flight_.buf.setZero(2 * n_ + 8);

@@ -44,14 +44,15 @@ struct StepEnd {
 //                                  time, the motion's next breakpoint) and return where (t, x) and
 //                                  why it stopped: a guard that crossed is returned, not reset
 //   stepped_until() -> double      [s] the end of the last step taken
-//   state_at(loop, t, out)         the state at t within the last step
-template <class S, class Loop, class State>
-concept LoopStepper = requires(S& s, const S& cs, Loop& loop, const Loop& cloop, double& t,
-                               double tt, State& x) {
+//   state_at(eq, t, out)           the state at t within the last step, from the stepper's own
+//                                  dense output and the equations' state layout (ModeEquations)
+template <class S, class Loop, class Eq, class State>
+concept LoopStepper = requires(S& s, const S& cs, Loop& loop, const Eq& eq, double& t, double tt,
+                               State& x) {
   { s.start(loop, tt, x) } -> std::same_as<void>;
   { s.advance(loop, t, x) } -> std::same_as<StepEnd>;
   { cs.stepped_until() } -> std::same_as<double>;
-  { cs.state_at(cloop, tt, x) } -> std::same_as<void>;
+  { cs.state_at(eq, tt, x) } -> std::same_as<void>;
 };
 
 // a stepper a loop of this body size never runs: nothing, whatever it is built from
@@ -77,8 +78,8 @@ struct StillStepper {
     return loop.advance_still(t, s);
   }
   double stepped_until() const { return t1; }
-  template <class Loop>
-  void state_at(const Loop&, double, State& out) const {
+  template <class Eq>
+  void state_at(const Eq&, double, State& out) const {
     out = x;
   }
 };
@@ -109,8 +110,8 @@ struct ExactStepper {
     return loop.advance_exact(t, x);
   }
   double stepped_until() const { return prop.t1(); }
-  template <class Loop>
-  void state_at(const Loop&, double t, State& out) const {
+  template <class Eq>
+  void state_at(const Eq&, double t, State& out) const {
     prop.dense(t, out);
   }
 };
@@ -121,6 +122,7 @@ template <class ContactState>
 struct SeriesStepper {
   explicit SeriesStepper(const GroundMotion& motion) : integ(motion) {}
   RockingSeries<ContactState> integ;
+  mutable ContactState buf;  // the series' start, and scratch for the dense output
   StepPolynomial sp_impact, sp_overturn, sp_peak, sp_fi, sp_fj, sp_moment, sp_work;
   template <class Loop, class State>
   void start(Loop& loop, double t, State& x) {
@@ -131,10 +133,10 @@ struct SeriesStepper {
     return loop.advance_series_step(t, x);
   }
   double stepped_until() const { return integ.t1(); }
-  template <class Loop, class State>
-  void state_at(const Loop& loop, double t, State& out) const {
-    integ.dense(t, loop.dense_buf_);
-    loop.put(loop.dense_buf_, out);
+  template <class Eq, class State>
+  void state_at(const Eq& eq, double t, State& out) const {
+    integ.dense(t, buf);
+    eq.put(buf, out);
   }
 };
 
@@ -142,6 +144,7 @@ struct SeriesStepper {
 template <class ContactState>
 struct ArcStepper {
   FreeRockingArc<ContactState> arc;
+  mutable ContactState buf;  // scratch for the dense output
   template <class Loop, class State>
   void start(Loop&, double, State&) {}  // started by the series, which found the floor at rest
   template <class Loop, class State>
@@ -149,10 +152,10 @@ struct ArcStepper {
     return loop.advance_arc(t, x);
   }
   double stepped_until() const { return arc.t1(); }
-  template <class Loop, class State>
-  void state_at(const Loop& loop, double t, State& out) const {
-    arc.dense(t, loop.dense_buf_);
-    loop.put(loop.dense_buf_, out);
+  template <class Eq, class State>
+  void state_at(const Eq& eq, double t, State& out) const {
+    arc.dense(t, buf);
+    eq.put(buf, out);
   }
 };
 
@@ -161,6 +164,7 @@ struct ArcStepper {
 template <class ContactState>
 struct RockingStepper {
   StiffSwitching<ContactState> integ;
+  mutable ContactState buf;                    // the mode's start, and scratch for the dense output
   std::array<double, 2> h_stable{-1.0, -1.0};  // [s] per edge, once known (< 0: not yet)
   template <class Loop, class State>
   void start(Loop& loop, double t, State& x) {
@@ -171,10 +175,10 @@ struct RockingStepper {
     return loop.advance_rocking(t, x);
   }
   double stepped_until() const { return integ.t1(); }
-  template <class Loop, class State>
-  void state_at(const Loop& loop, double t, State& out) const {
-    integ.dense(t, loop.dense_buf_);
-    loop.put(loop.dense_buf_, out);
+  template <class Eq, class State>
+  void state_at(const Eq& eq, double t, State& out) const {
+    integ.dense(t, buf);
+    eq.put(buf, out);
   }
 };
 
@@ -192,10 +196,10 @@ struct OdeStepper {
     return loop.advance_ode(*this, t, x);
   }
   double stepped_until() const { return integ.t1(); }
-  template <class Loop, class State>
-  void state_at(const Loop& loop, double t, State& out) const {
+  template <class Eq, class State>
+  void state_at(const Eq& eq, double t, State& out) const {
     integ.dense(t, buf);
-    loop.put(buf, out);
+    eq.put(buf, out);
   }
 };
 
