@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // The loop: entering a mode (the same-instant transitions as a loop), choosing and starting its
 // stepper, the one dispatch to it, the sampled step of the integrators with its guards and
-// extremes, and the state within the last step. Part of the event loop (simulator.hpp), included at
-// its end.
+// extremes, the state within the last step, and the run's outputs (events, history rows, the
+// result). Part of the event loop (simulator.hpp), included at its end.
 #pragma once
 
 #include "simulator.hpp"
@@ -31,7 +31,7 @@ bool Simulator<N, MaxN>::start_mode(double t, State& x) {
   if (t - ledger_.zeno_time < 1e-9 * std::max(1.0, t)) {
     if (++ledger_.same_time_events > kSameInstantEntries) {
       return stop(t, "contact changes accumulate at t = " + short_number(t) +
-                         " s without time advancing (Zeno behaviour) in " + to_string(mode_) +
+                         " s without time advancing (Zeno behaviour) in " + to_string(eq_.mode) +
                          (opt_.chatter_ratio <= 0.0 ? " with the chatter cut-off disabled "
                                                       "(chatter_ratio = 0); set chatter_ratio > 0"
                                                     : ""));
@@ -53,11 +53,12 @@ bool Simulator<N, MaxN>::start_mode(double t, State& x) {
   bool arc_from_floor = false;
   if constexpr (N == 0) {
     arc_from_floor = std::holds_alternative<Arc*>(stepper_) && x(0) == 0.0;
-    if (arc_from_floor) arc_sample(t, x, arc_.arc.floor_sin(), arc_.arc.floor_cos(), s0_);
+    if (arc_from_floor)
+      eq_.arc_sample(arc_.arc, t, x, arc_.arc.floor_sin(), arc_.arc.floor_cos(), s0_);
   }
-  if (!arc_from_floor) evaluate(t, x, s0_);
+  if (!arc_from_floor) eq_.evaluate(t, x, s0_);
   observe(s0_, x);
-  const ModeSpec& spec = mode_spec(mode_);
+  const ModeSpec& spec = mode_spec(eq_.mode);
   for (int j = 0; j < spec.count; ++j) {
     const auto k = static_cast<std::size_t>(j);
     if (latch_.friction_tie && spec.guards[k] == Guard::kFrictionLimit) continue;
@@ -65,11 +66,11 @@ bool Simulator<N, MaxN>::start_mode(double t, State& x) {
   }
   latch_.friction_tie = false;
   auto at_or_below = [&](Guard g) {
-    const int j = guard_slot(mode_, g);
+    const int j = guard_slot(eq_.mode, g);
     return j >= 0 && !latch_.zero_start[static_cast<std::size_t>(j)] &&
            s0_.v[static_cast<std::size_t>(j)] <= 0.0;
   };
-  const int lift = guard_slot(mode_, Guard::kLiftOff);
+  const int lift = guard_slot(eq_.mode, Guard::kLiftOff);
   if (lift < 0) latch_.hold_tension = false;
   if (lift < 0 || (s0_.v[static_cast<std::size_t>(lift)] > 0.0 && !latch_.hold_tension))
     latch_.tension = false;
@@ -99,23 +100,24 @@ bool Simulator<N, MaxN>::start_mode(double t, State& x) {
   return true;
 }
 
-// the stepper of mode_: the cheapest that is exact or accurate for its equations (theory §17)
+// the stepper of the current mode: the cheapest that is exact or accurate for its equations (theory
+// §17)
 template <int N, int MaxN>
 auto Simulator<N, MaxN>::choose_stepper() -> ActiveStepper {
   if (flying()) return &flight_;
   if (sliding()) return &slide_;
   if constexpr (N == 0) {
     // a rigid body in full contact does not move: no integration until it uplifts
-    if (mode_ == ContactMode::kFullContact) return &still_;
+    if (eq_.mode == ContactMode::kFullContact) return &still_;
     // the series needs a base acceleration it can expand between the steps' ends: a record's
     // (linear), sinusoids' (a pulse's), or none
     if (opt_.methods.series_rocking &&
-        (motion_.is_sampled() || motion_.is_none() || motion_.is_sinusoidal()))
+        (eq_.motion.is_sampled() || eq_.motion.is_none() || eq_.motion.is_sinusoidal()))
       return &series_;
   } else {
     // a flexible body in full contact under a record: exact steps between its samples (the
     // propagator is available for a sampled motion only)
-    if (mode_ == ContactMode::kFullContact && exact_.prop.available()) return &exact_;
+    if (eq_.mode == ContactMode::kFullContact && exact_.prop.available()) return &exact_;
   }
   return &rocking_;
 }
@@ -123,22 +125,22 @@ auto Simulator<N, MaxN>::choose_stepper() -> ActiveStepper {
 // the rigid body's rocking: the closed-form arc where the floor is at rest, else the series
 template <int N, int MaxN>
 void Simulator<N, MaxN>::start_series(double t, const State& x) requires(N == 0) {
-  dense_buf_ = x.head(2 * n_ + 4);
-  if (start_arc(t, dense_buf_)) return;  // the arc needs no series
+  series_.buf = x.head(2 * n_ + 4);
+  if (start_arc(t, series_.buf)) return;  // the arc needs no series
   const int e = edge();
-  const double a = dyn_.alpha(e);
-  series_.integ.set_pivot(a, dyn_.g_over_h() / dyn_.inertia(a, scratch_.q),
-                          dyn_.mass() * dyn_.height() * dyn_.g(), dyn_.g());
-  series_.integ.start([](double, const ContactState&, ContactState&) {}, ctl_, t, dense_buf_);
+  const double a = eq_.dyn.alpha(e);
+  series_.integ.set_pivot(a, eq_.dyn.g_over_h() / eq_.dyn.inertia(a, eq_.scratch.q),
+                          eq_.dyn.mass() * eq_.dyn.height() * eq_.dyn.g(), eq_.dyn.g());
+  series_.integ.start([](double, const ContactState&, ContactState&) {}, ctl_, t, series_.buf);
 }
 
 template <int N, int MaxN>
 void Simulator<N, MaxN>::start_rocking(double t, const State& x) {
-  dense_buf_ = x.head(2 * n_ + 4);
+  rocking_.buf = x.head(2 * n_ + 4);
   configure_rocking_integrator();
   rocking_.integ.start(
-      [this](double tt, const ContactState& xx, ContactState& dd) { contact_rhs(tt, xx, dd); },
-      ctl_, t, dense_buf_);
+      [this](double tt, const ContactState& xx, ContactState& dd) { eq_.contact_rhs(tt, xx, dd); },
+      ctl_, t, rocking_.buf);
 }
 
 // flight and the sliding modes: DOPRI5 on the mode's own equations and state
@@ -156,7 +158,7 @@ void Simulator<N, MaxN>::start_ode(Ode& ode, double t, const State& x) {
 
 template <int N, int MaxN>
 template <class Ode>
-bool Simulator<N, MaxN>::advance_ode(Ode& ode, double& t, State& x) {
+StepEnd Simulator<N, MaxN>::advance_ode(Ode& ode, double& t, State& x) {
   return advance_with(ode.integ, ode_rhs(ode), ode.buf, t, x);
 }
 
@@ -164,9 +166,10 @@ template <int N, int MaxN>
 template <class Ode>
 auto Simulator<N, MaxN>::ode_rhs(Ode&) {
   if constexpr (std::is_same_v<Ode, Flight>)
-    return [this](double tt, const FlightState& xx, FlightState& dd) { flight_rhs(tt, xx, dd); };
+    return
+        [this](double tt, const FlightState& xx, FlightState& dd) { eq_.flight_rhs(tt, xx, dd); };
   else
-    return [this](double tt, const SlideState& xx, SlideState& dd) { slide_rhs(tt, xx, dd); };
+    return [this](double tt, const SlideState& xx, SlideState& dd) { eq_.slide_rhs(tt, xx, dd); };
 }
 
 template <int N, int MaxN>
@@ -194,42 +197,48 @@ void Simulator<N, MaxN>::configure_rocking_integrator() {
   rocking_.integ.configure(h, method, explicit_method);
 }
 
-// one accepted step plus whatever happens in it; false when the run ends
+// one accepted step plus whatever happens in it: the stepper stops at the step's end or at the
+// guard that crossed in it, and a guard's reset is applied here; false when the run ends
 template <int N, int MaxN>
 bool Simulator<N, MaxN>::advance(double& t, State& x) {
-  return on_stepper([&](auto& s) { return s.advance(*this, t, x); });
+  const StepEnd end = on_stepper([&](auto& s) {
+    static_assert(LoopStepper<std::remove_cvref_t<decltype(s)>, Simulator, Eq, State>);
+    return s.advance(*this, t, x);
+  });
+  if (end.why == StepEnd::Why::kGuard) return fire(end.slot, t, x);
+  return end.why == StepEnd::Why::kStepped;
 }
 
 template <int N, int MaxN>
-bool Simulator<N, MaxN>::advance_rocking(double& t, State& x) {
+StepEnd Simulator<N, MaxN>::advance_rocking(double& t, State& x) {
   auto sys = [this](double tt, const ContactState& xx, ContactState& dd) {
-    contact_rhs(tt, xx, dd);
+    eq_.contact_rhs(tt, xx, dd);
   };
-  return advance_with(rocking_.integ, sys, dense_buf_, t, x);
+  return advance_with(rocking_.integ, sys, rocking_.buf, t, x);
 }
 
 template <int N, int MaxN>
-bool Simulator<N, MaxN>::advance_exact(double& t, State& x) requires(N != 0) {
+StepEnd Simulator<N, MaxN>::advance_exact(double& t, State& x) requires(N != 0) {
   // the exact propagator takes no right-hand side
   if (t >= step_stop_) step_stop_ = std::numeric_limits<double>::infinity();
-  if (can_walk(t)) return advance_walk(t, x);
+  if (can_walk(t)) return StepEnd::ran(advance_walk(t, x));
   return advance_with(
       exact_.prop, [](double, const State&, State&) {}, exact_.buf, t, x);
 }
 
 template <int N, int MaxN>
-bool Simulator<N, MaxN>::advance_series_step(double& t, State& x) requires(N == 0) {
+StepEnd Simulator<N, MaxN>::advance_series_step(double& t, State& x) requires(N == 0) {
   if (series_bounded()) return advance_series(t, x);
   series_.integ.set_max_step(ctl_.max_step);
   return advance_with(
-      series_.integ, [](double, const ContactState&, ContactState&) {}, dense_buf_, t, x);
+      series_.integ, [](double, const ContactState&, ContactState&) {}, series_.buf, t, x);
 }
 
 // the earliest crossing of a resetting guard among the step's samples, after recording the
 // non-resetting ones before it; false when none
 template <int N, int MaxN>
 bool Simulator<N, MaxN>::step_guards(int samples, double t1, double& t_hit, int& slot_hit) {
-  const ModeSpec& spec = mode_spec(mode_);
+  const ModeSpec& spec = mode_spec(eq_.mode);
   t_hit = std::numeric_limits<double>::infinity();
   slot_hit = -1;
   std::array<double, kMaxGuards> when;
@@ -240,7 +249,7 @@ bool Simulator<N, MaxN>::step_guards(int samples, double t1, double& t_hit, int&
     if (g.guard == Guard::kPeak && !rocking()) continue;
     if (g.guard == Guard::kLiftOff && latch_.tension) continue;
     // without a friction limit its guard is the constant 1 (evaluate): it never crosses
-    if (g.guard == Guard::kFrictionLimit && !std::isfinite(opt_.friction_coefficient)) continue;
+    if (g.guard == Guard::kFrictionLimit && !std::isfinite(eq_.mu_s)) continue;
     when[k] = first_crossing(j, points_.samples.data(), samples, latch_.zero_start[k],
                              g.fires_if_unresolved, *this);
     if (g.reset != Reset::kRecord && when[k] < t_hit) {
@@ -274,23 +283,25 @@ bool Simulator<N, MaxN>::step_collapsed(double t) {
             "(chatter_ratio = 0); set chatter_ratio > 0"
           : "the equations became too stiff or singular; loosen rtol/atol or check the body";
   return stop(t, "integration step collapsed below " + short_number(h_min) + " s near t = " +
-                     short_number(t) + " s in " + to_string(mode_) + " (" + cause + ")");
+                     short_number(t) + " s in " + to_string(eq_.mode) + " (" + cause + ")");
 }
 
 // the step of `integ` (the integrator, or the exact propagator in full contact)
 template <int N, int MaxN>
 template <class Stepper, class System, class Buffer>
-bool Simulator<N, MaxN>::advance_with(Stepper& integ, System&& sys, Buffer& buf, double& t,
-                                      State& x) {
+StepEnd Simulator<N, MaxN>::advance_with(Stepper& integ, System&& sys, Buffer& buf, double& t,
+                                         State& x) {
   const double t_stop =
-      std::min({setup_.t_end, motion_.next_breakpoint(t, cursor_.brk), step_stop_});
-  if (!count_step(t)) return false;
+      std::min({setup_.t_end, eq_.motion.next_breakpoint(t, eq_.cursor.brk), step_stop_});
+  if (!count_step(t)) return StepEnd::ended();
   const auto status = integ.step(sys, t_stop);
-  if (status != std::remove_cv_t<decltype(status)>::kAccepted) return step_collapsed(t);
-  if (latch_.slide_inconsistent)
-    return stop(t, "no consistent slide near t = " + short_number(t) + " s in " + to_string(mode_) +
-                       ": Coulomb friction with this coefficient would need the floor to push the "
-                       "slip forward (Painleve's paradox; docs/theory.md, \"Sliding\")");
+  if (status != std::remove_cv_t<decltype(status)>::kAccepted)
+    return StepEnd::ran(step_collapsed(t));
+  if (eq_.slide_inconsistent)
+    return StepEnd::ran(
+        stop(t, "no consistent slide near t = " + short_number(t) + " s in " + to_string(eq_.mode) +
+                    ": Coulomb friction with this coefficient would need the floor to push the "
+                    "slip forward (Painleve's paradox; docs/theory.md, \"Sliding\")"));
   const double t0 = integ.t0(), t1 = integ.t1();
   if (opt_.progress) opt_.progress->store(t1, std::memory_order_relaxed);
   // sample the guards across the step, keeping the states for the extremes
@@ -305,42 +316,42 @@ bool Simulator<N, MaxN>::advance_with(Stepper& integ, System&& sys, Buffer& buf,
       integ.dense(tk, buf);
       put(buf, xk);
     }
-    evaluate(tk, xk, smp[static_cast<std::size_t>(k)]);
+    eq_.evaluate(tk, xk, smp[static_cast<std::size_t>(k)]);
   }
   double t_hit = 0.0;
   int slot_hit = -1;
   const bool hit = step_guards(samples_, t1, t_hit, slot_hit);
   // extremes from the samples that precede any state change and from the state just before it,
   // then located between them
-  if (n_ > 0) scratch_.qu.noalias() = Dyn::mv(to_user_, x.segment(iq(), n_));
-  keep_point(0, t0, s0_, scratch_.qu);
+  if (n_ > 0) eq_.scratch.qu.noalias() = Dyn::mv(eq_.to_user, x.segment(iq(), n_));
+  keep_point(0, t0, s0_, eq_.scratch.qu);
   int points = 1;
   for (int k = 1; k <= samples_; ++k) {
     const auto kk = static_cast<std::size_t>(k);
     if (smp[kk].t >= t_hit) break;
-    observe(smp[kk], points_.states[kk]);  // leaves u in scratch_.qu
-    keep_point(points++, smp[kk].t, smp[kk], scratch_.qu);
+    observe(smp[kk], points_.states[kk]);  // leaves u in eq_.scratch.qu
+    keep_point(points++, smp[kk].t, smp[kk], eq_.scratch.qu);
   }
   if (hit && t_hit > points_.t[static_cast<std::size_t>(points - 1)]) {
     GuardSample before;
     state_at(t_hit, scratch_.xr);
-    evaluate(t_hit, scratch_.xr, before);
+    eq_.evaluate(t_hit, scratch_.xr, before);
     observe(before, scratch_.xr);
-    keep_point(points++, t_hit, before, scratch_.qu);
+    keep_point(points++, t_hit, before, eq_.scratch.qu);
   }
   locate_step_extremes(points);
   // an analytic motion may jump at a breakpoint: start the next step from its right limit
-  if (!hit && t1 == t_stop && t1 < setup_.t_end && !motion_.is_sampled())
+  if (!hit && t1 == t_stop && t1 < setup_.t_end && !eq_.motion.is_sampled())
     integ.refresh_derivative(sys, std::nextafter(t1, setup_.t_end));
   return end_step(integ, sys, slot_hit, t_hit, smp[static_cast<std::size_t>(samples_)], t, x);
 }
 
 // a step's end: with no event (slot_hit < 0) the state moves to the step's end, whose guards are
-// s_end; else the step is cut at the event, which fires
+// s_end; else the step is cut at the event, whose guard the stepper returns for the loop to fire
 template <int N, int MaxN>
 template <class Stepper, class System>
-bool Simulator<N, MaxN>::end_step(Stepper& integ, System&& sys, int slot_hit, double t_hit,
-                                  const GuardSample& s_end, double& t, State& x) {
+StepEnd Simulator<N, MaxN>::end_step(Stepper& integ, System&& sys, int slot_hit, double t_hit,
+                                     const GuardSample& s_end, double& t, State& x) {
   if (slot_hit < 0) {
     emit_rows_until(integ.t1());
     t = integ.t1();
@@ -348,15 +359,15 @@ bool Simulator<N, MaxN>::end_step(Stepper& integ, System&& sys, int slot_hit, do
     s0_ = s_end;
     latch_.zero_start.fill(false);
     release_latches(s0_);
-    return true;
+    return StepEnd::stepped();
   }
-  // land exactly on the event and act on it
+  // land exactly on the event: the loop applies its reset
   const bool inside = t_hit > integ.t0();
   if (inside) integ.restep_to(sys, t_hit);
   emit_rows_until(t_hit);
   t = t_hit;
   put(inside ? integ.x1() : integ.x0(), x);
-  return fire(slot_hit, t, x);
+  return StepEnd::guard(slot_hit);
 }
 
 template <int N, int MaxN>
@@ -380,7 +391,7 @@ template <int N, int MaxN>
 inline double Simulator<N, MaxN>::point_quantity(int k, const GuardSample& s,
                                                  const State& x) const {
   if (k < n_) {
-    if constexpr (N != 0) return std::abs(to_user_.row(k).dot(x.segment(iq(), n_)));
+    if constexpr (N != 0) return std::abs(eq_.to_user.row(k).dot(x.segment(iq(), n_)));
   }
   if (k == n_) return std::abs(s.fi);
   if (k == n_ + 1) return std::abs(s.moment);
@@ -392,7 +403,7 @@ template <int N, int MaxN>
 double Simulator<N, MaxN>::step_quantity(int k, double t) {
   state_at(t, scratch_.xr);
   GuardSample s;
-  if (k >= n_) evaluate(t, scratch_.xr, s);  // a deformation needs the state alone
+  if (k >= n_) eq_.evaluate(t, scratch_.xr, s);  // a deformation needs the state alone
   return point_quantity(k, s, scratch_.xr);
 }
 
@@ -407,7 +418,7 @@ void Simulator<N, MaxN>::locate_step_extremes(int points) {
     res_.extremes.tension_time +=
         time_negative(points_.t.data(), points_.fj.data(), points, [&](double t) {
           state_at(t, scratch_.xr);
-          evaluate(t, scratch_.xr, s);
+          eq_.evaluate(t, scratch_.xr, s);
           return s.fj;
         });
   }
@@ -420,13 +431,13 @@ void Simulator<N, MaxN>::locate_step_extremes(int points) {
     GuardSample s;
     observe_at(bisect_switch(points_.t[pp - 1], points_.t[pp], pressed_before, [&](double t) {
       state_at(t, scratch_.xr);
-      evaluate(t, scratch_.xr, s);
+      eq_.evaluate(t, scratch_.xr, s);
       return s.fj >= kPressingFraction;
     }));
   }
   if (points < 3) return;
   const Extremes& ex = res_.extremes;
-  const double mg = dyn_.mass() * dyn_.g(), mgh = mg * dyn_.height();
+  const double mg = eq_.dyn.mass() * eq_.dyn.g(), mgh = mg * eq_.dyn.height();
   if constexpr (N != 0) points_.extreme.head(n_) = ex.max_abs_q.array();
   points_.extreme(n_) = ex.max_base_shear / mg;
   points_.extreme(n_ + 1) = ex.max_overturning_moment / mgh;
@@ -440,7 +451,130 @@ void Simulator<N, MaxN>::locate_step_extremes(int points) {
 // the state at t within the last step (or the still state)
 template <int N, int MaxN>
 void Simulator<N, MaxN>::state_at(double t, State& out) const {
-  on_stepper([&](const auto& s) { s.state_at(*this, t, out); });
+  on_stepper([&](const auto& s) { s.state_at(eq_, t, out); });
+}
+
+template <int N, int MaxN>
+double Simulator<N, MaxN>::guard_value(int slot, double t) {
+  GuardSample s;
+  state_at(t, scratch_.xr);
+  eq_.evaluate(t, scratch_.xr, s);
+  return s.v[static_cast<std::size_t>(slot)];
+}
+
+// the rocking series' impact guard (s theta) and peak guard (s theta_dot) are polynomials on the
+// step: their crossings are found on the polynomial; every other guard by TOMS 748
+template <int N, int MaxN>
+double Simulator<N, MaxN>::crossing(int slot, double tl, double tr, double gl, double gr) {
+  if constexpr (N == 0) {
+    if (std::holds_alternative<Series*>(stepper_)) {
+      const Guard g = mode_spec(eq_.mode).guards[static_cast<std::size_t>(slot)];
+      const double sg = edge_sign(edge());
+      const double* c = series_.integ.theta_coefficients();
+      const double* dc = series_.integ.theta_rate_coefficients();  // k c[k]
+      const int degree = series_.integ.order();  // theta's; theta_dot's is one less
+      if (g == Guard::kImpact)
+        return polynomial_crossing(c, dc, degree, sg, series_.integ.t0(), tl, tr, gl, gr);
+      if (g == Guard::kPeak) {
+        // theta_dot's coefficients d[k] = dc[k + 1], and k d[k]
+        const double* d = dc + 1;
+        std::array<double, RockingSeries<ContactState>::kMaxOrder + 2> dd;
+        for (int k = 1; k < degree; ++k) dd[static_cast<std::size_t>(k)] = k * d[k];
+        return polynomial_crossing(d, dd.data(), degree - 1, sg, series_.integ.t0(), tl, tr, gl,
+                                   gr);
+      }
+    }
+  }
+  return locate_crossing(slot, tl, tr, gl, gr, *this);
+}
+
+// a non-resetting guard crossed at t: record it
+template <int N, int MaxN>
+void Simulator<N, MaxN>::record(double t) {
+  state_at(t, scratch_.xr);
+  GuardSample s;
+  eq_.evaluate(t, scratch_.xr, s);
+  record_sample(s, scratch_.xr);
+}
+
+template <int N, int MaxN>
+void Simulator<N, MaxN>::record_sample(const GuardSample& s, const State& x) {
+  // the only recording guard is the peak (the friction limit resets: the base slides)
+  Event e = make_event(s.t, EventKind::kPeak, edge());
+  e.theta = x(0);
+  e.offset = offset_of(x);
+  rec_.event(e);
+  observe(s, x);
+}
+
+template <int N, int MaxN>
+void Simulator<N, MaxN>::emit_rows_until(double t_cut) {
+  if (opt_.output_dt <= 0.0) return;
+  for (;;) {
+    const double to = static_cast<double>(ledger_.next_output) * opt_.output_dt;
+    if (to > t_cut || to > setup_.t_end * (1.0 + 1e-14)) break;
+    state_at(std::min(to, stepped_until()), scratch_.xr);
+    emit_row(to, scratch_.xr);
+    ++ledger_.next_output;
+  }
+}
+
+template <int N, int MaxN>
+void Simulator<N, MaxN>::emit_row(double t, const State& x) {
+  GuardSample s;
+  eq_.evaluate(t, x, s);
+  const BaseAcceleration a = eq_.motion.at(t, eq_.cursor.event);
+  Observation o = eq_.observation(t, x, s, ledger_.offset);
+  if (n_ > 0) eq_.scratch.qdu.noalias() = Dyn::mv(eq_.to_user, x.segment(iqd(), n_));
+  o.q_dot = eq_.scratch.qdu.data();
+  // the resultant's distance from the c.g. projection [m]: at the pivot while rocking
+  double resultant = 0.0;
+  if (rocking()) {
+    resultant = eq_.dyn.height() * eq_.dyn.alpha(edge());
+  } else if (full_contact()) {
+    resultant = eq_.dyn.height() * s.moment / s.fj;
+  }
+  rec_.row(o, a, eq_.kinetic_energy(x), eq_.potential_energy(x), resultant,
+           ledger_.impact_loss + ledger_.chatter_loss);
+}
+
+template <int N, int MaxN>
+void Simulator<N, MaxN>::finish(double t, const State& x) {
+  res_.t_end = t;
+  if (opt_.progress) opt_.progress->store(t, std::memory_order_relaxed);
+  if (opt_.output_dt > 0.0 && (res_.history.time.empty() || res_.history.time.back() < t - 1e-12)) {
+    emit_row(t, x);
+  }
+  if (flying() && res_.status != Status::kOverturned)
+    res_.extremes.flight_time += t - ledger_.flight_start;
+  if (sliding() && res_.status != Status::kOverturned)
+    res_.extremes.sliding_time += t - ledger_.slide_start;
+  res_.final_phase = eq_.mode;
+  res_.final_theta = x(0);
+  res_.final_theta_dot = x(ithd());
+  res_.final_q = eq_.to_user * x.segment(iq(), n_);
+  res_.final_q_dot = eq_.to_user * x.segment(iqd(), n_);
+  res_.final_offset = offset_of(x);
+  EnergyBalance& e = res_.energy;
+  const double kin = eq_.kinetic_energy(x);
+  const double pot = eq_.potential_energy(x);
+  e.input_work = x(iw());
+  e.damping_loss = x(id());
+  e.impact_loss = ledger_.impact_loss;
+  e.chatter_loss = ledger_.chatter_loss;
+  e.friction_loss = x(ifr());
+  e.kinetic_change = kin - ledger_.kinetic0;
+  e.potential_change = pot - (ledger_.energy0 - ledger_.kinetic0);
+  e.residual = e.input_work - (e.kinetic_change + e.potential_change + e.damping_loss +
+                               e.impact_loss + e.chatter_loss + e.friction_loss);
+  e.scale =
+      std::max({rec_.energy_scale(), std::abs(ledger_.energy0 - pot), std::abs(kin),
+                ledger_.kinetic0, ledger_.impact_loss + ledger_.chatter_loss + e.friction_loss});
+  res_.rejected_steps = rocking_.integ.rejected_steps() + flight_.integ.rejected_steps() +
+                        slide_.integ.rejected_steps();
+  res_.rhs_evaluations = rocking_.integ.rhs_evaluations() + flight_.integ.rhs_evaluations() +
+                         slide_.integ.rhs_evaluations();
+  if (res_.status == Status::kCompleted) res_.message = "completed";
 }
 
 }  // namespace flexrock::detail

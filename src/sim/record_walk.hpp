@@ -14,16 +14,16 @@ namespace flexrock::detail {
 template <int N, int MaxN>
 bool Simulator<N, MaxN>::can_walk(double t) const requires(N != 0) {
   if (!std::holds_alternative<Exact*>(stepper_) || !opt_.methods.full_contact_walk ||
-      !motion_.is_sampled())
+      !eq_.motion.is_sampled())
     return false;
   if (t < exact_.fine_until - 1e-12 * std::max(1.0, t)) return false;
   if (latch_.tension || latch_.hold_tension) return false;
-  const ModeSpec& spec = mode_spec(mode_);
+  const ModeSpec& spec = mode_spec(eq_.mode);
   for (int j = 0; j < spec.count; ++j) {
     const auto k = static_cast<std::size_t>(j);
     if (latch_.zero_start[k] || !(s0_.v[k] > 0.0)) return false;
   }
-  const std::vector<double>& ts = motion_.times();
+  const std::vector<double>& ts = eq_.motion.times();
   return t >= ts.front() && t < ts.back();
 }
 
@@ -39,11 +39,11 @@ bool Simulator<N, MaxN>::can_walk(double t) const requires(N != 0) {
 // and extreme) is not evaluated at its end at all.
 template <int N, int MaxN>
 bool Simulator<N, MaxN>::advance_walk(double& t, State& x) requires(N != 0) {
-  const std::vector<double>& ts = motion_.times();
-  const std::vector<double>& hx = motion_.horizontal();
-  const std::vector<double>& vy = motion_.vertical();
+  const std::vector<double>& ts = eq_.motion.times();
+  const std::vector<double>& hx = eq_.motion.horizontal();
+  const std::vector<double>& vy = eq_.motion.vertical();
   const bool vertical = vy.size() == ts.size();
-  const double g = dyn_.g();
+  const double g = eq_.dyn.g();
   std::size_t i = scan_.index;
   if (i >= ts.size()) i = ts.size() - 1;
   while (i > 0 && ts[i] > t) --i;
@@ -92,10 +92,10 @@ bool Simulator<N, MaxN>::advance_walk(double& t, State& x) requires(N != 0) {
         continue;
       }
       if (sa_due) {
-        evaluate(tp0, exact_.xw, sa);
+        eq_.evaluate(tp0, exact_.xw, sa);
         sa_due = false;
       }
-      evaluate(tp1, exact_.xe, sb);
+      eq_.evaluate(tp1, exact_.xe, sb);
       // the guards' excursion between the piece's ends
       exact_.forcing = {ax, std::max(std::abs(ay0), std::abs(ay1)), std::abs(slope.x) / g,
                         std::abs(slope.y) / g};
@@ -116,7 +116,7 @@ bool Simulator<N, MaxN>::advance_walk(double& t, State& x) requires(N != 0) {
             x = exact_.xw;
             exact_.prop.walk_state(x);
             t = tp0 + ba;
-            evaluate(t, x, s0_);
+            eq_.evaluate(t, x, s0_);
             // the extremes before the bracket, located as in a whole piece
             exact_.xe = x;
             locate_extremes(tp0, ba, sa, s0_, walk_excursion(ba));
@@ -140,7 +140,7 @@ bool Simulator<N, MaxN>::advance_walk(double& t, State& x) requires(N != 0) {
   }
   scan_.index = i;
   x = exact_.xw;
-  if (sa_due) evaluate(t, exact_.xw, sa);
+  if (sa_due) eq_.evaluate(t, exact_.xw, sa);
   s0_ = sa;
   release_latches(s0_);
   exact_.prop.start(t, x);
@@ -163,7 +163,7 @@ template <int N, int MaxN>
 bool Simulator<N, MaxN>::guards_clear(const GuardSample& sa, const GuardSample& sb,
                                       const Excursion& e) const requires(N != 0) {
   constexpr ContactMode m = ContactMode::kFullContact;
-  const double mu = opt_.friction_coefficient;
+  const double mu = eq_.mu_s;
   auto clear = [&](std::size_t j, double excursion) {
     const double lo = std::min(sa.v[j], sb.v[j]) - excursion;
     return lo > 1e-12 * (1.0 + std::abs(sa.v[j]) + std::abs(sb.v[j]));
@@ -182,10 +182,10 @@ template <int N, int MaxN>
 bool Simulator<N, MaxN>::walk_quiet(double ax, double ay0, double ay1) const requires(N != 0) {
   const auto r = exact_.prop.walk_reach(ax, std::min(ay0, ay1), std::max(ay0, ay1));
   const double margin = 1e-12 * (1.0 + r.fj_hi + r.moment);
-  if (!(r.fj_lo > margin && dyn_.alpha1() * r.fj_lo - r.moment > margin &&
-        dyn_.alpha2() * r.fj_lo - r.moment > margin))
+  if (!(r.fj_lo > margin && eq_.dyn.alpha1() * r.fj_lo - r.moment > margin &&
+        eq_.dyn.alpha2() * r.fj_lo - r.moment > margin))
     return false;
-  const double mu = opt_.friction_coefficient;
+  const double mu = eq_.mu_s;
   if (std::isfinite(mu) && !(mu * r.fj_lo - r.fi > margin)) return false;
   const ReactionReach reach = reaction_reach(r.fi, r.moment, r.fj_lo, r.fj_hi);
   if (reach.shear || reach.moment || reach.demand || reach.pull) return false;
@@ -204,9 +204,9 @@ typename Simulator<N, MaxN>::ReactionReach Simulator<N, MaxN>::reaction_reach(do
                                                                               double fj_lo,
                                                                               double fj_hi) const {
   const Extremes& ex = res_.extremes;
-  const double mg = dyn_.mass() * dyn_.g();
+  const double mg = eq_.dyn.mass() * eq_.dyn.g();
   return {mg * fi_top > ex.max_base_shear,
-          mg * dyn_.height() * moment_top > ex.max_overturning_moment,
+          mg * eq_.dyn.height() * moment_top > ex.max_overturning_moment,
           fj_hi >= kPressingFraction &&
               !(fj_lo >= kPressingFraction && fi_top / fj_lo <= ex.max_friction_demand),
           latch_.tension && -mg * fj_lo > ex.max_pivot_pull};
@@ -220,7 +220,7 @@ int Simulator<N, MaxN>::walk_search(double tp0, double a, double b, const GuardS
                                     const GuardSample& sb, int depth, double& a_out,
                                     double& b_out) requires(N != 0) {
   if (guards_clear(sa, sb, walk_excursion(b - a))) return 0;
-  const ModeSpec& spec = mode_spec(mode_);
+  const ModeSpec& spec = mode_spec(eq_.mode);
   for (int j = 0; j < spec.count; ++j) {
     if (!(sb.v[static_cast<std::size_t>(j)] > 0.0)) {
       a_out = a;
@@ -237,7 +237,7 @@ int Simulator<N, MaxN>::walk_search(double tp0, double a, double b, const GuardS
   GuardSample sm;
   scratch_.xr = exact_.xw;
   exact_.prop.walk_dense(mid, scratch_.xr);
-  evaluate(tp0 + mid, scratch_.xr, sm);
+  eq_.evaluate(tp0 + mid, scratch_.xr, sm);
   const int left = walk_search(tp0, a, mid, sa, sm, depth - 1, a_out, b_out);
   if (left != 0) return left;
   return walk_search(tp0, mid, b, sm, sb, depth - 1, a_out, b_out);
@@ -288,8 +288,8 @@ void Simulator<N, MaxN>::locate_extremes(double tp0, double h, const GuardSample
   auto range_reach = [&](const Excursion& r) {
     return reaction_reach(fi_top + r.fi, moment_top + r.moment, fj_lo - r.fj, fj_hi + r.fj);
   };
-  exact_.ua.noalias() = Dyn::mv(to_user_, exact_.xw.segment(iq(), n_));
-  exact_.ub.noalias() = Dyn::mv(to_user_, exact_.xe.segment(iq(), n_));
+  exact_.ua.noalias() = Dyn::mv(eq_.to_user, exact_.xw.segment(iq(), n_));
+  exact_.ub.noalias() = Dyn::mv(eq_.to_user, exact_.xe.segment(iq(), n_));
   for (int j = 0; j < n_; ++j)
     if (deformation_reach(j, std::max(std::abs(exact_.ua(j)), std::abs(exact_.ub(j))), h))
       wanted[static_cast<std::size_t>(count++)] = j;
@@ -306,7 +306,7 @@ void Simulator<N, MaxN>::locate_extremes(double tp0, double h, const GuardSample
   auto visit = [&](double tau) {
     exact_.prop.walk_dense(tau, scratch_.xr);
     if (!guards) return;
-    evaluate(tp0 + tau, scratch_.xr, s);
+    eq_.evaluate(tp0 + tau, scratch_.xr, s);
     observe(s, scratch_.xr);
   };
   // the quantity `k` of the point visited last
@@ -420,8 +420,8 @@ double Simulator<N, MaxN>::largest_near(Jet&& jet, double tau, double lo, double
 template <int N, int MaxN>
 std::array<double, 3> Simulator<N, MaxN>::guard_jet(int k, double tau) requires(N != 0) {
   exact_.prop.walk_q_derivatives(tau, exact_.qjet);
-  const auto r = dyn_.full_contact_reaction_rates(exact_.qjet, exact_.prop.walk_base(tau),
-                                                  exact_.prop.walk_slope());
+  const auto r = eq_.dyn.full_contact_reaction_rates(exact_.qjet, exact_.prop.walk_base(tau),
+                                                     exact_.prop.walk_slope());
   if (k == n_) return r.fi;
   if (k == n_ + 1) return r.moment;
   if (k == n_ + 3) return {-r.fj[0], -r.fj[1], -r.fj[2]};

@@ -14,14 +14,14 @@ namespace flexrock::detail {
 template <int N, int MaxN>
 bool Simulator<N, MaxN>::fire(int slot, double t, State& x) {
   if (sliding()) ledger_.offset = x(isd());  // events name where the base is
-  const GuardSpec& g = guard_spec(mode_spec(mode_).guards[static_cast<std::size_t>(slot)]);
+  const GuardSpec& g = guard_spec(mode_spec(eq_.mode).guards[static_cast<std::size_t>(slot)]);
   switch (g.reset) {
     case Reset::kUplift: {
       // U1 + U2 = (alpha1 + alpha2) F_J / M g: when the floor also stops pressing, both uplift
       // guards and the lift-off guard cross together, and the body flies (theory §15)
       GuardSample now;
-      evaluate(t, x, now);
-      const int lift = guard_slot(mode_, Guard::kLiftOff);
+      eq_.evaluate(t, x, now);
+      const int lift = guard_slot(eq_.mode, Guard::kLiftOff);
       if (!latch_.tension && lift >= 0 && now.v[static_cast<std::size_t>(lift)] <= 0.0)
         return lift_off(t, x);
       return uplift(t, x, g.edge);
@@ -60,11 +60,11 @@ bool Simulator<N, MaxN>::uplift(double t, State& x, int e) {
   // theta = 0 and it must grow: the impact and peak functions start at zero, known to turn
   // positive
   latch_.zero_start.fill(false);
-  latch_.zero_start[static_cast<std::size_t>(guard_slot(mode_, Guard::kImpact))] = true;
-  latch_.zero_start[static_cast<std::size_t>(guard_slot(mode_, Guard::kPeak))] = true;
+  latch_.zero_start[static_cast<std::size_t>(guard_slot(eq_.mode, Guard::kImpact))] = true;
+  latch_.zero_start[static_cast<std::size_t>(guard_slot(eq_.mode, Guard::kPeak))] = true;
   // a slide that began at this instant has not yet any slip velocity: it too starts at zero
   if (sliding() && x(isv()) == 0.0)
-    latch_.zero_start[static_cast<std::size_t>(guard_slot(mode_, Guard::kSlipStop))] = true;
+    latch_.zero_start[static_cast<std::size_t>(guard_slot(eq_.mode, Guard::kSlipStop))] = true;
   return request_entry();
 }
 
@@ -112,20 +112,20 @@ void Simulator<N, MaxN>::count_impact(const Event& impact, double impulse_y, dou
 template <int N, int MaxN>
 bool Simulator<N, MaxN>::impact(double t, State& x) {
   const int landing = edge() == 1 ? 2 : 1;
-  unpack(x);
+  eq_.unpack(x);
   const double thd_minus = x(ithd());
   const bool chatter = t - ledger_.last_contact_change < setup_.chatter_interval;
-  const auto out =
-      resolve_impact(dyn_, landing, scratch_.q, thd_minus, scratch_.qd, setup_.rule, chatter);
+  const auto out = resolve_impact(eq_.dyn, landing, eq_.scratch.q, thd_minus, eq_.scratch.qd,
+                                  setup_.rule, chatter);
   // with friction: a sliding pivot, or an impulse outside the friction cone, needs the impact law
   // with Coulomb friction (theory §19); the paper's law is its sticking case. A chatter cut-off of
   // a sticking pivot is a numerical device on a vanishing impulse whose ratio |I_x|/I_y says
   // nothing about sliding (§10): it stays the sticking both-edges stop.
-  if (std::isfinite(setup_.mu_s) &&
+  if (std::isfinite(eq_.mu_s) &&
       (sliding() ||
-       (!chatter && !inside_friction_cone(out.impulse(0), out.impulse(1), setup_.mu_s)))) {
+       (!chatter && !inside_friction_cone(out.impulse(0), out.impulse(1), eq_.mu_s)))) {
     Eigen::Vector2d r, v_c;
-    dyn_.cg_from_pivot(edge(), 0.0, 1.0, scratch_.q, thd_minus, scratch_.qd, r, v_c);
+    eq_.dyn.cg_from_pivot(edge(), 0.0, 1.0, eq_.scratch.q, thd_minus, eq_.scratch.qd, r, v_c);
     if (sliding()) v_c(0) += x(isv());
     x(0) = 0.0;  // located at theta = 0 up to rounding
     return impact_with_friction(t, x, {.edge = landing, .flat = chatter, .grazing = chatter}, v_c,
@@ -155,7 +155,7 @@ bool Simulator<N, MaxN>::impact(double t, State& x) {
   ledger_.last_contact_change = t;
   latch_.zero_start.fill(false);
   if (!out.both_edges)
-    latch_.zero_start[static_cast<std::size_t>(guard_slot(mode_, Guard::kImpact))] = true;
+    latch_.zero_start[static_cast<std::size_t>(guard_slot(eq_.mode, Guard::kImpact))] = true;
   if (res_.extremes.impacts > opt_.max_impacts)
     return stop(t, "impact limit reached (" + std::to_string(opt_.max_impacts) + ")");
   return request_entry();
@@ -164,20 +164,20 @@ bool Simulator<N, MaxN>::impact(double t, State& x) {
 // the floor stops pressing: the body flies, with no impulse (theory "Flight", lift-off map)
 template <int N, int MaxN>
 bool Simulator<N, MaxN>::lift_off(double t, State& x) {
-  unpack(x);
+  eq_.unpack(x);
   const int e = edge();
   // a free body must move its touching tipping points up: otherwise the sticking pivot is pulled
   // sideways as its force vanishes and the body could only leave it by sliding, which is not
   // modelled here; the floor is let pull (flagged) until it presses again (theory "Lift-off")
-  const LiftOffState<Vec> at{.pivot = mode_spec(mode_).pivot,
+  const LiftOffState<Vec> at{.pivot = mode_spec(eq_.mode).pivot,
                              .theta = x(0),
-                             .q = scratch_.q,
+                             .q = eq_.scratch.q,
                              .theta_dot = x(ithd()),
-                             .q_dot = scratch_.qd,
+                             .q_dot = eq_.scratch.qd,
                              .offset = offset_of(x),
                              .sliding = sliding(),
                              .slip_velocity = sliding() ? x(isv()) : 0.0};
-  if (lift_off_pulls(dyn_, at, motion_.at(t, cursor_.event))) {
+  if (lift_off_pulls(eq_.dyn, at, eq_.motion.at(t, eq_.cursor.event))) {
     latch_.tension = true;
     res_.pivot_tension = true;
     Event ev = make_event(t, EventKind::kPivotTension, rocking() ? e : 0);
@@ -189,7 +189,7 @@ bool Simulator<N, MaxN>::lift_off(double t, State& x) {
     ++res_.extremes.tension_episodes;
     return request_entry();
   }
-  const FlightStart f = lift_off_map(dyn_, at);
+  const FlightStart f = lift_off_map(eq_.dyn, at);
   x(ixc()) = f.r_c(0);
   x(ixc() + 1) = f.r_c(1);
   x(ixc() + 2) = f.v_c(0);
@@ -199,16 +199,16 @@ bool Simulator<N, MaxN>::lift_off(double t, State& x) {
   ev.theta_dot_before = ev.theta_dot_after = x(ithd());
   rec_.event(ev);
   ++res_.extremes.lift_offs;
-  const ContactMode from = mode_;
+  const ContactMode from = eq_.mode;
   switch_mode(ContactMode::kFlight, t, x);
   ledger_.flight_start = t;
   ledger_.last_contact_change = t;
   // the tipping points that touched the floor start at zero height and rise
   latch_.zero_start.fill(false);
   if (mode_spec(from).pivot != 2)
-    latch_.zero_start[static_cast<std::size_t>(guard_slot(mode_, Guard::kLandingEdge1))] = true;
+    latch_.zero_start[static_cast<std::size_t>(guard_slot(eq_.mode, Guard::kLandingEdge1))] = true;
   if (mode_spec(from).pivot != 1)
-    latch_.zero_start[static_cast<std::size_t>(guard_slot(mode_, Guard::kLandingEdge2))] = true;
+    latch_.zero_start[static_cast<std::size_t>(guard_slot(eq_.mode, Guard::kLandingEdge2))] = true;
   return request_entry();
 }
 
@@ -217,11 +217,11 @@ bool Simulator<N, MaxN>::lift_off(double t, State& x) {
 // other tipping point may land instead, or both (flat)
 template <int N, int MaxN>
 bool Simulator<N, MaxN>::land(double t, State& x, int e) {
-  unpack(x);
+  eq_.unpack(x);
   const double th = x(0), thd_minus = x(ithd());
-  const double sn = std::sin(th), cs = std::cos(th), h = dyn_.height();
-  const Eigen::Vector2d v_c = cg_velocity(x);
-  if (std::isfinite(setup_.mu_s)) {
+  const double sn = std::sin(th), cs = std::cos(th), h = eq_.dyn.height();
+  const Eigen::Vector2d v_c = eq_.cg_velocity(x);
+  if (std::isfinite(eq_.mu_s)) {
     res_.extremes.flight_time += t - ledger_.flight_start;
     const bool chatter = t - ledger_.last_contact_change < setup_.chatter_interval;
     if (chatter) {
@@ -231,16 +231,18 @@ bool Simulator<N, MaxN>::land(double t, State& x, int e) {
     return impact_with_friction(t, x, {.edge = e, .from_flight = true, .grazing = chatter}, v_c,
                                 chatter ? EventKind::kChatterCutoff : EventKind::kLanding);
   }
-  const auto out = landing_map(
-      dyn_, e,
-      ImpactState<Vec>{
-          .theta = th, .q = scratch_.q, .theta_dot = thd_minus, .q_dot = scratch_.qd, .v_c = v_c},
-      setup_.rule);
+  const auto out = landing_map(eq_.dyn, e,
+                               ImpactState<Vec>{.theta = th,
+                                                .q = eq_.scratch.q,
+                                                .theta_dot = thd_minus,
+                                                .q_dot = eq_.scratch.qd,
+                                                .v_c = v_c},
+                               setup_.rule);
   if (out.law_fallback) law_fallback(t, e);
-  const double x_corner = dyn_.corner_x(out.edge, sn, cs, scratch_.q, x(ixc()));
+  const double x_corner = eq_.dyn.corner_x(out.edge, sn, cs, eq_.scratch.q, x(ixc()));
   x(ithd()) = out.theta_dot;
   x.segment(iqd(), n_) = out.q_dot;
-  ledger_.offset = x_corner - h * dyn_.alpha(out.edge);
+  ledger_.offset = x_corner - h * eq_.dyn.alpha(out.edge);
   switch_mode(out.flat ? ContactMode::kFullContact
                        : (out.edge == 1 ? ContactMode::kRockingEdge1 : ContactMode::kRockingEdge2),
               t, x);
@@ -263,7 +265,7 @@ bool Simulator<N, MaxN>::land(double t, State& x, int e) {
     latch_.tension_event = -1;
   }
   count_impact(ev, out.impulse(1), ev.energy_loss, chatter);
-  return after_impulse(t, ev, th, dyn_.mass() * (v_c.norm() + out.v_c.norm()));
+  return after_impulse(t, ev, th, eq_.dyn.mass() * (v_c.norm() + out.v_c.norm()));
 }
 
 template <int N, int MaxN>
@@ -273,7 +275,7 @@ bool Simulator<N, MaxN>::overturned(double t, State& x) {
   // the run ends here: every extreme (tilt, uplift, reaction, modes) takes this state too, not
   // only the samples before it
   GuardSample now;
-  evaluate(t, x, now);
+  eq_.evaluate(t, x, now);
   observe(now, x);
   res_.extremes.overturn_time = t;
   res_.extremes.overturn_edge = side;
@@ -291,7 +293,7 @@ bool Simulator<N, MaxN>::overturned(double t, State& x) {
 template <int N, int MaxN>
 void Simulator<N, MaxN>::switch_mode(ContactMode m, double t, State& x) {
   const bool was = sliding(), flew = flying();
-  mode_ = m;
+  eq_.mode = m;
   if (was && !sliding()) {
     res_.extremes.sliding_time += t - ledger_.slide_start;
     ledger_.offset = x(isd());
@@ -308,7 +310,7 @@ void Simulator<N, MaxN>::switch_mode(ContactMode m, double t, State& x) {
 template <int N, int MaxN>
 bool Simulator<N, MaxN>::start_slip(double t, State& x) {
   GuardSample now;
-  evaluate(t, x, now);
+  eq_.evaluate(t, x, now);
   // the floor cannot push along F_I as hard as sticking needs: the base slips the other way
   const int s = slip_direction(now.fi);
   Event ev = make_event(t, EventKind::kSlipStart, rocking() ? edge() : 0);
@@ -318,14 +320,14 @@ bool Simulator<N, MaxN>::start_slip(double t, State& x) {
   res_.friction_exceeded = true;
   ++res_.extremes.slips;
   x(isv()) = 0.0;
-  switch_mode(contact_mode(mode_spec(mode_).pivot, s), t, x);
+  switch_mode(contact_mode(mode_spec(eq_.mode).pivot, s), t, x);
   ledger_.last_contact_change = t;
   if (rocking() && x(0) == 0.0 && x(ithd()) == 0.0) {
     // just uplifted: with its pivot sliding the body must still turn up, else it slides flat
-    unpack(x);
+    eq_.unpack(x);
     double thdd = 0.0;
     Eigen::Vector2d r;
-    slide_acceleration(0.0, 1.0, 0.0, motion_.at(t, cursor_.event), thdd, r);
+    eq_.slide_acceleration(0.0, 1.0, 0.0, eq_.motion.at(t, eq_.cursor.event), thdd, r);
     if (!(edge_sign(edge()) * thdd > 0.0)) {
       switch_mode(contact_mode(0, s), t, x);
       latch_.suppress_uplift_at_start = true;
@@ -333,30 +335,31 @@ bool Simulator<N, MaxN>::start_slip(double t, State& x) {
   }
   // the slip velocity starts at zero and grows; an uplift at this instant leaves theta = 0
   latch_.zero_start.fill(false);
-  latch_.zero_start[static_cast<std::size_t>(guard_slot(mode_, Guard::kSlipStop))] = true;
+  latch_.zero_start[static_cast<std::size_t>(guard_slot(eq_.mode, Guard::kSlipStop))] = true;
   if (rocking() && x(0) == 0.0) {
-    latch_.zero_start[static_cast<std::size_t>(guard_slot(mode_, Guard::kImpact))] = true;
-    latch_.zero_start[static_cast<std::size_t>(guard_slot(mode_, Guard::kPeak))] = true;
+    latch_.zero_start[static_cast<std::size_t>(guard_slot(eq_.mode, Guard::kImpact))] = true;
+    latch_.zero_start[static_cast<std::size_t>(guard_slot(eq_.mode, Guard::kPeak))] = true;
   }
   return request_entry();
 }
 
 template <int N, int MaxN>
 bool Simulator<N, MaxN>::uplift_holds(double t, int e) {
-  if (!std::isfinite(setup_.mu_s)) return true;
-  const ContactMode was = mode_;
-  const BaseAcceleration a = motion_.at(t, cursor_.event);
+  if (!std::isfinite(eq_.mu_s)) return true;
+  const ContactMode was = eq_.mode;
+  const BaseAcceleration a = eq_.motion.at(t, eq_.cursor.event);
   double thdd = 0.0;
-  dyn_.rocking_acceleration_sc(e, 0.0, 1.0, scratch_.q, 0.0, scratch_.qd, a, thdd, scratch_.qdd);
-  const Eigen::Vector2d r =
-      dyn_.rocking_reaction_sc(e, 0.0, 1.0, scratch_.q, 0.0, scratch_.qd, thdd, scratch_.qdd, a);
-  if (setup_.mu_s * r(1) - std::abs(r(0)) > 0.0) return true;
-  mode_ = contact_mode(e, r(0) > 0.0 ? -1 : 1);
+  eq_.dyn.rocking_acceleration_sc(e, 0.0, 1.0, eq_.scratch.q, 0.0, eq_.scratch.qd, a, thdd,
+                                  eq_.scratch.qdd);
+  const Eigen::Vector2d r = eq_.dyn.rocking_reaction_sc(e, 0.0, 1.0, eq_.scratch.q, 0.0,
+                                                        eq_.scratch.qd, thdd, eq_.scratch.qdd, a);
+  if (eq_.mu_s * r(1) - std::abs(r(0)) > 0.0) return true;
+  eq_.mode = contact_mode(e, r(0) > 0.0 ? -1 : 1);
   Eigen::Vector2d rs;
-  const bool inconsistent = latch_.slide_inconsistent;
-  slide_acceleration(0.0, 1.0, 0.0, a, thdd, rs);
-  latch_.slide_inconsistent = inconsistent;  // a probe, not the motion
-  mode_ = was;
+  const bool inconsistent = eq_.slide_inconsistent;
+  eq_.slide_acceleration(0.0, 1.0, 0.0, a, thdd, rs);
+  eq_.slide_inconsistent = inconsistent;  // a probe, not the motion
+  eq_.mode = was;
   return edge_sign(e) * thdd > 0.0;
 }
 
@@ -367,16 +370,16 @@ bool Simulator<N, MaxN>::uplift_holds(double t, int e) {
 template <int N, int MaxN>
 bool Simulator<N, MaxN>::stick(double t, State& x) {
   const bool never_grew =
-      latch_.zero_start[static_cast<std::size_t>(guard_slot(mode_, Guard::kSlipStop))] &&
+      latch_.zero_start[static_cast<std::size_t>(guard_slot(eq_.mode, Guard::kSlipStop))] &&
       t == ledger_.slide_start;
   ledger_.offset = x(isd());
   x(isv()) = 0.0;
-  const int pivot = mode_spec(mode_).pivot, was = slip();
+  const int pivot = mode_spec(eq_.mode).pivot, was = slip();
   const double th = x(0);
   switch_mode(contact_mode(pivot, 0), t, x);
   GuardSample now;
-  evaluate(t, x, now);
-  const int limit = guard_slot(mode_, Guard::kFrictionLimit);
+  eq_.evaluate(t, x, now);
+  const int limit = guard_slot(eq_.mode, Guard::kFrictionLimit);
   const double margin = now.v[static_cast<std::size_t>(limit)];
   const StickOrSlip after = stick_or_slip(now.fi, margin, never_grew);
   Event ev = make_event(t, after.sticks ? EventKind::kStick : EventKind::kSlipReversal,
@@ -393,11 +396,11 @@ bool Simulator<N, MaxN>::stick(double t, State& x) {
   if (after.slip != 0) {
     if (after.slip != was) ++res_.extremes.slips;
     switch_mode(contact_mode(pivot, after.slip), t, x);
-    latch_.zero_start[static_cast<std::size_t>(guard_slot(mode_, Guard::kSlipStop))] = true;
+    latch_.zero_start[static_cast<std::size_t>(guard_slot(eq_.mode, Guard::kSlipStop))] = true;
   }
   if (rocking() && th == 0.0) {
-    latch_.zero_start[static_cast<std::size_t>(guard_slot(mode_, Guard::kImpact))] = true;
-    latch_.zero_start[static_cast<std::size_t>(guard_slot(mode_, Guard::kPeak))] = true;
+    latch_.zero_start[static_cast<std::size_t>(guard_slot(eq_.mode, Guard::kImpact))] = true;
+    latch_.zero_start[static_cast<std::size_t>(guard_slot(eq_.mode, Guard::kPeak))] = true;
   }
   return request_entry();
 }
@@ -407,13 +410,15 @@ bool Simulator<N, MaxN>::stick(double t, State& x) {
 template <int N, int MaxN>
 bool Simulator<N, MaxN>::impact_with_friction(double t, State& x, const CornerImpactCase& c,
                                               const Eigen::Vector2d& v_c, EventKind kind) {
-  unpack(x);
+  eq_.unpack(x);
   const double th = x(0), thd_minus = x(ithd());
-  const auto out = friction_impact(
-      dyn_,
-      ImpactState<Vec>{
-          .theta = th, .q = scratch_.q, .theta_dot = thd_minus, .q_dot = scratch_.qd, .v_c = v_c},
-      c, setup_.rule, CoulombFriction{setup_.mu_s, setup_.mu_k});
+  const auto out = friction_impact(eq_.dyn,
+                                   ImpactState<Vec>{.theta = th,
+                                                    .q = eq_.scratch.q,
+                                                    .theta_dot = thd_minus,
+                                                    .q_dot = eq_.scratch.qd,
+                                                    .v_c = v_c},
+                                   c, setup_.rule, CoulombFriction{eq_.mu_s, eq_.mu_k});
   if (out.law_fallback) law_fallback(t, c.edge);
   if (!out.consistent)
     return stop(t, "no consistent impact with friction at t = " + short_number(t) +
@@ -423,8 +428,8 @@ bool Simulator<N, MaxN>::impact_with_friction(double t, State& x, const CornerIm
   const double d_now = offset_of(x);
   if (c.from_flight) {
     const double x_corner =
-        dyn_.corner_x(out.edge, std::sin(th), std::cos(th), scratch_.q, x(ixc()));
-    ledger_.offset = x_corner - dyn_.height() * dyn_.alpha(out.edge);
+        eq_.dyn.corner_x(out.edge, std::sin(th), std::cos(th), eq_.scratch.q, x(ixc()));
+    ledger_.offset = x_corner - eq_.dyn.height() * eq_.dyn.alpha(out.edge);
   } else {
     ledger_.offset = d_now;
   }
@@ -452,7 +457,7 @@ bool Simulator<N, MaxN>::impact_with_friction(double t, State& x, const CornerIm
     fe.friction_demand = out.sticking_demand;
     rec_.event(fe);
   }
-  return after_impulse(t, ev, th, dyn_.mass() * (v_c.norm() + out.v_c.norm()));
+  return after_impulse(t, ev, th, eq_.dyn.mass() * (v_c.norm() + out.v_c.norm()));
 }
 
 // the end of a landing or an impact with friction, recorded as `ev` at tilt th: a tensile impulse
@@ -473,7 +478,7 @@ bool Simulator<N, MaxN>::after_impulse(double t, const Event& ev, double th, dou
   ledger_.last_contact_change = t;
   latch_.zero_start.fill(false);
   if (rocking() && th == 0.0)
-    latch_.zero_start[static_cast<std::size_t>(guard_slot(mode_, Guard::kImpact))] = true;
+    latch_.zero_start[static_cast<std::size_t>(guard_slot(eq_.mode, Guard::kImpact))] = true;
   if (res_.extremes.impacts > opt_.max_impacts)
     return stop(t, "impact limit reached (" + std::to_string(opt_.max_impacts) + ")");
   return request_entry();

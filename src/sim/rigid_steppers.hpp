@@ -18,20 +18,20 @@ namespace flexrock::detail {
 // is taken again with samples).
 template <int N, int MaxN>
 bool Simulator<N, MaxN>::series_bounded() const requires(N == 0) {
-  if (std::isfinite(opt_.friction_coefficient) || latch_.hold_tension) return false;
-  const auto lift = static_cast<std::size_t>(guard_slot(mode_, Guard::kLiftOff));
+  if (std::isfinite(eq_.mu_s) || latch_.hold_tension) return false;
+  const auto lift = static_cast<std::size_t>(guard_slot(eq_.mode, Guard::kLiftOff));
   return latch_.tension || (!latch_.zero_start[lift] && s0_.v[lift] > 0.0);
 }
 
 template <int N, int MaxN>
-bool Simulator<N, MaxN>::advance_series(double& t, State& x) requires(N == 0) {
+StepEnd Simulator<N, MaxN>::advance_series(double& t, State& x) requires(N == 0) {
   const double t_stop =
-      std::min({setup_.t_end, motion_.next_breakpoint(t, cursor_.brk), step_stop_});
-  if (!count_step(t)) return false;
+      std::min({setup_.t_end, eq_.motion.next_breakpoint(t, eq_.cursor.brk), step_stop_});
+  if (!count_step(t)) return StepEnd::ended();
   auto none = [](double, const ContactState&, ContactState&) {};
   series_.integ.set_max_step(std::numeric_limits<double>::infinity());
   if (series_.integ.step(none, t_stop) != RockingSeries<ContactState>::Status::kAccepted)
-    return step_collapsed(t);
+    return StepEnd::ran(step_collapsed(t));
   const double t0 = series_.integ.t0(), t1 = series_.integ.t1(), h = t1 - t0;
   if (opt_.progress) opt_.progress->store(t1, std::memory_order_relaxed);
   const int e = edge();
@@ -49,12 +49,12 @@ bool Simulator<N, MaxN>::advance_series(double& t, State& x) requires(N == 0) {
     series_.sp_overturn.c[i] = -sg * th[k];
     if (k < degree) series_.sp_peak.c[i] = sg * dth[k + 1];
   }
-  series_.sp_overturn.c[0] += setup_.overturn_limit[static_cast<std::size_t>(e - 1)];
+  series_.sp_overturn.c[0] += eq_.overturn_limit[static_cast<std::size_t>(e - 1)];
   // where the floor's pressing cannot be shown to hold throughout (a lift-off may come), the
   // step is taken again with the guards sampled, as any step of a friction-limited run: the
   // reaction's enclosure settles most steps; its series (O(order^2)) only the rest
   bool reaction = false;  // the reaction's series formed on this step (reaction_polynomials)
-  const ReactionRange range = series_.integ.reaction_range(dyn_.g_over_h(), h);
+  const ReactionRange range = series_.integ.reaction_range(eq_.dyn.g_over_h(), h);
   if (!latch_.tension && !(range.fj_lo > 0.0)) {
     reaction_polynomials(h);
     reaction = true;
@@ -62,17 +62,17 @@ bool Simulator<N, MaxN>::advance_series(double& t, State& x) requires(N == 0) {
         !(bernstein_piece(series_.sp_fj, 0.0, h, series_.sp_fj.c[0]).min() >
           series_.sp_fj.margin)) {
       --res_.steps;
-      dense_buf_ = series_.integ.x0();
-      series_.integ.start(none, ctl_, t0, dense_buf_);
+      series_.buf = series_.integ.x0();
+      series_.integ.start(none, ctl_, t0, series_.buf);
       series_.integ.set_max_step(ctl_.max_step);
-      return advance_with(series_.integ, none, dense_buf_, t, x);
+      return advance_with(series_.integ, none, series_.buf, t, x);
     }
   }
   // the guards at the step's end, exactly (the next step's start)
   GuardSample& se = points_.samples[1];
   State& xe = points_.states[1];
   put(series_.integ.x1(), xe);
-  evaluate(t1, xe, se);
+  eq_.evaluate(t1, xe, se);
   // how guard k stands at the step's start
   auto start_of = [&](std::size_t k) {
     return latch_.zero_start[k] ? GuardStart::kZero
@@ -80,7 +80,7 @@ bool Simulator<N, MaxN>::advance_series(double& t, State& x) requires(N == 0) {
                                 : GuardStart::kDisarmed;
   };
   // the first crossing of each resetting guard
-  const ModeSpec& spec = mode_spec(mode_);
+  const ModeSpec& spec = mode_spec(eq_.mode);
   double t_hit = std::numeric_limits<double>::infinity();
   int slot_hit = -1, peak_slot = -1;
   for (int j = 0; j < spec.count; ++j) {
@@ -130,14 +130,14 @@ bool Simulator<N, MaxN>::advance_series(double& t, State& x) requires(N == 0) {
   }
   series_extremes(t0, tau_end, slot_hit >= 0, range, reaction);
   if (slot_hit < 0) observe(se, xe);
-  if (!end_step(series_.integ, none, slot_hit, t_hit, se, t, x)) return false;
+  const StepEnd end = end_step(series_.integ, none, slot_hit, t_hit, se, t, x);
   // where the floor has come to rest (a record's or a pulse's end, start_arc), the rest of the arc
   // in closed form
   if (slot_hit < 0) {
-    dense_buf_ = x.head(2 * n_ + 4);
-    start_arc(t, dense_buf_);
+    series_.buf = x.head(2 * n_ + 4);
+    start_arc(t, series_.buf);
   }
-  return true;
+  return end;
 }
 
 // The closed form takes a rigid body's rocking (docs/theory.md, "Free rocking in closed form")
@@ -147,12 +147,12 @@ bool Simulator<N, MaxN>::advance_series(double& t, State& x) requires(N == 0) {
 // cos(phi) on the arc). Elsewhere the series steps it, as it does near those limits.
 template <int N, int MaxN>
 bool Simulator<N, MaxN>::start_arc(double t, const ContactState& x) requires(N == 0) {
-  if (n_ != 0 || !opt_.methods.closed_form_free_rocking || t < setup_.quiet_from ||
-      std::isfinite(opt_.friction_coefficient) || latch_.hold_tension)
+  if (n_ != 0 || !opt_.methods.closed_form_free_rocking || t < eq_.quiet_from ||
+      std::isfinite(eq_.mu_s) || latch_.hold_tension)
     return false;
   const int e = edge();
-  const double a = dyn_.alpha(e);
-  arc_.arc.set_pivot(a, dyn_.inertia(a, scratch_.q), dyn_.g_over_h());
+  const double a = eq_.dyn.alpha(e);
+  arc_.arc.set_pivot(a, eq_.dyn.inertia(a, eq_.scratch.q), eq_.dyn.g_over_h());
   if (!arc_.arc.start(t, x, edge_sign(e))) return false;
   // F_J over the whole arc, cos(phi) from cos(alpha_t) = 1/c to cos(phi_m) = cm
   if (!(arc_.arc.least_press(arc_.arc.floor_cos(), arc_.arc.energy_cosine()) >= kPressingFraction))
@@ -164,18 +164,18 @@ bool Simulator<N, MaxN>::start_arc(double t, const ContactState& x) requires(N =
 // One step of the closed form: to the impact, or to the run's end. The peak inside is recorded;
 // the extremes are the step's ends' and its interior critical points' (arc_extremes).
 template <int N, int MaxN>
-bool Simulator<N, MaxN>::advance_arc(double& t, State& x) requires(N == 0) {
+StepEnd Simulator<N, MaxN>::advance_arc(double& t, State& x) requires(N == 0) {
   const double t_stop =
-      std::min({setup_.t_end, motion_.next_breakpoint(t, cursor_.brk), step_stop_});
-  if (!count_step(t)) return false;
+      std::min({setup_.t_end, eq_.motion.next_breakpoint(t, eq_.cursor.brk), step_stop_});
+  if (!count_step(t)) return StepEnd::ended();
   arc_.arc.step(t_stop);
   const double t0 = arc_.arc.t0(), t1 = arc_.arc.t1();
   if (opt_.progress) opt_.progress->store(t1, std::memory_order_relaxed);
   const double tp = arc_.arc.peak_time();
-  if (tp > t0 && tp <= t1 && guard_slot(mode_, Guard::kPeak) >= 0) {
+  if (tp > t0 && tp <= t1 && guard_slot(eq_.mode, Guard::kPeak) >= 0) {
     GuardSample s;
     state_at(tp, scratch_.xr);
-    arc_sample(tp, scratch_.xr, arc_.arc.sin_phi_m(), arc_.arc.energy_cosine(), s);
+    eq_.arc_sample(arc_.arc, tp, scratch_.xr, arc_.arc.sin_phi_m(), arc_.arc.energy_cosine(), s);
     record_sample(s, scratch_.xr);
   }
   // the step's end, before the reset where the impact ends it (a point of the motion too)
@@ -184,13 +184,13 @@ bool Simulator<N, MaxN>::advance_arc(double& t, State& x) requires(N == 0) {
   put(arc_.arc.x1(), xe);
   const bool impact = t1 == arc_.arc.impact_time();
   if (impact)
-    arc_sample(t1, xe, arc_.arc.floor_sin(), arc_.arc.floor_cos(), se);
+    eq_.arc_sample(arc_.arc, t1, xe, arc_.arc.floor_sin(), arc_.arc.floor_cos(), se);
   else
-    evaluate(t1, xe, se);
+    eq_.evaluate(t1, xe, se);
   observe(se, xe);
   arc_extremes(t0, t1);
   auto none = [](double, const ContactState&, ContactState&) {};
-  return end_step(arc_.arc, none, impact ? guard_slot(mode_, Guard::kImpact) : -1, t1, se, t, x);
+  return end_step(arc_.arc, none, impact ? guard_slot(eq_.mode, Guard::kImpact) : -1, t1, se, t, x);
 }
 
 // On the arc the reaction depends on phi = alpha_t - |theta| alone (theta_dot^2 by the energy):
@@ -212,7 +212,7 @@ void Simulator<N, MaxN>::arc_extremes(double t0, double t1) requires(N == 0) {
   const bool peak = tp > t0 && tp < t1;
   const double lo = peak ? at - arc_.arc.peak_tilt() : std::min(ph0, ph1);
   const double hi = std::max(ph0, ph1);
-  const double mg = dyn_.mass() * dyn_.g(), mgh = mg * dyn_.height();
+  const double mg = eq_.dyn.mass() * eq_.dyn.g(), mgh = mg * eq_.dyn.height();
   // sin(phi) and cos(phi) at the ends: at the peak and on the floor these are known
   // (sin(phi_m) = 2 s k, cos(phi_m) = cm; beta/c and 1/c), elsewhere one sincos
   struct Trig {
@@ -254,7 +254,7 @@ void Simulator<N, MaxN>::arc_extremes(double t0, double t1) requires(N == 0) {
 // the floor reaction's and the overturning moment's series on a series step of length h
 template <int N, int MaxN>
 void Simulator<N, MaxN>::reaction_polynomials(double h) requires(N == 0) {
-  series_.integ.reaction_series(dyn_.g_over_h(), series_.sp_fi.c.data(), series_.sp_fj.c.data(),
+  series_.integ.reaction_series(eq_.dyn.g_over_h(), series_.sp_fi.c.data(), series_.sp_fj.c.data(),
                                 series_.sp_moment.c.data());
   // the reaction's series is known to theta's power: its last two terms at h, doubled, stand for
   // the rest
@@ -278,7 +278,7 @@ void Simulator<N, MaxN>::series_extremes(double t0, double tau_end, bool event,
                                          bool& reaction) requires(N == 0) {
   if (!(tau_end > 0.0)) return;
   const Extremes& ex = res_.extremes;
-  const double mg = dyn_.mass() * dyn_.g(), mgh = mg * dyn_.height();
+  const double mg = eq_.dyn.mass() * eq_.dyn.g(), mgh = mg * eq_.dyn.height();
   double seen = -1.0;  // the last point observed here: quantities largest at one point share it
   auto at = [&](double tau) {
     if (tau == tau_end && !event) return;  // the step's end: the loop observes it
@@ -377,31 +377,31 @@ void Simulator<N, MaxN>::series_extremes(double t0, double tau_end, bool event,
 // each sample finds every crossing and the state jumps from sample to sample; an analytic motion
 // is checked at event_samples points per max_step.
 template <int N, int MaxN>
-bool Simulator<N, MaxN>::advance_still(double& t, State& x) requires(N == 0) {
+StepEnd Simulator<N, MaxN>::advance_still(double& t, State& x) requires(N == 0) {
   // each span checked counts as a step toward max_steps
-  if (!count_step(t)) return false;
+  if (!count_step(t)) return StepEnd::ended();
   double ta = t, tb = t;
   int samples = 1;
-  if (motion_.is_sampled()) {
+  if (eq_.motion.is_sampled()) {
     tb = scan_record(t);
-  } else if (t >= setup_.quiet_from) {
+  } else if (t >= eq_.quiet_from) {
     // the base acceleration is zero from here on (a pulse has ended): the body at rest stays so,
     // every guard constant and positive, so nothing can change any more
     tb = setup_.t_end;
   } else {
-    tb = std::min({setup_.t_end, motion_.next_breakpoint(t, cursor_.brk), t + opt_.max_step});
+    tb = std::min({setup_.t_end, eq_.motion.next_breakpoint(t, eq_.cursor.brk), t + opt_.max_step});
     samples = samples_;
   }
   auto& smp = points_.samples;
   smp[0] = s0_;
-  if (motion_.is_sampled() && scan_.from > ta) {
+  if (eq_.motion.is_sampled() && scan_.from > ta) {
     // the scan passed samples with no event on them: start from the last of them
     ta = scan_.from;
-    evaluate(ta, still_.x, smp[0]);
+    eq_.evaluate(ta, still_.x, smp[0]);
   }
   for (int k = 1; k <= samples; ++k) {
     const double tk = k == samples ? tb : ta + (tb - ta) * k / samples;
-    evaluate(tk, still_.x, smp[static_cast<std::size_t>(k)]);
+    eq_.evaluate(tk, still_.x, smp[static_cast<std::size_t>(k)]);
   }
   still_.t1 = tb;
   if (opt_.progress) opt_.progress->store(tb, std::memory_order_relaxed);
@@ -420,7 +420,7 @@ bool Simulator<N, MaxN>::advance_still(double& t, State& x) requires(N == 0) {
     std::array<double, kMaxSamples + 2> ts{}, fs{};
     GuardSample s;
     auto fj_at = [&](double tt) {
-      evaluate(tt, still_.x, s);
+      eq_.evaluate(tt, still_.x, s);
       return s.fj;
     };
     for (int p = 0; p < points; ++p) {
@@ -439,12 +439,12 @@ bool Simulator<N, MaxN>::advance_still(double& t, State& x) requires(N == 0) {
     t = tb;
     s0_ = smp[static_cast<std::size_t>(samples)];
     release_latches(s0_);
-    return true;
+    return StepEnd::stepped();
   }
   emit_rows_until(t_hit);
   t = t_hit;
   x = still_.x;
-  return fire(slot_hit, t, x);
+  return StepEnd::guard(slot_hit);
 }
 
 // walks the record's samples after t while every guard stays positive there, folding their
@@ -452,13 +452,13 @@ bool Simulator<N, MaxN>::advance_still(double& t, State& x) requires(N == 0) {
 // sample where some guard is <= 0), or the end time. scan_.from is the span's start.
 template <int N, int MaxN>
 double Simulator<N, MaxN>::scan_record(double t) requires(N == 0) {
-  const std::vector<double>& ts = motion_.times();
-  const std::vector<double>& hx = motion_.horizontal();
-  const std::vector<double>& vy = motion_.vertical();
+  const std::vector<double>& ts = eq_.motion.times();
+  const std::vector<double>& hx = eq_.motion.horizontal();
+  const std::vector<double>& vy = eq_.motion.vertical();
   const bool vertical = vy.size() == ts.size();
-  const double g = dyn_.g();
-  const double a1 = dyn_.alpha1(), a2 = dyn_.alpha2();
-  const double fc = opt_.friction_coefficient;
+  const double g = eq_.dyn.g();
+  const double a1 = eq_.dyn.alpha1(), a2 = eq_.dyn.alpha2();
+  const double fc = eq_.mu_s;
   const bool friction = std::isfinite(fc);
   std::size_t i = scan_.index;
   while (i > 0 && ts[i - 1] > t) --i;
@@ -477,9 +477,9 @@ double Simulator<N, MaxN>::scan_record(double t) requires(N == 0) {
   }
   scan_.index = i;
   Extremes& ex = res_.extremes;
-  const double mg = dyn_.mass() * g;
+  const double mg = eq_.dyn.mass() * g;
   ex.max_base_shear = std::max(ex.max_base_shear, mg * shear);
-  ex.max_overturning_moment = std::max(ex.max_overturning_moment, mg * dyn_.height() * shear);
+  ex.max_overturning_moment = std::max(ex.max_overturning_moment, mg * eq_.dyn.height() * shear);
   ex.max_friction_demand = std::max(ex.max_friction_demand, demand);
   return i < ts.size() ? std::min(ts[i], setup_.t_end) : setup_.t_end;
 }

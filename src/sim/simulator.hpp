@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// The event loop as a hybrid automaton: each contact mode's equations of motion and guard
-// functions, the reset maps between modes, and the loop that integrates the current mode, locates
-// the earliest guard crossing and applies its reset. Which modes exist and which guard leads where
-// is the table in automaton.hpp (docs/theory.md, "Contact modes and transitions"); event location
-// and recording are ordinary code (event_location.cpp, recorder.cpp). This file holds the loop's
-// class; its members are defined in the parts included at the end: the modes' equations, guards
-// and observation (mode_equations.hpp), the loop and its dispatch to the steppers (event_loop.hpp,
+// The event loop as a hybrid automaton: the loop integrates the current contact mode, locates the
+// earliest guard crossing and applies its reset. Which modes exist and which guard leads where is
+// the table in automaton.hpp (docs/theory.md, "Contact modes and transitions"); the modes'
+// equations, guards and observation are one unit, ModeEquations (mode_equations.hpp), which every
+// stepper calls; event location and recording are ordinary code (event_location.cpp,
+// recorder.cpp). This file holds the loop's class; its members are defined in the parts included
+// at the end: the loop, its dispatch to the steppers and its outputs (event_loop.hpp,
 // steppers.hpp), a rigid body's steppers (rigid_steppers.hpp), a flexible body's record walk
 // (record_walk.hpp) and the resets (resets.hpp). Internal header; the entry points are
 // instantiated in simulator_n*.cpp.
@@ -35,6 +35,7 @@
 #include "flexrock/sim/simulate.hpp"
 #include "flexrock/sim/step_cost.hpp"
 #include "free_rocking_arc.hpp"
+#include "mode_equations.hpp"
 #include "recorder.hpp"
 #include "rocking_series.hpp"
 #include "series_guards.hpp"
@@ -68,37 +69,16 @@ inline constexpr double kTensileRounding = 1e-12;
 template <int N, int MaxN>
 class Simulator final : private GuardProbe {
  public:
-  static constexpr int S = N == Eigen::Dynamic ? Eigen::Dynamic : 2 * N + 11;
-  static constexpr int MaxS = MaxN == Eigen::Dynamic ? Eigen::Dynamic : 2 * MaxN + 11;
-  static constexpr int SC = N == Eigen::Dynamic ? Eigen::Dynamic : 2 * N + 4;
-  static constexpr int MaxSC = MaxN == Eigen::Dynamic ? Eigen::Dynamic : 2 * MaxN + 4;
-  static constexpr int SF = N == Eigen::Dynamic ? Eigen::Dynamic : 2 * N + 8;
-  static constexpr int MaxSF = MaxN == Eigen::Dynamic ? Eigen::Dynamic : 2 * MaxN + 8;
-  static constexpr int SL = N == Eigen::Dynamic ? Eigen::Dynamic : 2 * N + 7;
-  static constexpr int MaxSL = MaxN == Eigen::Dynamic ? Eigen::Dynamic : 2 * MaxN + 7;
-  using Dyn = Dynamics<N, MaxN>;
-  using Vec = typename Dyn::Vec;
-  using Mat = typename Dyn::Mat;
-  // theta, q[n], theta_dot, q_dot[n], input work, damping loss, then the flight coordinates x_c,
-  // y_c, xc_dot, yc_dot of the c.g. relative to the base (in flight only), then the slip d, d_dot
-  // of the base and the friction work (theory §18; d and d_dot meaningful while sliding)
-  using State = Eigen::Matrix<double, S, 1, Eigen::ColMajor, MaxS, 1>;
-  // the first 2n + 4 entries of State, which is all the contact modes integrate: a rocking step
-  // on it costs markedly less than on the whole State
-  using ContactState = Eigen::Matrix<double, SC, 1, Eigen::ColMajor, MaxSC, 1>;
-  // the first 2n + 8 entries of State: what flight integrates (the slip's entries mean nothing
-  // there, and a flight step on them alone costs less)
-  using FlightState = Eigen::Matrix<double, SF, 1, Eigen::ColMajor, MaxSF, 1>;
-  // what the sliding modes integrate: the first 2n + 4 entries of State, then d, d_dot and the
-  // friction work
-  using SlideState = Eigen::Matrix<double, SL, 1, Eigen::ColMajor, MaxSL, 1>;
-  // slot of guard G in mode M's list (the automaton table), as a compile-time constant
+  using Eq = ModeEquations<N, MaxN>;
+  using Dyn = typename Eq::Dyn;
+  using Vec = typename Eq::Vec;
+  using Mat = typename Eq::Mat;
+  using State = typename Eq::State;
+  using ContactState = typename Eq::ContactState;
+  using FlightState = typename Eq::FlightState;
+  using SlideState = typename Eq::SlideState;
   template <ContactMode M, Guard G>
-  static constexpr std::size_t kSlot = [] {
-    constexpr int j = guard_slot(M, G);
-    static_assert(j >= 0, "the mode does not watch this guard");
-    return static_cast<std::size_t>(j);
-  }();
+  static constexpr std::size_t kSlot = Eq::template kSlot<M, G>;
 
   Simulator(const Body& body, const GroundMotion& motion, const SimulationOptions& opt);
   SimulationResult run(const InitialState& init);
@@ -118,71 +98,27 @@ class Simulator final : private GuardProbe {
   template <class, int>
   friend struct OdeStepper;
 
-  // ---- state layout
-  int iq() const { return 1; }
-  int ithd() const { return n_ + 1; }
-  int iqd() const { return n_ + 2; }
-  int iw() const { return 2 * n_ + 2; }
-  int id() const { return 2 * n_ + 3; }
-  int ixc() const { return 2 * n_ + 4; }   // x_c, y_c, then their rates
-  int isd() const { return 2 * n_ + 8; }   // d [m]: the base's slip along I
-  int isv() const { return 2 * n_ + 9; }   // d_dot [m/s]
-  int ifr() const { return 2 * n_ + 10; }  // friction work while sliding [J]
-  // the same three in a SlideState, after its first 2n + 4 entries
-  int jsd() const { return 2 * n_ + 4; }
-  // the current mode's pivot and slip (the automaton table)
-  int edge() const { return mode_spec(mode_).pivot == 2 ? 2 : 1; }
-  bool rocking() const { return mode_spec(mode_).pivot > 0; }
-  bool full_contact() const { return mode_spec(mode_).pivot == 0; }
-  bool flying() const { return mode_ == ContactMode::kFlight; }
-  int slip() const { return mode_spec(mode_).slip; }
-  bool sliding() const { return mode_spec(mode_).slip != 0; }
-  template <class X>
-  Eigen::Vector2d cg_velocity(const X& x) const {
-    return {x(ixc() + 2), x(ixc() + 3)};
-  }
-
-  template <class X>
-  void unpack(const X& x) {
-    scratch_.q = x.segment(iq(), n_);
-    scratch_.qd = x.segment(iqd(), n_);
-  }
-  // a stepper's state into a State: contact and flight states are its head; a slide state is its
-  // head of 2n + 4 and the slip's three entries
+  // ---- state layout and the current mode (the equations')
+  int iq() const { return eq_.iq(); }
+  int ithd() const { return eq_.ithd(); }
+  int iqd() const { return eq_.iqd(); }
+  int iw() const { return eq_.iw(); }
+  int id() const { return eq_.id(); }
+  int ixc() const { return eq_.ixc(); }
+  int isd() const { return eq_.isd(); }
+  int isv() const { return eq_.isv(); }
+  int ifr() const { return eq_.ifr(); }
+  int edge() const { return eq_.edge(); }
+  bool rocking() const { return eq_.rocking(); }
+  bool full_contact() const { return eq_.full_contact(); }
+  bool flying() const { return eq_.flying(); }
+  int slip() const { return eq_.slip(); }
+  bool sliding() const { return eq_.sliding(); }
   template <class X>
   void put(const X& from, State& to) const {
-    if constexpr (X::RowsAtCompileTime != Eigen::Dynamic) {
-      if constexpr (X::RowsAtCompileTime == SL) {
-        to.template head<SC>() = from.template head<SC>();
-        to.template segment<3>(isd()) = from.template tail<3>();
-      } else {
-        to.template head<X::RowsAtCompileTime>() = from;
-      }
-    } else if (from.size() == 2 * n_ + 7) {
-      to.head(2 * n_ + 4) = from.head(2 * n_ + 4);
-      to.segment(isd(), 3) = from.tail(3);
-    } else {
-      to.head(from.size()) = from;
-    }
+    eq_.put(from, to);
   }
 
-  // ---- equations of motion: full contact and rocking, and flight
-  void contact_rhs(double t, const ContactState& x, ContactState& dx);
-  void flight_rhs(double t, const FlightState& x, FlightState& dx);
-  void slide_rhs(double t, const SlideState& x, SlideState& dx);
-  // d_ddot [m/s^2] of the current sliding mode at (scratch_.q, scratch_.qd), with theta_ddot,
-  // q_ddot (in scratch_.qdd) and the reaction over M g; a' = a + d_ddot I is the sliding frame's
-  // acceleration (theory §18)
-  double slide_acceleration(double sn, double cs, double theta_dot, BaseAcceleration a,
-                            double& theta_ddot, Eigen::Vector2d& reaction);
-  // ---- guard functions of the current mode, in its slot order, with the floor reaction
-  void evaluate(double t, const State& x, GuardSample& s);
-  // the rocking modes' guard values from the state and the sample's F_J
-  void rocking_guards(int e, const State& x, GuardSample& s) const;
-  // evaluate() on the closed-form arc where sin(phi), cos(phi) are known (the peak, the floor):
-  // the reaction as the arc's function of phi, with no sincos of theta
-  void arc_sample(double t, const State& x, double sp, double cp, GuardSample& s) const
-      requires(N == 0);
   double guard_value(int slot, double t) override;
   double crossing(int slot, double tl, double tr, double gl, double gr) override;
 
@@ -208,26 +144,26 @@ class Simulator final : private GuardProbe {
   template <class Ode>
   void start_ode(Ode& ode, double t, const State& x);
   template <class Ode>
-  bool advance_ode(Ode& ode, double& t, State& x);
+  StepEnd advance_ode(Ode& ode, double& t, State& x);
   template <class Ode>
   auto ode_rhs(Ode& ode);
-  bool advance_rocking(double& t, State& x);
-  bool advance_exact(double& t, State& x) requires(N != 0);
-  bool advance_series_step(double& t, State& x) requires(N == 0);
+  StepEnd advance_rocking(double& t, State& x);
+  StepEnd advance_exact(double& t, State& x) requires(N != 0);
+  StepEnd advance_series_step(double& t, State& x) requires(N == 0);
   // `buf`: scratch for the stepper's dense output (a vector of the stepper's state)
   template <class Stepper, class System, class Buffer>
-  bool advance_with(Stepper& integ, System&& sys, Buffer& buf, double& t, State& x);
+  StepEnd advance_with(Stepper& integ, System&& sys, Buffer& buf, double& t, State& x);
   template <class Stepper, class System>
-  bool end_step(Stepper& integ, System&& sys, int slot_hit, double t_hit, const GuardSample& s_end,
-                double& t, State& x);
-  bool advance_still(double& t, State& x) requires(N == 0);
+  StepEnd end_step(Stepper& integ, System&& sys, int slot_hit, double t_hit,
+                   const GuardSample& s_end, double& t, State& x);
+  StepEnd advance_still(double& t, State& x) requires(N == 0);
   // a rigid body's rocking by its series with the guards bounded over the whole step
   bool series_bounded() const requires(N == 0);
-  bool advance_series(double& t, State& x) requires(N == 0);
+  StepEnd advance_series(double& t, State& x) requires(N == 0);
   // a rigid body rocking freely on a floor at rest, by its closed form (arc_): true where it
   // applies at (t, x) and the arc has started
   bool start_arc(double t, const ContactState& x) requires(N == 0);
-  bool advance_arc(double& t, State& x) requires(N == 0);
+  StepEnd advance_arc(double& t, State& x) requires(N == 0);
   // the shear's, the moment's and the friction demand's extremes over the arc's last step
   void arc_extremes(double t0, double t1) requires(N == 0);
   // the series' reaction polynomials series_.sp_fi, series_.sp_fj, series_.sp_moment on a step of
@@ -288,7 +224,7 @@ class Simulator final : private GuardProbe {
   // `momentum` [N s]: M (|v_c| before + after), the scale of the impulse's rounding
   bool after_impulse(double t, const Event& ev, double th, double momentum);
   bool start_slip(double t, State& x);
-  // an uplift onto e from sticking full contact at t (state in scratch_.q, scratch_.qd) has a
+  // an uplift onto e from sticking full contact at t (state in the equations' scratch) has a
   // continuation: the pivot's friction holds, or with the pivot sliding the body still turns up
   // (theory §20)
   bool uplift_holds(double t, int e);
@@ -308,7 +244,7 @@ class Simulator final : private GuardProbe {
   // after a step with no event: a pressing floor ends the pivot-tension hold
   void release_latches(const GuardSample& s) {
     latch_.hold_tension = false;
-    const int lift = guard_slot(mode_, Guard::kLiftOff);
+    const int lift = guard_slot(eq_.mode, Guard::kLiftOff);
     if (lift >= 0 && s.v[static_cast<std::size_t>(lift)] > 0.0) latch_.tension = false;
   }
   // an event at t on edge `e` (0: none) with the base centre's offset in contact
@@ -322,19 +258,15 @@ class Simulator final : private GuardProbe {
   }
 
   // ---- outputs
-  Observation observation(double t, const State& x, const GuardSample& s);
-  void flight_heights(const State& x, Observation& o);  // the tipping points' heights, offset
-  double kinetic_energy(const State& x);
-  double potential_energy(const State& x);
-  double offset_of(const State& x);
+  double offset_of(const State& x) { return eq_.offset_of(x, ledger_.offset); }
   void observe(const GuardSample& s, const State& x) {
-    rec_.observe(observation(s.t, x, s));
+    rec_.observe(eq_.observation(s.t, x, s, ledger_.offset));
     if (s.fj < 0.0 && latch_.tension) fold_pull(s.fj);
   }
   // the floor pulls on a held pivot (F_J over M g, < 0): into the run's largest pull and the
   // episode's pivot_tension event
   void fold_pull(double fj) {
-    const double f = fj * dyn_.mass() * dyn_.g();
+    const double f = fj * eq_.dyn.mass() * eq_.dyn.g();
     res_.extremes.max_pivot_pull = std::max(res_.extremes.max_pivot_pull, -f);
     if (latch_.tension_event >= 0) {
       Event& ev = res_.events[static_cast<std::size_t>(latch_.tension_event)];
@@ -347,7 +279,7 @@ class Simulator final : private GuardProbe {
   void observe_at(double t) {
     GuardSample s;
     state_at(t, scratch_.xr);
-    evaluate(t, scratch_.xr, s);
+    eq_.evaluate(t, scratch_.xr, s);
     observe(s, scratch_.xr);
   }
   void emit_rows_until(double t_cut);
@@ -355,21 +287,18 @@ class Simulator final : private GuardProbe {
   void finish(double t, const State& x);
 
   // the body in its pinned-base modal coordinates q, which the state carries; the deformation
-  // it reports is the given body's, u = to_user_ q (docs/theory.md, "Modal coordinates")
+  // it reports is the given body's, u = Phi q (docs/theory.md, "Modal coordinates")
   const Body body_;
-  Mat to_user_, from_user_;  // Phi and Phi^-1 = Phi^T mu
-  Dyn dyn_;
-  const GroundMotion& motion_;
+  Mat from_user_;  // Phi^-1 = Phi^T mu
+  // the modes' equations, guards and observation, and the current mode: every stepper's one way
+  // to them
+  Eq eq_;
   SimulationOptions opt_;
   int n_;
   StepControl ctl_;
   int samples_ = 4;
-  // rocking, and full contact when not stepped exactly: DOPRI5, and the Rosenbrock method while a
-  // flexible body's stiffest rocking motion would hold the explicit step (theory, "Stiff rocking")
-  mutable ContactState dense_buf_;
   SimulationResult res_;
   Recorder rec_;
-  ContactMode mode_ = ContactMode::kFullContact;
   // what steps the current mode's motion, chosen once in enter_mode (steppers.hpp): a loop holds
   // the steppers its body size can run, and no other
   using Rocking = RockingStepper<ContactState>;
@@ -401,16 +330,8 @@ class Simulator final : private GuardProbe {
   }
   [[gnu::always_inline]] inline ActiveStepper choose_stepper();  // see start_series
   double stepped_until() const;  // [s] the end of the last step taken (of the still span)
-  // the motion's cursors: each reader of the base acceleration keeps its own place in the record
-  struct Cursors {
-    GroundMotion::Cursor rhs, event, brk;  // right-hand sides, guards, breakpoints
-  } cursor_;
-  // scratch of the equations and the observation (sized once)
   struct Scratch {
-    Vec q, qd, qdd;       // q, q_dot, q_ddot of the state being evaluated
-    Vec qdd1;             // q_ddot at a unit slip acceleration
-    mutable Vec qu, qdu;  // u of the last observation, u_dot of the last history row
-    State xr;             // a state within the last step
+    State xr;  // a state within the last step (sized once)
   } scratch_;
   GuardSample s0_;  // the guards at the current step's start
   // the guards and states at a step's samples, and the step's observed points (its start, its
@@ -437,18 +358,13 @@ class Simulator final : private GuardProbe {
   double step_stop_ = std::numeric_limits<double>::infinity();
   // what the run derives once from the body, the options and the motion
   struct Setup {
-    std::array<double, 2> overturn_limit{};  // [rad] on edge 1 (theta > 0) and edge 2
-    ImpactRule rule;                         // the impact law and its parameters
-    double mu_s = 0.0, mu_k = 0.0;  // static and kinetic friction coefficients (inf: no limit)
+    ImpactRule rule;                // the impact law and its parameters
     double chatter_interval = 0.0;  // [s]
-    double base_width = 0.0;        // [m] b1 + b2
     double t_end = 0.0;             // [s]
-    double quiet_from = 0.0;        // the base acceleration is zero after this [s]
   } setup_;
   // the latches: what a mode's entry or a reset leaves for the steps after it
   struct Latches {
     std::array<bool, kMaxGuards> zero_start{};  // guards known to turn positive from zero
-    bool slide_inconsistent = false;  // a sliding mode had no consistent slip acceleration
     bool tension = false;     // the floor pulls (pivot_tension): lift-off disarmed until it presses
     long tension_event = -1;  // the index of the episode's pivot_tension event (-1: none)
     // after a grazing landing with friction the floor is let pull through the modes entered at
@@ -479,47 +395,37 @@ template <int N, int MaxN>
 Simulator<N, MaxN>::Simulator(const Body& body, const GroundMotion& motion,
                               const SimulationOptions& opt)
     : body_(body.in_modal_coordinates()),
-      to_user_(body.pinned_base_modes()),
       from_user_(body.pinned_base_modes().transpose() * body.params().mu),
-      dyn_(body_),
-      motion_(motion),
+      eq_(body_, body, motion, opt),
       opt_(opt),
       n_(body.modes()),
       samples_(std::clamp(opt.event_samples, 1, kMaxSamples)),
       rec_(res_, body.params().mass, body.g(), body.params().height, body.modes()),
       series_(motion),
-      exact_(dyn_, motion, samples_, opt.max_step, opt.methods.exact_full_contact) {
-  scratch_.qu.resize(n_);
-  scratch_.qdu.resize(n_);
-  scratch_.q.resize(n_);
-  scratch_.qd.resize(n_);
-  scratch_.qdd.resize(n_);
-  scratch_.qdd1.resize(n_);
+      exact_(eq_.dyn, motion, samples_, opt.max_step, opt.methods.exact_full_contact) {
   setup_.rule.law = opt.impact_law;
   setup_.rule.restitution_factor = opt.restitution_factor;
   setup_.rule.ratio_edge1 = opt.restitution_ratio_edge1;
   setup_.rule.ratio_edge2 = opt.restitution_ratio_edge2;
-  setup_.mu_s = opt.friction_coefficient;
-  setup_.mu_k = std::min(opt.kinetic_friction_coefficient, opt.friction_coefficient);
   // shortest period among the pinned-base modes and the rigid rocking motion
   double shortest = 2.0 * std::numbers::pi / body.rocking_frequency();
   if (n_ > 0)
     shortest = std::min(shortest, 2.0 * std::numbers::pi / body.natural_frequencies().maxCoeff());
   setup_.chatter_interval = opt.chatter_ratio * shortest;
-  setup_.base_width = body.params().b1 + body.params().b2;
-  const bool half_pi = opt.overturn == OverturnCriterion::kHalfPi;
-  setup_.overturn_limit[0] = half_pi ? 0.5 * std::numbers::pi : body.tipping_angle(1);
-  setup_.overturn_limit[1] = half_pi ? 0.5 * std::numbers::pi : body.tipping_angle(2);
   ctl_.rtol = opt.rtol;
   ctl_.atol = opt.atol;
   ctl_.max_step = opt.max_step;
   for (State& xk : points_.states) xk.setZero(2 * n_ + 11);
-  dense_buf_.setZero(2 * n_ + 4);
+  rocking_.buf.setZero(2 * n_ + 4);
+  if constexpr (N == 0) {
+    series_.buf.setZero(2 * n_ + 4);
+    arc_.buf.setZero(2 * n_ + 4);
+  }
   slide_.buf.setZero(2 * n_ + 7);
   scratch_.xr.setZero(2 * n_ + 11);  // written through put(): sized once, as on the heap path
   flight_.buf.setZero(2 * n_ + 8);
   if constexpr (N != 0) {
-    exact_.prop.output_basis(to_user_);
+    exact_.prop.output_basis(eq_.to_user);
     exact_.ua.resize(n_);
     exact_.ub.resize(n_);
     for (Vec& v : exact_.qjet) v.setZero(n_);
@@ -544,14 +450,13 @@ SimulationResult Simulator<N, MaxN>::run(const InitialState& init) {
       init.q.size() == n_ ? Vec(from_user_ * init.q) : Vec(body_.static_deformation());
   if (init.q_dot.size() == n_) x.segment(iqd(), n_) = from_user_ * init.q_dot;
   if (init.theta > 0.0 || (init.theta == 0.0 && init.theta_dot > 0.0)) {
-    mode_ = ContactMode::kRockingEdge1;
+    eq_.mode = ContactMode::kRockingEdge1;
   } else if (init.theta < 0.0 || init.theta_dot < 0.0) {
-    mode_ = ContactMode::kRockingEdge2;
+    eq_.mode = ContactMode::kRockingEdge2;
   }
-  setup_.t_end = opt_.t_end >= 0.0 ? opt_.t_end : motion_.duration();
-  setup_.quiet_from = motion_.quiet_from();
-  ledger_.energy0 = kinetic_energy(x) + potential_energy(x);
-  ledger_.kinetic0 = kinetic_energy(x);
+  setup_.t_end = opt_.t_end >= 0.0 ? opt_.t_end : eq_.motion.duration();
+  ledger_.energy0 = eq_.kinetic_energy(x) + eq_.potential_energy(x);
+  ledger_.kinetic0 = eq_.kinetic_energy(x);
   ledger_.last_contact_change = -std::numeric_limits<double>::infinity();
 
   // a rocking run records two events an impact (the impact, the next peak): room for the first
@@ -574,7 +479,6 @@ SimulationResult Simulator<N, MaxN>::run(const InitialState& init) {
 
 // the members, by part
 #include "event_loop.hpp"      // IWYU pragma: keep
-#include "mode_equations.hpp"  // IWYU pragma: keep
 #include "record_walk.hpp"     // IWYU pragma: keep
 #include "resets.hpp"          // IWYU pragma: keep
 #include "rigid_steppers.hpp"  // IWYU pragma: keep

@@ -21,20 +21,38 @@
 
 namespace flexrock::detail {
 
+// where and why a stepper stopped: at the end of a step with the run going on (kStepped), at a
+// resetting guard's crossing (kGuard: the loop applies the reset of mode_spec(mode).guards[slot];
+// a stepper never fires one), or where the run ends (kEnded: the step limit, a collapsed step, an
+// inconsistent slide, the status says which). The time and state it stopped at are advance()'s t
+// and x.
+struct StepEnd {
+  enum class Why : unsigned char { kStepped, kGuard, kEnded };
+  Why why = Why::kStepped;
+  int slot = -1;  // the guard's slot in the mode's list (kGuard)
+  static StepEnd stepped() { return {}; }
+  static StepEnd guard(int slot) { return {Why::kGuard, slot}; }
+  static StepEnd ended() { return {Why::kEnded, -1}; }
+  // from a step that either went on (true) or ended the run (false)
+  static StepEnd ran(bool running) { return running ? stepped() : ended(); }
+};
+
 // What the loop asks of a stepper (the loop is the step context: the mode's equations and guards,
 // the recorder, the options, the end time):
-//   start(loop, t, x)           take the current mode's motion from the state x at t
-//   advance(loop, t, x) -> bool one step and whatever happens in it (a guard that fires resets
-//                               the mode); false when the run ends
-//   stepped_until() -> double   [s] the end of the last step taken
-//   state_at(loop, t, out)      the state at t within the last step
-template <class S, class Loop, class State>
-concept LoopStepper = requires(S& s, const S& cs, Loop& loop, const Loop& cloop, double& t,
-                               double tt, State& x) {
+//   start(loop, t, x)              take the current mode's motion from the state x at t
+//   advance(loop, t, x) -> StepEnd advance toward the next stop time (the step's end, the end
+//                                  time, the motion's next breakpoint) and return where (t, x) and
+//                                  why it stopped: a guard that crossed is returned, not reset
+//   stepped_until() -> double      [s] the end of the last step taken
+//   state_at(eq, t, out)           the state at t within the last step, from the stepper's own
+//                                  dense output and the equations' state layout (ModeEquations)
+template <class S, class Loop, class Eq, class State>
+concept LoopStepper = requires(S& s, const S& cs, Loop& loop, const Eq& eq, double& t, double tt,
+                               State& x) {
   { s.start(loop, tt, x) } -> std::same_as<void>;
-  { s.advance(loop, t, x) } -> std::same_as<bool>;
+  { s.advance(loop, t, x) } -> std::same_as<StepEnd>;
   { cs.stepped_until() } -> std::same_as<double>;
-  { cs.state_at(cloop, tt, x) } -> std::same_as<void>;
+  { cs.state_at(eq, tt, x) } -> std::same_as<void>;
 };
 
 // a stepper a loop of this body size never runs: nothing, whatever it is built from
@@ -56,12 +74,12 @@ struct StillStepper {
     t1 = t;
   }
   template <class Loop>
-  bool advance(Loop& loop, double& t, State& s) {
+  StepEnd advance(Loop& loop, double& t, State& s) {
     return loop.advance_still(t, s);
   }
   double stepped_until() const { return t1; }
-  template <class Loop>
-  void state_at(const Loop&, double, State& out) const {
+  template <class Eq>
+  void state_at(const Eq&, double, State& out) const {
     out = x;
   }
 };
@@ -88,12 +106,12 @@ struct ExactStepper {
     prop.start(t, x);
   }
   template <class Loop>
-  bool advance(Loop& loop, double& t, State& x) {
+  StepEnd advance(Loop& loop, double& t, State& x) {
     return loop.advance_exact(t, x);
   }
   double stepped_until() const { return prop.t1(); }
-  template <class Loop>
-  void state_at(const Loop&, double t, State& out) const {
+  template <class Eq>
+  void state_at(const Eq&, double t, State& out) const {
     prop.dense(t, out);
   }
 };
@@ -104,20 +122,21 @@ template <class ContactState>
 struct SeriesStepper {
   explicit SeriesStepper(const GroundMotion& motion) : integ(motion) {}
   RockingSeries<ContactState> integ;
+  mutable ContactState buf;  // the series' start, and scratch for the dense output
   StepPolynomial sp_impact, sp_overturn, sp_peak, sp_fi, sp_fj, sp_moment, sp_work;
   template <class Loop, class State>
   void start(Loop& loop, double t, State& x) {
     loop.start_series(t, x);
   }
   template <class Loop, class State>
-  bool advance(Loop& loop, double& t, State& x) {
+  StepEnd advance(Loop& loop, double& t, State& x) {
     return loop.advance_series_step(t, x);
   }
   double stepped_until() const { return integ.t1(); }
-  template <class Loop, class State>
-  void state_at(const Loop& loop, double t, State& out) const {
-    integ.dense(t, loop.dense_buf_);
-    loop.put(loop.dense_buf_, out);
+  template <class Eq, class State>
+  void state_at(const Eq& eq, double t, State& out) const {
+    integ.dense(t, buf);
+    eq.put(buf, out);
   }
 };
 
@@ -125,17 +144,18 @@ struct SeriesStepper {
 template <class ContactState>
 struct ArcStepper {
   FreeRockingArc<ContactState> arc;
+  mutable ContactState buf;  // scratch for the dense output
   template <class Loop, class State>
   void start(Loop&, double, State&) {}  // started by the series, which found the floor at rest
   template <class Loop, class State>
-  bool advance(Loop& loop, double& t, State& x) {
+  StepEnd advance(Loop& loop, double& t, State& x) {
     return loop.advance_arc(t, x);
   }
   double stepped_until() const { return arc.t1(); }
-  template <class Loop, class State>
-  void state_at(const Loop& loop, double t, State& out) const {
-    arc.dense(t, loop.dense_buf_);
-    loop.put(loop.dense_buf_, out);
+  template <class Eq, class State>
+  void state_at(const Eq& eq, double t, State& out) const {
+    arc.dense(t, buf);
+    eq.put(buf, out);
   }
 };
 
@@ -144,20 +164,21 @@ struct ArcStepper {
 template <class ContactState>
 struct RockingStepper {
   StiffSwitching<ContactState> integ;
+  mutable ContactState buf;                    // the mode's start, and scratch for the dense output
   std::array<double, 2> h_stable{-1.0, -1.0};  // [s] per edge, once known (< 0: not yet)
   template <class Loop, class State>
   void start(Loop& loop, double t, State& x) {
     loop.start_rocking(t, x);
   }
   template <class Loop, class State>
-  bool advance(Loop& loop, double& t, State& x) {
+  StepEnd advance(Loop& loop, double& t, State& x) {
     return loop.advance_rocking(t, x);
   }
   double stepped_until() const { return integ.t1(); }
-  template <class Loop, class State>
-  void state_at(const Loop& loop, double t, State& out) const {
-    integ.dense(t, loop.dense_buf_);
-    loop.put(loop.dense_buf_, out);
+  template <class Eq, class State>
+  void state_at(const Eq& eq, double t, State& out) const {
+    integ.dense(t, buf);
+    eq.put(buf, out);
   }
 };
 
@@ -171,14 +192,14 @@ struct OdeStepper {
     loop.start_ode(*this, t, x);
   }
   template <class Loop, class State>
-  bool advance(Loop& loop, double& t, State& x) {
+  StepEnd advance(Loop& loop, double& t, State& x) {
     return loop.advance_ode(*this, t, x);
   }
   double stepped_until() const { return integ.t1(); }
-  template <class Loop, class State>
-  void state_at(const Loop& loop, double t, State& out) const {
+  template <class Eq, class State>
+  void state_at(const Eq& eq, double t, State& out) const {
     integ.dense(t, buf);
-    loop.put(buf, out);
+    eq.put(buf, out);
   }
 };
 
