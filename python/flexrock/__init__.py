@@ -745,6 +745,10 @@ def run_case(path: str, output_dir: Optional[str] = "") -> Result:
     return r
 
 
+from .response_spectra import response_spectrum  # noqa: E402
+
+__all__ += ["response_spectrum"]
+
 # the studies (spectrum, sweep, fragility): built in when the library provides them
 if hasattr(_flexrock, "compute_spectrum"):
     from .studies import *  # noqa: F401,F403,E402

@@ -37,6 +37,7 @@ __all__ = [
     "read_spectrum",
     "fragility_curve",
     "ida_curves",
+    "response_spectrum",
     "save",
 ]
 
@@ -935,6 +936,51 @@ def ida_curves(
         what = f"no overturning in the sweep ({n_records} records)"
     ax.set_title(f"{body}: IDA, {what}", fontsize="medium")
     ax.legend(loc="lower right", fontsize="small")
+    return ax
+
+
+# --- elastic response spectra -------------------------------------------------------------------
+
+
+def response_spectrum(spectrum: dict, *, logx: bool = True, figsize=(6, 4.5), ax=None, fig: Optional[Figure] = None):
+    """An elastic response spectrum: pseudo-spectral acceleration against period.
+
+    Parameters
+    ----------
+    spectrum : dict
+        What :func:`flexrock.response_spectrum` returns: ``period_s`` and ``sa`` (``gid`` "sa"),
+        for a pair also ``sa_h2``, ``rotd50`` and ``rotd100`` (``gid`` the same names).
+    logx : bool
+        A logarithmic period axis (default).
+    figsize, ax, fig
+        As for :func:`moment_rotation_loop`.
+
+    Returns
+    -------
+    matplotlib.axes.Axes
+    """
+    ax = _axes(ax, fig, figsize)
+    t = np.asarray(spectrum["period_s"], dtype=float)
+    pair = "rotd50" in spectrum
+    styles = (
+        ("sa", "H1" if pair else "Sa", dict(lw=0.9, color="tab:blue")),
+        ("sa_h2", "H2", dict(lw=0.9, color="tab:orange")),
+        ("rotd50", "RotD50", dict(lw=1.6, color="k")),
+        ("rotd100", "RotD100", dict(lw=1.2, color="k", ls="--")),
+    )
+    for key, label, style in styles:
+        if key in spectrum:
+            ax.plot(t, np.asarray(spectrum[key], dtype=float), label=label, gid=key, **style)
+    if logx:
+        ax.set_xscale("log")
+    unit = spectrum.get("units", "m/s^2")
+    zeta = spectrum.get("zeta", 0.05)
+    ax.set_xlabel("period [s]")
+    ax.set_ylabel(f"Sa [{_pretty_unit(unit)}]")
+    ax.set_title(f"elastic response spectrum, {100 * zeta:g} % damping", fontsize="medium")
+    ax.grid(True, which="both", alpha=0.3)
+    if pair:
+        ax.legend(loc="upper right", fontsize="small")
     return ax
 
 
