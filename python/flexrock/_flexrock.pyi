@@ -1231,7 +1231,7 @@ class SpectrumSession:
     def journal_path(self) -> str: ...
     @property
     def resumed(self) -> int: ...
-    def run(self, threads: int = ...) -> None:
+    def run(self, threads: int = ..., *, progress: object = ..., callback: Optional[object] = ...) -> None:
         """Runs the cells and bisections left, journaling each as it finishes (the GIL is
         released). Ctrl-C stops it between runs and raises KeyboardInterrupt; the journal keeps every
         finished cell and boundary and run() again, or a new session on the same file and outputs, goes
@@ -1241,6 +1241,13 @@ class SpectrumSession:
         ----------
         threads : int
             0: every core.
+        progress : bool
+            A progress bar on stderr while it runs longer than a second (tqdm where it is installed,
+            a plain line otherwise); False: none.
+        callback : callable, optional
+            Called as callback(done, total) (cells left at the start; a bisection's runs come on top) on the calling thread while the runs go (every 20 ms at
+            most, when the count moved) and once at the end: for a notebook's own display. An
+            exception it raises stops the runs between two, as Ctrl-C does, and is raised here.
         """
     @property
     def runs(self) -> int: ...
@@ -1346,7 +1353,7 @@ class SweepSession:
     def remaining(self) -> int: ...
     @property
     def resumed(self) -> int: ...
-    def run(self, threads: int = ...) -> None:
+    def run(self, threads: int = ..., *, progress: object = ..., callback: Optional[object] = ...) -> None:
         """Runs the runs left, journaling each as it finishes (the GIL is released).
         Ctrl-C stops it between runs and raises KeyboardInterrupt; the journal keeps every finished run
         and run() again, or a new session on the same manifest and output, goes on from there. Raises
@@ -1356,6 +1363,13 @@ class SweepSession:
         ----------
         threads : int
             0: every core.
+        progress : bool
+            A progress bar on stderr while it runs longer than a second (tqdm where it is installed,
+            a plain line otherwise); False: none.
+        callback : callable, optional
+            Called as callback(done, total) (the runs left at the start) on the calling thread while the runs go (every 20 ms at
+            most, when the count moved) and once at the end: for a notebook's own display. An
+            exception it raises stops the runs between two, as Ctrl-C does, and is raised here.
         """
     @property
     def runs(self) -> int: ...
@@ -1517,7 +1531,7 @@ def combine(horizontal: Record, vertical: Optional[Record] = ..., scale: float =
         Accelerations in m/s^2.
     """
 
-def compute_record_spectrum(body: Body, spec: RecordSpectrumSpec, threads: int = ...) -> SpectrumResult:
+def compute_record_spectrum(body: Body, spec: RecordSpectrumSpec, threads: int = ..., *, progress: object = ..., callback: Optional[object] = ...) -> SpectrumResult:
     """One record times scale factors, and the minimum overturning scale.
 
     Parameters
@@ -1526,13 +1540,20 @@ def compute_record_spectrum(body: Body, spec: RecordSpectrumSpec, threads: int =
     spec : RecordSpectrumSpec
     threads : int
         0: every core.
+    progress : bool
+        A progress bar on stderr while it runs longer than a second (tqdm where it is installed,
+        a plain line otherwise); False: none.
+    callback : callable, optional
+        Called as callback(done, total) on the calling thread while the runs go (every 20 ms at
+        most, when the count moved) and once at the end: for a notebook's own display. An
+        exception it raises stops the runs between two, as Ctrl-C does, and is raised here.
 
     Returns
     -------
     SpectrumResult
     """
 
-def compute_spectrum(body: Body, spec: SpectrumSpec, threads: int = ...) -> SpectrumResult:
+def compute_spectrum(body: Body, spec: SpectrumSpec, threads: int = ..., *, progress: object = ..., callback: Optional[object] = ...) -> SpectrumResult:
     """Every cell of a pulse spectrum, then the minimum overturning amplitude of each column.
 
     Parameters
@@ -1542,6 +1563,13 @@ def compute_spectrum(body: Body, spec: SpectrumSpec, threads: int = ...) -> Spec
         Amplitudes and frequencies normalised (a_p/(g tan alpha), omega_p/p) or in m/s^2 and rad/s.
     threads : int
         0: every core. The GIL is released.
+    progress : bool
+        A progress bar on stderr while it runs longer than a second (tqdm where it is installed,
+        a plain line otherwise); False: none.
+    callback : callable, optional
+        Called as callback(done, total) on the calling thread while the cells go (every 20 ms at
+        most, when the count moved) and once at the end: for a notebook's own display. An
+        exception it raises stops the runs between two, as Ctrl-C does, and is raised here.
 
     Returns
     -------
@@ -2357,7 +2385,7 @@ def run_record_cell(body: Body, spec: RecordSpectrumSpec, scale: float) -> RunSu
     RunSummary
     """
 
-def run_sweep(spec: SweepSpec, indices: list[int] = ..., threads: int = ...) -> list[SweepRow]:
+def run_sweep(spec: SweepSpec, indices: list[int] = ..., threads: int = ..., *, progress: object = ..., callback: Optional[object] = ...) -> list[SweepRow]:
     """Runs a sweep (bodies x records x scales), or the given run indices.
 
     Parameters
@@ -2367,6 +2395,13 @@ def run_sweep(spec: SweepSpec, indices: list[int] = ..., threads: int = ...) -> 
         Empty: every run.
     threads : int
         0: every core. The GIL is released.
+    progress : bool
+        A progress bar on stderr while it runs longer than a second (tqdm where it is installed,
+        a plain line otherwise); False: none.
+    callback : callable, optional
+        Called as callback(done, total) on the calling thread while the runs go (every 20 ms at
+        most, when the count moved) and once at the end: for a notebook's own display. An
+        exception it raises stops the runs between two, as Ctrl-C does, and is raised here.
 
     Returns
     -------

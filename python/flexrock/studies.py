@@ -143,6 +143,8 @@ def spectrum(
     free_periods: float = 4.0,
     bisection_tolerance: float = 1e-3,
     threads: int = 0,
+    progress: bool = True,
+    callback=None,
     **solver,
 ) -> SpectrumResult:
     """The overturning spectrum of a body under a pulse family: amplitudes x frequencies.
@@ -176,6 +178,13 @@ def spectrum(
         [-] relative.
     threads : int
         0: every core. The GIL is released while it runs.
+    progress : bool
+        A progress bar on stderr once it runs longer than a second (tqdm where installed, a plain
+        line otherwise); False: none.
+    callback : callable, optional
+        ``callback(done, total)``, runs done of the runs to do, called on this thread while it
+        runs (every 20 ms at most, when the count moved) and once at the end: for a notebook's
+        own display. An exception it raises stops the runs, as Ctrl-C does, and is raised here.
     target_im : str, optional
         Stripes: each record scaled so that this measure ("sa:1", "sa:1:0.02", "pgv", "arias",
         ...) equals each of ``targets`` (in ``units`` for Sa, else the measure's SI unit), as a
@@ -226,7 +235,7 @@ def spectrum(
     spec.free_periods = free_periods
     spec.bisection_tolerance = bisection_tolerance
     spec.solver = _solver(solver)
-    result = compute_spectrum(b, spec, threads)
+    result = compute_spectrum(b, spec, threads, progress=progress, callback=callback)
     if a_unit is not None:
         result._flexrock_units = (a_unit, w_unit)
         result._flexrock_g = b.g
@@ -242,6 +251,8 @@ def record_spectrum(
     free_periods: float = 4.0,
     bisection_tolerance: float = 1e-3,
     threads: int = 0,
+    progress: bool = True,
+    callback=None,
     **solver,
 ) -> SpectrumResult:
     """One record times scale factors: the outcome at each and the minimum overturning scale.
@@ -261,6 +272,13 @@ def record_spectrum(
         [-] relative.
     threads : int
         0: every core.
+    progress : bool
+        A progress bar on stderr once it runs longer than a second (tqdm where installed, a plain
+        line otherwise); False: none.
+    callback : callable, optional
+        ``callback(done, total)``, runs done of the runs to do, called on this thread while it
+        runs (every 20 ms at most, when the count moved) and once at the end: for a notebook's
+        own display. An exception it raises stops the runs, as Ctrl-C does, and is raised here.
     **solver
         Solver options.
 
@@ -276,7 +294,8 @@ def record_spectrum(
     spec.free_periods = free_periods
     spec.bisection_tolerance = bisection_tolerance
     spec.solver = _solver(solver)
-    return compute_record_spectrum(_body(body), spec, threads)
+    return compute_record_spectrum(_body(body), spec, threads, progress=progress,
+                                   callback=callback)
 
 
 def _with_units(cols: dict, result, amplitude_columns, frequency_columns) -> dict:
@@ -407,6 +426,8 @@ def sweep(
     units: Optional[str] = None,
     free_periods: float = 2.0,
     threads: int = 0,
+    progress: bool = True,
+    callback=None,
     target_im: Optional[str] = None,
     targets: Optional[Sequence[float]] = None,
     measures: Sequence[str] = (),
@@ -438,6 +459,13 @@ def sweep(
         [-] free motion after each record, in rocking periods 2 pi/p.
     threads : int
         0: every core. The GIL is released while it runs.
+    progress : bool
+        A progress bar on stderr once it runs longer than a second (tqdm where installed, a plain
+        line otherwise); False: none.
+    callback : callable, optional
+        ``callback(done, total)``, runs done of the runs to do, called on this thread while it
+        runs (every 20 ms at most, when the count moved) and once at the end: for a notebook's
+        own display. An exception it raises stops the runs, as Ctrl-C does, and is raised here.
     uncertainty : Uncertainty, optional
         Parameters each run samples (a manifest's ``[[uncertain]]`` and ``[sampling]``); their
         values are columns after the intensity measures.
@@ -513,10 +541,11 @@ def sweep(
     spec.measures = [MeasureRequest(str(m)) for m in measures] + [
         MeasureRequest("sa", float(t), float(sa_damping)) for t in sa_periods
     ]
-    return sweep_arrays(spec, run_sweep(spec, [], threads))
+    return sweep_arrays(spec, run_sweep(spec, [], threads, progress=progress, callback=callback))
 
 
-def sweep_manifest(manifest, output=None, *, threads: int = 0) -> dict:
+def sweep_manifest(manifest, output=None, *, threads: int = 0, progress: bool = True,
+                   callback=None) -> dict:
     """Runs a sweep manifest to its CSV, as ``flexrock sweep MANIFEST -o OUTPUT`` does, through the
     same session: the runs finished so far are kept in the journal ``OUTPUT.partial``, and an
     interrupted sweep, whether the command line or Python started it, goes on from there. The
@@ -531,6 +560,14 @@ def sweep_manifest(manifest, output=None, *, threads: int = 0) -> dict:
         line's.
     threads : int
         0: every core. The GIL is released while the runs go.
+    progress : bool
+        A progress bar on stderr once it runs longer than a second (tqdm where installed, a plain
+        line otherwise); False: none.
+    callback : callable, optional
+        ``callback(done, total)``, runs done of the runs to do (those left at the start; a
+        resumed study counts only those), called on this thread while it
+        runs (every 20 ms at most, when the count moved) and once at the end: for a notebook's
+        own display. An exception it raises stops the runs, as Ctrl-C does, and is raised here.
 
     Returns
     -------
@@ -542,12 +579,12 @@ def sweep_manifest(manifest, output=None, *, threads: int = 0) -> dict:
     if output is None:
         output = os.path.splitext(os.path.basename(manifest))[0] + ".sweep.csv"
     session = SweepSession(load_sweep_manifest(manifest), os.fspath(output))
-    session.run(threads)
+    session.run(threads, progress=progress, callback=callback)
     return sweep_arrays(session.manifest.spec, session.finish())
 
 
 def spectrum_file(spec, output=None, boundary=None, *, threads: int = 0,
-                  bisect: bool = True) -> SpectrumResult:
+                  bisect: bool = True, progress: bool = True, callback=None) -> SpectrumResult:
     """Runs a spectrum file to its CSVs, as ``flexrock spectrum SPEC -o OUTPUT --boundary
     BOUNDARY`` does, through the same session: the cells and boundaries finished so far are kept
     in the journal ``OUTPUT.partial``, and an interrupted spectrum, whether the command line or
@@ -564,6 +601,14 @@ def spectrum_file(spec, output=None, boundary=None, *, threads: int = 0,
         ``x.spectrum.csv`` -> ``x.boundary.csv``.
     threads : int
         0: every core. The GIL is released while the runs go.
+    progress : bool
+        A progress bar on stderr once it runs longer than a second (tqdm where installed, a plain
+        line otherwise); False: none.
+    callback : callable, optional
+        ``callback(done, total)``, runs done of the runs to do (those left at the start; a
+        resumed study counts only those), called on this thread while it
+        runs (every 20 ms at most, when the count moved) and once at the end: for a notebook's
+        own display. An exception it raises stops the runs, as Ctrl-C does, and is raised here.
     bisect : bool
         False: the grid only, as ``--no-bisect``.
 
@@ -583,7 +628,7 @@ def spectrum_file(spec, output=None, boundary=None, *, threads: int = 0,
             stem = stem[: -len(".spectrum")]
         boundary = os.path.join(head, stem + ".boundary.csv")
     session = SpectrumSession(load_spectrum_file(spec), output, os.fspath(boundary), bisect)
-    session.run(threads)
+    session.run(threads, progress=progress, callback=callback)
     return session.finish()
 
 
