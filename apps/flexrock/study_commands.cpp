@@ -276,7 +276,7 @@ struct StudyCommands::Impl {
   std::string input, output, boundary_output, curve_output;
   int threads = -1;
   bool quiet = false, no_progress = false, no_bisect = false;
-  std::string im = "pga", outcome = "overturned", body_name;
+  std::string im = "pga_g", outcome = "overturned", body_name;
   std::vector<std::string> state_texts;  // --state, in the order given
   std::string analysis = "runs";         // runs, msa or ida
   double level = 0.0, confidence = 0.95;
@@ -742,7 +742,7 @@ StudyCommands::StudyCommands(CLI::App& app) : impl_(std::make_unique<Impl>()) {
   s.fragility->add_option("SWEEP_CSV", s.input, "CSV written by flexrock sweep")->required();
   s.fragility->add_option(
       "--im", s.im,
-      "intensity measure: pga (m/s^2), pga_g, pgv (m/s), scale, requested_level (the sweep's "
+      "intensity measure: pga_g (g, the default, as flexrock plot's), pga (m/s^2), pgv (m/s), scale, requested_level (the sweep's "
       "levels as its manifest wrote them), or one the sweep's [intensity] table asked for: pgd "
       "(m), arias (m/s), cav (m/s), d5_95 (s), pgv_over_pga (s), sa:T or sa:T:zeta (m/s^2; Sa at "
       "period T s, damping ratio zeta, 0.05 by default)");

@@ -297,8 +297,10 @@ def _synthetic(kind, function: Optional[str] = None, needs: tuple = ()):
     # with units=, or amplitude_g= / amplitude_m_per_s2=; frequency_hz= or period=; the extra keys
     # by their case-file names) as well as the SI form the table gives: a_p [m/s^2], omega_p
     # [rad/s] (types with a frequency), duration [s], the extra keys' engine arguments,
-    # component, positionally or by those names. It notes its type and amplitude [m/s^2] for the
-    # summary. `needs`: extra keys this function requires (harmonic_cycles: cycles)
+    # component, by those names. Every argument is keyword-only: a bare number says nothing of
+    # its unit (0.3 read as a_p = 0.3 m/s^2 where g was meant). It notes its type and amplitude
+    # [m/s^2] for the summary. `needs`: extra keys this function requires (harmonic_cycles:
+    # cycles)
     type_name, function = kind.name, function or kind.function
     args = ("a_p",) + (("omega_p",) if kind.frequency else ()) + ("duration",)
     args += tuple(k.argument for k in kind.keys) + ("component",)
@@ -307,9 +309,14 @@ def _synthetic(kind, function: Optional[str] = None, needs: tuple = ()):
 
     def make(*pos, amplitude=None, units=None, amplitude_g=None, amplitude_m_per_s2=None,
              frequency_hz=None, period=None, **kwargs):
-        if len(pos) > len(args):
-            raise TypeError(f"{function}() takes at most {len(args)} positional arguments "
-                            f"({', '.join(args)}), {len(pos)} given")
+        if pos:
+            freq = (", frequency_hz=2.0" if kind.frequency else "")
+            si = ", ".join(f"{a}={v!r}" for a, v in zip(args, pos))
+            raise TypeError(
+                f"{function}() takes its physical values by keyword, with their units, not "
+                f"positionally: got {pos!r} (as SI values: {si}); e.g. "
+                f"{function}(amplitude=0.3, units=\"g\"{freq}, duration=4.0), or the SI form "
+                f"{function}({', '.join(a + '=...' for a in args[:-1])})")
         for key, arg in names.items():
             if key != arg and key in kwargs:
                 if arg in kwargs:
@@ -321,11 +328,7 @@ def _synthetic(kind, function: Optional[str] = None, needs: tuple = ()):
                                 + ", ".join(["amplitude", "units", "amplitude_g", "amplitude_m_per_s2"]
                                             + (["frequency_hz", "period"] if kind.frequency else [])
                                             + ["duration"] + list(names) + ["component"]))
-        values = dict(zip(args, pos))
-        for key, v in kwargs.items():
-            if key in values:
-                raise TypeError(f"{function}() got multiple values for argument {key!r}")
-            values[key] = v
+        values = dict(kwargs)
         given = [k for k, v in (("amplitude", amplitude if units is not None else None),
                                 ("amplitude_g", amplitude_g),
                                 ("amplitude_m_per_s2", amplitude_m_per_s2)) if v is not None]
@@ -345,13 +348,6 @@ def _synthetic(kind, function: Optional[str] = None, needs: tuple = ()):
                 f"amplitude_g= / amplitude_m_per_s2="
             )
         if given or new_freq:
-            # the case file's spelling: no positional SI values beside it
-            if pos:
-                raise InputError(
-                    f"{type_name}: positional arguments {pos!r} with keywords in a case file's "
-                    f"units: give every value by keyword, e.g. {function}(amplitude=0.3, "
-                    f"units=\"g\", frequency_hz=2.0, duration=4.0)"
-                )
             for old in ("a_p", "omega_p"):
                 if old in kwargs:
                     raise InputError(
@@ -403,8 +399,9 @@ def _synthetic(kind, function: Optional[str] = None, needs: tuple = ()):
         + "duration : float\n    [s] length of the motion (free vibration after the pulse).\n"
         + "".join(key_doc(k) for k in kind.keys)
         + "component : Component\n    horizontal (default) or vertical.\n\n"
-        f"The SI form ``{function}({', '.join(args)})`` (m/s^2, rad/s, s; the keys by their\n"
-        "engine names) is accepted too, positionally or by those names.\n\n"
+        f"The SI form ``{function}({', '.join(a + '=' for a in args)})`` (m/s^2, rad/s, s; the\n"
+        "keys by their engine names) is accepted too. Every argument is keyword-only: a\n"
+        "positional number, whose unit nothing says, raises TypeError.\n\n"
         "Returns\n-------\nGroundMotion\n"
     )
     return make

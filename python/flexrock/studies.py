@@ -692,7 +692,8 @@ def fragility_session(
     path : str or os.PathLike
         A sweep CSV.
     im : str, optional
-        Intensity measure (``--im``): pga [m/s^2] (the default), pga_g [g], pgv [m/s], scale
+        Intensity measure (``--im``): pga_g [g] (the default, as the plots'), pga [m/s^2],
+        pgv [m/s], scale
         [-], requested_level, or one of the sweep's [intensity] table (pgd, arias, cav, d5_95,
         pgv_over_pga, sa:T[:zeta]). ``analysis="msa"`` takes the requested levels.
     outcome : {"overturned", "uplift", "theta", "energy", "offset", "residual_offset"}
@@ -729,13 +730,13 @@ def fragility_session(
     if analysis not in analyses:
         raise ValueError(f"analysis {analysis!r}: expected one of: {', '.join(analyses)}")
     return FragilitySession(
-        os.fspath(path), im=im if im is not None else "pga", im_given=im is not None,
+        os.fspath(path), im=im if im is not None else "pga_g", im_given=im is not None,
         states=[damage_state(s) for s in states], outcome=kinds[outcome], level=float(level),
         analysis=analyses[analysis], body=body, confidence=float(confidence))
 
 
 def fragility_from_sweep(
-    path: str, im: str = "pga", outcome: str = "overturned", level: float = 0.0, body: str = ""
+    path: str, im: str = "pga_g", outcome: str = "overturned", level: float = 0.0, body: str = ""
 ):
     """Fits a sweep CSV as ``flexrock fragility`` does, one damage state (see fragility_session
     for several, stripes and capacities).

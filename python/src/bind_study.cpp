@@ -1293,7 +1293,7 @@ as ``flexrock fragility`` makes them (the same checks, observations, fits and fi
              o.confidence = confidence;
              return std::make_unique<io::FragilitySession>(path, std::move(o));
            }),
-           py::arg("path"), py::arg("im") = "pga", py::arg("im_given") = false,
+           py::arg("path"), py::arg("im") = "pga_g", py::arg("im_given") = false,
            py::arg("states") = std::vector<io::DamageState>{},
            py::arg("outcome") = io::FragilityOutcome::kOverturned, py::arg("level") = 0.0,
            py::arg("analysis") = io::FragilityAnalysis::kRuns, py::arg("body") = "",
