@@ -713,9 +713,10 @@ class LumpedNode:
     y: float
 
 class MeasureRequest:
-    def __init__(self, name: str, period: float = ..., zeta: float = ...) -> None: ...
+    def __init__(self, name: str, period: float = ..., zeta: float = ..., *, unit: str = ...) -> None: ...
     name: str
     period: float
+    unit: str
     zeta: float
 
 class Outcome:

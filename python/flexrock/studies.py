@@ -198,6 +198,8 @@ def spectrum(
         [s] a pseudo-spectral acceleration column for each period.
     sa_damping : float
         [-] damping ratio of the ``sa_periods`` columns.
+    sa_units : {"m/s^2", "g", "cm/s^2"}
+        The unit of the ``sa_periods`` columns, which end with it (``sa_T1_z0.05_g``).
     **solver
         Solver options (``rtol=...``, see :class:`SimulationOptions`).
 
@@ -433,6 +435,7 @@ def sweep(
     measures: Sequence[str] = (),
     sa_periods: Sequence[float] = (),
     sa_damping: float = 0.05,
+    sa_units: str = "m/s^2",
     uncertainty: Optional[Uncertainty] = None,
     **solver,
 ) -> dict:
@@ -539,7 +542,9 @@ def sweep(
     for t in sa_periods:
         _flexrock.require_spectral_period(float(t), "sweep: sa_periods")
     spec.measures = [MeasureRequest(str(m)) for m in measures] + [
-        MeasureRequest("sa", float(t), float(sa_damping)) for t in sa_periods
+        MeasureRequest("sa", float(t), float(sa_damping),
+                       unit=_choice("sa_units", sa_units, _ACCEL_UNITS) if sa_units != "m/s^2" else "")
+        for t in sa_periods
     ]
     return sweep_arrays(spec, run_sweep(spec, [], threads, progress=progress, callback=callback))
 

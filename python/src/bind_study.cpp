@@ -444,13 +444,16 @@ float
       .def_readonly("pgv", &Intensity::pgv, "[m/s]")
       .def_readonly("measures", &Intensity::measures, "[SI] the requested measures, in order");
   py::class_<MeasureRequest>(m, "MeasureRequest")
-      .def(py::init([](std::string name, double period, double zeta) {
-             return MeasureRequest{std::move(name), period, zeta};
+      .def(py::init([](std::string name, double period, double zeta, std::string unit) {
+             return MeasureRequest{std::move(name), period, zeta, std::move(unit)};
            }),
-           py::arg("name"), py::arg("period") = 0.0, py::arg("zeta") = 0.05)
+           py::arg("name"), py::arg("period") = 0.0, py::arg("zeta") = 0.05, py::kw_only(),
+           py::arg("unit") = "")
       .def_readwrite("name", &MeasureRequest::name, "a name of intensity_measures()")
       .def_readwrite("period", &MeasureRequest::period, "[s] sa only")
-      .def_readwrite("zeta", &MeasureRequest::zeta, "[-] sa only");
+      .def_readwrite("zeta", &MeasureRequest::zeta, "[-] sa only")
+      .def_readwrite("unit", &MeasureRequest::unit,
+                     "sa only: \"\" or \"m/s^2\" (SI), \"g\" or \"cm/s^2\": its column's unit");
   m.def("measure_request", &measure_request, py::arg("text"),
         R"doc(A measure as the command line names it: a name of ``intensity_measures()`` or "sa:T",
 "sa:T:zeta".
