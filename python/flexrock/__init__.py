@@ -21,7 +21,9 @@ from typing import Optional, Sequence, Union
 
 import numpy as np
 
-from . import _csv, _flexrock, _pickling
+from . import _csv, _flexrock, _pickling, _reprs
+
+_reprs.install(_flexrock)
 from ._flexrock import (  # noqa: F401  (re-exported API)
     AccelUnit,
     Body,
@@ -617,15 +619,25 @@ def _options(options: Optional[SimulationOptions], kwargs: dict) -> SimulationOp
     for key, value in kwargs.items():
         if not hasattr(options, key) or key.startswith("_"):
             raise InputError(f"simulate: unknown option {key!r}")
-        if key == "overturn" and isinstance(value, str):
-            value = getattr(OverturnCriterion, value)
-        for name, enum in (("impact_law", ImpactLaw), ("contact_model", ContactModel),
-                           ("contact_force_law", ContactForceLaw)):
-            if key == name and isinstance(value, str):
+        # an enum-valued option (its type's table of members: OverturnCriterion, ImpactLaw, ...)
+        # takes a member or its name; anything else is refused naming the allowed names
+        enum = type(getattr(options, key))
+        if hasattr(enum, "__members__"):
+            if isinstance(value, str):
                 if value not in enum.__members__:
-                    raise InputError(f"simulate: {name} {value!r} is not one of {', '.join(enum.__members__)}")
+                    raise InputError(f"simulate: {key} {value!r}: expected one of "
+                                     f"{', '.join(repr(n) for n in enum.__members__)}")
                 value = enum.__members__[value]
-        setattr(options, key, value)
+            elif not isinstance(value, enum):
+                raise InputError(f"simulate: {key} {value!r}: expected one of "
+                                 f"{', '.join(repr(n) for n in enum.__members__)} (or "
+                                 f"{enum.__name__}.<name>)")
+        try:
+            setattr(options, key, value)
+        except TypeError:
+            # pybind11's "incompatible function arguments" names no key: say which and what
+            kind = type(getattr(options, key)).__name__
+            raise InputError(f"simulate: {key}: expected a {kind}, got {value!r}") from None
     return options
 
 
