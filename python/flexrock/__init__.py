@@ -376,6 +376,12 @@ def _synthetic(kind, function: Optional[str] = None, needs: tuple = ()):
             if key not in keys:
                 raise InputError(f"{function}: {key}: missing; give {key}=")
         component = values.get("component", Component.horizontal)
+        # a member of the Component table or its name; anything else is named with the allowed
+        if isinstance(component, str) and component in Component.__members__:
+            component = Component.__members__[component]
+        if not isinstance(component, Component):
+            raise InputError(f"{type_name}: component {component!r}: expected one of "
+                             f"{', '.join(repr(n) for n in Component.__members__)}")
         a_si = float(values["a_p"])
         recipe = ("pulse", type_name, a_si, float(values.get("omega_p", 0.0)), float(values["duration"]),
                   component, keys)

@@ -282,6 +282,7 @@ class Distribution:
     def value(self) -> int: ...
 
 class EnergyBalance:
+    def __repr__(self, *args: Any, **kwargs: Any) -> Any: ...
     @property
     def chatter_loss(self) -> float: ...
     @property
@@ -370,6 +371,7 @@ class ExcitationComponent:
     units: str
 
 class Extremes:
+    def __repr__(self, *args: Any, **kwargs: Any) -> Any: ...
     @property
     def chatter_cutoffs(self) -> int: ...
     @property
@@ -445,6 +447,7 @@ class FragilityAnalysis:
     def value(self) -> int: ...
 
 class FragilityData:
+    def __repr__(self, *args: Any, **kwargs: Any) -> Any: ...
     @property
     def body(self) -> str: ...
     @property
@@ -1069,6 +1072,7 @@ class ScaleKind:
 class SimulationMethods:
     """How the engine steps, for tests and comparisons only: each switch picks between two methods that give the same answer within the tolerances, at different cost."""
     def __init__(self) -> None: ...
+    def __repr__(self, *args: Any, **kwargs: Any) -> Any: ...
     closed_form_free_rocking: bool
     contact_integrator: ContactIntegrator
     exact_full_contact: bool
@@ -1081,6 +1085,7 @@ class SimulationMethods:
 class SimulationOptions:
     """Solver options (SI units)."""
     def __init__(self) -> None: ...
+    def __repr__(self, *args: Any, **kwargs: Any) -> Any: ...
     atol: float
     chatter_ratio: float
     contact_damping_ratio: float

@@ -66,3 +66,13 @@ def test_value_types_print_their_fields(case, cli, source_dir, tmp_path):
     d = s.data(0, 0)
     assert repr(d).startswith("FragilityData(body='statue', ")
     assert "im_name='pga_g'" in repr(d) and "im_unit='g'" in repr(d)
+
+
+def test_a_pulse_component_is_a_member_or_its_name():
+    with pytest.raises(ValueError, match=r"one_sine: component 'up': expected one of 'horizontal', "
+                                         r"'vertical'"):
+        fr.one_sine_pulse(amplitude_g=0.3, frequency_hz=2.0, duration=3.0, component="up")
+    a = fr.one_sine_pulse(amplitude_g=0.3, frequency_hz=2.0, duration=3.0, component="vertical")
+    b = fr.one_sine_pulse(amplitude_g=0.3, frequency_hz=2.0, duration=3.0,
+                          component=fr.Component.vertical)
+    assert a.at(0.1) == b.at(0.1) and a.at(0.1)[0] == 0.0

@@ -33,9 +33,9 @@ inline constexpr EnumName<FragilityAnalysis> kFragilityAnalysisNames[] = {
 
 /// What to fit. Errors name the options as `flexrock fragility` does (--state, --level, --im).
 struct FragilityOptions {
-  // fragility_measures(); by default PGA in g, as `flexrock plot` draws it; kStripes:
-  // requested_level (the default there)
-  std::string im = "pga_g";
+  // fragility_measures(); the library's default is SI (the command line and Python default to
+  // pga_g, as their plots); kStripes: requested_level (the default there)
+  std::string im = "pga";
   bool im_given = false;   // im was chosen (kStripes refuses any measure but requested_level)
   // the damage states of a family (--state), least severe first, fitted at once and written
   // with a state column; empty: the one state of `outcome` and `level`
