@@ -742,10 +742,12 @@ StudyCommands::StudyCommands(CLI::App& app) : impl_(std::make_unique<Impl>()) {
   s.fragility->add_option("SWEEP_CSV", s.input, "CSV written by flexrock sweep")->required();
   s.fragility->add_option(
       "--im", s.im,
-      "intensity measure: pga_g (g, the default, as flexrock plot's), pga (m/s^2), pgv (m/s), scale, requested_level (the sweep's "
+      "intensity measure: pga_g (g, the default, as flexrock plot's), pga (m/s^2), pgv (m/s), "
+      "scale, requested_level (the sweep's "
       "levels as its manifest wrote them), or one the sweep's [intensity] table asked for: pgd "
-      "(m), arias (m/s), cav (m/s), d5_95 (s), pgv_over_pga (s), sa:T or sa:T:zeta (m/s^2; Sa at "
-      "period T s, damping ratio zeta, 0.05 by default)");
+      "(m), arias (m/s), cav (m/s), d5_95 (s), pgv_over_pga (s), sa:T or sa:T:zeta (Sa at "
+      "period T s, damping ratio zeta, 0.05 by default; in the sweep's [intensity] sa_units, "
+      "m/s^2 by default)");
   s.fragility
       ->add_option("--outcome", s.outcome,
                    "failure: overturned, uplift (left full contact), theta (max theta/alpha > "
