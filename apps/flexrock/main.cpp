@@ -36,6 +36,7 @@
 #include "progress.hpp"
 #include "qualify_command.hpp"
 #include "study_commands.hpp"
+#include "verb_examples.hpp"
 
 namespace {
 
@@ -728,6 +729,7 @@ int main(int argc, char** argv) {
 
   flexrock::cli::QualifyOptions qualify_options;
   CLI::App* qualify = flexrock::cli::add_qualify_command(app, qualify_options);
+  flexrock::cli::add_verb_examples(app);
 
   try {
     app.parse(argc, argv);

@@ -59,4 +59,48 @@ class Progress {
   bool drawn_ = false;
 };
 
+/// Progress of a study as plain lines on stdout, for a log (a batch job's output file) where no
+/// bar can be drawn: one line at the start, one each time another tenth of the runs is done or
+/// `every` seconds have passed, and one at the end, each flushed as it is written.
+class ProgressLines {
+ public:
+  ProgressLines(bool enabled, double total, double every)
+      : enabled_(enabled), total_(total), every_(every) {}
+
+  void start(const std::string& note) {
+    if (!enabled_) return;
+    fmt::print("progress: 0 of {:.0f} runs{}\n", total_, note);
+    std::fflush(stdout);
+  }
+
+  void update(double elapsed, double done) {
+    if (!enabled_ || total_ <= 0.0) return;
+    const int tenth = static_cast<int>(10.0 * std::clamp(done / total_, 0.0, 1.0));
+    if (tenth <= tenth_ && elapsed - last_ < every_) return;
+    if (done <= done_ && elapsed - last_ < every_) return;
+    tenth_ = std::max(tenth, tenth_);
+    last_ = elapsed;
+    done_ = done;
+    const double rate = done / std::max(elapsed, 1e-9);
+    const double eta = rate > 0.0 ? (total_ - done) / rate : 0.0;
+    fmt::print(
+        "progress: {:.0f} of {:.0f} runs ({:.0f}%) after {:.0f} s, {:.3g} runs/s, {:.0f} s "
+        "left\n",
+        done, total_, 100.0 * done / total_, elapsed, rate, eta);
+    std::fflush(stdout);
+  }
+
+  void end(double elapsed, double done) {
+    if (!enabled_) return;
+    fmt::print("progress: {:.0f} of {:.0f} runs done in {:.3g} s\n", done, total_, elapsed);
+    std::fflush(stdout);
+  }
+
+ private:
+  bool enabled_;
+  double total_, every_;
+  int tenth_ = 0;
+  double last_ = 0.0, done_ = 0.0;
+};
+
 }  // namespace flexrock::cli

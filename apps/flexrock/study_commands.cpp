@@ -18,9 +18,11 @@
 #include <filesystem>
 #include <future>
 #include <map>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <thread>
+#include <type_traits>
 #include <vector>
 
 #include "flexrock/core/error.hpp"
@@ -32,6 +34,7 @@
 #include "flexrock/io/outputs.hpp"
 #include "flexrock/io/study_files.hpp"
 #include "flexrock/io/study_session.hpp"
+#include "flexrock/io/study_shards.hpp"
 #include "flexrock/study/fragility.hpp"
 #include "flexrock/study/spectrum.hpp"
 #include "flexrock/study/sweep.hpp"
@@ -196,24 +199,61 @@ void warning(const std::string& message) {
   fmt::print(stderr, "flexrock: warning: {}\n", message);
 }
 
+// how the progress is shown: a bar on a terminal's stderr, lines on a stdout that is no terminal
+struct ProgressShow {
+  bool bar = false;
+  bool lines = false;
+  double every = 60.0;  // [s] the longest wait between two lines
+};
+
 // runs `work` on a thread while the main thread draws the progress of `completed` of `total`
 template <class Work>
-auto with_progress(bool show, std::size_t total, std::atomic<std::size_t>& completed,
+auto with_progress(const ProgressShow& show, std::size_t total, std::atomic<std::size_t>& completed,
                    const std::string& note, Work&& work) {
-  Progress progress(show, static_cast<double>(total));
+  Progress progress(show.bar, static_cast<double>(total));
+  ProgressLines lines(show.lines, static_cast<double>(total), show.every);
+  lines.start(note);
   const auto start = std::chrono::steady_clock::now();
+  auto elapsed = [&] {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  };
   auto future = std::async(std::launch::async, std::forward<Work>(work));
   while (future.wait_for(std::chrono::milliseconds(200)) != std::future_status::ready) {
-    progress.draw_count(
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
-        static_cast<double>(completed.load(std::memory_order_relaxed)), note);
+    const auto done = static_cast<double>(completed.load(std::memory_order_relaxed));
+    progress.draw_count(elapsed(), done, note);
+    lines.update(elapsed(), done);
   }
   progress.clear();
-  return future.get();
+  // the work's exception, if any, before the last line
+  auto result = [&] {
+    if constexpr (std::is_void_v<decltype(future.get())>) {
+      future.get();
+      return 0;
+    } else {
+      return future.get();
+    }
+  }();
+  lines.end(elapsed(), static_cast<double>(completed.load(std::memory_order_relaxed)));
+  return result;
 }
 
 std::string default_output(const std::string& input, const std::string& suffix) {
   return fs::path(input).stem().string() + suffix;
+}
+
+// the boundary CSV next to the cells: "x.spectrum.csv" -> "x.boundary.csv", "x.csv" ->
+// "x.boundary.csv"
+std::string default_boundary(const std::string& output) {
+  fs::path p(output);
+  std::string stem = p.stem().string();
+  if (stem.ends_with(".spectrum")) stem.resize(stem.size() - 9);
+  return (p.parent_path() / (stem + ".boundary.csv")).string();
+}
+
+// which part of the study this process runs, after its progress
+std::string progress_note(const Processes& procs, const std::optional<io::Shard>& part) {
+  if (part) return fmt::format("  (shard {} of {})", part->k, part->n);
+  return procs.size() > 1 ? fmt::format("  (rank 0 of {})", procs.size()) : "";
 }
 
 // the outcome of every cell, counted
@@ -231,18 +271,36 @@ struct StudyCommands::Impl {
   CLI::App* spectrum = nullptr;
   CLI::App* sweep = nullptr;
   CLI::App* fragility = nullptr;
+  CLI::App* merge = nullptr;
 
   std::string input, output, boundary_output, curve_output;
   int threads = -1;
   bool quiet = false, no_progress = false, no_bisect = false;
-  std::string im = "pga", outcome = "overturned", body_name;
+  std::string im = "pga_g", outcome = "overturned", body_name;
   std::vector<std::string> state_texts;  // --state, in the order given
   std::string analysis = "runs";         // runs, msa or ida
   double level = 0.0, confidence = 0.95;
   double curve_points = 50;  // read as a number, so that any value gets its range message
 
-  bool show_progress(const Processes& p) const {
-    return !quiet && !no_progress && p.root() && ::isatty(STDERR_FILENO);
+  double progress_every = 60.0;          // [s] --progress-every
+  std::string shard_text;                // --shard k/N
+  std::vector<std::string> shard_files;  // merge
+
+  ProgressShow show_progress(const Processes& p) const {
+    const bool on = !quiet && !no_progress && p.root();
+    return {on && ::isatty(STDERR_FILENO), on && !::isatty(STDOUT_FILENO), progress_every};
+  }
+
+  std::optional<io::Shard> shard() const {
+    if (shard_text.empty()) return std::nullopt;
+    return io::parse_shard(shard_text);
+  }
+
+  void check_progress_every() const {
+    if (!(progress_every > 0.0 && std::isfinite(progress_every))) {
+      throw InputError("--progress-every: expected a number of seconds > 0, got " +
+                       format_number(progress_every));
+    }
   }
 
   study::RunOptions run_options(const Processes& p) const {
@@ -263,26 +321,23 @@ struct StudyCommands::Impl {
   int run_spectrum(const Processes& procs);
   int run_sweep(const Processes& procs);
   int run_fragility();
+  int run_merge();
 };
 
 int StudyCommands::Impl::run_spectrum(const Processes& procs) {
   check_threads();
+  check_progress_every();
+  const std::optional<io::Shard> part = shard();
   io::SpectrumFile f = io::load_spectrum_file(input);
   if (no_bisect) {
     f.pulse.bisect = false;
     f.record.bisect = false;
   }
   if (output.empty()) output = default_output(input, ".spectrum.csv");
-  if (boundary_output.empty()) {
-    // next to the cells: "x.spectrum.csv" -> "x.boundary.csv", "x.csv" -> "x.boundary.csv"
-    fs::path p(output);
-    std::string stem = p.stem().string();
-    if (stem.ends_with(".spectrum")) stem.resize(stem.size() - 9);
-    boundary_output = (p.parent_path() / (stem + ".boundary.csv")).string();
-  }
+  if (boundary_output.empty()) boundary_output = default_boundary(output);
   // the session checks every run before its journal exists, resumes from the journal, and
   // writes the CSVs from the cells; here: the options, the progress and the account
-  io::SpectrumSession session(std::move(f), output, boundary_output, procs);
+  io::SpectrumSession session(std::move(f), output, boundary_output, procs, part);
   const io::SpectrumFile& file = session.file();
   const study::SpectrumResult& grid = session.grid();
   const double g = session.body().g();
@@ -298,8 +353,7 @@ int StudyCommands::Impl::run_spectrum(const Processes& procs) {
   }
   const auto start = std::chrono::steady_clock::now();
   // the cells left in rank 0's share, for its progress bar (the bisection's runs come on top)
-  with_progress(show_progress(procs), session.share_cells(), completed,
-                procs.size() > 1 ? fmt::format("  (rank 0 of {})", procs.size()) : "",
+  with_progress(show_progress(procs), session.share_cells(), completed, progress_note(procs, part),
                 [&] { session.run(options); });
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -324,6 +378,14 @@ int StudyCommands::Impl::run_spectrum(const Processes& procs) {
   if (!procs.root()) return kExitOk;
   // a record spectrum's bisection on rank 0 was stopped: the journal stays
   if (res.cells.empty()) return error(interrupted, kExitRunFailed);
+  if (part) {
+    // a shard: its cells; the account of the whole comes with the merge
+    std::size_t mine = 0;
+    for (const study::SpectrumCell& c : res.cells) mine += c.computed ? 1 : 0;
+    fmt::print("spectrum shard {}/{}: {} of {} cells\n", part->k, part->n, mine, session.cells());
+    if (!quiet) fmt::print("wrote {}\n", session.written());
+    return kExitOk;
+  }
   const std::map<std::string, std::size_t> counts = count_outcomes(res.cells);
 
   // a short account on stdout
@@ -348,11 +410,13 @@ int StudyCommands::Impl::run_spectrum(const Processes& procs) {
 
 int StudyCommands::Impl::run_sweep(const Processes& procs) {
   check_threads();
+  check_progress_every();
+  const std::optional<io::Shard> part = shard();
   // the session checks every run before its journal exists, resumes from the journal, and
   // writes the CSV from the rows; here: the options, the progress and the account
   io::SweepManifest m = io::load_sweep_manifest(input);
   if (output.empty()) output = default_output(input, ".sweep.csv");
-  io::SweepSession session(std::move(m), output, procs);
+  io::SweepSession session(std::move(m), output, procs, part);
   const study::SweepSpec& spec = session.manifest().spec;
   const std::size_t runs = session.runs();
 
@@ -367,8 +431,7 @@ int StudyCommands::Impl::run_sweep(const Processes& procs) {
   const auto start = std::chrono::steady_clock::now();
   if (!session.share().empty()) {
     with_progress(show_progress(procs), session.share().size(), completed,
-                  procs.size() > 1 ? fmt::format("  (rank 0 of {})", procs.size()) : "",
-                  [&] { session.run(options); });
+                  progress_note(procs, part), [&] { session.run(options); });
   }
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -400,15 +463,20 @@ int StudyCommands::Impl::run_sweep(const Processes& procs) {
     over += study::overturned(r.run.outcome) ? 1 : 0;
     stopped += r.run.outcome == study::Outcome::kStopped ? 1 : 0;
   }
-  fmt::print(
-      "sweep: {} bodies x {} records x {} scales = {} runs: {} overturned, {} not classified "
-      "(stopped)\n",
-      spec.bodies.size(), spec.records.size(), spec.scales.size(), runs, over, stopped);
+  if (part) {
+    fmt::print("sweep shard {}/{}: {} of {} runs: {} overturned, {} not classified (stopped)\n",
+               part->k, part->n, rows.size(), runs, over, stopped);
+  } else {
+    fmt::print(
+        "sweep: {} bodies x {} records x {} scales = {} runs: {} overturned, {} not classified "
+        "(stopped)\n",
+        spec.bodies.size(), spec.records.size(), spec.scales.size(), runs, over, stopped);
+  }
   if (!quiet) {
     fmt::print("time: {:.3g} s for {} new runs on {} process{} x {} thread{}\n", seconds,
-               session.remaining(), procs.size(), procs.size() == 1 ? "" : "es", options.threads,
-               options.threads == 1 ? "" : "s");
-    fmt::print("wrote {}\n", output);
+               part ? session.share().size() : session.remaining(), procs.size(),
+               procs.size() == 1 ? "" : "es", options.threads, options.threads == 1 ? "" : "s");
+    fmt::print("wrote {}\n", session.written());
   }
   return kExitOk;
 }
@@ -590,6 +658,25 @@ int StudyCommands::Impl::run_fragility() {
   return kExitOk;
 }
 
+int StudyCommands::Impl::run_merge() {
+  if (output.empty()) {
+    // "out.csv.shard1of4" -> "out.csv"
+    output = io::shard_output(shard_files.front());
+    if (output.empty()) {
+      throw InputError("merge: " + shard_files.front() +
+                       ": not named OUT.shard<k>of<N>; give the output with -o");
+    }
+  }
+  if (boundary_output.empty()) boundary_output = default_boundary(output);
+  const io::MergeResult r = io::merge_shards(shard_files, output, boundary_output);
+  fmt::print("merge: {} shards of a {} of {} runs\n", r.shards, r.kind, r.runs);
+  if (!quiet) {
+    fmt::print("wrote {}\n", output);
+    if (r.boundary) fmt::print("wrote {}\n", boundary_output);
+  }
+  return kExitOk;
+}
+
 std::string fragility_curve_column_reference() {
   std::string s =
       "<!-- begin: written by `flexrock keys --markdown` from the table of fragility curve "
@@ -626,8 +713,27 @@ StudyCommands::StudyCommands(CLI::App& app) : impl_(std::make_unique<Impl>()) {
     c->add_option("-j,--threads", s.threads,
                   "worker threads (default: every core, shared among MPI processes)");
     c->add_flag("-q,--quiet", s.quiet, "print only the results: no progress, no file list");
-    c->add_flag("--no-progress", s.no_progress, "no progress bar, even on a terminal");
+    c->add_flag("--no-progress", s.no_progress,
+                "no progress bar on a terminal, no progress lines in a log");
+    c->add_option("--progress-every", s.progress_every,
+                  "when stdout is not a terminal (a batch job's log): a progress line at least "
+                  "every this many seconds, besides one per tenth of the runs (default 60)");
+    c->add_option("--shard", s.shard_text,
+                  "k/N: run only shard k of N (the runs, or a spectrum's columns, i with i mod N "
+                  "== k-1), with its own journal, into OUTPUT.shard<k>of<N>; join the N files "
+                  "with `flexrock merge` (docs/studies.md, \"Shards\")");
   }
+
+  s.merge = app.add_subcommand(
+      "merge",
+      "Join the shard files of a sweep or spectrum run with --shard k/N into the files one run "
+      "writes, byte for byte");
+  s.merge->add_option("SHARDS", s.shard_files, "the N shard files (OUTPUT.shard<k>of<N>)")
+      ->required();
+  s.merge->add_option("-o,--output", s.output, "CSV (default: the shard files' OUTPUT)");
+  s.merge->add_option("--boundary", s.boundary_output,
+                      "a spectrum's boundary CSV (default: <output stem>.boundary.csv)");
+  s.merge->add_flag("-q,--quiet", s.quiet, "no file list");
 
   s.fragility =
       app.add_subcommand("fragility",
@@ -636,10 +742,12 @@ StudyCommands::StudyCommands(CLI::App& app) : impl_(std::make_unique<Impl>()) {
   s.fragility->add_option("SWEEP_CSV", s.input, "CSV written by flexrock sweep")->required();
   s.fragility->add_option(
       "--im", s.im,
-      "intensity measure: pga (m/s^2), pga_g, pgv (m/s), scale, requested_level (the sweep's "
+      "intensity measure: pga_g (g, the default, as flexrock plot's), pga (m/s^2), pgv (m/s), "
+      "scale, requested_level (the sweep's "
       "levels as its manifest wrote them), or one the sweep's [intensity] table asked for: pgd "
-      "(m), arias (m/s), cav (m/s), d5_95 (s), pgv_over_pga (s), sa:T or sa:T:zeta (m/s^2; Sa at "
-      "period T s, damping ratio zeta, 0.05 by default)");
+      "(m), arias (m/s), cav (m/s), d5_95 (s), pgv_over_pga (s), sa:T or sa:T:zeta (Sa at "
+      "period T s, damping ratio zeta, 0.05 by default; in the sweep's [intensity] sa_units, "
+      "m/s^2 by default)");
   s.fragility
       ->add_option("--outcome", s.outcome,
                    "failure: overturned, uplift (left full contact), theta (max theta/alpha > "
@@ -680,12 +788,14 @@ StudyCommands::StudyCommands(CLI::App& app) : impl_(std::make_unique<Impl>()) {
 StudyCommands::~StudyCommands() = default;
 
 bool StudyCommands::selected() const {
-  return impl_->spectrum->parsed() || impl_->sweep->parsed() || impl_->fragility->parsed();
+  return impl_->spectrum->parsed() || impl_->sweep->parsed() || impl_->fragility->parsed() ||
+         impl_->merge->parsed();
 }
 
 int StudyCommands::run() {
   Impl& s = *impl_;
   if (s.fragility->parsed()) return s.run_fragility();
+  if (s.merge->parsed()) return s.run_merge();
   const Processes procs;
   try {
     return s.spectrum->parsed() ? s.run_spectrum(procs) : s.run_sweep(procs);

@@ -21,7 +21,9 @@ from typing import Optional, Sequence, Union
 
 import numpy as np
 
-from . import _csv, _flexrock, _pickling
+from . import _csv, _flexrock, _pickling, _reprs
+
+_reprs.install(_flexrock)
 from ._flexrock import (  # noqa: F401  (re-exported API)
     AccelUnit,
     Body,
@@ -300,8 +302,10 @@ def _synthetic(kind, function: Optional[str] = None, needs: tuple = ()):
     # with units=, or amplitude_g= / amplitude_m_per_s2=; frequency_hz= or period=; the extra keys
     # by their case-file names) as well as the SI form the table gives: a_p [m/s^2], omega_p
     # [rad/s] (types with a frequency), duration [s], the extra keys' engine arguments,
-    # component, positionally or by those names. It notes its type and amplitude [m/s^2] for the
-    # summary. `needs`: extra keys this function requires (harmonic_cycles: cycles)
+    # component, by those names. Every argument is keyword-only: a bare number says nothing of
+    # its unit (0.3 read as a_p = 0.3 m/s^2 where g was meant). It notes its type and amplitude
+    # [m/s^2] for the summary. `needs`: extra keys this function requires (harmonic_cycles:
+    # cycles)
     type_name, function = kind.name, function or kind.function
     args = ("a_p",) + (("omega_p",) if kind.frequency else ()) + ("duration",)
     args += tuple(k.argument for k in kind.keys) + ("component",)
@@ -310,9 +314,14 @@ def _synthetic(kind, function: Optional[str] = None, needs: tuple = ()):
 
     def make(*pos, amplitude=None, units=None, amplitude_g=None, amplitude_m_per_s2=None,
              frequency_hz=None, period=None, **kwargs):
-        if len(pos) > len(args):
-            raise TypeError(f"{function}() takes at most {len(args)} positional arguments "
-                            f"({', '.join(args)}), {len(pos)} given")
+        if pos:
+            freq = (", frequency_hz=2.0" if kind.frequency else "")
+            si = ", ".join(f"{a}={v!r}" for a, v in zip(args, pos))
+            raise TypeError(
+                f"{function}() takes its physical values by keyword, with their units, not "
+                f"positionally: got {pos!r} (as SI values: {si}); e.g. "
+                f"{function}(amplitude=0.3, units=\"g\"{freq}, duration=4.0), or the SI form "
+                f"{function}({', '.join(a + '=...' for a in args[:-1])})")
         for key, arg in names.items():
             if key != arg and key in kwargs:
                 if arg in kwargs:
@@ -324,11 +333,7 @@ def _synthetic(kind, function: Optional[str] = None, needs: tuple = ()):
                                 + ", ".join(["amplitude", "units", "amplitude_g", "amplitude_m_per_s2"]
                                             + (["frequency_hz", "period"] if kind.frequency else [])
                                             + ["duration"] + list(names) + ["component"]))
-        values = dict(zip(args, pos))
-        for key, v in kwargs.items():
-            if key in values:
-                raise TypeError(f"{function}() got multiple values for argument {key!r}")
-            values[key] = v
+        values = dict(kwargs)
         given = [k for k, v in (("amplitude", amplitude if units is not None else None),
                                 ("amplitude_g", amplitude_g),
                                 ("amplitude_m_per_s2", amplitude_m_per_s2)) if v is not None]
@@ -348,13 +353,6 @@ def _synthetic(kind, function: Optional[str] = None, needs: tuple = ()):
                 f"amplitude_g= / amplitude_m_per_s2="
             )
         if given or new_freq:
-            # the case file's spelling: no positional SI values beside it
-            if pos:
-                raise InputError(
-                    f"{type_name}: positional arguments {pos!r} with keywords in a case file's "
-                    f"units: give every value by keyword, e.g. {function}(amplitude=0.3, "
-                    f"units=\"g\", frequency_hz=2.0, duration=4.0)"
-                )
             for old in ("a_p", "omega_p"):
                 if old in kwargs:
                     raise InputError(
@@ -381,6 +379,12 @@ def _synthetic(kind, function: Optional[str] = None, needs: tuple = ()):
             if key not in keys:
                 raise InputError(f"{function}: {key}: missing; give {key}=")
         component = values.get("component", Component.horizontal)
+        # a member of the Component table or its name; anything else is named with the allowed
+        if isinstance(component, str) and component in Component.__members__:
+            component = Component.__members__[component]
+        if not isinstance(component, Component):
+            raise InputError(f"{type_name}: component {component!r}: expected one of "
+                             f"{', '.join(repr(n) for n in Component.__members__)}")
         a_si = float(values["a_p"])
         recipe = ("pulse", type_name, a_si, float(values.get("omega_p", 0.0)), float(values["duration"]),
                   component, keys)
@@ -406,8 +410,9 @@ def _synthetic(kind, function: Optional[str] = None, needs: tuple = ()):
         + "duration : float\n    [s] length of the motion (free vibration after the pulse).\n"
         + "".join(key_doc(k) for k in kind.keys)
         + "component : Component\n    horizontal (default) or vertical.\n\n"
-        f"The SI form ``{function}({', '.join(args)})`` (m/s^2, rad/s, s; the keys by their\n"
-        "engine names) is accepted too, positionally or by those names.\n\n"
+        f"The SI form ``{function}({', '.join(a + '=' for a in args)})`` (m/s^2, rad/s, s; the\n"
+        "keys by their engine names) is accepted too. Every argument is keyword-only: a\n"
+        "positional number, whose unit nothing says, raises TypeError.\n\n"
         "Returns\n-------\nGroundMotion\n"
     )
     return make
@@ -623,15 +628,25 @@ def _options(options: Optional[SimulationOptions], kwargs: dict) -> SimulationOp
     for key, value in kwargs.items():
         if not hasattr(options, key) or key.startswith("_"):
             raise InputError(f"simulate: unknown option {key!r}")
-        if key == "overturn" and isinstance(value, str):
-            value = getattr(OverturnCriterion, value)
-        for name, enum in (("impact_law", ImpactLaw), ("contact_model", ContactModel),
-                           ("contact_force_law", ContactForceLaw)):
-            if key == name and isinstance(value, str):
+        # an enum-valued option (its type's table of members: OverturnCriterion, ImpactLaw, ...)
+        # takes a member or its name; anything else is refused naming the allowed names
+        enum = type(getattr(options, key))
+        if hasattr(enum, "__members__"):
+            if isinstance(value, str):
                 if value not in enum.__members__:
-                    raise InputError(f"simulate: {name} {value!r} is not one of {', '.join(enum.__members__)}")
+                    raise InputError(f"simulate: {key} {value!r}: expected one of "
+                                     f"{', '.join(repr(n) for n in enum.__members__)}")
                 value = enum.__members__[value]
-        setattr(options, key, value)
+            elif not isinstance(value, enum):
+                raise InputError(f"simulate: {key} {value!r}: expected one of "
+                                 f"{', '.join(repr(n) for n in enum.__members__)} (or "
+                                 f"{enum.__name__}.<name>)")
+        try:
+            setattr(options, key, value)
+        except TypeError:
+            # pybind11's "incompatible function arguments" names no key: say which and what
+            kind = type(getattr(options, key)).__name__
+            raise InputError(f"simulate: {key}: expected a {kind}, got {value!r}") from None
     return options
 
 

@@ -287,6 +287,7 @@ class Distribution:
     def value(self) -> int: ...
 
 class EnergyBalance:
+    def __repr__(self, *args: Any, **kwargs: Any) -> Any: ...
     @property
     def chatter_loss(self) -> float: ...
     @property
@@ -375,6 +376,7 @@ class ExcitationComponent:
     units: str
 
 class Extremes:
+    def __repr__(self, *args: Any, **kwargs: Any) -> Any: ...
     @property
     def chatter_cutoffs(self) -> int: ...
     @property
@@ -450,6 +452,7 @@ class FragilityAnalysis:
     def value(self) -> int: ...
 
 class FragilityData:
+    def __repr__(self, *args: Any, **kwargs: Any) -> Any: ...
     @property
     def body(self) -> str: ...
     @property
@@ -718,9 +721,10 @@ class LumpedNode:
     y: float
 
 class MeasureRequest:
-    def __init__(self, name: str, period: float = ..., zeta: float = ...) -> None: ...
+    def __init__(self, name: str, period: float = ..., zeta: float = ..., *, unit: str = ...) -> None: ...
     name: str
     period: float
+    unit: str
     zeta: float
 
 class Outcome:
@@ -1073,6 +1077,7 @@ class ScaleKind:
 class SimulationMethods:
     """How the engine steps, for tests and comparisons only: each switch picks between two methods that give the same answer within the tolerances, at different cost."""
     def __init__(self) -> None: ...
+    def __repr__(self, *args: Any, **kwargs: Any) -> Any: ...
     closed_form_free_rocking: bool
     contact_integrator: ContactIntegrator
     exact_full_contact: bool
@@ -1085,6 +1090,7 @@ class SimulationMethods:
 class SimulationOptions:
     """Solver options (SI units)."""
     def __init__(self) -> None: ...
+    def __repr__(self, *args: Any, **kwargs: Any) -> Any: ...
     atol: float
     chatter_ratio: float
     contact_damping_ratio: float
@@ -1236,7 +1242,7 @@ class SpectrumSession:
     def journal_path(self) -> str: ...
     @property
     def resumed(self) -> int: ...
-    def run(self, threads: int = ...) -> None:
+    def run(self, threads: int = ..., *, progress: object = ..., callback: Optional[object] = ...) -> None:
         """Runs the cells and bisections left, journaling each as it finishes (the GIL is
         released). Ctrl-C stops it between runs and raises KeyboardInterrupt; the journal keeps every
         finished cell and boundary and run() again, or a new session on the same file and outputs, goes
@@ -1246,6 +1252,13 @@ class SpectrumSession:
         ----------
         threads : int
             0: every core.
+        progress : bool
+            A progress bar on stderr while it runs longer than a second (tqdm where it is installed,
+            a plain line otherwise); False: none.
+        callback : callable, optional
+            Called as callback(done, total) (cells left at the start; a bisection's runs come on top) on the calling thread while the runs go (every 20 ms at
+            most, when the count moved) and once at the end: for a notebook's own display. An
+            exception it raises stops the runs between two, as Ctrl-C does, and is raised here.
         """
     @property
     def runs(self) -> int: ...
@@ -1351,7 +1364,7 @@ class SweepSession:
     def remaining(self) -> int: ...
     @property
     def resumed(self) -> int: ...
-    def run(self, threads: int = ...) -> None:
+    def run(self, threads: int = ..., *, progress: object = ..., callback: Optional[object] = ...) -> None:
         """Runs the runs left, journaling each as it finishes (the GIL is released).
         Ctrl-C stops it between runs and raises KeyboardInterrupt; the journal keeps every finished run
         and run() again, or a new session on the same manifest and output, goes on from there. Raises
@@ -1361,6 +1374,13 @@ class SweepSession:
         ----------
         threads : int
             0: every core.
+        progress : bool
+            A progress bar on stderr while it runs longer than a second (tqdm where it is installed,
+            a plain line otherwise); False: none.
+        callback : callable, optional
+            Called as callback(done, total) (the runs left at the start) on the calling thread while the runs go (every 20 ms at
+            most, when the count moved) and once at the end: for a notebook's own display. An
+            exception it raises stops the runs between two, as Ctrl-C does, and is raised here.
         """
     @property
     def runs(self) -> int: ...
@@ -1527,7 +1547,7 @@ def combine(horizontal: Record, vertical: Optional[Record] = ..., scale: float =
         Accelerations in m/s^2.
     """
 
-def compute_record_spectrum(body: Body, spec: RecordSpectrumSpec, threads: int = ...) -> SpectrumResult:
+def compute_record_spectrum(body: Body, spec: RecordSpectrumSpec, threads: int = ..., *, progress: object = ..., callback: Optional[object] = ...) -> SpectrumResult:
     """One record times scale factors, and the minimum overturning scale.
 
     Parameters
@@ -1536,13 +1556,20 @@ def compute_record_spectrum(body: Body, spec: RecordSpectrumSpec, threads: int =
     spec : RecordSpectrumSpec
     threads : int
         0: every core.
+    progress : bool
+        A progress bar on stderr while it runs longer than a second (tqdm where it is installed,
+        a plain line otherwise); False: none.
+    callback : callable, optional
+        Called as callback(done, total) on the calling thread while the runs go (every 20 ms at
+        most, when the count moved) and once at the end: for a notebook's own display. An
+        exception it raises stops the runs between two, as Ctrl-C does, and is raised here.
 
     Returns
     -------
     SpectrumResult
     """
 
-def compute_spectrum(body: Body, spec: SpectrumSpec, threads: int = ...) -> SpectrumResult:
+def compute_spectrum(body: Body, spec: SpectrumSpec, threads: int = ..., *, progress: object = ..., callback: Optional[object] = ...) -> SpectrumResult:
     """Every cell of a pulse spectrum, then the minimum overturning amplitude of each column.
 
     Parameters
@@ -1552,6 +1579,13 @@ def compute_spectrum(body: Body, spec: SpectrumSpec, threads: int = ...) -> Spec
         Amplitudes and frequencies normalised (a_p/(g tan alpha), omega_p/p) or in m/s^2 and rad/s.
     threads : int
         0: every core. The GIL is released.
+    progress : bool
+        A progress bar on stderr while it runs longer than a second (tqdm where it is installed,
+        a plain line otherwise); False: none.
+    callback : callable, optional
+        Called as callback(done, total) on the calling thread while the cells go (every 20 ms at
+        most, when the count moved) and once at the end: for a notebook's own display. An
+        exception it raises stops the runs between two, as Ctrl-C does, and is raised here.
 
     Returns
     -------
@@ -2408,7 +2442,7 @@ def run_record_cell(body: Body, spec: RecordSpectrumSpec, scale: float) -> RunSu
     RunSummary
     """
 
-def run_sweep(spec: SweepSpec, indices: list[int] = ..., threads: int = ...) -> list[SweepRow]:
+def run_sweep(spec: SweepSpec, indices: list[int] = ..., threads: int = ..., *, progress: object = ..., callback: Optional[object] = ...) -> list[SweepRow]:
     """Runs a sweep (bodies x records x scales), or the given run indices.
 
     Parameters
@@ -2418,6 +2452,13 @@ def run_sweep(spec: SweepSpec, indices: list[int] = ..., threads: int = ...) -> 
         Empty: every run.
     threads : int
         0: every core. The GIL is released.
+    progress : bool
+        A progress bar on stderr while it runs longer than a second (tqdm where it is installed,
+        a plain line otherwise); False: none.
+    callback : callable, optional
+        Called as callback(done, total) on the calling thread while the runs go (every 20 ms at
+        most, when the count moved) and once at the end: for a notebook's own display. An
+        exception it raises stops the runs between two, as Ctrl-C does, and is raised here.
 
     Returns
     -------

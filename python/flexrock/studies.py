@@ -143,6 +143,8 @@ def spectrum(
     free_periods: float = 4.0,
     bisection_tolerance: float = 1e-3,
     threads: int = 0,
+    progress: bool = True,
+    callback=None,
     **solver,
 ) -> SpectrumResult:
     """The overturning spectrum of a body under a pulse family: amplitudes x frequencies.
@@ -176,6 +178,13 @@ def spectrum(
         [-] relative.
     threads : int
         0: every core. The GIL is released while it runs.
+    progress : bool
+        A progress bar on stderr once it runs longer than a second (tqdm where installed, a plain
+        line otherwise); False: none.
+    callback : callable, optional
+        ``callback(done, total)``, runs done of the runs to do, called on this thread while it
+        runs (every 20 ms at most, when the count moved) and once at the end: for a notebook's
+        own display. An exception it raises stops the runs, as Ctrl-C does, and is raised here.
     target_im : str, optional
         Stripes: each record scaled so that this measure ("sa:1", "sa:1:0.02", "pgv", "arias",
         ...) equals each of ``targets`` (in ``units`` for Sa, else the measure's SI unit), as a
@@ -189,6 +198,8 @@ def spectrum(
         [s] a pseudo-spectral acceleration column for each period.
     sa_damping : float
         [-] damping ratio of the ``sa_periods`` columns.
+    sa_units : {"m/s^2", "g", "cm/s^2"}
+        The unit of the ``sa_periods`` columns, which end with it (``sa_T1_z0.05_g``).
     **solver
         Solver options (``rtol=...``, see :class:`SimulationOptions`).
 
@@ -226,7 +237,7 @@ def spectrum(
     spec.free_periods = free_periods
     spec.bisection_tolerance = bisection_tolerance
     spec.solver = _solver(solver)
-    result = compute_spectrum(b, spec, threads)
+    result = compute_spectrum(b, spec, threads, progress=progress, callback=callback)
     if a_unit is not None:
         result._flexrock_units = (a_unit, w_unit)
         result._flexrock_g = b.g
@@ -242,6 +253,8 @@ def record_spectrum(
     free_periods: float = 4.0,
     bisection_tolerance: float = 1e-3,
     threads: int = 0,
+    progress: bool = True,
+    callback=None,
     **solver,
 ) -> SpectrumResult:
     """One record times scale factors: the outcome at each and the minimum overturning scale.
@@ -261,6 +274,13 @@ def record_spectrum(
         [-] relative.
     threads : int
         0: every core.
+    progress : bool
+        A progress bar on stderr once it runs longer than a second (tqdm where installed, a plain
+        line otherwise); False: none.
+    callback : callable, optional
+        ``callback(done, total)``, runs done of the runs to do, called on this thread while it
+        runs (every 20 ms at most, when the count moved) and once at the end: for a notebook's
+        own display. An exception it raises stops the runs, as Ctrl-C does, and is raised here.
     **solver
         Solver options.
 
@@ -276,7 +296,8 @@ def record_spectrum(
     spec.free_periods = free_periods
     spec.bisection_tolerance = bisection_tolerance
     spec.solver = _solver(solver)
-    return compute_record_spectrum(_body(body), spec, threads)
+    return compute_record_spectrum(_body(body), spec, threads, progress=progress,
+                                   callback=callback)
 
 
 def _with_units(cols: dict, result, amplitude_columns, frequency_columns) -> dict:
@@ -407,11 +428,14 @@ def sweep(
     units: Optional[str] = None,
     free_periods: float = 2.0,
     threads: int = 0,
+    progress: bool = True,
+    callback=None,
     target_im: Optional[str] = None,
     targets: Optional[Sequence[float]] = None,
     measures: Sequence[str] = (),
     sa_periods: Sequence[float] = (),
     sa_damping: float = 0.05,
+    sa_units: str = "m/s^2",
     uncertainty: Optional[Uncertainty] = None,
     **solver,
 ) -> dict:
@@ -438,6 +462,13 @@ def sweep(
         [-] free motion after each record, in rocking periods 2 pi/p.
     threads : int
         0: every core. The GIL is released while it runs.
+    progress : bool
+        A progress bar on stderr once it runs longer than a second (tqdm where installed, a plain
+        line otherwise); False: none.
+    callback : callable, optional
+        ``callback(done, total)``, runs done of the runs to do, called on this thread while it
+        runs (every 20 ms at most, when the count moved) and once at the end: for a notebook's
+        own display. An exception it raises stops the runs, as Ctrl-C does, and is raised here.
     uncertainty : Uncertainty, optional
         Parameters each run samples (a manifest's ``[[uncertain]]`` and ``[sampling]``); their
         values are columns after the intensity measures.
@@ -511,12 +542,15 @@ def sweep(
     for t in sa_periods:
         _flexrock.require_spectral_period(float(t), "sweep: sa_periods")
     spec.measures = [MeasureRequest(str(m)) for m in measures] + [
-        MeasureRequest("sa", float(t), float(sa_damping)) for t in sa_periods
+        MeasureRequest("sa", float(t), float(sa_damping),
+                       unit=_choice("sa_units", sa_units, _ACCEL_UNITS) if sa_units != "m/s^2" else "")
+        for t in sa_periods
     ]
-    return sweep_arrays(spec, run_sweep(spec, [], threads))
+    return sweep_arrays(spec, run_sweep(spec, [], threads, progress=progress, callback=callback))
 
 
-def sweep_manifest(manifest, output=None, *, threads: int = 0) -> dict:
+def sweep_manifest(manifest, output=None, *, threads: int = 0, progress: bool = True,
+                   callback=None) -> dict:
     """Runs a sweep manifest to its CSV, as ``flexrock sweep MANIFEST -o OUTPUT`` does, through the
     same session: the runs finished so far are kept in the journal ``OUTPUT.partial``, and an
     interrupted sweep, whether the command line or Python started it, goes on from there. The
@@ -531,6 +565,14 @@ def sweep_manifest(manifest, output=None, *, threads: int = 0) -> dict:
         line's.
     threads : int
         0: every core. The GIL is released while the runs go.
+    progress : bool
+        A progress bar on stderr once it runs longer than a second (tqdm where installed, a plain
+        line otherwise); False: none.
+    callback : callable, optional
+        ``callback(done, total)``, runs done of the runs to do (those left at the start; a
+        resumed study counts only those), called on this thread while it
+        runs (every 20 ms at most, when the count moved) and once at the end: for a notebook's
+        own display. An exception it raises stops the runs, as Ctrl-C does, and is raised here.
 
     Returns
     -------
@@ -542,12 +584,12 @@ def sweep_manifest(manifest, output=None, *, threads: int = 0) -> dict:
     if output is None:
         output = os.path.splitext(os.path.basename(manifest))[0] + ".sweep.csv"
     session = SweepSession(load_sweep_manifest(manifest), os.fspath(output))
-    session.run(threads)
+    session.run(threads, progress=progress, callback=callback)
     return sweep_arrays(session.manifest.spec, session.finish())
 
 
 def spectrum_file(spec, output=None, boundary=None, *, threads: int = 0,
-                  bisect: bool = True) -> SpectrumResult:
+                  bisect: bool = True, progress: bool = True, callback=None) -> SpectrumResult:
     """Runs a spectrum file to its CSVs, as ``flexrock spectrum SPEC -o OUTPUT --boundary
     BOUNDARY`` does, through the same session: the cells and boundaries finished so far are kept
     in the journal ``OUTPUT.partial``, and an interrupted spectrum, whether the command line or
@@ -564,6 +606,14 @@ def spectrum_file(spec, output=None, boundary=None, *, threads: int = 0,
         ``x.spectrum.csv`` -> ``x.boundary.csv``.
     threads : int
         0: every core. The GIL is released while the runs go.
+    progress : bool
+        A progress bar on stderr once it runs longer than a second (tqdm where installed, a plain
+        line otherwise); False: none.
+    callback : callable, optional
+        ``callback(done, total)``, runs done of the runs to do (those left at the start; a
+        resumed study counts only those), called on this thread while it
+        runs (every 20 ms at most, when the count moved) and once at the end: for a notebook's
+        own display. An exception it raises stops the runs, as Ctrl-C does, and is raised here.
     bisect : bool
         False: the grid only, as ``--no-bisect``.
 
@@ -583,7 +633,7 @@ def spectrum_file(spec, output=None, boundary=None, *, threads: int = 0,
             stem = stem[: -len(".spectrum")]
         boundary = os.path.join(head, stem + ".boundary.csv")
     session = SpectrumSession(load_spectrum_file(spec), output, os.fspath(boundary), bisect)
-    session.run(threads)
+    session.run(threads, progress=progress, callback=callback)
     return session.finish()
 
 
@@ -714,7 +764,8 @@ def fragility_session(
     path : str or os.PathLike
         A sweep CSV.
     im : str, optional
-        Intensity measure (``--im``): pga [m/s^2] (the default), pga_g [g], pgv [m/s], scale
+        Intensity measure (``--im``): pga_g [g] (the default, as the plots'), pga [m/s^2],
+        pgv [m/s], scale
         [-], requested_level, or one of the sweep's [intensity] table (pgd, arias, cav, d5_95,
         pgv_over_pga, sa:T[:zeta]). ``analysis="msa"`` takes the requested levels.
     outcome : {"overturned", "uplift", "theta", "energy", "offset", "residual_offset"}
@@ -751,13 +802,13 @@ def fragility_session(
     if analysis not in analyses:
         raise ValueError(f"analysis {analysis!r}: expected one of: {', '.join(analyses)}")
     return FragilitySession(
-        os.fspath(path), im=im if im is not None else "pga", im_given=im is not None,
+        os.fspath(path), im=im if im is not None else "pga_g", im_given=im is not None,
         states=[damage_state(s) for s in states], outcome=kinds[outcome], level=float(level),
         analysis=analyses[analysis], body=body, confidence=float(confidence))
 
 
 def fragility_from_sweep(
-    path: str, im: str = "pga", outcome: str = "overturned", level: float = 0.0, body: str = ""
+    path: str, im: str = "pga_g", outcome: str = "overturned", level: float = 0.0, body: str = ""
 ):
     """Fits a sweep CSV as ``flexrock fragility`` does, one damage state (see fragility_session
     for several, stripes and capacities).

@@ -44,15 +44,41 @@ namespace {
 // without the GIL and takes it every 20 ms to look for signals: Ctrl-C (or any signal whose
 // Python handler raises) stops the pool between runs, as SIGINT stops the command line, and
 // its exception is raised here once the pool has stopped (a session's journal keeps every
-// finished run); from a thread other than the main one no signal is seen (Python's rule)
+// finished run); from a thread other than the main one no signal is seen (Python's rule).
+// `progress`: what flexrock._progress.reporter made of the keywords progress= and callback=
+// (None: nothing), called on this thread with (runs done, runs to do) when the count moves and
+// once at the end, then closed; an exception it raises stops the runs as Ctrl-C does
+struct Progress {
+  py::object reporter = py::none();
+  std::size_t total = 0;
+};
+
+Progress progress_of(const py::object& bar, const py::object& callback, const char* what,
+                     std::size_t total) {
+  return {py::module_::import("flexrock._progress").attr("reporter")(bar, callback, what, total),
+          total};
+}
+
 template <class Work>
-auto interruptible(int threads, Work work) {
+auto interruptible(int threads, Work work, const Progress& progress = {}) {
   std::atomic<bool> cancel{false};
+  std::atomic<std::size_t> completed{0};
   study::RunOptions o;
   o.threads = threads;
   o.cancel = &cancel;
+  o.completed = &completed;
   auto done = std::async(std::launch::async, [&] { return work(o); });
   bool interrupted = false;
+  std::size_t reported = 0;
+  bool first = true;
+  const bool reporting = !progress.reporter.is_none();
+  auto report = [&] {
+    const std::size_t n = std::min(completed.load(std::memory_order_relaxed), progress.total);
+    if (!first && n == reported) return;
+    first = false;
+    reported = n;
+    progress.reporter(n, progress.total);
+  };
   for (;;) {
     std::future_status state;
     {
@@ -60,18 +86,48 @@ auto interruptible(int threads, Work work) {
       state = done.wait_for(std::chrono::milliseconds(20));
     }
     if (state == std::future_status::ready) break;
-    if (!interrupted && PyErr_CheckSignals() != 0) {
+    if (interrupted) continue;
+    if (PyErr_CheckSignals() != 0) {
       interrupted = true;
       cancel.store(true);
+      continue;
+    }
+    if (reporting) {
+      try {
+        report();
+      } catch (py::error_already_set& e) {
+        // the callback's exception, once the pool has stopped
+        interrupted = true;
+        cancel.store(true);
+        e.restore();
+      }
     }
   }
   if (interrupted) {
-    // the signal's exception wins over what the stopped pool returned or threw
+    // the signal's (or the callback's) exception wins over what the stopped pool returned or
+    // threw; the bar is closed without hiding it
     try {
       done.get();
     } catch (...) {
     }
+    if (reporting) {
+      py::error_scope keep;
+      try {
+        progress.reporter.attr("close")();
+      } catch (py::error_already_set&) {
+      }
+    }
     throw py::error_already_set();
+  }
+  if (reporting) {
+    // the last count, then the bar closed, also when the pool threw
+    try {
+      report();
+    } catch (...) {
+      progress.reporter.attr("close")();
+      throw;
+    }
+    progress.reporter.attr("close")();
   }
   return done.get();
 }
@@ -262,11 +318,15 @@ RunSummary)doc");
       });
   m.def(
       "compute_spectrum",
-      [](const Body& body, const SpectrumSpec& spec, int threads) {
+      [](const Body& body, const SpectrumSpec& spec, int threads, const py::object& progress,
+         const py::object& callback) {
         return interruptible(
-            threads, [&](const study::RunOptions& o) { return compute_spectrum(body, spec, o); });
+            threads, [&](const study::RunOptions& o) { return compute_spectrum(body, spec, o); },
+            progress_of(progress, callback, "spectrum",
+                        spec.amplitudes.size() * spec.frequencies.size()));
       },
-      py::arg("body"), py::arg("spec"), py::arg("threads") = 0,
+      py::arg("body"), py::arg("spec"), py::arg("threads") = 0, py::kw_only(),
+      py::arg("progress") = py::bool_(true), py::arg("callback") = py::none(),
       R"doc(Every cell of a pulse spectrum, then the minimum overturning amplitude of each column.
 
 Parameters
@@ -276,18 +336,28 @@ spec : SpectrumSpec
     Amplitudes and frequencies normalised (a_p/(g tan alpha), omega_p/p) or in m/s^2 and rad/s.
 threads : int
     0: every core. The GIL is released.
+progress : bool
+    A progress bar on stderr while it runs longer than a second (tqdm where it is installed,
+    a plain line otherwise); False: none.
+callback : callable, optional
+    Called as callback(done, total) on the calling thread while the cells go (every 20 ms at
+    most, when the count moved) and once at the end: for a notebook's own display. An
+    exception it raises stops the runs between two, as Ctrl-C does, and is raised here.
 
 Returns
 -------
 SpectrumResult)doc");
   m.def(
       "compute_record_spectrum",
-      [](const Body& body, const RecordSpectrumSpec& spec, int threads) {
-        return interruptible(threads, [&](const study::RunOptions& o) {
-          return compute_record_spectrum(body, spec, o);
-        });
+      [](const Body& body, const RecordSpectrumSpec& spec, int threads, const py::object& progress,
+         const py::object& callback) {
+        return interruptible(
+            threads,
+            [&](const study::RunOptions& o) { return compute_record_spectrum(body, spec, o); },
+            progress_of(progress, callback, "record spectrum", spec.scales.size()));
       },
-      py::arg("body"), py::arg("spec"), py::arg("threads") = 0,
+      py::arg("body"), py::arg("spec"), py::arg("threads") = 0, py::kw_only(),
+      py::arg("progress") = py::bool_(true), py::arg("callback") = py::none(),
       R"doc(One record times scale factors, and the minimum overturning scale.
 
 Parameters
@@ -296,6 +366,13 @@ body : Body
 spec : RecordSpectrumSpec
 threads : int
     0: every core.
+progress : bool
+    A progress bar on stderr while it runs longer than a second (tqdm where it is installed,
+    a plain line otherwise); False: none.
+callback : callable, optional
+    Called as callback(done, total) on the calling thread while the runs go (every 20 ms at
+    most, when the count moved) and once at the end: for a notebook's own display. An
+    exception it raises stops the runs between two, as Ctrl-C does, and is raised here.
 
 Returns
 -------
@@ -367,13 +444,16 @@ float
       .def_readonly("pgv", &Intensity::pgv, "[m/s]")
       .def_readonly("measures", &Intensity::measures, "[SI] the requested measures, in order");
   py::class_<MeasureRequest>(m, "MeasureRequest")
-      .def(py::init([](std::string name, double period, double zeta) {
-             return MeasureRequest{std::move(name), period, zeta};
+      .def(py::init([](std::string name, double period, double zeta, std::string unit) {
+             return MeasureRequest{std::move(name), period, zeta, std::move(unit)};
            }),
-           py::arg("name"), py::arg("period") = 0.0, py::arg("zeta") = 0.05)
+           py::arg("name"), py::arg("period") = 0.0, py::arg("zeta") = 0.05, py::kw_only(),
+           py::arg("unit") = "")
       .def_readwrite("name", &MeasureRequest::name, "a name of intensity_measures()")
       .def_readwrite("period", &MeasureRequest::period, "[s] sa only")
-      .def_readwrite("zeta", &MeasureRequest::zeta, "[-] sa only");
+      .def_readwrite("zeta", &MeasureRequest::zeta, "[-] sa only")
+      .def_readwrite("unit", &MeasureRequest::unit,
+                     "sa only: \"\" or \"m/s^2\" (SI), \"g\" or \"cm/s^2\": its column's unit");
   m.def("measure_request", &measure_request, py::arg("text"),
         R"doc(A measure as the command line names it: a name of ``intensity_measures()`` or "sa:T",
 "sa:T:zeta".
@@ -549,11 +629,15 @@ Intensity
                     "the run's values of spec.uncertainty, in its order");
   m.def(
       "run_sweep",
-      [](const SweepSpec& spec, const std::vector<std::size_t>& indices, int threads) {
+      [](const SweepSpec& spec, const std::vector<std::size_t>& indices, int threads,
+         const py::object& progress, const py::object& callback) {
+        const std::size_t total = indices.empty() ? study::sweep_runs(spec).size() : indices.size();
         return interruptible(
-            threads, [&](const study::RunOptions& o) { return run_sweep(spec, indices, o); });
+            threads, [&](const study::RunOptions& o) { return run_sweep(spec, indices, o); },
+            progress_of(progress, callback, "sweep", total));
       },
       py::arg("spec"), py::arg("indices") = std::vector<std::size_t>{}, py::arg("threads") = 0,
+      py::kw_only(), py::arg("progress") = py::bool_(true), py::arg("callback") = py::none(),
       R"doc(Runs a sweep (bodies x records x scales), or the given run indices.
 
 Parameters
@@ -563,6 +647,13 @@ indices : list of int
     Empty: every run.
 threads : int
     0: every core. The GIL is released.
+progress : bool
+    A progress bar on stderr while it runs longer than a second (tqdm where it is installed,
+    a plain line otherwise); False: none.
+callback : callable, optional
+    Called as callback(done, total) on the calling thread while the runs go (every 20 ms at
+    most, when the count moved) and once at the end: for a notebook's own display. An
+    exception it raises stops the runs between two, as Ctrl-C does, and is raised here.
 
 Returns
 -------
@@ -1019,10 +1110,14 @@ and the CSV has the same bytes as an uninterrupted run.)doc")
       .def_property_readonly("manifest", &io::SweepSession::manifest)
       .def(
           "run",
-          [](io::SweepSession& s, int threads) {
-            interruptible(threads, [&](const study::RunOptions& o) { s.run(o); });
+          [](io::SweepSession& s, int threads, const py::object& progress,
+             const py::object& callback) {
+            interruptible(
+                threads, [&](const study::RunOptions& o) { s.run(o); },
+                progress_of(progress, callback, "sweep", s.share().size()));
           },
-          py::arg("threads") = 0,
+          py::arg("threads") = 0, py::kw_only(), py::arg("progress") = py::bool_(true),
+          py::arg("callback") = py::none(),
           R"doc(Runs the runs left, journaling each as it finishes (the GIL is released).
 Ctrl-C stops it between runs and raises KeyboardInterrupt; the journal keeps every finished run
 and run() again, or a new session on the same manifest and output, goes on from there. Raises
@@ -1031,7 +1126,14 @@ RuntimeError after finish().
 Parameters
 ----------
 threads : int
-    0: every core.)doc")
+    0: every core.
+progress : bool
+    A progress bar on stderr while it runs longer than a second (tqdm where it is installed,
+    a plain line otherwise); False: none.
+callback : callable, optional
+    Called as callback(done, total) (the runs left at the start) on the calling thread while the runs go (every 20 ms at
+    most, when the count moved) and once at the end: for a notebook's own display. An
+    exception it raises stops the runs between two, as Ctrl-C does, and is raised here.)doc")
       .def("finish", &io::SweepSession::finish, py::call_guard<py::gil_scoped_release>(),
            R"doc(Writes the CSV from every row and deletes the journal. Raises RuntimeError, the
 journal kept, when a run is not finished (run() not called, or stopped): call run() first; and
@@ -1068,10 +1170,14 @@ here, and the CSVs have the same bytes as an uninterrupted run.)doc")
       .def_property_readonly("grid", &io::SpectrumSession::grid)
       .def(
           "run",
-          [](io::SpectrumSession& s, int threads) {
-            interruptible(threads, [&](const study::RunOptions& o) { s.run(o); });
+          [](io::SpectrumSession& s, int threads, const py::object& progress,
+             const py::object& callback) {
+            interruptible(
+                threads, [&](const study::RunOptions& o) { s.run(o); },
+                progress_of(progress, callback, "spectrum", s.share_cells()));
           },
-          py::arg("threads") = 0,
+          py::arg("threads") = 0, py::kw_only(), py::arg("progress") = py::bool_(true),
+          py::arg("callback") = py::none(),
           R"doc(Runs the cells and bisections left, journaling each as it finishes (the GIL is
 released). Ctrl-C stops it between runs and raises KeyboardInterrupt; the journal keeps every
 finished cell and boundary and run() again, or a new session on the same file and outputs, goes
@@ -1080,7 +1186,14 @@ on from there. Raises RuntimeError after finish().
 Parameters
 ----------
 threads : int
-    0: every core.)doc")
+    0: every core.
+progress : bool
+    A progress bar on stderr while it runs longer than a second (tqdm where it is installed,
+    a plain line otherwise); False: none.
+callback : callable, optional
+    Called as callback(done, total) (cells left at the start; a bisection's runs come on top) on the calling thread while the runs go (every 20 ms at
+    most, when the count moved) and once at the end: for a notebook's own display. An
+    exception it raises stops the runs between two, as Ctrl-C does, and is raised here.)doc")
       .def(
           "finish", [](io::SpectrumSession& s) { return s.finish(); },
           py::call_guard<py::gil_scoped_release>(),
@@ -1217,7 +1330,7 @@ as ``flexrock fragility`` makes them (the same checks, observations, fits and fi
              o.confidence = confidence;
              return std::make_unique<io::FragilitySession>(path, std::move(o));
            }),
-           py::arg("path"), py::arg("im") = "pga", py::arg("im_given") = false,
+           py::arg("path"), py::arg("im") = "pga_g", py::arg("im_given") = false,
            py::arg("states") = std::vector<io::DamageState>{},
            py::arg("outcome") = io::FragilityOutcome::kOverturned, py::arg("level") = 0.0,
            py::arg("analysis") = io::FragilityAnalysis::kRuns, py::arg("body") = "",

@@ -70,7 +70,7 @@ def test_parameters_round_trip_through_numpy():
 
 def test_simulate_returns_numpy_histories_and_a_summary_with_the_cli_keys(cases, cli, tmp_path):
     body = fr.rigid_block(0.4, 1.8, 800.0)
-    motion = fr.one_sine_pulse(0.5 * 9.80665, 2 * math.pi * 2.0, 3.0)
+    motion = fr.one_sine_pulse(a_p=0.5 * 9.80665, omega_p=2 * math.pi * 2.0, duration=3.0)
     r = fr.simulate(body, motion, name="pulse", output_dt=0.01)
     h = r.history
     assert isinstance(h.theta, np.ndarray) and h.theta.dtype == np.float64
@@ -137,7 +137,7 @@ def test_mirror_symmetry_of_a_symmetric_block():
 
 def test_flexible_body_history_has_one_column_per_mode():
     p = fr.uniform_cantilever(10.0, 3.0, 2000.0, 5e9, modes=2, base_mass=1000.0)
-    r = fr.simulate(p, fr.harmonic(2.0, 10.0, 1.0), output_dt=0.01)
+    r = fr.simulate(p, fr.harmonic(a_p=2.0, omega_p=10.0, duration=1.0), output_dt=0.01)
     assert r.history.q.shape == (len(r.history), 2)
     th = r.time_history()
     np.testing.assert_array_equal(th["q2"], r.history.q[:, 1])
@@ -148,7 +148,7 @@ def test_a_run_whose_energy_balance_does_not_close_says_so():
     # a cantilever rocking under 0.5 g: the default tolerances close the balance to ~1e-8 of
     # the scale; rtol = atol = 1e-3 leaves a residual of 2 % of it, above 1e-5 scale + 1e-10 M g h
     p = fr.uniform_cantilever(10.0, 3.0, 2000.0, 5e9, modes=2, base_mass=1000.0)
-    motion = fr.harmonic(0.5 * 9.81, 2.0, 4.0)
+    motion = fr.harmonic(a_p=0.5 * 9.81, omega_p=2.0, duration=4.0)
     ok = fr.simulate(p, motion)
     assert ok.extremes.impacts > 0
     assert not ok.energy_unbalanced
@@ -174,7 +174,7 @@ def test_options_by_keyword_and_initial_state():
 
 
 def test_result_write_produces_the_files(tmp_path):
-    r = fr.simulate(fr.rigid_block(0.4, 1.8, 800.0), fr.one_sine_pulse(5.0, 12.0, 2.0))
+    r = fr.simulate(fr.rigid_block(0.4, 1.8, 800.0), fr.one_sine_pulse(a_p=5.0, omega_p=12.0, duration=2.0))
     paths = r.write(tmp_path, time_history="a.csv", summary="a.summary.json", events="a.events.csv")
     assert (tmp_path / "a.csv").read_text() == r.time_history_csv()
     assert (tmp_path / "a.events.csv").read_text() == r.events_csv()

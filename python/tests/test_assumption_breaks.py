@@ -14,7 +14,7 @@ HEIGHT, MASS, WIDTH = 2.0, 1000.0, 0.510684
 
 
 def one_sine(body):
-    return fr.one_sine_pulse(5.10684 * G, 2.0 * math.pi / 1.176638, 8.0)
+    return fr.one_sine_pulse(a_p=5.10684 * G, omega_p=2.0 * math.pi / 1.176638, duration=8.0)
 
 
 def test_a_tensile_landing_is_reported_with_its_impulse():

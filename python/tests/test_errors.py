@@ -75,7 +75,7 @@ def test_record_parse_error_names_file_and_line(tmp_path):
 
 
 def test_unwritable_output_is_a_runtime_error(tmp_path):
-    r = fr.simulate(fr.rigid_block(0.4, 1.8, 800.0), fr.one_sine_pulse(5.0, 12.0, 1.0))
+    r = fr.simulate(fr.rigid_block(0.4, 1.8, 800.0), fr.one_sine_pulse(a_p=5.0, omega_p=12.0, duration=1.0))
     blocker = tmp_path / "file"
     blocker.write_text("")
     with pytest.raises(RuntimeError, match="could not write the outputs"):

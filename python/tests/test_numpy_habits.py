@@ -89,8 +89,7 @@ def test_pulses_take_the_case_file_keys_and_units(tmp_path):
         fr.one_sine_pulse(amplitude=0.3, units="g", frequency_hz=2.5, duration=3.0),
         fr.one_sine_pulse(amplitude_g=0.3, period=0.4, duration=3.0),
         fr.one_sine_pulse(amplitude=0.3 * G, units="m/s^2", frequency_hz=2.5, duration=3.0),
-        fr.one_sine_pulse(0.3 * G, 2 * math.pi * 2.5, 3.0),  # the engine's SI form still works
-        fr.one_sine_pulse(a_p=0.3 * G, omega_p=2 * math.pi * 2.5, duration=3.0),
+        fr.one_sine_pulse(a_p=0.3 * G, omega_p=2 * math.pi * 2.5, duration=3.0),  # the SI form
     ]
     t = np.linspace(0.0, 0.45, 37)
     ref = np.array([from_file.at(v)[0] for v in t])
@@ -101,11 +100,11 @@ def test_pulses_take_the_case_file_keys_and_units(tmp_path):
     assert abs(r.at(1.5)[0]) == pytest.approx(0.2 * G, rel=1e-12)
     box = fr.rectangular_pulse(amplitude_g=0.1, length=0.5, duration=1.0)
     assert box.at(0.25)[0] == pytest.approx(0.1 * G) and box.at(0.75)[0] == 0.0
-    # the SI form follows the table's order: a_p, omega_p, duration, the keys' engine names
+    # the SI form: a_p, omega_p, duration, the keys' engine names
     w = 2 * math.pi
-    same = fr.ricker_wavelet(0.2 * G, w, 4.0, 1.5)
+    same = fr.ricker_wavelet(a_p=0.2 * G, omega_p=w, duration=4.0, t_c=1.5)
     assert same.at(1.5)[0] == r.at(1.5)[0]
-    assert fr.rectangular_pulse(0.1 * G, 1.0, 0.5).at(0.25)[0] == box.at(0.25)[0]
+    assert fr.rectangular_pulse(a_p=0.1 * G, duration=1.0, t_1=0.5).at(0.25)[0] == box.at(0.25)[0]
     cyc = fr.harmonic_cycles(amplitude_g=0.1, frequency_hz=1.0, cycles=2, duration=4.0)
     assert cyc.at(2.25)[0] == 0.0 and cyc.at(1.25)[0] == pytest.approx(0.1 * G)
     with pytest.raises(fr.InputError, match="cycles: missing"):
@@ -124,8 +123,8 @@ def test_pulse_spellings_that_mix_units_are_refused_with_the_new_spelling():
         fr.one_sine_pulse(amplitude_g=0.3, omega_p=6.0, duration=3.0)
     with pytest.raises(fr.InputError, match="frequency_hz .Hz. or period"):
         fr.one_sine_pulse(amplitude_g=0.3, frequency_hz=2.0, period=0.5, duration=3.0)
-    with pytest.raises(fr.InputError, match="positional"):
-        fr.one_sine_pulse(0.3, frequency_hz=2.0, duration=3.0)
+    with pytest.raises(fr.InputError, match="a_p= is in SI units"):
+        fr.one_sine_pulse(a_p=0.3, frequency_hz=2.0, duration=3.0)
     with pytest.raises(fr.InputError, match="units"):
         fr.one_sine_pulse(amplitude=0.3, units="furlong", frequency_hz=2.0, duration=3.0)
 
@@ -280,3 +279,15 @@ def test_every_body_type_with_number_keys_has_its_keyword_function():
         fr.uniform_cantilever(10.0, 3.0, 2000.0, 5e9, modes=1.5)
     with pytest.raises(fr.InputError, match="width"):
         fr.rigid_block(-0.4, 1.8, 800.0)
+
+
+def test_pulse_values_are_keyword_only_a_bare_number_has_no_unit():
+    # 0.3 meant as g and 2.0 as Hz were once read as 0.3 m/s^2 and 2.0 rad/s without a word
+    for call in (lambda: fr.one_sine_pulse(0.3, 2.0, 3.0),
+                 lambda: fr.one_sine_pulse(0.3, frequency_hz=2.0, duration=3.0),
+                 lambda: fr.rectangular_pulse(0.1, 1.0, 0.5),
+                 lambda: fr.harmonic_cycles(0.1, 6.0, 4.0, cycles=2)):
+        with pytest.raises(TypeError, match=r"by keyword, with their units, not positionally"):
+            call()
+    with pytest.raises(TypeError, match=r"as SI values: a_p=0.3, omega_p=2.0, duration=3.0"):
+        fr.one_sine_pulse(0.3, 2.0, 3.0)

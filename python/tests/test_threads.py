@@ -11,7 +11,7 @@ import flexrock as fr
 
 def _run(amplitude):
     body = fr.uniform_cantilever(10.0, 3.0, 2000.0, 5e9, modes=2, base_mass=1000.0)
-    return fr.simulate(body, fr.harmonic(amplitude, 2 * math.pi * 1.2, 4.0), output_dt=0.01)
+    return fr.simulate(body, fr.harmonic(a_p=amplitude, omega_p=2 * math.pi * 1.2, duration=4.0), output_dt=0.01)
 
 
 def test_threads_give_the_serial_results():
@@ -34,7 +34,7 @@ def test_python_runs_while_a_simulation_runs():
     # be scheduled on a loaded machine): 30 s at max_step 1e-4 is 300,000 steps, about 0.2 s
     marks = {}
     body = fr.uniform_cantilever(10.0, 3.0, 2000.0, 5e9, modes=2, base_mass=1000.0)
-    motion = fr.harmonic(0.3, 2 * math.pi * 1.3, 30.0)
+    motion = fr.harmonic(a_p=0.3, omega_p=2 * math.pi * 1.3, duration=30.0)
 
     def work():
         marks["start"] = time.perf_counter()

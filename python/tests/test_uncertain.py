@@ -35,7 +35,7 @@ def test_sweep_takes_an_uncertainty_and_threads_change_nothing():
          fr.UncertainParameter("size_scale", "lognormal", median=1.0, beta=0.05)],
         fr.Sampling(seed=11, method=fr.SamplingMethod.random, scope=fr.SamplingScope.record))
     bodies = {"block": fr.rigid_block(0.4, 2.0, 1000.0)}
-    records = {"pulse": fr.one_sine_pulse(1.0, 5.0, 3.0)}
+    records = {"pulse": fr.one_sine_pulse(a_p=1.0, omega_p=5.0, duration=3.0)}
     one = fr.sweep(bodies, records, factors=[1.0, 2.0, 3.0], uncertainty=u, threads=1)
     two = fr.sweep(bodies, records, factors=[1.0, 2.0, 3.0], uncertainty=u, threads=2)
     for k in one:
@@ -82,7 +82,7 @@ def test_bad_parameters_say_what_is_right():
     # a rigid body has no modes to scale
     u = fr.Uncertainty([fr.UncertainParameter("frequency_scale", "uniform", minimum=0.9, maximum=1.1)])
     with pytest.raises(ValueError, match="rigid"):
-        fr.sweep({"b": fr.rigid_block(0.4, 2.0, 1000.0)}, {"p": fr.one_sine_pulse(1.0, 5.0, 3.0)},
+        fr.sweep({"b": fr.rigid_block(0.4, 2.0, 1000.0)}, {"p": fr.one_sine_pulse(a_p=1.0, omega_p=5.0, duration=3.0)},
                  factors=[1.0], uncertainty=u)
 
 

@@ -69,6 +69,26 @@ FragilitySession::FragilitySession(CsvTable table, FragilityOptions options)
   // the table, then the measure (a measure it lacks is named with the file)
   check_sweep_table(table_);
   measure_ = fragility_measure(options_.im);
+  // sa:T is in the unit the sweep wrote it in: the column of that unit (sa_T1_z0.05_g)
+  if (measure_.kind == FragilityMeasureKind::kIntensity &&
+      std::find(table_.columns.begin(), table_.columns.end(), measure_.column) ==
+          table_.columns.end()) {
+    for (const char* u : {"g", "cm/s^2"}) {
+      study::MeasureRequest r = measure_.request;
+      r.unit = u;
+      try {
+        const std::string c = study::measure_column(r);
+        if (std::find(table_.columns.begin(), table_.columns.end(), c) != table_.columns.end()) {
+          measure_.request = r;
+          measure_.column = c;
+          measure_.unit = u;
+          break;
+        }
+      } catch (const InputError&) {
+        break;  // a measure without units
+      }
+    }
+  }
   unit_ = measure_.unit;
   if (measure_.kind == FragilityMeasureKind::kRequestedLevel && !table_.rows.empty()) {
     const auto c = static_cast<std::size_t>(

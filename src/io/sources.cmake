@@ -34,5 +34,5 @@ target_sources(flexrock_io PRIVATE io/study_files.cpp io/study_suites.cpp io/stu
                                    io/study_sweep.cpp io/study_journal.cpp
                                    io/study_fragility_input.cpp io/fragility_session.cpp
                                    io/journal.cpp io/uncertain_tables.cpp
-                                   io/study_session.cpp io/qualify.cpp)
+                                   io/study_session.cpp io/study_shards.cpp io/qualify.cpp)
 target_link_libraries(flexrock_io PUBLIC flexrock::study)

@@ -49,6 +49,24 @@ std::string join_columns(const std::vector<std::string>& v) {
 
 }  // namespace
 
+namespace {
+
+// the journal of an output, or of a shard of it
+std::string journal_of(const std::string& output, const std::optional<Shard>& shard) {
+  return (shard ? shard_path(output, *shard) : output) + ".partial";
+}
+
+// a shard is one process: its split is by --shard, not by MPI ranks
+void check_shard_transport(const std::optional<Shard>& shard, const StudyTransport& transport) {
+  if (shard && transport.size() > 1) {
+    throw InputError("--shard: a shard runs in one process; started as " +
+                     std::to_string(transport.size()) +
+                     " MPI processes, drop --shard (MPI splits the study) or mpirun");
+  }
+}
+
+}  // namespace
+
 const StudyTransport& single_process() {
   static const StudyTransport one;
   return one;
@@ -156,11 +174,15 @@ namespace {
 
 // every run checked and the files kept apart before the journal exists: a sweep that could not
 // run must not leave a journal behind
-std::size_t checked_runs(const SweepManifest& m, const std::string& output) {
+std::size_t checked_runs(const SweepManifest& m, const std::string& output,
+                         const std::optional<Shard>& shard, const StudyTransport& transport) {
   study::validate(m.spec);
   std::vector<NamedPath> inputs;
   for (const std::string& f : m.input_files) inputs.push_back({"input", f});
-  check_distinct_files(inputs, {{"output", output}, {"journal", output + ".partial"}});
+  const std::string written = shard ? shard_path(output, *shard) : output;
+  check_distinct_files(
+      inputs, {{shard ? "shard file" : "output", written}, {"journal", journal_of(output, shard)}});
+  check_shard_transport(shard, transport);
   return study::sweep_runs(m.spec).size();
 }
 
@@ -183,16 +205,18 @@ JournalCheck sweep_rows_check(const study::SweepSpec& spec,
 }  // namespace
 
 SweepSession::SweepSession(SweepManifest manifest, std::string output,
-                           const StudyTransport& transport)
+                           const StudyTransport& transport, std::optional<Shard> shard)
     : manifest_(std::move(manifest)),
       output_(std::move(output)),
       transport_(transport),
-      runs_(checked_runs(manifest_, output_)),
-      journal_(transport, output_ + ".partial", "sweep", manifest_.hash, runs_,
+      shard_(shard),
+      runs_(checked_runs(manifest_, output_, shard_, transport_)),
+      journal_(transport, journal_of(output_, shard_), "sweep", manifest_.hash, runs_,
                sweep_rows_check(manifest_.spec, rows_)) {
+  // a shard's share is by index (the same whatever its journal holds), MPI's by the runs left
   std::vector<std::size_t> left;
   for (std::size_t i = 0; i < runs_; ++i) {
-    if (!journal_.known().count(i)) left.push_back(i);
+    if (!journal_.known().count(i) && (!shard_ || shard_->owns(i))) left.push_back(i);
   }
   // this process's share: every size-th of the runs left
   const auto size = static_cast<std::size_t>(transport_.size());
@@ -237,6 +261,7 @@ std::vector<study::SweepRow> SweepSession::finish() {
     finished_ = true;
     return {};
   }
+  if (shard_) return finish_shard(lines);
   // finish() before run() has done every run (or after a stopped one): a usage error the caller
   // mends by running on, never an abort
   if (lines.size() != runs_) {
@@ -268,6 +293,40 @@ std::vector<study::SweepRow> SweepSession::finish() {
   return rows;
 }
 
+std::vector<study::SweepRow> SweepSession::finish_shard(
+    const std::map<std::size_t, std::string>& lines) {
+  ShardFile f;
+  f.path = shard_path(output_, *shard_);
+  f.kind = "sweep";
+  f.shard = *shard_;
+  f.inputs = manifest_.hash;
+  f.runs = f.cells = runs_;
+  f.output_header = join_columns(sweep_columns(manifest_.spec));
+  std::vector<study::SweepRow> rows;
+  try {
+    for (std::size_t i = 0; i < runs_; ++i) {
+      if (!shard_->owns(i)) continue;
+      const auto it = lines.find(i);
+      if (it == lines.end()) {
+        throw std::runtime_error(output_ + ": finish() before every run of shard " +
+                                 std::to_string(shard_->k) + "/" + std::to_string(shard_->n) +
+                                 " is done (journal " + journal_.path() +
+                                 "); call run() first: it goes on from the journal");
+      }
+      f.lines[i] = it->second;
+      const auto r = rows_.find(i);
+      rows.push_back(r != rows_.end() ? r->second : read_sweep_row(manifest_.spec, i, it->second));
+    }
+    write_shard_file(f);
+  } catch (...) {
+    journal_.finish(false);
+    throw;
+  }
+  journal_.finish(true);
+  finished_ = true;
+  return rows;
+}
+
 // ---------------------------------------------------------------------------------------------
 // the spectrum
 
@@ -278,11 +337,24 @@ bool bisects(const SpectrumFile& f) { return f.is_record ? f.record.bisect : f.p
 // the grid, with every run it makes checked, and the files kept apart, before the journal
 // exists: a run that could not start must not leave a journal behind
 study::SpectrumResult checked_grid(const SpectrumFile& f, const Body& body,
-                                   const std::string& output, const std::string& boundary) {
+                                   const std::string& output, const std::string& boundary,
+                                   const std::optional<Shard>& shard,
+                                   const StudyTransport& transport) {
   std::vector<NamedPath> inputs;
   for (const std::string& i : f.input_files) inputs.push_back({"input", i});
-  check_distinct_files(inputs,
-                       {{"output", output}, {"boundary output", bisects(f) ? boundary : ""}});
+  if (shard) {
+    check_distinct_files(inputs, {{"shard file", shard_path(output, *shard)},
+                                  {"journal", journal_of(output, shard)}});
+  } else {
+    check_distinct_files(inputs,
+                         {{"output", output}, {"boundary output", bisects(f) ? boundary : ""}});
+  }
+  check_shard_transport(shard, transport);
+  if (shard && f.is_record && bisects(f)) {
+    throw InputError(
+        "--shard: a record spectrum's bisection needs the outcome of every scale, which no "
+        "shard has; split it with --no-bisect (the cells only), or run it whole or under MPI");
+  }
   return f.is_record ? study::record_spectrum_grid(body, f.record)
                      : study::spectrum_grid(body, f.pulse);
 }
@@ -309,16 +381,17 @@ JournalCheck spectrum_rows_check(const study::SpectrumResult& grid, bool normali
 }  // namespace
 
 SpectrumSession::SpectrumSession(SpectrumFile file, std::string output, std::string boundary_output,
-                                 const StudyTransport& transport)
+                                 const StudyTransport& transport, std::optional<Shard> shard)
     : file_(std::move(file)),
       body_(file_.body),
       output_(std::move(output)),
       boundary_output_(std::move(boundary_output)),
       transport_(transport),
+      shard_(shard),
       bisect_(bisects(file_)),
-      grid_(checked_grid(file_, body_, output_, boundary_output_)),
+      grid_(checked_grid(file_, body_, output_, boundary_output_, shard_, transport_)),
       // its inputs are the files and whether the boundary is bisected
-      journal_(transport, output_ + ".partial", "spectrum",
+      journal_(transport, journal_of(output_, shard_), "spectrum",
                fnv1a(bisect_ ? "bisect" : "no-bisect", file_.hash), runs(),
                spectrum_rows_check(grid_, file_.pulse.normalized || file_.is_record, body_.g())) {
   const std::size_t n = cells();
@@ -345,8 +418,8 @@ SpectrumSession::SpectrumSession(SpectrumFile file, std::string output, std::str
   };
   // the cells left in this process's share (the bisection's runs come on top)
   const std::size_t columns = file_.is_record ? 1 : file_.pulse.frequencies.size();
-  const auto size = static_cast<std::size_t>(transport_.size());
-  const auto rank = static_cast<std::size_t>(transport_.rank());
+  const auto size = static_cast<std::size_t>(shard_ ? shard_->n : transport_.size());
+  const auto rank = static_cast<std::size_t>(shard_ ? shard_->k - 1 : transport_.rank());
   for (std::size_t i = 0; i < n; ++i) {
     const std::size_t unit = file_.is_record ? i : i % columns;
     if (unit % size == rank && !resume_.cells.count(i)) ++share_cells_;
@@ -366,8 +439,8 @@ void SpectrumSession::require_open(const char* call) const {
 void SpectrumSession::run(const study::RunOptions& options) {
   require_open("run()");
   study::RunOptions o = options;
-  o.rank = transport_.rank();
-  o.ranks = transport_.size();
+  o.rank = shard_ ? shard_->k - 1 : transport_.rank();
+  o.ranks = shard_ ? shard_->n : transport_.size();
   if (file_.is_record) {
     study::compute_record_spectrum(body_, file_.record, o, &resume_);
   } else {
@@ -389,6 +462,7 @@ study::SpectrumResult SpectrumSession::finish(const std::atomic<bool>* cancel) {
     finished_ = true;
     return {};
   }
+  if (shard_) return finish_shard(lines);
   const double g = body_.g();
   const bool normalized = file_.pulse.normalized || file_.is_record;
   const std::size_t n = cells();
@@ -447,6 +521,58 @@ study::SpectrumResult SpectrumSession::finish(const std::atomic<bool>* cancel) {
   finished_ = !stopped;
   // a stopped bisection: nothing written, the journal stays for the next start
   return stopped ? study::SpectrumResult{} : res;
+}
+
+study::SpectrumResult SpectrumSession::finish_shard(
+    const std::map<std::size_t, std::string>& lines) {
+  const double g = body_.g();
+  const bool normalized = file_.pulse.normalized || file_.is_record;
+  const std::size_t n = cells();
+  const std::size_t columns = file_.is_record ? 1 : file_.pulse.frequencies.size();
+  ShardFile f;
+  f.path = shard_path(output_, *shard_);
+  f.kind = "spectrum";
+  f.shard = *shard_;
+  f.inputs = fnv1a(bisect_ ? "bisect" : "no-bisect", file_.hash);
+  f.runs = runs();
+  f.cells = n;
+  f.output_header = join_columns(spectrum_columns(grid_.sliding));
+  if (bisect_) f.boundary_header = join_columns(boundary_columns());
+  study::SpectrumResult res = grid_;
+  try {
+    std::size_t missing = 0;
+    for (std::size_t i = 0; i < runs(); ++i) {
+      // a cell's unit is its column (a record: its row); a boundary's is its column
+      const std::size_t unit = i < n ? (file_.is_record ? i : i % columns) : i - n;
+      if (!shard_->owns(unit)) continue;
+      const auto it = lines.find(i);
+      if (it == lines.end()) {
+        ++missing;
+        continue;
+      }
+      f.lines[i] = it->second;
+      if (i < n) {
+        res.cells[i] = read_spectrum_cell(grid_, i, it->second, g);
+        res.cells[i].computed = true;
+      } else {
+        res.boundary[i - n] = read_boundary(grid_, i - n, it->second, normalized, g);
+      }
+    }
+    if (missing > 0) {
+      throw std::runtime_error(output_ + ": finish() before every cell and boundary of shard " +
+                               std::to_string(shard_->k) + "/" + std::to_string(shard_->n) +
+                               " is done (" + std::to_string(missing) + " left; journal " +
+                               journal_.path() +
+                               "); call run() first: it goes on from the journal");
+    }
+    write_shard_file(f);
+  } catch (...) {
+    journal_.finish(false);
+    throw;
+  }
+  journal_.finish(true);
+  finished_ = true;
+  return res;
 }
 
 std::vector<study::SweepRow> read_sweep_csv(const study::SweepSpec& spec, const std::string& path) {

@@ -215,13 +215,16 @@ SweepManifest load_sweep_manifest(const std::string& path) {
           if (r.name == name->get())
             ik->fail_at(line_of(e), "measures", "\"" + r.name + "\" given twice");
         }
-        m.spec.measures.push_back({name->get(), 0.0, 0.05});
+        m.spec.measures.push_back({name->get(), 0.0, 0.05, ""});
       }
     }
     const double zeta = ik->number_or("sa_damping", 0.05, "a number in [0, 1) [-]");
     if (!(zeta >= 0.0 && zeta < 1.0)) ik->expected("sa_damping", "a number in [0, 1) [-]");
     const std::string periods_what =
         "an array of periods >= " + num(kMinSpectralPeriod) + " [s] (below it Sa is the PGA)";
+    // Sa in the unit asked for, named in its column (sa_T1_z0.05_g); m/s^2 by default
+    const bool sa_units_given = ik->has("sa_units");
+    const std::string sa_units = ik->choice("sa_units", detail::accel_unit_names(), "m/s^2");
     if (const auto periods = ik->vector_opt("sa_periods", periods_what)) {
       for (std::size_t i = 0; i < periods->size(); ++i) {
         const double T = (*periods)[i];
@@ -230,10 +233,12 @@ SweepManifest load_sweep_manifest(const std::string& path) {
         for (std::size_t j = 0; j < i; ++j) {
           if ((*periods)[j] == T) ik->fail("sa_periods", "period " + num(T) + " s given twice");
         }
-        m.spec.measures.push_back({"sa", T, zeta});
+        m.spec.measures.push_back({"sa", T, zeta, sa_units == "m/s^2" ? "" : sa_units});
       }
     } else if (ik->has("sa_damping")) {
       ik->fail("sa_damping", "expected only with sa_periods");
+    } else if (sa_units_given) {
+      ik->fail("sa_units", "expected only with sa_periods");
     }
     ik->finish("in [intensity] (see docs/studies.md)");
   }
@@ -414,8 +419,7 @@ std::vector<ColumnInfo> sweep_column_info(const study::SweepSpec& spec) {
     v.push_back({std::string(c.name), c.unit, c.type});
     if (c.name == kMeasuresAfter) {
       for (const study::MeasureRequest& m : spec.measures) {
-        v.push_back(
-            {study::measure_column(m), find_intensity_measure(m.name)->unit, ColumnType::kReal});
+        v.push_back({study::measure_column(m), study::measure_unit(m), ColumnType::kReal});
       }
       for (const study::UncertainParameter& p : spec.uncertainty.parameters) {
         const study::UncertainKindInfo& k = study::uncertain_kind(p.kind);

@@ -11,14 +11,50 @@
 
 #include "flexrock/core/error.hpp"
 #include "flexrock/core/format.hpp"
+#include "flexrock/core/types.hpp"
 #include "flexrock/excitation/intensity.hpp"
 
 namespace flexrock::study {
 
+namespace {
+
+// the units an acceleration measure (sa) may be asked in: name, column suffix, SI value of one
+struct AccelUnit {
+  const char* name;
+  const char* suffix;
+  double si;
+};
+constexpr AccelUnit kAccelUnits[] = {
+    {"m/s^2", "_m_per_s2", 1.0},
+    {"g", "_g", kStandardGravity},
+    {"cm/s^2", "_cm_per_s2", 0.01},
+};
+
+const AccelUnit& accel_unit_of(const MeasureRequest& m) {
+  for (const AccelUnit& u : kAccelUnits) {
+    if (m.unit == u.name || (m.unit.empty() && &u == kAccelUnits)) return u;
+  }
+  throw InputError("intensity measure " + m.name + ": unit \"" + m.unit +
+                   "\": expected m/s^2, g or cm/s^2");
+}
+
+}  // namespace
+
 std::string measure_column(const MeasureRequest& m) {
   const IntensityMeasure* im = find_intensity_measure(m.name);
   FLEXROCK_THROW_UNLESS(im != nullptr, "intensity measure '" + m.name + "': unknown");
-  return im->needs_period ? spectral_column(m.period, m.zeta) : std::string(im->column);
+  if (!im->needs_period) return std::string(im->column);
+  // spectral_column names the SI column: its unit suffix replaced by the asked one's
+  std::string c = spectral_column(m.period, m.zeta);
+  const std::string si = kAccelUnits[0].suffix;
+  if (c.ends_with(si)) c.resize(c.size() - si.size());
+  return c + accel_unit_of(m).suffix;
+}
+
+std::string measure_unit(const MeasureRequest& m) {
+  const IntensityMeasure* im = find_intensity_measure(m.name);
+  FLEXROCK_THROW_UNLESS(im != nullptr, "intensity measure '" + m.name + "': unknown");
+  return im->needs_period ? accel_unit_of(m).name : im->unit;
 }
 
 MeasureRequest measure_request(const std::string& text) {
@@ -26,7 +62,7 @@ MeasureRequest measure_request(const std::string& text) {
     const IntensityMeasure* m = find_intensity_measure(text);
     FLEXROCK_THROW_UNLESS(m != nullptr, "unknown intensity measure \"" + text + "\"");
     FLEXROCK_THROW_UNLESS(!m->needs_period, "\"" + text + "\" needs its period: sa:T or sa:T:zeta");
-    return {text, 0.0, 0.05};
+    return {text, 0.0, 0.05, ""};
   }
   const std::string rest = text.substr(3);
   const std::size_t colon = rest.find(':');
@@ -39,7 +75,7 @@ MeasureRequest measure_request(const std::string& text) {
     return v;
   };
   MeasureRequest m{"sa", number(rest.substr(0, colon)),
-                   colon == std::string::npos ? 0.05 : number(rest.substr(colon + 1))};
+                   colon == std::string::npos ? 0.05 : number(rest.substr(colon + 1)), ""};
   require_spectral_period(m.period, "\"" + text + "\"");
   FLEXROCK_THROW_UNLESS(
       m.zeta >= 0.0 && m.zeta < 1.0,
@@ -58,7 +94,11 @@ void check_request(const MeasureRequest& m) {
   FLEXROCK_THROW_UNLESS(im != nullptr && !im->always_written,
                         "intensity measure '" + m.name + "': expected one of: " + names +
                             (im ? " (pga and pgv are always written)" : ""));
+  FLEXROCK_THROW_UNLESS(m.unit.empty() || im->needs_period,
+                        "intensity measure '" + m.name + "': a unit is only for sa (got \"" +
+                            m.unit + "\"); it is in " + im->unit);
   if (im->needs_period) {
+    accel_unit_of(m);  // a known unit
     require_spectral_period(m.period, "intensity measure sa");
     FLEXROCK_THROW_UNLESS(
         m.zeta >= 0.0 && m.zeta < 1.0,
@@ -105,7 +145,9 @@ Intensity intensity(const GroundMotion& motion, const std::vector<MeasureRequest
     out.pgv = std::max(out.pgv, std::abs(v));
   }
   for (const MeasureRequest& m : measures) {
-    out.measures.push_back(find_intensity_measure(m.name)->compute(t, a, m.period, m.zeta));
+    // in the unit asked for (SI unless an sa asks for another)
+    const double si = find_intensity_measure(m.name)->needs_period ? accel_unit_of(m).si : 1.0;
+    out.measures.push_back(find_intensity_measure(m.name)->compute(t, a, m.period, m.zeta) / si);
   }
   return out;
 }

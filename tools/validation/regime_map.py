@@ -49,7 +49,7 @@ def engine(a, alpha, mu):
     body = fr.Body(fr.BodyParameters.rectangular_block(100.0, 0.5 * alpha, 0.5))
     o = fr.SimulationOptions()
     o.friction_coefficient = mu
-    r = fr.simulate(body, fr.rectangular_pulse(a * G, 0.02, 0.02), fr.InitialState(), o)
+    r = fr.simulate(body, fr.rectangular_pulse(a_p=a * G, duration=0.02, t_1=0.02), fr.InitialState(), o)
     if r.status == fr.Status.stopped:
         raise RuntimeError(f"a {a} alpha {alpha} mu {mu}: the run stopped: {r.message}")
     at_start = {e.kind for e in r.events if e.time == 0.0}

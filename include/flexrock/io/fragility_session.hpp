@@ -33,8 +33,10 @@ inline constexpr EnumName<FragilityAnalysis> kFragilityAnalysisNames[] = {
 
 /// What to fit. Errors name the options as `flexrock fragility` does (--state, --level, --im).
 struct FragilityOptions {
-  std::string im = "pga";  // fragility_measures(); kStripes: requested_level (the default there)
-  bool im_given = false;   // im was chosen (kStripes refuses any measure but requested_level)
+  // fragility_measures(); the library's default is SI (the command line and Python default to
+  // pga_g, as their plots); kStripes: requested_level (the default there)
+  std::string im = "pga";
+  bool im_given = false;  // im was chosen (kStripes refuses any measure but requested_level)
   // the damage states of a family (--state), least severe first, fitted at once and written
   // with a state column; empty: the one state of `outcome` and `level`
   std::vector<DamageState> states;

@@ -11,11 +11,13 @@
 #include <cstdint>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "flexrock/io/journal.hpp"
 #include "flexrock/io/study_files.hpp"
+#include "flexrock/io/study_shards.hpp"
 #include "flexrock/model/body.hpp"
 #include "flexrock/study/parallel.hpp"
 #include "flexrock/study/spectrum.hpp"
@@ -94,9 +96,13 @@ class SweepSession {
   /// Checks every run of the manifest (study::validate) and that no input is the output or its
   /// journal, then opens the journal: before it exists, a sweep that could not run leaves none
   /// behind. Throws InputError for bad input or a journal of other inputs or a damaged one. The
-  /// session keeps its own copy of the manifest.
+  /// session keeps its own copy of the manifest. With `shard` (one process only), the session is
+  /// shard k of N (io/study_shards.hpp): its share is the runs of index i mod N == k - 1, its
+  /// journal shard_path(output).partial, and finish() writes the shard file
+  /// shard_path(output, shard) in place of the CSV (merge_shards() makes the CSV).
   SweepSession(SweepManifest manifest, std::string output,
-               const StudyTransport& transport = single_process());
+               const StudyTransport& transport = single_process(),
+               std::optional<Shard> shard = std::nullopt);
   ~SweepSession();
   SweepSession(const SweepSession&) = delete;
   SweepSession& operator=(const SweepSession&) = delete;
@@ -119,17 +125,23 @@ class SweepSession {
   /// After run() on every process, when none was stopped: gathers the rows on rank 0, writes
   /// the CSV there (atomically) and deletes the journals. Returns every row in index order on
   /// rank 0 (empty on the others). Throws std::runtime_error when the CSV cannot be written
-  /// or when a run is not finished (run() stopped or not called; the journals are kept).
+  /// or when a run is not finished (run() stopped or not called; the journals are kept). A shard
+  /// writes its shard file and returns its own rows.
   std::vector<study::SweepRow> finish();
+  /// The file finish() writes: the CSV, or a shard's shard file.
+  std::string written() const { return shard_ ? shard_path(output_, *shard_) : output_; }
   const SweepManifest& manifest() const { return manifest_; }
 
  private:
   // throws std::runtime_error naming `call` once finish() has written the CSV
   void require_open(const char* call) const;
+  // finish() of a shard: its lines into its shard file
+  std::vector<study::SweepRow> finish_shard(const std::map<std::size_t, std::string>& lines);
 
   SweepManifest manifest_;
   std::string output_;
   const StudyTransport& transport_;
+  std::optional<Shard> shard_;
   // rows computed here or read back from the journal (by the journal's check: before journal_)
   std::map<std::size_t, study::SweepRow> rows_;
   std::size_t runs_ = 0;
@@ -148,8 +160,12 @@ class SpectrumSession {
   /// Builds the grid, checking every run it makes (study::spectrum_grid), and that no input is
   /// an output, then opens the journal. `file.pulse.bisect` / `file.record.bisect` say whether it
   /// bisects (`boundary_output` is unused when not). Throws InputError as SweepSession does.
+  /// With `shard`, shard k of N as SweepSession's: its share is the columns (a record: the rows)
+  /// j mod N == k - 1 with their boundaries; a record spectrum that bisects cannot be split so
+  /// (its bisection needs every row's outcome) and throws InputError.
   SpectrumSession(SpectrumFile file, std::string output, std::string boundary_output,
-                  const StudyTransport& transport = single_process());
+                  const StudyTransport& transport = single_process(),
+                  std::optional<Shard> shard = std::nullopt);
   ~SpectrumSession();
   SpectrumSession(const SpectrumSession&) = delete;
   SpectrumSession& operator=(const SpectrumSession&) = delete;
@@ -178,17 +194,22 @@ class SpectrumSession {
   /// last, an old one removed first) and deletes the journals. Returns the whole result on rank
   /// 0, every cell and boundary read back as data (empty on the others). Throws
   /// std::runtime_error when an output cannot be written or when a cell or boundary is not
-  /// finished (run() stopped or not called; the journals are kept).
+  /// finished (run() stopped or not called; the journals are kept). A shard writes its shard
+  /// file and returns the grid with its own cells and boundaries marked computed.
   study::SpectrumResult finish(const std::atomic<bool>* cancel = nullptr);
+  /// The file finish() writes first: the cells CSV, or a shard's shard file.
+  std::string written() const { return shard_ ? shard_path(output_, *shard_) : output_; }
 
  private:
   std::string unfinished(std::size_t done, std::size_t of, const char* what) const;
   void require_open(const char* call) const;
+  study::SpectrumResult finish_shard(const std::map<std::size_t, std::string>& lines);
 
   SpectrumFile file_;
   Body body_;
   std::string output_, boundary_output_;
   const StudyTransport& transport_;
+  std::optional<Shard> shard_;
   bool bisect_ = true;
   study::SpectrumResult grid_;
   StudyJournal journal_;

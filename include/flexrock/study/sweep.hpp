@@ -25,6 +25,9 @@ struct MeasureRequest {
   std::string name;     // e.g. "pgd", "arias", "sa"
   double period = 0.0;  // [s] sa only, > 0
   double zeta = 0.05;   // [-] sa only, in [0, 1)
+  // sa only: the unit of its column, as asked: "" or "m/s^2" (SI), "g", "cm/s^2"; the column's
+  // name ends with it (sa_T1_z0.05_g) and its values are in it
+  std::string unit;
 };
 
 /// A measure as the command line and manifests name it: a name of the table, or "sa:T" /
@@ -32,8 +35,12 @@ struct MeasureRequest {
 /// InputError saying what is wrong (the caller adds where).
 MeasureRequest measure_request(const std::string& text);
 
-/// The sweep CSV column of a requested measure (its table column, or spectral_column for sa).
+/// The sweep CSV column of a requested measure (its table column, or spectral_column for sa,
+/// with the suffix of its unit).
 std::string measure_column(const MeasureRequest& m);
+
+/// The unit of a requested measure's values: its `unit`, or the table's (SI).
+std::string measure_unit(const MeasureRequest& m);
 
 /// Intensity measures of a ground motion's horizontal component.
 struct Intensity {
