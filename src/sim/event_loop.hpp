@@ -57,7 +57,6 @@ bool Simulator<N, MaxN>::start_mode(double t, State& x) {
       eq_.arc_sample(arc_.arc, t, x, arc_.arc.floor_sin(), arc_.arc.floor_cos(), s0_);
   }
   if (!arc_from_floor) eq_.evaluate(t, x, s0_);
-  observe(s0_, x);
   const ModeSpec& spec = mode_spec(eq_.mode);
   for (int j = 0; j < spec.count; ++j) {
     const auto k = static_cast<std::size_t>(j);
@@ -97,6 +96,10 @@ bool Simulator<N, MaxN>::start_mode(double t, State& x) {
       if (at_or_below(e == 1 ? Guard::kLandingEdge1 : Guard::kLandingEdge2)) return land(t, x, e);
     }
   }
+  // observed only now that the mode holds: an entry state that a reset leaves at once is no state
+  // of this mode (a landing whose sticking contact would need more than mu_s slips at that
+  // instant; the demand that made it slip is the slip_start event's, not a sticking contact's)
+  observe(s0_, x);
   return true;
 }
 
