@@ -25,7 +25,12 @@ inline constexpr VerbExamples kVerbExamples[] = {
     {"plot",
      "flexrock plot museum_statue.csv -o statue.png             # a time history\n"
      "flexrock plot sweep.csv --body statue -o fragility.pdf    # a sweep's fragility, PGA [g]\n"
-     "flexrock plot one_sine_block.spectrum.csv                 # a spectrum and its boundary"},
+     "flexrock plot one_sine_block.spectrum.csv                 # a spectrum and its boundary\n"
+     "flexrock plot ida.csv --kind ida --body statue            # IDA curves, one per record\n"
+     "flexrock plot museum_statue.csv --tlim 5 15               # a window of a time history"},
+    {"azimuths",
+     "flexrock azimuths pair.toml -o out/                       # a record pair at every 5 deg\n"
+     "flexrock azimuths pair.toml -j 2 -q                       # 2 threads, the envelope only"},
     {"spectrum",
      "flexrock spectrum examples/studies/one_sine_block.toml    # cells + boundary CSVs\n"
      "flexrock spectrum spec.toml --no-bisect -j 4              # the grid only, 4 threads\n"
