@@ -18,6 +18,13 @@ if(TARGET flexrock)
                      ${PROJECT_SOURCE_DIR})
     set_tests_properties(cli_${script} PROPERTIES LABELS cli)
   endforeach()
+  # the quickstart's figure: drawn with the package's Python files only (python_tests builds them)
+  if(TARGET _flexrock)
+    add_test(NAME cli_plot_without_module
+             COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/cli/plot_without_module.sh
+                     $<TARGET_FILE:flexrock> ${PROJECT_SOURCE_DIR} ${PROJECT_BINARY_DIR})
+    set_tests_properties(cli_plot_without_module PROPERTIES LABELS cli)
+  endif()
   foreach(example museum_statue flexible_tank asymmetric_cabinet slender_column)
     add_test(NAME cli_example_${example}
              COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/cli/examples.sh $<TARGET_FILE:flexrock>

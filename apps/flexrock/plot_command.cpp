@@ -67,7 +67,9 @@ std::string drawing_python(const char* module_file, const char* need, const char
                std::strerror(errno), then);
     return {};
   }
-  const std::string dir = FLEXROCK_PYTHON_DIR;
+  // FLEXROCK_PYTHON_DIR in the environment: another copy of the package (a relocated build)
+  const char* env_dir = std::getenv("FLEXROCK_PYTHON_DIR");
+  const std::string dir = env_dir && *env_dir ? env_dir : FLEXROCK_PYTHON_DIR;
   std::error_code ec;
   if (!dir.empty() && std::filesystem::exists(dir + "/" + module_file, ec)) {
     const char* old = std::getenv("PYTHONPATH");
@@ -82,9 +84,26 @@ int run_plot(const PlotOptions& options) {
       drawing_python("flexrock/plot.py", "flexrock plot needs Python 3 with numpy and matplotlib",
                      "install them with scripts/install-deps.sh --python");
   if (python.empty()) return 1;
-  std::vector<std::string> args = {
-      python,   "-m",         "flexrock.plot", options.file,
-      "--kind", options.kind, "--dpi",         std::to_string(options.dpi)};
+  // `python3 -m flexrock.plot` would import the whole package, which needs the compiled module;
+  // a time history's figures need only numpy and matplotlib, so where the package cannot be
+  // imported (the quickstart builds the command alone) its drawing modules are loaded under an
+  // empty package of the same directory
+  const std::string bootstrap =
+      "import os, sys, types\n"
+      "try:\n"
+      "    import flexrock\n"
+      "except ImportError:\n"
+      "    here = next((os.path.join(d, 'flexrock') for d in sys.path\n"
+      "                 if os.path.isfile(os.path.join(d or '.', 'flexrock', 'plot.py'))), None)\n"
+      "    if here is None:\n"
+      "        raise\n"
+      "    pkg = types.ModuleType('flexrock')\n"
+      "    pkg.__path__ = [here]\n"
+      "    sys.modules['flexrock'] = pkg\n"
+      "from flexrock.plot import main\n"
+      "sys.exit(main(sys.argv[1:]))\n";
+  std::vector<std::string> args = {python,   "-c",         bootstrap, options.file,
+                                   "--kind", options.kind, "--dpi",   std::to_string(options.dpi)};
   for (const auto& [flag, value] :
        {std::pair{"--im", &options.im}, std::pair{"--body", &options.body},
         std::pair{"--state", &options.state}}) {

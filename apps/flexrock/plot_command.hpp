@@ -26,7 +26,8 @@ struct PlotOptions {
 CLI::App* add_plot_command(CLI::App& app, PlotOptions& options);
 
 /// The interpreter that draws (FLEXROCK_PYTHON overrides the one found at build time), with the
-/// build's package first on PYTHONPATH when it holds `module_file` (e.g. "flexrock/plot.py";
+/// build's package (FLEXROCK_PYTHON_DIR overrides its directory) first on PYTHONPATH when it holds
+/// `module_file` (e.g. "flexrock/plot.py";
 /// without it an installed `flexrock` package is used). Empty, after an error on stderr saying
 /// "`need`, but ... cannot be run (why); `then`", when it cannot be run.
 std::string drawing_python(const char* module_file, const char* need, const char* then);

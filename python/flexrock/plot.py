@@ -102,13 +102,20 @@ def main(argv=None) -> int:
         matplotlib.use("Agg")  # a file, never a window
         from matplotlib.figure import Figure
 
-        from . import _csv, plots, studies
+        from . import _csv, plots
     except ImportError as e:
         return _error(
             f"flexrock plot needs matplotlib and numpy for /usr/bin/python3 ({e}); "
             "install python3-matplotlib (scripts/install-deps.sh --python)",
             1,
         )
+
+    try:
+        from .studies import FragilityWarning
+    except ImportError:
+        # the compiled module is not built (scripts/quickstart.sh builds the command only): a time
+        # history's figures need numpy and matplotlib alone; the fragility's say so when asked
+        FragilityWarning = _csv.CsvWarning
 
     if not os.path.isfile(args.file):
         return _error(f"{args.file}: no such file", 2)
@@ -129,7 +136,7 @@ def main(argv=None) -> int:
     fig = Figure(layout="constrained")
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always", _csv.CsvWarning)
-        warnings.simplefilter("always", studies.FragilityWarning)
+        warnings.simplefilter("always", FragilityWarning)
         try:
             if kind == "response":
                 fig.set_size_inches(9, 11)
@@ -152,12 +159,16 @@ def main(argv=None) -> int:
 
                     cols = _csv.columns(list(csv.reader(f)), args.file)
                 _csv.warn_nan(cols, _NEEDED[kind], args.file)
+        except ImportError as e:
+            return _error(f"a {kind} figure needs flexrock's compiled module, which is not built or "
+                          f"not importable ({e}): build the target _flexrock (scripts/test.sh "
+                          "builds everything)", 1)
         except (ValueError, KeyError, IndexError) as e:
             detail = f"missing column {e}" if isinstance(e, KeyError) else str(e)
             if not detail.startswith(args.file):
                 detail = f"{args.file}: {detail}"
             return _error(detail, 2)
-    shown = (_csv.CsvWarning, studies.FragilityWarning)
+    shown = (_csv.CsvWarning, FragilityWarning)
     for message in dict.fromkeys(str(w.message) for w in caught if issubclass(w.category, shown)):
         print(f"flexrock: warning: {message}", file=sys.stderr)
     # write to a temporary name, then rename: no half-written figure
