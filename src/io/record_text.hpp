@@ -88,9 +88,10 @@ inline std::vector<Line> read_lines(const std::string& path) {
   return lines;
 }
 
-// splits on whitespace, and on commas too when `commas` is set (empty fields are dropped)
-inline std::vector<std::string_view> split(std::string_view s, bool commas) {
-  std::vector<std::string_view> out;
+// splits on whitespace, and on commas too when `commas` is set (empty fields are dropped), into
+// `out`: a reader that reuses `out` line after line allocates nothing once it is large enough
+inline void split_into(std::string_view s, bool commas, std::vector<std::string_view>& out) {
+  out.clear();
   const auto sep = [commas](char c) {
     return std::isspace(static_cast<unsigned char>(c)) != 0 || (commas && c == ',');
   };
@@ -101,6 +102,11 @@ inline std::vector<std::string_view> split(std::string_view s, bool commas) {
     while (i < s.size() && !sep(s[i])) ++i;
     if (i > start) out.push_back(s.substr(start, i - start));
   }
+}
+
+inline std::vector<std::string_view> split(std::string_view s, bool commas) {
+  std::vector<std::string_view> out;
+  split_into(s, commas, out);
   return out;
 }
 

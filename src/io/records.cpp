@@ -315,13 +315,8 @@ class RowFields {
                                                              : ' ';
     if (sep == ' ') {
       // a bracketed unit after a name belongs to it: "time [s]   acc [g]" is two fields
-      std::size_t i = 0;
-      while (true) {
-        while (i < s.size() && std::isspace(static_cast<unsigned char>(s[i]))) ++i;
-        if (i >= s.size()) break;
-        const std::size_t start = i;
-        while (i < s.size() && !std::isspace(static_cast<unsigned char>(s[i]))) ++i;
-        const std::string_view w = s.substr(start, i - start);
+      split_into(s, false, words_);
+      for (const std::string_view w : words_) {
         if (n_ > 0 && (w.front() == '[' || w.front() == '(')) {
           f_[n_ - 1].append(" ").append(w);
         } else {
@@ -349,6 +344,7 @@ class RowFields {
     return f_[n_++];
   }
   std::vector<std::string> f_;
+  std::vector<std::string_view> words_;  // a whitespace-separated line's words, reused
   std::size_t n_ = 0;
 };
 
