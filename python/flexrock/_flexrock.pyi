@@ -597,6 +597,18 @@ class FragilitySession:
     @property
     def unit(self) -> str: ...
 
+class GridUnits:
+    """The units a physical spectrum grid is given in: its cells and boundary keep them and get columns in them (a_p_g, f_p_hz)."""
+    @overload
+    def __init__(self) -> None: ...
+    @overload
+    def __init__(self, amplitude: str, amplitude_si: float, frequency: str, frequency_si: float) -> None: ...
+    def __repr__(self) -> str: ...
+    amplitude: str
+    amplitude_si: float
+    frequency: str
+    frequency_si: float
+
 class GroundMotion:
     """Base accelerations [m/s^2]: sampled (linear between samples) or analytic."""
     def __repr__(self) -> str: ...
@@ -1213,6 +1225,8 @@ class SpectrumResult:
     def sliding(self) -> bool: ...
     @property
     def tan_alpha(self) -> float: ...
+    @property
+    def units(self) -> GridUnits: ...
 
 class SpectrumSession:
     """A spectrum from its spec file to its CSVs.
@@ -1274,6 +1288,7 @@ class SpectrumSpec:
     normalized: bool
     pulse: str
     solver: SimulationOptions
+    units: GridUnits
 
 class Status:
     completed: ClassVar[Status]
@@ -1491,8 +1506,13 @@ def boundary_arrays(result: SpectrumResult, normalized: bool = ..., g: float = .
     dict of str to numpy.ndarray
     """
 
-def boundary_columns() -> list[str]:
+def boundary_columns(units: GridUnits = ...) -> list[str]:
     """Columns of the minimum-overturning CSV.
+
+    Parameters
+    ----------
+    units : GridUnits
+        As for :func:`spectrum_columns` (``min_overturning_g``, ``f_p_hz``).
 
     Returns
     -------
@@ -2024,7 +2044,7 @@ def load_spectrum_file(path: str) -> SpectrumFile:
     Returns
     -------
     SpectrumFile
-        Grids converted to SI (m/s^2, rad/s) unless normalised.
+        Grids as given: normalised, or in the units of ``pulse.units``.
     """
 
 def load_sweep_manifest(path: str) -> SweepManifest:
@@ -2506,7 +2526,7 @@ def spectrum_arrays(result: SpectrumResult, g: float = ...) -> dict:
         object (str) for classes.
     """
 
-def spectrum_columns(sliding: bool = ...) -> list[str]:
+def spectrum_columns(sliding: bool = ..., units: GridUnits = ...) -> list[str]:
     """Columns of the spectrum CSV (unit-suffixed).
 
     Parameters
@@ -2514,6 +2534,9 @@ def spectrum_columns(sliding: bool = ...) -> list[str]:
     sliding : bool
         With the sliding columns (regime, offsets, time sliding, slips) that a spectrum with a
         finite friction coefficient adds (``SpectrumResult.sliding``).
+    units : GridUnits
+        A physical grid's units (``SpectrumResult.units``): units other than SI add columns in them
+        (``a_p_g``, ``f_p_hz``).
 
     Returns
     -------

@@ -418,13 +418,24 @@ def _spectrum_data(source, boundary, g):
             boundary = _boundary_next_to(path)
         elif isinstance(boundary, (str, os.PathLike)):
             boundary = _read_columns(os.fspath(boundary))
-        return cols, boundary, None
+        return cols, boundary, _csv_units(cols)
     if hasattr(source, "cells") and hasattr(source, "boundary"):
         from .studies import boundary_table, spectrum_table
 
         b = boundary_table(source, g=g) if len(source.boundary) else None
         return spectrum_table(source, g=g), b, getattr(source, "_flexrock_units", None)
     return source, boundary, None
+
+
+def _csv_units(cols):
+    # the units a spectrum CSV's grid was given in, from its columns in them (a_p_g, f_p_hz after
+    # the SI ones); None when it has none: normalised axes
+    suffixes = {"g": "g", "cm_per_s2": "cm/s^2"}
+    a = next((suffixes[k[4:]] for k in cols if k.startswith("a_p_") and k[4:] in suffixes), None)
+    w = "Hz" if "f_p_hz" in cols else None
+    if a is None and w is None:
+        return None
+    return (a or "m/s^2", w or "rad/s")
 
 
 def _unit_column(prefix: str, unit: str) -> str:

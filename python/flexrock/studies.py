@@ -14,6 +14,7 @@ from ._flexrock import (  # noqa: F401  (re-exported API)
     FragilityData,
     FragilityFit,
     FragilityQuery,
+    GridUnits,
     Intensity,
     Outcome,
     OverturnBoundary,
@@ -206,9 +207,10 @@ def spectrum(
     Returns
     -------
     SpectrumResult
-        Cells and boundary in SI (m/s^2, rad/s) or normalised; it remembers the units asked for:
-        :func:`spectrum_table`, :func:`boundary_table` and :func:`flexrock.plots.spectrum_map`
-        give and draw them (e.g. columns ``a_p_g`` and ``f_p_hz``).
+        Cells and boundary in the units asked for (``result.units``; the cells' ``amplitude_si``
+        and ``omega_si`` in SI) or normalised: :func:`spectrum_table`, :func:`boundary_table`,
+        :func:`write_spectrum` and :func:`flexrock.plots.spectrum_map` give and draw them in
+        those units (e.g. columns ``a_p_g`` and ``f_p_hz`` beside the SI ones).
     """
     from . import InputError
 
@@ -219,28 +221,26 @@ def spectrum(
     if normalized is not None and normalized != (axes == "normalized"):
         raise InputError(f"normalized={normalized} contradicts axes={axes!r}: give axes only")
     a_unit = w_unit = None
-    a_factor = w_factor = 1.0
     b = _body(body)
+    spec = SpectrumSpec()
     if axes == "physical":
         a_unit = _choice("amplitude_units", amplitude_units or "m/s^2", tuple(_ACCEL_UNITS))
         w_unit = _choice("frequency_units", frequency_units or "rad/s", tuple(_FREQ_UNITS))
-        a_factor = _ACCEL_UNITS[a_unit] or b.g
-        w_factor = _FREQ_UNITS[w_unit]
+        # the grid stays in these units: its cells, bisection and columns keep them
+        spec.units = GridUnits(a_unit, _ACCEL_UNITS[a_unit] or b.g, w_unit, _FREQ_UNITS[w_unit])
     elif amplitude_units is not None or frequency_units is not None:
         raise InputError("amplitude_units, frequency_units: only with axes=\"physical\"")
-    spec = SpectrumSpec()
     spec.pulse = _choice("pulse", pulse, tuple(spectrum_pulse_names()))
     spec.normalized = axes == "normalized"
-    spec.amplitudes = [float(a) * a_factor for a in amplitudes]
-    spec.frequencies = [float(f) * w_factor for f in frequencies]
+    spec.amplitudes = [float(a) for a in amplitudes]
+    spec.frequencies = [float(f) for f in frequencies]
     spec.bisect = bisect
     spec.free_periods = free_periods
     spec.bisection_tolerance = bisection_tolerance
     spec.solver = _solver(solver)
     result = compute_spectrum(b, spec, threads, progress=progress, callback=callback)
     if a_unit is not None:
-        result._flexrock_units = (a_unit, w_unit)
-        result._flexrock_g = b.g
+        result._flexrock_units = (a_unit, w_unit)  # physical axes, for the plot
     return result
 
 
@@ -300,31 +300,6 @@ def record_spectrum(
                                    callback=callback)
 
 
-def _with_units(cols: dict, result, amplitude_columns, frequency_columns) -> dict:
-    # the columns of the units the spectrum was asked for, next to the SI ones
-    units = getattr(result, "_flexrock_units", None)
-    if units is None:
-        return cols
-    import numpy as np
-
-    a_unit, w_unit = units
-    g = getattr(result, "_flexrock_g", 9.80665)
-    a_div = g if a_unit == "g" else _ACCEL_UNITS[a_unit]
-    out = {}
-    for name, v in cols.items():
-        out[name] = v
-        if name in amplitude_columns:
-            new = amplitude_columns[name] + "_" + unit_suffix(a_unit)
-            if new != name:
-                out[new] = np.asarray(v, dtype=float) / a_div
-        if name in frequency_columns:
-            prefix = "f_p" if w_unit == "Hz" else "omega_p"
-            new = prefix + "_" + unit_suffix(w_unit)
-            if new != name:
-                out[new] = np.asarray(v, dtype=float) / _FREQ_UNITS[w_unit]
-    return out
-
-
 def spectrum_table(result: SpectrumResult, g: float = 9.80665) -> dict:
     """The spectrum CSV's columns, one row per cell, as numpy arrays.
 
@@ -343,8 +318,7 @@ def spectrum_table(result: SpectrumResult, g: float = 9.80665) -> dict:
         for a spectrum asked for in other units, also those: ``a_p_g`` [g] or
         ``a_p_cm_per_s2``, and ``f_p_hz`` [Hz].
     """
-    cols = _flexrock.spectrum_arrays(result, g)  # typed by the column table, no CSV text
-    return _with_units(cols, result, {"a_p_m_per_s2": "a_p"}, {"omega_p_rad_per_s": "f_p"})
+    return _flexrock.spectrum_arrays(result, g)  # typed by the column table, no CSV text
 
 
 def boundary_table(result: SpectrumResult, g: float = 9.80665) -> dict:
@@ -364,17 +338,14 @@ def boundary_table(result: SpectrumResult, g: float = 9.80665) -> dict:
         ``min_overturning_g`` [g] and ``f_p_hz`` [Hz].
     """
     normalized = getattr(result, "_flexrock_units", None) is None
-    cols = _flexrock.boundary_arrays(result, normalized, g)  # typed, no CSV text
-    return _with_units(
-        cols, result, {"min_overturning_m_per_s2": "min_overturning"}, {"omega_p_rad_per_s": "f_p"}
-    )
+    return _flexrock.boundary_arrays(result, normalized, g)  # typed, no CSV text
 
 
 def write_spectrum(
     result: SpectrumResult,
     path: str,
     *,
-    normalized: bool = True,
+    normalized: Optional[bool] = None,
     g: float = 9.80665,
     boundary_path: Optional[str] = None,
 ) -> Tuple[str, Optional[str]]:
@@ -385,9 +356,10 @@ def write_spectrum(
     result : SpectrumResult
     path : str
         The cells CSV.
-    normalized : bool
+    normalized : bool, optional
         Whether the grid was normalised (the units of the boundary's ``frequency`` and
-        ``min_overturning``).
+        ``min_overturning``); default: as :func:`spectrum` made it (physical axes when units
+        were asked for).
     g : float
         [m/s^2] gravity for the normalised columns.
     boundary_path : str, optional
@@ -400,6 +372,8 @@ def write_spectrum(
         The paths written.
     """
     path = os.fspath(path)
+    if normalized is None:
+        normalized = getattr(result, "_flexrock_units", None) is None
 
     def put(p, text):
         tmp = f"{p}.tmp.{os.getpid()}"

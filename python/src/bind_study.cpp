@@ -178,12 +178,12 @@ py::dict sweep_arrays(const study::SweepSpec& spec, const std::vector<study::Swe
 }
 
 py::dict spectrum_arrays(const study::SpectrumResult& res, double g) {
-  return typed_arrays(io::spectrum_column_info(res.sliding), res.cells.size(),
+  return typed_arrays(io::spectrum_column_info(res.sliding, res.units), res.cells.size(),
                       [&](std::size_t i) { return io::spectrum_values(res, res.cells[i], g); });
 }
 
 py::dict boundary_arrays(const study::SpectrumResult& res, bool normalized, double g) {
-  return typed_arrays(io::boundary_column_info(), res.boundary.size(), [&](std::size_t i) {
+  return typed_arrays(io::boundary_column_info(res.units), res.boundary.size(), [&](std::size_t i) {
     return io::boundary_values(res, res.boundary[i], normalized, g);
   });
 }
@@ -254,12 +254,32 @@ Returns
 RunSummary)doc");
 
   // spectra
+  py::class_<GridUnits>(m, "GridUnits",
+                        "The units a physical spectrum grid is given in: its cells and boundary "
+                        "keep them and get columns in them (a_p_g, f_p_hz).")
+      .def(py::init<>())
+      .def(py::init([](std::string amplitude, double amplitude_si, std::string frequency,
+                       double frequency_si) {
+             return GridUnits{std::move(amplitude), amplitude_si, std::move(frequency),
+                              frequency_si};
+           }),
+           py::arg("amplitude"), py::arg("amplitude_si"), py::arg("frequency"),
+           py::arg("frequency_si"))
+      .def_readwrite("amplitude", &GridUnits::amplitude, "\"m/s^2\", \"g\" or \"cm/s^2\"")
+      .def_readwrite("amplitude_si", &GridUnits::amplitude_si, "[m/s^2] one amplitude unit")
+      .def_readwrite("frequency", &GridUnits::frequency, "\"rad/s\" or \"Hz\"")
+      .def_readwrite("frequency_si", &GridUnits::frequency_si, "[rad/s] one frequency unit")
+      .def("__repr__", [](const GridUnits& u) {
+        return "<GridUnits " + u.amplitude + ", " + u.frequency + ">";
+      });
   py::class_<SpectrumSpec>(m, "SpectrumSpec", "A pulse spectrum: pulse x amplitude x frequency.")
       .def(py::init<>())
       .def_readwrite("pulse", &SpectrumSpec::pulse)
       .def_readwrite("normalized", &SpectrumSpec::normalized)
       .def_readwrite("amplitudes", &SpectrumSpec::amplitudes)
       .def_readwrite("frequencies", &SpectrumSpec::frequencies)
+      .def_readwrite("units", &SpectrumSpec::units,
+                     "physical axes: the units of amplitudes and frequencies (GridUnits)")
       .def_readwrite("free_periods", &SpectrumSpec::free_periods)
       .def_readwrite("bisect", &SpectrumSpec::bisect)
       .def_readwrite("bisection_tolerance", &SpectrumSpec::bisection_tolerance)
@@ -303,6 +323,8 @@ RunSummary)doc");
       .def_readonly("cells", &SpectrumResult::cells)
       .def_readonly("boundary", &SpectrumResult::boundary)
       .def_readonly("sliding", &SpectrumResult::sliding)
+      .def_readonly("units", &SpectrumResult::units,
+                    "the units a physical grid was given in (SI otherwise)")
       .def("__repr__", [](const SpectrumResult& r) {
         std::size_t rows = 0, cols = 0, over = 0;
         for (const SpectrumCell& c : r.cells) {
@@ -891,8 +913,9 @@ path : str
 Returns
 -------
 SpectrumFile
-    Grids converted to SI (m/s^2, rad/s) unless normalised.)doc");
+    Grids as given: normalised, or in the units of ``pulse.units``.)doc");
   m.def("spectrum_columns", &io::spectrum_columns, py::arg("sliding") = false,
+        py::arg("units") = GridUnits{},
         R"doc(Columns of the spectrum CSV (unit-suffixed).
 
 Parameters
@@ -900,11 +923,20 @@ Parameters
 sliding : bool
     With the sliding columns (regime, offsets, time sliding, slips) that a spectrum with a
     finite friction coefficient adds (``SpectrumResult.sliding``).
+units : GridUnits
+    A physical grid's units (``SpectrumResult.units``): units other than SI add columns in them
+    (``a_p_g``, ``f_p_hz``).
 
 Returns
 -------
 list of str)doc");
-  m.def("boundary_columns", &io::boundary_columns, R"doc(Columns of the minimum-overturning CSV.
+  m.def("boundary_columns", &io::boundary_columns, py::arg("units") = GridUnits{},
+        R"doc(Columns of the minimum-overturning CSV.
+
+Parameters
+----------
+units : GridUnits
+    As for :func:`spectrum_columns` (``min_overturning_g``, ``f_p_hz``).
 
 Returns
 -------

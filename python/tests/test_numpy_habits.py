@@ -129,7 +129,11 @@ def test_pulse_spellings_that_mix_units_are_refused_with_the_new_spelling():
         fr.one_sine_pulse(amplitude=0.3, units="furlong", frequency_hz=2.0, duration=3.0)
 
 
-def test_a_spectrum_asked_in_g_and_hz_comes_back_in_g_and_hz():
+def test_a_spectrum_asked_in_g_and_hz_comes_back_in_g_and_hz(tmp_path):
+    from matplotlib.figure import Figure
+
+    from flexrock import plots
+
     block = fr.Body(fr.rigid_block(0.5, 3.0, 1000.0))
     amps_g, freqs_hz = [0.2, 0.4, 0.8], [1.0, 2.0]
     s = fr.spectrum(block, amps_g, freqs_hz, amplitude_units="g", frequency_units="Hz",
@@ -139,19 +143,25 @@ def test_a_spectrum_asked_in_g_and_hz_comes_back_in_g_and_hz():
     np.testing.assert_allclose(np.unique(t["a_p_g"]), amps_g, rtol=1e-14)
     np.testing.assert_allclose(np.unique(t["f_p_hz"]), freqs_hz, rtol=1e-14)
     np.testing.assert_allclose(t["a_p_m_per_s2"], t["a_p_g"] * block.g, rtol=1e-14)
-    # the same spectrum as the SI spelling (the case file's conversion)
+    # the same spectrum as the SI spelling: its cells are these without the g and Hz columns
     si = fr.spectrum(block, [a * block.g for a in amps_g], [2 * math.pi * f for f in freqs_hz],
                      axes="physical", threads=2, bisection_tolerance=0.05)
-    assert fr.spectrum_csv(s, block.g) == fr.spectrum_csv(si, block.g)
+    t_si = fr.spectrum_table(si, g=block.g)
+    assert list(t_si) == [c for c in t if c not in ("a_p_g", "f_p_hz")]
+    for c in t_si:
+        np.testing.assert_array_equal(t[c], t_si[c])
+    assert list(t) == fr.spectrum_columns(False, s.units)
     b = fr.boundary_table(s, g=block.g)
-    np.testing.assert_allclose(b["f_p_hz"], freqs_hz, rtol=1e-14)
+    np.testing.assert_array_equal(b["f_p_hz"], freqs_hz)  # the grid's numbers, not converted back
     found = np.array([k != "none" for k in b["kind"]])
-    np.testing.assert_allclose(b["min_overturning_g"][found], b["min_overturning_m_per_s2"][found] / block.g)
+    np.testing.assert_allclose(b["min_overturning_g"][found], b["min_overturning_m_per_s2"][found] / block.g,
+                               rtol=1e-14)
+    # the CSV written keeps them, and its plot draws in g and Hz as the result's does
+    cells = str(tmp_path / "g.spectrum.csv")
+    fr.write_spectrum(s, cells, g=block.g)
+    ax = plots.spectrum_map(cells, fig=Figure())
+    assert "[g]" in ax.get_ylabel() and "[Hz]" in ax.get_xlabel()
     # and drawn in g and Hz
-    from matplotlib.figure import Figure
-
-    from flexrock import plots
-
     ax = plots.spectrum_map(s, fig=Figure())
     assert "[g]" in ax.get_ylabel() and "[Hz]" in ax.get_xlabel()
     curve = [ln for ln in ax.lines if ln.get_gid() == "min_overturning"]

@@ -220,8 +220,9 @@ JournalCheck spectrum_journal_check(const study::SpectrumResult& grid, bool norm
     FLEXROCK_DEMAND(it != names.end());
     return static_cast<std::size_t>(it - names.begin());
   };
-  const std::vector<std::string> cn = spectrum_columns(grid.sliding), bn = boundary_columns();
-  const std::size_t first_sliding = spectrum_columns(false).size();
+  const std::vector<std::string> cn = spectrum_columns(grid.sliding, grid.units),
+                                 bn = boundary_columns(grid.units);
+  const std::size_t first_sliding = spectrum_columns(false, grid.units).size();
   // a cell's inputs: row, column, amplitudes, frequencies, scale: as the spec makes this cell
   const Fields c{cn.size(),
                  at(cn, "scale") + 1,

@@ -501,12 +501,12 @@ study::SpectrumResult SpectrumSession::finish(const std::atomic<bool>* cancel) {
                                  std::strerror(errno));
       }
       write_atomically(output_, [&](std::ostream& out) {
-        out << join_columns(spectrum_columns(res.sliding)) << '\n';
+        out << join_columns(spectrum_columns(res.sliding, res.units)) << '\n';
         for (const study::SpectrumCell& c : res.cells) out << spectrum_row(res, c, g) << '\n';
       });
       if (bisect_) {
         write_atomically(boundary_output_, [&](std::ostream& out) {
-          out << join_columns(boundary_columns()) << '\n';
+          out << join_columns(boundary_columns(res.units)) << '\n';
           for (const study::OverturnBoundary& b : res.boundary) {
             out << boundary_row(res, b, normalized, g) << '\n';
           }
@@ -536,8 +536,8 @@ study::SpectrumResult SpectrumSession::finish_shard(
   f.inputs = fnv1a(bisect_ ? "bisect" : "no-bisect", file_.hash);
   f.runs = runs();
   f.cells = n;
-  f.output_header = join_columns(spectrum_columns(grid_.sliding));
-  if (bisect_) f.boundary_header = join_columns(boundary_columns());
+  f.output_header = join_columns(spectrum_columns(grid_.sliding, grid_.units));
+  if (bisect_) f.boundary_header = join_columns(boundary_columns(grid_.units));
   study::SpectrumResult res = grid_;
   try {
     std::size_t missing = 0;

@@ -98,16 +98,16 @@ SpectrumFile load_spectrum_file(const std::string& path) {
     f.pulse.pulse = s.choice("pulse", spectrum_pulse_names(), "one_sine");
     const std::string axes = s.choice("axes", {"normalized", "physical"}, "normalized");
     f.pulse.normalized = axes == "normalized";
-    double a_factor = 1.0, w_factor = 1.0;
     if (f.pulse.normalized) {
       if (s.has("amplitude_units")) s.fail("amplitude_units", "only with axes = \"physical\"");
       if (s.has("frequency_units")) s.fail("frequency_units", "only with axes = \"physical\"");
     } else {
-      a_factor = to_si_factor(
-          detail::accel_unit(s.choice("amplitude_units", detail::accel_unit_names(), "m/s^2")));
-      w_factor = s.choice("frequency_units", {"rad/s", "Hz"}, "rad/s") == "Hz"
-                     ? 2.0 * std::numbers::pi
-                     : 1.0;
+      // the grid stays in the units given: its cells, bisection and columns keep them
+      const AccelUnit au =
+          detail::accel_unit(s.choice("amplitude_units", detail::accel_unit_names(), "m/s^2"));
+      const std::string wu = s.choice("frequency_units", {"rad/s", "Hz"}, "rad/s");
+      f.pulse.units = {std::string(unit_name(au)), to_si_factor(au), wu,
+                       wu == "Hz" ? 2.0 * std::numbers::pi : 1.0};
     }
     const std::string au = f.pulse.normalized ? "[-] (a_p / (g tan alpha))" : "(amplitude_units)";
     const std::string wu = f.pulse.normalized ? "[-] (omega_p / p)" : "(frequency_units)";
@@ -115,8 +115,6 @@ SpectrumFile load_spectrum_file(const std::string& path) {
     auto freqs = grid_opt(s, "frequencies", wu);
     if (!amps) s.fail("amplitudes", "missing; expected the grid of pulse amplitudes " + au);
     if (!freqs) s.fail("frequencies", "missing; expected the grid of pulse frequencies " + wu);
-    for (double& a : *amps) a *= a_factor;
-    for (double& w : *freqs) w *= w_factor;
     for (std::size_t i = 0; i < amps->size(); ++i) {
       if (!((*amps)[i] > 0.0) || (i > 0 && !((*amps)[i] > (*amps)[i - 1]))) {
         s.fail("amplitudes",
@@ -230,18 +228,94 @@ const SpectrumColumn kSpectrumColumns[] = {
      [](Cell& c, const Value& v) { c.run.status = status_value(v); }},
 };
 
+// A column in the units a physical grid was given in, written right after the SI column it
+// restates and only where that unit is not the SI one (a_p_g after a_p_m_per_s2, f_p_hz after
+// omega_p_rad_per_s): the file keeps the units asked for, with the unit in the column's name, and
+// its plot reads them back. Its value is the grid's own number, not the SI one divided back.
+template <class Row>
+struct GridUnitColumn {
+  const char* after;   // the SI column it follows
+  const char* prefix;  // its name before the unit's suffix
+  bool frequency;      // in the grid's frequency unit, else in its amplitude unit
+  const char* doc;
+  Value (*get)(const Row& row);
+};
+
+// the suffix of a unit in a column's name, as the sweep's Sa columns end (sa_T1_z0.05_g)
+std::string unit_suffix(const std::string& unit) {
+  if (unit == "m/s^2") return "m_per_s2";
+  if (unit == "cm/s^2") return "cm_per_s2";
+  if (unit == "rad/s") return "rad_per_s";
+  if (unit == "Hz") return "hz";
+  return unit;  // g
+}
+
+template <class Row>
+bool shown(const GridUnitColumn<Row>& c, const study::GridUnits& u) {
+  return c.frequency ? u.frequency_differs() : u.amplitude_differs();
+}
+
+template <class Row>
+std::string name_in(const GridUnitColumn<Row>& c, const study::GridUnits& u) {
+  return std::string(c.prefix) + "_" + unit_suffix(c.frequency ? u.frequency : u.amplitude);
+}
+
+// calls f(column) for each column in the units `u` that follows the SI column `after`
+template <class Row, std::size_t N, class F>
+void each_unit_column(const GridUnitColumn<Row> (&table)[N], const char* after,
+                      const study::GridUnits& u, F&& f) {
+  for (const GridUnitColumn<Row>& c : table) {
+    if (std::string_view(c.after) == after && shown(c, u)) f(c);
+  }
+}
+
+// the reference rows of a table's unit columns, each after the row of its SI column
+template <class Row, std::size_t N>
+std::string with_unit_rows(std::string block, const GridUnitColumn<Row> (&table)[N]) {
+  for (const GridUnitColumn<Row>& c : table) {
+    const std::string row = std::string("| `") + c.after + "` |";
+    const std::size_t at = block.find(row);
+    FLEXROCK_DEMAND(at != std::string::npos);
+    const std::size_t end = block.find('\n', at) + 1;
+    block.insert(end, std::string("| `") + c.prefix + "_<unit>` | " +
+                          (c.frequency ? "frequency_units" : "amplitude_units") + " | " + c.doc +
+                          " |\n");
+  }
+  return block;
+}
+
+const GridUnitColumn<Cell> kSpectrumUnitColumns[] = {
+    {"a_p_m_per_s2", "a_p", false,
+     "pulse amplitude in the grid's amplitude_units (a_p_g, a_p_cm_per_s2; physical axes in "
+     "those units only)",
+     [](const Cell& c) -> Value { return c.amplitude; }},
+    {"omega_p_rad_per_s", "f_p", true,
+     "pulse frequency in the grid's frequency_units (f_p_hz; physical axes in Hz only)",
+     [](const Cell& c) -> Value { return c.frequency; }},
+};
+
 }  // namespace
 
-std::vector<std::string> spectrum_columns(bool sliding) {
+std::vector<std::string> spectrum_columns(bool sliding, const study::GridUnits& units) {
   std::vector<std::string> v;
-  for (const SpectrumColumn& c : kSpectrumColumns) v.emplace_back(c.name);
+  for (const SpectrumColumn& c : kSpectrumColumns) {
+    v.emplace_back(c.name);
+    each_unit_column(kSpectrumUnitColumns, c.name, units,
+                     [&](const auto& u) { v.push_back(name_in(u, units)); });
+  }
   if (sliding) add_sliding_columns(v);
   return v;
 }
 
-std::vector<ColumnInfo> spectrum_column_info(bool sliding) {
+std::vector<ColumnInfo> spectrum_column_info(bool sliding, const study::GridUnits& units) {
   std::vector<ColumnInfo> v;
-  for (const SpectrumColumn& c : kSpectrumColumns) v.push_back({c.name, c.unit, c.type});
+  for (const SpectrumColumn& c : kSpectrumColumns) {
+    v.push_back({c.name, c.unit, c.type});
+    each_unit_column(kSpectrumUnitColumns, c.name, units, [&](const auto& u) {
+      v.push_back(
+          {name_in(u, units), u.frequency ? units.frequency : units.amplitude, ColumnType::kReal});
+    });
+  }
   if (sliding) {
     for (const SlidingColumn& c : sliding_columns()) v.push_back({c.name, c.unit, c.type});
   }
@@ -251,7 +325,11 @@ std::vector<ColumnInfo> spectrum_column_info(bool sliding) {
 std::vector<FieldValue> spectrum_values(const study::SpectrumResult& res,
                                         const study::SpectrumCell& c, double g) {
   std::vector<FieldValue> v;
-  for (const SpectrumColumn& col : kSpectrumColumns) v.push_back(col.get(res, c, g));
+  for (const SpectrumColumn& col : kSpectrumColumns) {
+    v.push_back(col.get(res, c, g));
+    each_unit_column(kSpectrumUnitColumns, col.name, res.units,
+                     [&](const auto& u) { v.push_back(u.get(c)); });
+  }
   if (res.sliding) {
     for (const SlidingColumn& col : sliding_columns()) v.push_back(col.get(c.run));
   }
@@ -263,6 +341,10 @@ std::string spectrum_row(const study::SpectrumResult& res, const study::Spectrum
   for (const SpectrumColumn& col : kSpectrumColumns) {
     if (&col != kSpectrumColumns) s += ',';
     s += format_field(col.get(res, c, g));
+    each_unit_column(kSpectrumUnitColumns, col.name, res.units, [&](const auto& u) {
+      s += ',';
+      s += format_field(u.get(c));
+    });
   }
   if (res.sliding) add_sliding_fields(s, c.run);
   return s;
@@ -304,8 +386,8 @@ const BoundaryColumn kBoundaryColumns[] = {
      },
      nullptr},
     {"frequency", "grid",
-     "the column's frequency as the grid holds it: omega_p/p on normalized axes, rad/s on "
-     "physical ones",
+     "the column's frequency as the grid holds it: omega_p/p on normalized axes, its "
+     "frequency_units on physical ones",
      ColumnType::kReal,
      [](const BoundaryContext&, const Boundary& b) -> Value { return b.frequency; }, nullptr},
     {"omega_p_rad_per_s", "rad/s", "the same in rad/s (record: 0)", ColumnType::kReal,
@@ -324,7 +406,8 @@ const BoundaryColumn kBoundaryColumns[] = {
      }},
     {"min_overturning", "grid",
      "the upper end of the bracket: an amplitude shown to overturn, as the grid holds it "
-     "(a_p/(g tan alpha) on normalized axes, m/s^2 on physical ones, the factor on a record); "
+     "(a_p/(g tan alpha) on normalized axes, its amplitude_units on physical ones, the factor "
+     "on a record); "
      "empty for `none`",
      ColumnType::kReal,
      [](const BoundaryContext&, const Boundary& b) -> Value {
@@ -363,13 +446,23 @@ const BoundaryColumn kBoundaryColumns[] = {
      [](Boundary& b, const Value& v) { b.bisection_runs = static_cast<int>(integer(v)); }},
 };
 
+const GridUnitColumn<Boundary> kBoundaryUnitColumns[] = {
+    {"omega_p_rad_per_s", "f_p", true,
+     "the column's frequency in the grid's frequency_units (f_p_hz; physical axes in Hz only)",
+     [](const Boundary& b) -> Value { return b.frequency; }},
+    {"min_overturning_m_per_s2", "min_overturning", false,
+     "`min_overturning` in the grid's amplitude_units (min_overturning_g, "
+     "min_overturning_cm_per_s2; physical axes in those units only)",
+     [](const Boundary& b) -> Value { return found(b) ? b.overturning : kNoValue; }},
+};
+
 // the context of a boundary row: the spec's units in SI
 BoundaryContext boundary_context(const study::SpectrumResult& res, const study::OverturnBoundary& b,
                                  bool normalized, double g) {
   const bool record = res.cells.size() == 1 || (!res.cells.empty() && res.cells[0].omega_si == 0.0);
   // the spec's units to m/s^2 and rad/s
-  double a_unit = normalized ? g * res.tan_alpha : 1.0;
-  double omega = normalized ? b.frequency * res.p : b.frequency;
+  double a_unit = normalized ? g * res.tan_alpha : res.units.amplitude_si;
+  double omega = b.frequency * (normalized ? res.p : res.units.frequency_si);
   if (record) {
     const study::SpectrumCell& c0 = res.cells.front();
     a_unit = c0.amplitude > 0.0 ? c0.amplitude_si / c0.amplitude : 0.0;  // the record's PGA
@@ -380,15 +473,25 @@ BoundaryContext boundary_context(const study::SpectrumResult& res, const study::
 
 }  // namespace
 
-std::vector<std::string> boundary_columns() {
+std::vector<std::string> boundary_columns(const study::GridUnits& units) {
   std::vector<std::string> v;
-  for (const BoundaryColumn& c : kBoundaryColumns) v.emplace_back(c.name);
+  for (const BoundaryColumn& c : kBoundaryColumns) {
+    v.emplace_back(c.name);
+    each_unit_column(kBoundaryUnitColumns, c.name, units,
+                     [&](const auto& u) { v.push_back(name_in(u, units)); });
+  }
   return v;
 }
 
-std::vector<ColumnInfo> boundary_column_info() {
+std::vector<ColumnInfo> boundary_column_info(const study::GridUnits& units) {
   std::vector<ColumnInfo> v;
-  for (const BoundaryColumn& c : kBoundaryColumns) v.push_back({c.name, c.unit, c.type});
+  for (const BoundaryColumn& c : kBoundaryColumns) {
+    v.push_back({c.name, c.unit, c.type});
+    each_unit_column(kBoundaryUnitColumns, c.name, units, [&](const auto& u) {
+      v.push_back(
+          {name_in(u, units), u.frequency ? units.frequency : units.amplitude, ColumnType::kReal});
+    });
+  }
   return v;
 }
 
@@ -397,7 +500,11 @@ std::vector<FieldValue> boundary_values(const study::SpectrumResult& res,
                                         double g) {
   const BoundaryContext x = boundary_context(res, b, normalized, g);
   std::vector<FieldValue> v;
-  for (const BoundaryColumn& col : kBoundaryColumns) v.push_back(col.get(x, b));
+  for (const BoundaryColumn& col : kBoundaryColumns) {
+    v.push_back(col.get(x, b));
+    each_unit_column(kBoundaryUnitColumns, col.name, res.units,
+                     [&](const auto& u) { v.push_back(u.get(b)); });
+  }
   return v;
 }
 
@@ -408,18 +515,22 @@ std::string boundary_row(const study::SpectrumResult& res, const study::Overturn
   for (const BoundaryColumn& col : kBoundaryColumns) {
     if (&col != kBoundaryColumns) s += ',';
     s += format_field(col.get(x, b));
+    each_unit_column(kBoundaryUnitColumns, col.name, res.units, [&](const auto& u) {
+      s += ',';
+      s += format_field(u.get(b));
+    });
   }
   return s;
 }
 
 void write_spectrum_csv(std::ostream& out, const study::SpectrumResult& result, double g) {
-  out << join(spectrum_columns(result.sliding), ",") << '\n';
+  out << join(spectrum_columns(result.sliding, result.units), ",") << '\n';
   for (const study::SpectrumCell& c : result.cells) out << spectrum_row(result, c, g) << '\n';
 }
 
 void write_boundary_csv(std::ostream& out, const study::SpectrumResult& result, bool normalized,
                         double g) {
-  out << join(boundary_columns(), ",") << '\n';
+  out << join(boundary_columns(result.units), ",") << '\n';
   for (const study::OverturnBoundary& b : result.boundary) {
     out << boundary_row(result, b, normalized, g) << '\n';
   }
@@ -431,7 +542,7 @@ study::SpectrumCell read_spectrum_cell(const study::SpectrumResult& grid, std::s
                         "cell index " + std::to_string(index) + " out of range (" +
                             std::to_string(grid.cells.size()) + " cells)");
   study::SpectrumCell cell = grid.cells[index];
-  const std::vector<std::string> names = spectrum_columns(grid.sliding);
+  const std::vector<std::string> names = spectrum_columns(grid.sliding, grid.units);
   const std::vector<std::string_view> f = fields_of(line);
   FLEXROCK_THROW_UNLESS(f.size() == names.size(), std::to_string(f.size()) + " fields, expected " +
                                                       std::to_string(names.size()));
@@ -447,6 +558,11 @@ study::SpectrumCell read_spectrum_cell(const study::SpectrumResult& grid, std::s
     const Value v = next(col.type);
     if (col.set) col.set(cell, v);
     ++k;
+    // the grid's own units: follow from the grid, checked with the whole line below
+    each_unit_column(kSpectrumUnitColumns, col.name, grid.units, [&](const auto&) {
+      next(ColumnType::kReal);
+      ++k;
+    });
   }
   if (grid.sliding) {
     for (const SlidingColumn& col : sliding_columns()) {
@@ -467,18 +583,33 @@ study::OverturnBoundary read_boundary(const study::SpectrumResult& grid, std::si
   study::OverturnBoundary b = grid.boundary[column];
   b.column = column;
   b.computed = true;
-  const std::vector<std::string> names = boundary_columns();
+  const std::vector<std::string> names = boundary_columns(grid.units);
   const std::vector<std::string_view> f = fields_of(line);
   FLEXROCK_THROW_UNLESS(f.size() == names.size(), std::to_string(f.size()) + " fields, expected " +
                                                       std::to_string(names.size()));
-  for (std::size_t k = 0; k < names.size(); ++k) {
-    const BoundaryColumn& col = kBoundaryColumns[k];
+  std::size_t k = 0;
+  auto next = [&](ColumnType type) {
     try {
-      const Value v = parse_field(f[k], col.type);
-      if (col.set) col.set(b, v);
+      return parse_field(f[k], type);
     } catch (const InputError& e) {
       throw InputError("field " + std::to_string(k + 1) + " (" + names[k] + "): " + e.what());
     }
+  };
+  for (const BoundaryColumn& col : kBoundaryColumns) {
+    const Value v = next(col.type);
+    if (col.set) {
+      try {
+        col.set(b, v);
+      } catch (const InputError& e) {
+        throw InputError("field " + std::to_string(k + 1) + " (" + names[k] + "): " + e.what());
+      }
+    }
+    ++k;
+    // the grid's own units: as the columns before them say, checked with the whole line below
+    each_unit_column(kBoundaryUnitColumns, col.name, grid.units, [&](const auto&) {
+      next(ColumnType::kReal);
+      ++k;
+    });
   }
   const std::string again = boundary_row(grid, b, normalized, g);
   if (again != line) throw InputError(first_difference(names, line, again));
@@ -486,11 +617,15 @@ study::OverturnBoundary read_boundary(const study::SpectrumResult& grid, std::si
 }
 
 std::string study_detail::spectrum_column_block() {
-  return column_block<SpectrumColumn>("spectrum", "src/io/study_spectrum.cpp", kSpectrumColumns);
+  return with_unit_rows(
+      column_block<SpectrumColumn>("spectrum", "src/io/study_spectrum.cpp", kSpectrumColumns),
+      kSpectrumUnitColumns);
 }
 
 std::string study_detail::boundary_column_block() {
-  return column_block<BoundaryColumn>("boundary", "src/io/study_spectrum.cpp", kBoundaryColumns);
+  return with_unit_rows(
+      column_block<BoundaryColumn>("boundary", "src/io/study_spectrum.cpp", kBoundaryColumns),
+      kBoundaryUnitColumns);
 }
 
 }  // namespace flexrock::io

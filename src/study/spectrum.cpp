@@ -166,8 +166,22 @@ SpectrumResult spectrum_grid(const Body& body, const SpectrumSpec& spec) {
   res.alpha = body.tipping_angle(1);
   res.p = body.rocking_frequency();
   res.sliding = std::isfinite(spec.solver.friction_coefficient);
-  const double a_unit = spec.normalized ? body.g() * body.alpha1() : 1.0;
-  const double w_unit = spec.normalized ? res.p : 1.0;
+  if (!spec.normalized) {
+    const GridUnits& u = spec.units;
+    FLEXROCK_THROW_UNLESS(
+        (u.amplitude == "m/s^2" || u.amplitude == "g" || u.amplitude == "cm/s^2") &&
+            std::isfinite(u.amplitude_si) && u.amplitude_si > 0.0,
+        "spectrum: amplitude unit \"" + u.amplitude + "\" of " + format_number(u.amplitude_si) +
+            " m/s^2; expected m/s^2, g or cm/s^2 with a factor > 0");
+    FLEXROCK_THROW_UNLESS((u.frequency == "rad/s" || u.frequency == "Hz") &&
+                              std::isfinite(u.frequency_si) && u.frequency_si > 0.0,
+                          "spectrum: frequency unit \"" + u.frequency + "\" of " +
+                              format_number(u.frequency_si) +
+                              " rad/s; expected rad/s or Hz with a factor > 0");
+    res.units = u;
+  }
+  const double a_unit = spec.normalized ? body.g() * body.alpha1() : spec.units.amplitude_si;
+  const double w_unit = spec.normalized ? res.p : spec.units.frequency_si;
   const std::size_t rows = spec.amplitudes.size();
   const std::size_t cols = spec.frequencies.size();
   // every run as it will be made, before any is
@@ -268,7 +282,7 @@ SpectrumResult compute_spectrum(const Body& body, const SpectrumSpec& spec,
   check_ranks(options);
   SpectrumResult res = spectrum_grid(body, spec);
   apply_resume(res, resume);
-  const double a_unit = spec.normalized ? body.g() * body.alpha1() : 1.0;
+  const double a_unit = spec.normalized ? body.g() * body.alpha1() : spec.units.amplitude_si;
   const std::size_t rows = spec.amplitudes.size();
   const std::size_t cols = spec.frequencies.size();
   // the columns this process computes, and that have something left to compute

@@ -103,10 +103,15 @@ TEST_F(StudyFiles, SpectrumFileWithInlineBodyAndPhysicalAxes) {
   const SpectrumFile f = load_spectrum_file(p);
   EXPECT_FALSE(f.is_record);
   EXPECT_FALSE(f.pulse.normalized);
-  EXPECT_NEAR(f.pulse.amplitudes[1], 9.80665, 1e-12);
+  // the grid stays in the units given, with their SI values beside it
+  EXPECT_EQ(f.pulse.amplitudes[1], 1.0);
   ASSERT_EQ(f.pulse.frequencies.size(), 4u);
-  EXPECT_NEAR(f.pulse.frequencies[3], 8.0 * std::acos(-1.0), 1e-12);
-  EXPECT_NEAR(f.pulse.frequencies[1], 2.0 * std::acos(-1.0) * std::cbrt(4.0), 1e-12);
+  EXPECT_NEAR(f.pulse.frequencies[3], 4.0, 1e-12);
+  EXPECT_NEAR(f.pulse.frequencies[1], std::cbrt(4.0), 1e-12);
+  EXPECT_EQ(f.pulse.units.amplitude, "g");
+  EXPECT_EQ(f.pulse.units.amplitude_si, 9.80665);
+  EXPECT_EQ(f.pulse.units.frequency, "Hz");
+  EXPECT_EQ(f.pulse.units.frequency_si, 2.0 * std::acos(-1.0));
   const std::string bad =
       write("bad.toml", std::string(kBody) + "[spectrum]\npulse = \"one-sine\"\n");
   test::expect_input_error([&] { load_spectrum_file(bad); },

@@ -51,13 +51,16 @@ struct SpectrumFile {
 SpectrumFile load_spectrum_file(const std::string& path);
 
 /// Columns of the spectrum CSV (one row per grid cell, row-major); with `sliding` (a spec with a
-/// finite friction coefficient: SpectrumResult::sliding) the sliding columns follow.
-std::vector<std::string> spectrum_columns(bool sliding = false);
+/// finite friction coefficient: SpectrumResult::sliding) the sliding columns follow; a grid given
+/// in other units than SI (SpectrumResult::units) has columns in them (a_p_g, f_p_hz) after
+/// the SI ones.
+std::vector<std::string> spectrum_columns(bool sliding = false, const study::GridUnits& units = {});
 /// One CSV line (no line end) of a cell (with the sliding fields when result.sliding).
 std::string spectrum_row(const study::SpectrumResult& result, const study::SpectrumCell& cell,
                          double g);
-/// Columns of the boundary CSV (one row per frequency column).
-std::vector<std::string> boundary_columns();
+/// Columns of the boundary CSV (one row per frequency column), with those in the grid's units
+/// as for spectrum_columns.
+std::vector<std::string> boundary_columns(const study::GridUnits& units = {});
 /// One CSV line (no line end) of a column's minimum overturning amplitude.
 std::string boundary_row(const study::SpectrumResult& result, const study::OverturnBoundary& b,
                          bool normalized, double g);
@@ -134,11 +137,12 @@ std::vector<ColumnInfo> sweep_column_info(const study::SweepSpec& spec);
 /// The fields of a row, one per column of sweep_column_info(spec); a real the run did not have
 /// (not finite) is written empty.
 std::vector<FieldValue> sweep_values(const study::SweepSpec& spec, const study::SweepRow& row);
-/// The columns of the spectrum CSV (spectrum_columns(sliding)) with units and types.
-std::vector<ColumnInfo> spectrum_column_info(bool sliding = false);
+/// The columns of the spectrum CSV (spectrum_columns(sliding, units)) with units and types.
+std::vector<ColumnInfo> spectrum_column_info(bool sliding = false,
+                                             const study::GridUnits& units = {});
 /// Columns of the boundary CSV, and the fields of a column's boundary, one per column (as
 /// boundary_row writes them).
-std::vector<ColumnInfo> boundary_column_info();
+std::vector<ColumnInfo> boundary_column_info(const study::GridUnits& units = {});
 std::vector<FieldValue> boundary_values(const study::SpectrumResult& result,
                                         const study::OverturnBoundary& b, bool normalized,
                                         double g);

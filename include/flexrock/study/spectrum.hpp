@@ -25,13 +25,30 @@ namespace flexrock::study {
 /// adjacent doubles is one of them).
 inline constexpr double kMinBisectionTolerance = 1e-12;
 
+/// The units a physical grid is given in (amplitude_units, frequency_units): the grid, the cells'
+/// `amplitude` and `frequency` and the bisection stay in them, and the cell and boundary tables
+/// add columns in them beside the SI ones (a_p_g, f_p_hz, min_overturning_g) where they differ, so
+/// that a file and its plot keep the units asked for.
+struct GridUnits {
+  std::string amplitude = "m/s^2";  // "m/s^2", "g" or "cm/s^2"
+  double amplitude_si = 1.0;        // [m/s^2] one amplitude unit
+  std::string frequency = "rad/s";  // "rad/s" or "Hz"
+  double frequency_si = 1.0;        // [rad/s] one frequency unit
+
+  bool amplitude_differs() const { return amplitude != "m/s^2"; }
+  bool frequency_differs() const { return frequency != "rad/s"; }
+  bool operator==(const GridUnits&) const = default;
+};
+
 /// A pulse spectrum: pulse type x amplitude x frequency.
 struct SpectrumSpec {
   std::string pulse = "one_sine";  // a pulse type with a length (excitation/pulses.hpp table)
   bool normalized = true;  // true: amplitudes a_p/(g tan alpha1) [-], frequencies omega_p/p [-];
-                           // false: amplitudes [m/s^2], frequencies omega_p [rad/s]
+                           // false: amplitudes and frequencies in `units` (m/s^2, rad/s unless
+                           // asked otherwise)
   std::vector<double> amplitudes;   // the grid rows, strictly increasing, > 0
   std::vector<double> frequencies;  // the grid columns, > 0
+  GridUnits units;                  // physical axes: the grid's units (normalised: unused)
   double free_periods = 4.0;        // [-] free motion after the pulse, in rocking periods 2 pi / p
   bool bisect = true;               // refine the minimum overturning amplitude of every column
   double bisection_tolerance = 1e-3;  // [-] relative width of the final bracket, in
@@ -55,8 +72,8 @@ struct RecordSpectrumSpec {
 struct SpectrumCell {
   std::size_t row = 0;        // amplitude (or scale) index
   std::size_t column = 0;     // frequency index (0 for a record)
-  double amplitude = 0.0;     // in the spec's units (normalised, m/s^2, or the scale factor)
-  double frequency = 0.0;     // in the spec's units (normalised or rad/s; 0 for a record)
+  double amplitude = 0.0;     // in the spec's units (normalised, its GridUnits, or the factor)
+  double frequency = 0.0;     // in the spec's units (normalised or its GridUnits; record: 0)
   double amplitude_si = 0.0;  // [m/s^2] a_p (record: the scaled record's PGA)
   double omega_si = 0.0;      // [rad/s] omega_p (record: 0)
   bool computed = false;      // false: another process (rank) computed this cell
@@ -97,6 +114,8 @@ struct SpectrumResult {
   std::vector<OverturnBoundary> boundary;  // one per column (empty without bisection)
   bool sliding = false;  // the spec's friction coefficient is finite: the cells carry the sliding
                          // fields (offsets, time sliding, regime)
+  GridUnits units;       // the units a physical pulse grid was asked in (otherwise SI: no columns
+                         // beyond the SI and normalised ones)
 };
 
 /// The motion of one cell: a_p [m/s^2], omega_p [rad/s], total duration [s], the pulse type's
