@@ -15,7 +15,7 @@ if(TARGET flexrock)
   # the commands: outputs, thread-count independence, errors; resume after SIGINT, SIGTERM and
   # SIGKILL, damaged journals, a second writer
   foreach(script study_spectrum study_spectrum_resume study_sweep_resume study_fragility
-                 study_intensity study_shards spectrum_units)
+                 study_intensity study_shards spectrum_units sweep_pairs)
     add_test(NAME cli_${script}
              COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/cli/${script}.sh $<TARGET_FILE:flexrock>
                      ${PROJECT_SOURCE_DIR})

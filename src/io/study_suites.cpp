@@ -21,6 +21,7 @@
 
 #include "flexrock/core/error.hpp"
 #include "flexrock/core/types.hpp"
+#include "flexrock/excitation/azimuth.hpp"
 #include "flexrock/excitation/intensity.hpp"
 #include "flexrock/excitation/pulses.hpp"
 #include "flexrock/io/case_file.hpp"
@@ -186,9 +187,34 @@ std::vector<study::SweepRecord> read_suite(Keys& r, std::uint64_t& hash,
                                            std::vector<std::string>& files) {
   r.require("horizontal", "a glob or an array of horizontal record files");
   const SuiteComponent h = suite_component(r, "horizontal");
-  const bool has_v = r.has("vertical");
-  SuiteComponent v;
+  const bool has_v = r.has("vertical"), has_h2 = r.has("horizontal2");
+  SuiteComponent v, h2;
   if (has_v) v = suite_component(r, "vertical");
+  if (has_h2) h2 = suite_component(r, "horizontal2");
+  // a pair's azimuths [deg]: the plane of each run, from H1 toward H2 (docs/theory.md §23)
+  std::vector<double> azimuths;
+  if (has_h2) {
+    if (r.has("azimuths_deg") && r.has("azimuth_step_deg"))
+      r.fail("azimuth_step_deg", "expected 'azimuths_deg' or 'azimuth_step_deg', not both");
+    if (r.has("azimuths_deg")) {
+      azimuths = *grid_opt(r, "azimuths_deg", "[deg] (the body's plane, from H1 toward H2)");
+      std::set<double> seen;
+      for (const double a : azimuths) {
+        if (!(a >= 0.0 && a < 360.0) || !seen.insert(a).second)
+          r.fail("azimuths_deg", "expected distinct azimuths in [0, 360) deg, got " + num(a));
+      }
+    } else {
+      const double step = r.positive_or("azimuth_step_deg", 5.0, "[deg] (in (0, 360))");
+      if (!(step < 360.0))
+        r.expected("azimuth_step_deg", "a step in (0, 360) deg, got " + num(step));
+      for (std::size_t k = 0; static_cast<double>(k) * step < 360.0 - 1e-9; ++k)
+        azimuths.push_back(static_cast<double>(k) * step);
+    }
+  } else {
+    for (const char* k : {"azimuths_deg", "azimuth_step_deg"}) {
+      if (r.has(k)) r.fail(k, "expected only with 'horizontal2' (a record pair)");
+    }
+  }
   std::optional<std::string> format;
   if (r.has("format")) {
     std::vector<std::string> names;
@@ -200,86 +226,124 @@ std::vector<study::SweepRecord> read_suite(Keys& r, std::uint64_t& hash,
   const double dt = r.positive_or("dt", 0.0, "[s] (sample spacing of single_column files)");
   r.finish("for a [[suite]] (see docs/studies.md)");
 
-  // the vertical file of each horizontal one (index into v.paths)
-  std::vector<std::size_t> pair(h.paths.size());
-  if (has_v) {
-    if (h.glob != v.glob)
-      r.fail("vertical", "expected 'horizontal' and 'vertical' both globs or both arrays");
+  // the file of component `o` (named by `key`, e.g. "vertical") that goes with each horizontal
+  // one (index into o.paths): by the text of a glob's '*', or by position in lists
+  const auto pair_with = [&](const SuiteComponent& o, const std::string& key) {
+    std::vector<std::size_t> pair(h.paths.size());
+    if (h.glob != o.glob)
+      r.fail(key, "expected 'horizontal' and '" + key + "' both globs or both arrays");
     std::set<std::string> hp(h.paths.begin(), h.paths.end());
-    for (const std::string& p : v.paths) {
+    for (const std::string& p : o.paths) {
       if (hp.count(p))
-        r.fail("vertical", "the file " + p + " is both a horizontal and a vertical component");
+        r.fail(key, "the file " + p + " is both a horizontal and a " + key + " component");
     }
     if (h.glob) {
-      if (h.keys.empty() || v.keys.empty()) {
-        r.fail(h.keys.empty() ? "horizontal" : "vertical",
-               "expected exactly one '*' (and no '?') in the file name of a glob with a vertical "
-               "pair: the text '*' matches pairs the components");
+      if (h.keys.empty() || o.keys.empty()) {
+        r.fail(h.keys.empty() ? "horizontal" : key,
+               "expected exactly one '*' (and no '?') in the file name of a glob with a " + key +
+                   " pair: the text '*' matches pairs the components");
       }
       std::map<std::string, std::size_t> by_key;
-      for (std::size_t j = 0; j < v.keys.size(); ++j) by_key.emplace(v.keys[j], j);
+      for (std::size_t j = 0; j < o.keys.size(); ++j) by_key.emplace(o.keys[j], j);
       std::set<std::size_t> used;
       for (std::size_t i = 0; i < h.paths.size(); ++i) {
         const auto it = by_key.find(h.keys[i]);
         if (it == by_key.end()) {
-          r.fail("vertical", "the horizontal record " + h.paths[i] +
-                                 " has no vertical one: expected a file matching \"" + v.pattern +
-                                 "\" with '*' = \"" + h.keys[i] + "\"");
+          r.fail(key, "the horizontal record " + h.paths[i] + " has no " + key +
+                          " one: expected a file matching \"" + o.pattern + "\" with '*' = \"" +
+                          h.keys[i] + "\"");
         }
         pair[i] = it->second;
         used.insert(it->second);
       }
-      for (std::size_t j = 0; j < v.paths.size(); ++j) {
+      for (std::size_t j = 0; j < o.paths.size(); ++j) {
         if (!used.count(j)) {
-          r.fail("horizontal", "the vertical record " + v.paths[j] +
+          r.fail("horizontal", "the " + key + " record " + o.paths[j] +
                                    " has no horizontal one: expected a file matching \"" +
-                                   h.pattern + "\" with '*' = \"" + v.keys[j] + "\"");
+                                   h.pattern + "\" with '*' = \"" + o.keys[j] + "\"");
         }
       }
     } else {
-      if (h.paths.size() != v.paths.size()) {
-        r.fail("vertical", "expected as many vertical files as horizontal ones (" +
-                               std::to_string(h.paths.size()) + "), got " +
-                               std::to_string(v.paths.size()) + "; the lists pair by position");
+      if (h.paths.size() != o.paths.size()) {
+        r.fail(key, "expected as many " + key + " files as horizontal ones (" +
+                        std::to_string(h.paths.size()) + "), got " +
+                        std::to_string(o.paths.size()) + "; the lists pair by position");
       }
       for (std::size_t i = 0; i < pair.size(); ++i) pair[i] = i;
     }
+    return pair;
+  };
+  const std::vector<std::size_t> pair =
+      has_v ? pair_with(v, "vertical") : std::vector<std::size_t>{};
+  const std::vector<std::size_t> pair2 =
+      has_h2 ? pair_with(h2, "horizontal2") : std::vector<std::size_t>{};
+  if (has_v && has_h2) {
+    for (const std::string& p : v.paths) {
+      if (std::find(h2.paths.begin(), h2.paths.end(), p) != h2.paths.end())
+        r.fail("vertical", "the file " + p + " is both a horizontal2 and a vertical component");
+    }
   }
+  // the components of one station share a clock: a different one is refused, not resampled
+  const auto same_grid = [&](const Record& hr, const Record& o, const SuiteComponent& oc,
+                             const std::string& key, const std::string& hp, const std::string& op) {
+    bool same = hr.npts() == o.npts();
+    const double tol =
+        1e-9 * (hr.time.back() - hr.time.front()) / static_cast<double>(hr.npts() - 1);
+    for (std::size_t k = 0; same && k < hr.npts(); ++k)
+      same = std::abs(hr.time[k] - o.time[k]) <= tol;
+    if (!same) {
+      r.fail_at(oc.line, key,
+                "expected the " + key + " record " + op + " on the time grid of its horizontal " +
+                    hp + " (" + std::to_string(hr.npts()) + " samples, dt " + num(hr.dt) +
+                    " s), got " + std::to_string(o.npts()) + " samples, dt " + num(o.dt) +
+                    " s (resample or cut one of them first)");
+    }
+  };
 
   std::vector<study::SweepRecord> out;
   for (std::size_t i = 0; i < h.paths.size(); ++i) {
     const Record hr = read_suite_file(r, "horizontal", h.line, h.paths[i], format, units, dt);
     files.push_back(h.paths[i]);
     hash = fnv1a(file_bytes(h.paths[i]), hash);
-    study::SweepRecord sr;
-    sr.name = fs::path(h.paths[i]).stem().string();
-    if (!has_v) {
-      check_name(r, "horizontal", sr.name);
-      sr.motion = hr.to_motion();
-      out.push_back(std::move(sr));
+    std::string name = fs::path(h.paths[i]).stem().string();
+    if (!has_v && !has_h2) {
+      check_name(r, "horizontal", name);
+      out.push_back({name, hr.to_motion()});
       continue;
     }
-    const std::string& vp = v.paths[pair[i]];
-    const Record vr = read_suite_file(r, "vertical", v.line, vp, format, units, dt);
-    files.push_back(vp);
-    hash = fnv1a(file_bytes(vp), hash);
-    // the components of one station share a clock: a different one is refused, not resampled
-    bool same = hr.npts() == vr.npts();
-    const double tol =
-        1e-9 * (hr.time.back() - hr.time.front()) / static_cast<double>(hr.npts() - 1);
-    for (std::size_t k = 0; same && k < hr.npts(); ++k)
-      same = std::abs(hr.time[k] - vr.time[k]) <= tol;
-    if (!same) {
-      r.fail_at(v.line, "vertical",
-                "expected the vertical record " + vp + " on the time grid of its horizontal " +
-                    h.paths[i] + " (" + std::to_string(hr.npts()) + " samples, dt " + num(hr.dt) +
-                    " s), got " + std::to_string(vr.npts()) + " samples, dt " + num(vr.dt) +
-                    " s (resample one of them first)");
+    std::optional<Record> h2r, vr;
+    if (has_h2) {
+      const std::string& p2 = h2.paths[pair2[i]];
+      h2r = read_suite_file(r, "horizontal2", h2.line, p2, format, units, dt);
+      files.push_back(p2);
+      hash = fnv1a(file_bytes(p2), hash);
+      same_grid(hr, *h2r, h2, "horizontal2", h.paths[i], p2);
+      name += "+" + fs::path(p2).stem().string();
     }
-    sr.name += "+" + fs::path(vp).stem().string();
-    check_name(r, "horizontal", sr.name);
-    sr.motion = combine(hr, &vr);
-    out.push_back(std::move(sr));
+    if (has_v) {
+      const std::string& vp = v.paths[pair[i]];
+      vr = read_suite_file(r, "vertical", v.line, vp, format, units, dt);
+      files.push_back(vp);
+      hash = fnv1a(file_bytes(vp), hash);
+      same_grid(hr, *vr, v, "vertical", h.paths[i], vp);
+      name += "+" + fs::path(vp).stem().string();
+    }
+    if (!has_h2) {
+      check_name(r, "horizontal", name);
+      out.push_back({name, combine(hr, &*vr)});
+      continue;
+    }
+    // a pair: one record per azimuth, the plane's component a = H1 cos(beta) + H2 sin(beta)
+    // in m/s^2 (azimuth_motion's projection), named "<pair>@<beta>"
+    const std::vector<double> h1si = hr.to_si(), h2si = h2r->to_si();
+    for (const double beta : azimuths) {
+      Record a = hr;
+      a.units = AccelUnit::kMetersPerSecond2;
+      a.values = project_horizontal(h1si, h2si, beta);
+      const std::string at = name + "@" + num(beta);
+      check_name(r, "horizontal", at);
+      out.push_back({at, has_v ? combine(a, &*vr) : a.to_motion()});
+    }
   }
   return out;
 }

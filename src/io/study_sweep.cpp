@@ -275,7 +275,9 @@ const SweepColumn kSweepColumns[] = {
      [](const Spec&, const Row& r) -> Value { return static_cast<long long>(r.index); }, nullptr},
     {"body", "-", "name of the body", ColumnType::kText,
      [](const Spec& s, const Row& r) -> Value { return s.bodies.at(r.body).name; }, nullptr},
-    {"record", "-", "name of the record (a `[[suite]]` pair: `<horizontal stem>+<vertical stem>`)",
+    {"record", "-",
+     "name of the record (a `[[suite]]` pair: `<horizontal stem>+<vertical stem>`; two "
+     "horizontal components: `<H1 stem>+<H2 stem>@<azimuth>`)",
      ColumnType::kText,
      [](const Spec& s, const Row& r) -> Value { return s.records.at(r.record).name; }, nullptr},
     {"requested_level", "`requested_units`",
