@@ -275,7 +275,7 @@ struct StudyCommands::Impl {
 
   std::string input, output, boundary_output, curve_output;
   int threads = -1;
-  bool quiet = false, no_progress = false, no_bisect = false;
+  bool quiet = false, no_progress = false, no_bisect = false, worst_azimuth = false;
   std::string im = "pga_g", outcome = "overturned", body_name;
   std::vector<std::string> state_texts;  // --state, in the order given
   std::string analysis = "runs";         // runs, msa or ida
@@ -549,9 +549,10 @@ int StudyCommands::Impl::run_fragility() {
   o.im = im;
   o.im_given = fragility->count("--im") > 0;
   o.body = body_name;
+  o.worst_azimuth = worst_azimuth;
   const io::FragilitySession session(std::move(table), std::move(o));
   const std::vector<io::DamageState>& states = session.states();
-  const std::string& im_name = session.measure().name;
+  const std::string im_name = (worst_azimuth ? "rotd50:" : "") + session.measure().name;
   const std::string& unit = session.unit();
   const double conf = session.options().confidence;
   // what fails, as the fit is titled: "overturning", "max theta/alpha > 0.5", ...
@@ -775,6 +776,12 @@ StudyCommands::StudyCommands(CLI::App& app) : impl_(std::make_unique<Impl>()) {
   s.fragility->add_option("--level", s.level,
                           "threshold of --outcome theta, energy, offset or residual_offset");
   s.fragility->add_option("--body", s.body_name, "fit only this body (default: each body)");
+  s.fragility->add_flag(
+      "--worst-azimuth", s.worst_azimuth,
+      "a sweep of record pairs ([[suite]] horizontal2): the azimuths of one pair at one level "
+      "are one observation, failed if any azimuth failed, its measure their median (RotD50 of "
+      "--im on the azimuth grid; needs [scales] factors). Without it every azimuth is one "
+      "observation: the random-azimuth fragility");
   s.fragility->add_option("--confidence", s.confidence, "level of the bounds (default 0.95)");
   s.fragility->add_option("-o,--output", s.output, "fit CSV (default: none)");
   s.fragility->add_option("--curve", s.curve_output,

@@ -45,7 +45,8 @@ inline constexpr VerbExamples kVerbExamples[] = {
     {"fragility",
      "flexrock fragility ida.csv -o fit.csv --curve curve.csv   # per body, PGA in g\n"
      "flexrock fragility ida.csv --im sa:1 --state uplift --state theta:0.5\n"
-     "flexrock fragility ida.csv --analysis msa                 # stripes at the levels"},
+     "flexrock fragility ida.csv --analysis msa                 # stripes at the levels\n"
+     "flexrock fragility pairs.csv --worst-azimuth              # record pairs: worst azimuth"},
     {"qualify",
      "flexrock qualify examples/qualify/cabinet.toml -o report/ # bounding cases, IDA, report"},
 };

@@ -568,12 +568,13 @@ class FragilityQuery:
     im: str
     level: float
     outcome: str
+    worst_azimuth: bool
 
 class FragilitySession:
     """The fits of every damage state and body of a sweep CSV,
     as ``flexrock fragility`` makes them (the same checks, observations, fits and fit CSV).
     """
-    def __init__(self, path: str, im: str = ..., im_given: bool = ..., states: list[DamageState] = ..., outcome: FragilityOutcome = ..., level: float = ..., analysis: FragilityAnalysis = ..., body: str = ..., confidence: float = ...) -> None: ...
+    def __init__(self, path: str, im: str = ..., im_given: bool = ..., states: list[DamageState] = ..., outcome: FragilityOutcome = ..., level: float = ..., analysis: FragilityAnalysis = ..., body: str = ..., confidence: float = ..., worst_azimuth: bool = ...) -> None: ...
     @property
     def bodies(self) -> int: ...
     def data(self, state: int, body: int) -> FragilityData: ...

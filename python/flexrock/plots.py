@@ -584,6 +584,9 @@ def _im_title(im: str):
     # the library's table of intensity measures
     if im in _IM_TITLES:
         return _IM_TITLES[im]
+    if im.startswith("rotd50:"):  # a worst-azimuth fit: the measure's median over azimuths
+        title, unit = _im_title(im[len("rotd50:"):])
+        return f"RotD50 {title}", unit
     if im.startswith("sa:"):
         parts = im.split(":")
         zeta = float(parts[2]) if len(parts) > 2 else 0.05

@@ -1257,7 +1257,10 @@ CsvTable)doc");
       .def_readwrite("im", &io::FragilityQuery::im)
       .def_readwrite("outcome", &io::FragilityQuery::outcome)
       .def_readwrite("level", &io::FragilityQuery::level)
-      .def_readwrite("body", &io::FragilityQuery::body);
+      .def_readwrite("body", &io::FragilityQuery::body)
+      .def_readwrite("worst_azimuth", &io::FragilityQuery::worst_azimuth,
+                     "one observation per record pair and level: failed at any azimuth, its "
+                     "measure the median over them (rotd50:<im>)");
   FieldPickle<io::FragilityData>(py::class_<io::FragilityData>(m, "FragilityData"))
       .def_readonly("body", &io::FragilityData::body)
       .def_readonly("im", &io::FragilityData::im)
@@ -1350,7 +1353,7 @@ as ``flexrock fragility`` makes them (the same checks, observations, fits and fi
       .def(py::init([](const std::string& path, const std::string& im, bool im_given,
                        std::vector<io::DamageState> states, io::FragilityOutcome outcome,
                        double level, io::FragilityAnalysis analysis, const std::string& body,
-                       double confidence) {
+                       double confidence, bool worst_azimuth) {
              io::FragilityOptions o;
              o.im = im;
              o.im_given = im_given;
@@ -1360,13 +1363,14 @@ as ``flexrock fragility`` makes them (the same checks, observations, fits and fi
              o.analysis = analysis;
              o.body = body;
              o.confidence = confidence;
+             o.worst_azimuth = worst_azimuth;
              return std::make_unique<io::FragilitySession>(path, std::move(o));
            }),
            py::arg("path"), py::arg("im") = "pga_g", py::arg("im_given") = false,
            py::arg("states") = std::vector<io::DamageState>{},
            py::arg("outcome") = io::FragilityOutcome::kOverturned, py::arg("level") = 0.0,
            py::arg("analysis") = io::FragilityAnalysis::kRuns, py::arg("body") = "",
-           py::arg("confidence") = 0.95)
+           py::arg("confidence") = 0.95, py::arg("worst_azimuth") = false)
       .def_property_readonly("measure", &io::FragilitySession::measure)
       .def_property_readonly("unit", &io::FragilitySession::unit)
       .def_property_readonly("states", &io::FragilitySession::states)

@@ -112,7 +112,7 @@ FragilitySession::FragilitySession(CsvTable table, FragilityOptions options)
   // one body or state that cannot be fitted does not stop the others: its reason is kept
   std::vector<std::string> reasons;
   for (const DamageState& st : states_) {
-    data_.push_back(fragility_data(table_, measure_, st, options_.body));
+    data_.push_back(fragility_data(table_, measure_, st, options_.body, options_.worst_azimuth));
     fits_.emplace_back();
     not_fitted_.emplace_back();
     for (const FragilityData& d : data_.back()) {

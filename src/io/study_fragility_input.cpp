@@ -166,7 +166,7 @@ namespace {
 std::vector<FragilityData> observations(const CsvTable& t, const FragilityMeasure& m,
                                         const FragilityOutcomeInfo* outcome,
                                         const std::string& outcome_name, double level,
-                                        const std::string& body_name) {
+                                        const std::string& body_name, bool worst_azimuth) {
   const std::string& im_col = m.column;
   if (std::find(t.columns.begin(), t.columns.end(), im_col) == t.columns.end()) {
     throw InputError(t.source + ":1: intensity measure '" + m.name + "' needs the column '" +
@@ -207,6 +207,28 @@ std::vector<FragilityData> observations(const CsvTable& t, const FragilityMeasur
   if (m.kind == FragilityMeasureKind::kRequestedLevel && cu < t.columns.size() && !t.rows.empty()) {
     unit = t.rows.front()[cu];
   }
+  // worst azimuth: the rows of one station (the record's name before '@', a [[suite]] pair) at one
+  // requested level make one observation (below)
+  const std::size_t cl = static_cast<std::size_t>(
+      std::find(t.columns.begin(), t.columns.end(), "requested_level") - t.columns.begin());
+  const std::size_t csc = static_cast<std::size_t>(
+      std::find(t.columns.begin(), t.columns.end(), "scale") - t.columns.begin());
+  struct Station {
+    std::size_t data = 0;  // index into `out`
+    std::string key;       // record before '@', requested level
+    std::vector<double> im;
+    std::string scale;  // the factor of every azimuth: the same, or the station is refused
+    std::size_t line = 0;
+    bool failed = false, stopped = false;
+  };
+  std::vector<Station> stations;
+  std::map<std::string, std::size_t> station_of;
+  if (worst_azimuth &&
+      (cr >= t.columns.size() || cl >= t.columns.size() || csc >= t.columns.size())) {
+    throw InputError(t.source +
+                     ":1: --worst-azimuth needs the columns record, requested_level and scale "
+                     "of a sweep CSV");
+  }
   std::vector<FragilityData> out;
   for (std::size_t r = 0; r < t.rows.size(); ++r) {
     const std::string& body = t.rows[r][cb];
@@ -214,15 +236,46 @@ std::vector<FragilityData> observations(const CsvTable& t, const FragilityMeasur
     auto it = std::find_if(out.begin(), out.end(),
                            [&](const FragilityData& d) { return d.body == body; });
     if (it == out.end()) {
-      out.push_back({body, {}, {}, 0, {}, m.name, unit});
+      out.push_back({body, {}, {}, 0, {}, worst_azimuth ? "rotd50:" + m.name : m.name, unit});
       it = out.end() - 1;
+    }
+    Station* st = nullptr;
+    if (worst_azimuth) {
+      const std::string& rec = t.rows[r][cr];
+      const std::size_t at = rec.rfind('@');
+      if (at == std::string::npos) {
+        throw InputError(t.source + ":" + std::to_string(t.lines[r]) + ": record '" + rec +
+                         "' is not one azimuth of a record pair (`<H1>+<H2>@<azimuth>`, a "
+                         "[[suite]] with horizontal2): --worst-azimuth needs pairs");
+      }
+      const std::string key = body + "\n" + rec.substr(0, at) + "\n" + t.rows[r][cl];
+      const auto [pos, fresh] = station_of.emplace(key, stations.size());
+      if (fresh) {
+        stations.push_back({static_cast<std::size_t>(it - out.begin()),
+                            rec.substr(0, at),
+                            {},
+                            t.rows[r][csc],
+                            t.lines[r]});
+      }
+      st = &stations[pos->second];
+      if (t.rows[r][csc] != st->scale) {
+        throw InputError(t.source + ":" + std::to_string(t.lines[r]) + ": the azimuths of '" +
+                         st->key + "' at level " + t.rows[r][cl] + " were scaled by " + st->scale +
+                         " and " + t.rows[r][csc] +
+                         ": --worst-azimuth needs every azimuth of a station scaled alike "
+                         "([scales] factors)");
+      }
     }
     // not classified: the run could not go on (`contact_lost`: rows written before the engine
     // followed flight)
     const std::string& run_outcome = t.rows[r][cs];
     if (run_outcome == study::to_string(study::Outcome::kStopped) ||
         run_outcome == "contact_lost") {
-      ++it->excluded;
+      if (st) {
+        st->stopped = true;
+      } else {
+        ++it->excluded;
+      }
       continue;
     }
     const double x = number(r, ci);
@@ -237,9 +290,30 @@ std::vector<FragilityData> observations(const CsvTable& t, const FragilityMeasur
       // either way
       y = (number(r, cv) != 0.0 || std::abs(number(r, co)) > level) ? 1 : 0;
     }
+    if (st) {
+      st->im.push_back(x);
+      st->failed = st->failed || y != 0;
+      continue;
+    }
     it->im.push_back(x);
     it->failed.push_back(y);
     it->record.push_back(cr < t.columns.size() ? t.rows[r][cr] : std::string());
+  }
+  // a station fails if any azimuth fails; its measure is the median over the azimuths (RotD50 of
+  // the measure on the grid: a measure at beta + 180 is the one at beta, so the median over [0,
+  // 360) is the one over [0, 180)). A stopped azimuth leaves the station unknown unless another
+  // failed
+  for (Station& st : stations) {
+    FragilityData& d = out[st.data];
+    if (st.im.empty() || (st.stopped && !st.failed)) {
+      ++d.excluded;
+      continue;
+    }
+    std::sort(st.im.begin(), st.im.end());
+    const std::size_t n = st.im.size();
+    d.im.push_back(n % 2 ? st.im[n / 2] : 0.5 * (st.im[n / 2 - 1] + st.im[n / 2]));
+    d.failed.push_back(st.failed ? 1 : 0);
+    d.record.push_back(st.key);
   }
   if (out.empty()) {
     throw InputError(
@@ -254,14 +328,15 @@ std::vector<FragilityData> observations(const CsvTable& t, const FragilityMeasur
 std::vector<FragilityData> fragility_data(const CsvTable& t, const FragilityQuery& q) {
   check_sweep_table(t);
   return observations(t, fragility_measure(q.im), find_fragility_outcome(q.outcome), q.outcome,
-                      q.level, q.body);
+                      q.level, q.body, q.worst_azimuth);
 }
 
 std::vector<FragilityData> fragility_data(const CsvTable& t, const FragilityMeasure& measure,
-                                          const DamageState& state, const std::string& body) {
+                                          const DamageState& state, const std::string& body,
+                                          bool worst_azimuth) {
   check_sweep_table(t);
   const FragilityOutcomeInfo& o = fragility_outcome(state.outcome);
-  return observations(t, measure, &o, o.name, state.level, body);
+  return observations(t, measure, &o, o.name, state.level, body, worst_azimuth);
 }
 
 namespace {

@@ -125,4 +125,75 @@ expect_rc 2 "a pair on two time grids"
 expect_in "$WORK/err" "expected the horizontal2 record"
 expect_in "$WORK/err" "short.dat on the time grid of its horizontal"
 [ ! -e bad.csv ] || fail "output written for a refused sweep"
+
+# fragility over the pairs: --worst-azimuth makes one observation of each pair at each level,
+# failed if any azimuth failed, with the median of the azimuths' measure; it equals the plain fit
+# of those observations written here as a sweep CSV of their own
+cp "$DATA"/RSN8883_14383980_13849090.AT2 "$DATA"/RSN8883_14383980_13849360.AT2 .
+cat >slender.toml <<'TOML'
+[body]
+type = "rigid_block"
+width = 0.3
+height = 1.5
+mass = 500.0
+TOML
+cat >wa.toml <<'TOML'
+[[body]]
+file = "slender.toml"
+[[suite]]
+horizontal = "RSN*090.AT2"
+horizontal2 = "RSN*360.AT2"
+azimuth_step_deg = 45
+[scales]
+factors = [0.5, 1, 1.5, 2, 3, 4, 6, 8]
+TOML
+run "$FLEXROCK" sweep wa.toml -o wa.csv -q
+expect_rc 0 "a sweep of two pairs at 8 azimuths"
+run "$FLEXROCK" fragility wa.csv --worst-azimuth -o worst.csv -q
+expect_rc 0 "worst-azimuth fragility"
+expect_in "$WORK/out" "P(overturning | rotd50:pga_g)"
+python3 - <<'PY' || fail "the worst-azimuth observations"
+import csv, statistics
+rows = list(csv.DictReader(open("wa.csv")))
+cols = list(rows[0])
+groups = {}
+for r in rows:
+    groups.setdefault((r["record"].split("@")[0], r["requested_level"]), []).append(r)
+assert len(groups) == 16 and all(len(g) == 8 for g in groups.values())
+out = []
+for i, g in enumerate(groups.values()):
+    failed = [r for r in g if r["overturned"] == "1"]
+    row = dict(failed[0] if failed else g[0])
+    row["index"] = str(i)
+    row["pga_g"] = repr(statistics.median(float(r["pga_g"]) for r in g))
+    out.append(row)
+n = sum(1 for r in out if r["overturned"] == "1")
+assert 0 < n < 16, n
+with open("grouped.csv", "w", newline="") as f:
+    w = csv.DictWriter(f, cols, lineterminator="\n")
+    w.writeheader()
+    w.writerows(out)
+open("failures", "w").write(str(n))
+PY
+expect_in "$WORK/out" "16 runs ($(cat failures) with the outcome)"
+run "$FLEXROCK" fragility grouped.csv -o grouped_fit.csv -q
+expect_rc 0 "the plain fit of the grouped observations"
+python3 - <<'PY' || fail "worst-azimuth fit against the fit of its observations"
+import csv
+a = next(csv.DictReader(open("worst.csv")))
+b = next(csv.DictReader(open("grouped_fit.csv")))
+assert a["im_name"] == "rotd50:pga_g" and b["im_name"] == "pga_g", (a["im_name"], b["im_name"])
+for k in ("samples", "failures", "theta", "beta", "theta_lower", "theta_upper"):
+    assert a[k] == b[k], (k, a[k], b[k])
+PY
+# refused: a sweep of single records, and azimuths scaled apart (target_pga)
+run "$FLEXROCK" fragility alone.csv --worst-azimuth
+expect_rc 2 "worst azimuth without pairs"
+expect_in "$WORK/err" "is not one azimuth of a record pair"
+sed -e 's/^factors = .*/target_pga = [0.2, 0.4]/' wa.toml >wt.toml
+run "$FLEXROCK" sweep wt.toml -o wt.csv -q
+expect_rc 0 "a sweep of pairs to target PGAs"
+run "$FLEXROCK" fragility wt.csv --worst-azimuth
+expect_rc 2 "worst azimuth over azimuths scaled apart"
+expect_in "$WORK/err" "needs every azimuth of a station scaled alike"
 echo OK

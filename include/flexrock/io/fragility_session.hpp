@@ -43,8 +43,10 @@ struct FragilityOptions {
   FragilityOutcome outcome = FragilityOutcome::kOverturned;  // without `states`
   double level = 0.0;  // threshold of a levelled `outcome` (> 0)
   FragilityAnalysis analysis = FragilityAnalysis::kRuns;
-  std::string body;          // only this body (empty: every body)
-  double confidence = 0.95;  // level of the bounds, in (0, 1)
+  std::string body;            // only this body (empty: every body)
+  double confidence = 0.95;    // level of the bounds, in (0, 1)
+  bool worst_azimuth = false;  // FragilityQuery::worst_azimuth: one observation per record pair
+                               // and level
 };
 
 /// A note on the order of two damage states of a body (given least severe first).

@@ -251,6 +251,9 @@ struct FragilityQuery {
                                        // sweep CSV with the sliding columns
   double level = 0.0;                  // threshold of all but "overturned"
   std::string body;                    // only rows of this body (empty: every body)
+  // the rows of one record pair's azimuths (`<H1>+<H2>@<beta>`) at one level are one
+  // observation: failed at any azimuth, its measure the median over them ("rotd50:<im>")
+  bool worst_azimuth = false;
 };
 
 /// The intensity measures a fit may use (FragilityQuery::im), as help and errors list them:
@@ -302,7 +305,8 @@ DamageState damage_state(const std::string& text);
 /// The observations of fragility_data for a typed measure and damage state (`body` empty: every
 /// body).
 std::vector<FragilityData> fragility_data(const CsvTable& table, const FragilityMeasure& measure,
-                                          const DamageState& state, const std::string& body);
+                                          const DamageState& state, const std::string& body = {},
+                                          bool worst_azimuth = false);
 /// The fit CSV of several damage states: the columns above with `state` after `body`, and a
 /// line of it.
 std::vector<std::string> fragility_state_columns();
