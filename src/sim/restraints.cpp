@@ -50,8 +50,8 @@ struct TiePoint {
 };
 TiePoint tie_point(const BodyParameters& p, const Restraint& r, int edge, double s, double c) {
   const double rx = r.body_x - pivot_x(p, edge), ry = r.body_y;
-  const double half = std::sin(0.5 * std::asin(s));  // c - 1 = -2 sin^2(theta/2), theta small
-  const double cm1 = std::abs(s) < 0.5 ? -2.0 * half * half : c - 1.0;
+  // c - 1 without the cancellation near theta = 0: -s^2 / (1 + c) (|theta| < pi/2 here)
+  const double cm1 = c > 0.0 ? -s * s / (1.0 + c) : c - 1.0;
   TiePoint t;
   t.dx = r.body_x - r.floor_x + cm1 * rx - s * ry;
   t.dy = r.body_y - r.floor_y + s * rx + cm1 * ry;
@@ -63,12 +63,14 @@ TiePoint tie_point(const BodyParameters& p, const Restraint& r, int edge, double
 }
 
 double rest_length(const Restraint& r) {
-  return std::hypot(r.body_x - r.floor_x, r.body_y - r.floor_y);
+  const double dx = r.body_x - r.floor_x, dy = r.body_y - r.floor_y;
+  return std::sqrt(dx * dx + dy * dy);
 }
 
 TieGeometry geometry(const BodyParameters& p, const Restraint& r, int edge, double s, double c) {
   const TiePoint t = tie_point(p, r, edge, s, c);
-  const double len = std::hypot(t.dx, t.dy);
+  // lengths of the body's scale: no overflow for hypot to guard against
+  const double len = std::sqrt(t.dx * t.dx + t.dy * t.dy);
   const double de = (t.dx * t.px + t.dy * t.py) / len;
   const double pp = t.px * t.px + t.py * t.py;
   return {len - rest_length(r), de, (t.dx * t.ppx + t.dy * t.ppy + pp - de * de) / len};
@@ -133,6 +135,8 @@ class RestrainedSim final : public detail::GuardProbe {
     for (auto& v : smp_) v.assign(static_cast<std::size_t>(slots_), 0.0);
     zero_start_.assign(static_cast<std::size_t>(slots_), false);
     crossing_.assign(static_cast<std::size_t>(slots_), kInf);
+    geo_.assign(ties_.size(), TieGeometry{});
+    smp_tie_.assign(static_cast<std::size_t>(detail::kMaxSamples + 1) * 2 * ties_.size(), 0.0);
     ctl_.rtol = opt.rtol;
     ctl_.atol = opt.atol;
     ctl_.controlled = 2;
@@ -148,14 +152,24 @@ class RestrainedSim final : public detail::GuardProbe {
 
   // GuardProbe: a guard on the last step's dense output
   double guard_value(int slot, double t) override {
+    if (still_) return guard(slot, t, still_x_);
     integ_.dense(t, buf_);
     return guard(slot, t, buf_);
+  }
+
+  // every tie elastic and on its side of the slack kink at theta (statics)
+  void settle_at(int edge, double theta) {
+    const double s = std::sin(theta), c = std::cos(theta);
+    for (Tie& tie : ties_)
+      tie.taut = trial_force(tie.r, geometry(p_, tie.r, edge, s, c).e, 0.0) > 0.0;
   }
 
   // the angular acceleration rocking on `edge`, the ties in their current states
   double rocking_acceleration(int edge, double theta, double theta_dot, BaseAcceleration b) const {
     (void)theta_dot;
-    const double s = std::sin(theta), c = std::cos(theta);
+    return rocking_acceleration_sc(edge, std::sin(theta), std::cos(theta), b);
+  }
+  double rocking_acceleration_sc(int edge, double s, double c, BaseAcceleration b) const {
     const double cx = edge == 1 ? p_.b1 : -p_.b2;  // the c.g. from the pivot, body axes
     const double ax = b.x / p_.gravity, ay = 1.0 + b.y / p_.gravity;
     const double gx = ax * c + ay * s, gy = ay * c - ax * s;
@@ -182,7 +196,10 @@ class RestrainedSim final : public detail::GuardProbe {
       case TieState::kElastic:
         break;
     }
-    return std::max(trial_force(t.r, e, t.ep), 0.0);
+    // each side of the slack kink is continued smoothly past it (a taut tie's trial force, a
+    // slack one's zero) until the slack guard locates the kink: a step across it then keeps its
+    // accuracy instead of being rejected down to it
+    return t.taut ? trial_force(t.r, e, t.ep) : 0.0;
   }
   // the plastic elongation now: while yielding it follows the elongation
   double plastic_now(const Tie& t, double e) const {
@@ -197,11 +214,11 @@ class RestrainedSim final : public detail::GuardProbe {
     dx.setZero();
     if (!rocking()) return;
     const BaseAcceleration b = motion_.at(t, cursor_);
-    const double thdd = rocking_acceleration(edge(), x(0), x(1), b);
+    const double s = std::sin(x(0)), c = std::cos(x(0));
+    const double thdd = rocking_acceleration_sc(edge(), s, c, b);
     dx(0) = x(1);
     dx(1) = thdd;
     // the base's power on the body relative to it: -M a_base . v_cg
-    const double s = std::sin(x(0)), c = std::cos(x(0));
     const double cx = edge() == 1 ? p_.b1 : -p_.b2;
     const double vx = x(1) * (-s * cx - c * p_.height), vy = x(1) * (c * cx - s * p_.height);
     dx(2) = -p_.mass * (b.x * vx + b.y * vy);
@@ -209,7 +226,7 @@ class RestrainedSim final : public detail::GuardProbe {
 
   // the floor's reaction on the body [N], inertial axes, and the ties' pull
   Eigen::Vector2d reaction(double t, const State& x, double& thdd) {
-    const BaseAcceleration b = motion_.at(t, cursor_);
+    const BaseAcceleration b = motion_.at(t, gcursor_);
     Eigen::Vector2d f(p_.mass * b.x, p_.mass * (b.y + p_.gravity));
     thdd = 0.0;
     const int e = rocking() ? edge() : 1;
@@ -233,7 +250,7 @@ class RestrainedSim final : public detail::GuardProbe {
     const double s = std::sin(x(0)), c = std::cos(x(0));
     if (slot < kTies) {
       if (!rocking()) {
-        const BaseAcceleration b = motion_.at(t, cursor_);
+        const BaseAcceleration b = motion_.at(t, gcursor_);
         const double gh = p_.gravity / p_.height;
         if (slot == kUpliftOrImpact) return -rocking_acceleration(1, 0.0, 0.0, b) / gh;
         if (slot == kUplift2OrPeak) return rocking_acceleration(2, 0.0, 0.0, b) / gh;
@@ -261,7 +278,7 @@ class RestrainedSim final : public detail::GuardProbe {
     if (tie.state == TieState::kFractured) return 1.0;
     const int e = rocking() ? edge() : 1;
     const TieGeometry g = geometry(p_, tie.r, e, rocking() ? s : 0.0, rocking() ? c : 1.0);
-    const double scale = std::max(std::abs(tie.r.yield_force), mg_);
+    const double scale = std::isfinite(tie.r.yield_force) ? std::max(tie.r.yield_force, mg_) : mg_;
     switch (which) {
       case 0:  // flow: yield while elastic, unloading while yielding
         if (tie.state == TieState::kYielding)
@@ -284,8 +301,78 @@ class RestrainedSim final : public detail::GuardProbe {
                                                        : body_.tipping_angle(edge);
   }
 
+  // every guard at once: the ties' geometry and the acceleration formed once (guard() forms them
+  // per slot, for the root finder's single-slot calls); the same values as guard() gives
   void sample(double t, const State& x, std::vector<double>& v) {
-    for (int k = 0; k < slots_; ++k) v[static_cast<std::size_t>(k)] = guard(k, t, x);
+    const bool rock = rocking();
+    const int e = rock ? edge() : 1;
+    const double s = rock ? std::sin(x(0)) : 0.0, c = rock ? std::cos(x(0)) : 1.0;
+    const BaseAcceleration b = motion_.at(t, gcursor_);
+    const double gh = p_.gravity / p_.height;
+    // the ties' forces and the floor's reaction (as reaction())
+    Eigen::Vector2d f(p_.mass * b.x, p_.mass * (b.y + p_.gravity));
+    double tie_moment = 0.0;
+    for (std::size_t i = 0; i < ties_.size(); ++i) {
+      const Tie& tie = ties_[i];
+      if (tie.state == TieState::kFractured) continue;
+      const TieGeometry g = geometry(p_, tie.r, e, s, c);
+      geo_[i] = g;
+      const double fi = force(tie, g.e);
+      tie_moment += fi * g.de;
+      if (fi != 0.0) f += fi * tie_direction(p_, tie.r, e, s, c);
+    }
+    if (!rock) {
+      // uplift: the rocking accelerations about either edge at rest, from the same sums
+      v[kUpliftOrImpact] = -rest_acceleration(1, b) / gh;
+      v[kUplift2OrPeak] = rest_acceleration(2, b) / gh;
+      v[kOverturn] = 1.0;
+      v[kLiftOff] = f(1) / mg_;
+    } else {
+      const double cx = e == 1 ? p_.b1 : -p_.b2, cy = p_.height;
+      const double ax = b.x / p_.gravity, ay = 1.0 + b.y / p_.gravity;
+      const double gx = ax * c + ay * s, gy = ay * c - ax * s;
+      const double thdd = (-mg_ * (cx * gy - cy * gx) - tie_moment) / inertia(e);
+      const double w2 = x(1) * x(1);
+      f(0) += p_.mass * (thdd * (-s * cx - c * cy) - w2 * (c * cx - s * cy));
+      f(1) += p_.mass * (thdd * (c * cx - s * cy) - w2 * (s * cx + c * cy));
+      v[kUpliftOrImpact] = sigma() * x(0);
+      v[kUplift2OrPeak] = sigma() * x(1);
+      v[kOverturn] = overturn_angle(e) - sigma() * x(0);
+      v[kLiftOff] = f(1) / mg_;
+    }
+    last_reaction_ = f;
+    for (std::size_t i = 0; i < ties_.size(); ++i) {
+      const Tie& tie = ties_[i];
+      double* g3 = &v[static_cast<std::size_t>(kTies) + kPerTie * i];
+      if (tie.state == TieState::kFractured) {
+        g3[0] = g3[1] = g3[2] = 1.0;
+        continue;
+      }
+      const TieGeometry& g = geo_[i];
+      const double scale =
+          std::isfinite(tie.r.yield_force) ? std::max(tie.r.yield_force, mg_) : mg_;
+      if (tie.state == TieState::kYielding) {
+        g3[0] = rock ? g.de * x(1) / std::sqrt(p_.gravity * p_.height) : 0.0;
+      } else {
+        g3[0] = std::isfinite(tie.r.yield_force)
+                    ? (tie.r.yield_force - trial_force(tie.r, g.e, tie.ep)) / scale
+                    : 1.0;
+      }
+      g3[1] = std::isfinite(tie.r.fracture_elongation)
+                  ? (tie.r.fracture_elongation - (g.e - tie.r.slack)) / p_.height
+                  : 1.0;
+      if (tie.state != TieState::kElastic) {
+        g3[2] = 1.0;
+      } else {
+        const double ft = trial_force(tie.r, g.e, tie.ep) / scale;
+        g3[2] = tie.taut ? ft : -ft;
+      }
+    }
+  }
+  // the rocking acceleration about `edge` at theta = 0 with the ties' forces at rest (full
+  // contact: their geometry does not depend on the edge there, their levers do)
+  double rest_acceleration(int e, BaseAcceleration b) const {
+    return rocking_acceleration(e, 0.0, 0.0, b);
   }
 
   // the first crossing of `slot` (positive to non-positive) among the step's samples
@@ -319,11 +406,13 @@ class RestrainedSim final : public detail::GuardProbe {
   }
 
   bool advance(double& t, State& x);
+  bool advance_still(double& t, State& x);
   bool fire(int slot, double t, State& x);
   void unload(int i, double t, const State& x);
   void enter_full_contact(double t, State& x);
   void uplift(int edge, double t, State& x);
   void observe(double t, const State& x);
+  void observe_sample(std::size_t k);
   void emit_row(double t, const State& x);
   void emit_rows_until(double t_to);
   bool stop(double t, const std::string& why) {
@@ -380,6 +469,26 @@ class RestrainedSim final : public detail::GuardProbe {
     tie.sum.plastic_work += tie.r.yield_force * (ep - tie.ep);
     tie.ep = ep;
   }
+  // after a contact event: each elastic tie's side of the slack kink, from its trial force, or
+  // where that is zero (a tie with no slack or prestress at rest), from the way it is about to
+  // move: the elongation's rate, or at rest the side the body lifts toward
+  void retaut(const State& x) {
+    const int e = rocking() ? edge() : 1;
+    const double s = rocking() ? std::sin(x(0)) : 0.0, c = rocking() ? std::cos(x(0)) : 1.0;
+    for (Tie& tie : ties_) {
+      if (tie.state != TieState::kElastic) continue;
+      const TieGeometry g = geometry(p_, tie.r, e, s, c);
+      const double f = trial_force(tie.r, g.e, tie.ep);
+      const double tiny =
+          1e-12 * std::max({std::abs(tie.r.prestress), mg_, tie.r.stiffness * p_.height});
+      if (std::abs(f) > tiny) {
+        tie.taut = f > 0.0;
+      } else {
+        const double way = rocking() ? (x(1) != 0.0 ? x(1) : sigma()) : 0.0;
+        tie.taut = g.de * way > 0.0;
+      }
+    }
+  }
   void set_taut(Tie& tie, double e, double rate) {
     const double f = trial_force(tie.r, e, tie.ep);
     tie.taut = f > 0.0 || (f == 0.0 && rate > 0.0);
@@ -390,7 +499,8 @@ class RestrainedSim final : public detail::GuardProbe {
   Dynamics<0> dyn_;
   const GroundMotion& motion_;
   const SimulationOptions& opt_;
-  GroundMotion::Cursor cursor_, break_cursor_;
+  // the right-hand side's, the guards' and outputs' (the two walk the record apart), the steps'
+  GroundMotion::Cursor cursor_, gcursor_, break_cursor_;
   std::vector<Tie> ties_;
   int slots_ = 0, samples_ = 4;
   std::array<std::vector<double>, detail::kMaxSamples + 1> smp_;
@@ -398,6 +508,15 @@ class RestrainedSim final : public detail::GuardProbe {
   std::array<State, detail::kMaxSamples + 1> smp_x_{};
   std::vector<bool> zero_start_;
   std::vector<double> crossing_;  // each guard's crossing in the last step (+inf: none)
+  std::vector<TieGeometry> geo_;  // sample()'s scratch: each tie's geometry
+  Eigen::Vector2d last_reaction_ = Eigen::Vector2d::Zero();  // sample()'s floor reaction [N]
+  // each sample's floor reaction and ties' forces and elongations, for observe_sample()
+  std::array<Eigen::Vector2d, detail::kMaxSamples + 1> smp_f_{};
+  std::vector<double> smp_tie_;  // (kMaxSamples + 1) x ties x {force, elongation}
+  bool still_ = false;           // the still path's step: guards on still_x_, not the stepper
+  State still_x_ = State::Zero();
+  bool still_valid_ = false;  // smp_[1] holds the guards at still_t_ (the still path's last end)
+  double still_t_ = -1.0;
   StepControl ctl_;
   ImpactRule rule_;
   Dopri5<State> integ_;
@@ -415,7 +534,7 @@ void RestrainedSim::emit_row(double t, const State& x) {
   History& h = res_.result.history;
   double thdd = 0.0;
   const Eigen::Vector2d f = reaction(t, x, thdd);
-  const BaseAcceleration b = motion_.at(t, cursor_);
+  const BaseAcceleration b = motion_.at(t, gcursor_);
   h.time.push_back(t);
   h.phase.push_back(static_cast<int>(mode_));
   h.theta.push_back(x(0));
@@ -451,7 +570,11 @@ void RestrainedSim::emit_rows_until(double t_to) {
   for (;;) {
     const double to = static_cast<double>(next_output_) * opt_.output_dt;
     if (to > t_to || to > t_end_ + 1e-12) return;
-    integ_.dense(to, buf_);
+    if (still_) {
+      buf_ = still_x_;
+    } else {
+      integ_.dense(to, buf_);
+    }
     if (!rocking()) buf_.head<2>().setZero();
     emit_row(to, buf_);
     ++next_output_;
@@ -476,6 +599,26 @@ void RestrainedSim::observe(double t, const State& x) {
     const TieGeometry g = geometry(p_, tie.r, e, s, c);
     tie.sum.max_force = std::max(tie.sum.max_force, force(tie, g.e));
     tie.sum.max_elongation = std::max(tie.sum.max_elongation, g.e);
+  }
+  scale_ = std::max({scale_, kinetic(x), std::abs(gravity_energy(x)), std::abs(x(2))});
+}
+
+// observe() at sample k of the step, from what sample() formed there
+void RestrainedSim::observe_sample(std::size_t k) {
+  Extremes& ex = res_.result.extremes;
+  const State& x = smp_x_[k];
+  if (rocking()) {
+    if (x(0) > ex.max_theta_edge1) ex.max_theta_edge1 = x(0);
+    if (-x(0) > ex.max_theta_edge2) ex.max_theta_edge2 = -x(0);
+    ex.max_uplift = std::max(ex.max_uplift, (p_.b1 + p_.b2) * std::abs(std::sin(x(0))));
+  }
+  const Eigen::Vector2d& f = smp_f_[k];
+  ex.max_base_shear = std::max(ex.max_base_shear, std::abs(f(0)));
+  if (f(1) > 0.0) ex.max_friction_demand = std::max(ex.max_friction_demand, std::abs(f(0)) / f(1));
+  for (std::size_t i = 0; i < ties_.size(); ++i) {
+    const double* w = &smp_tie_[(k * ties_.size() + i) * 2];
+    ties_[i].sum.max_force = std::max(ties_[i].sum.max_force, w[0]);
+    ties_[i].sum.max_elongation = std::max(ties_[i].sum.max_elongation, w[1]);
   }
   scale_ = std::max({scale_, kinetic(x), std::abs(gravity_energy(x)), std::abs(x(2))});
 }
@@ -505,7 +648,7 @@ void RestrainedSim::enter_full_contact(double t, State& x) {
   x(1) = 0.0;
   std::fill(zero_start_.begin(), zero_start_.end(), false);
   // a base already past a threshold lifts the body again at once
-  const BaseAcceleration b = motion_.at(t, cursor_);
+  const BaseAcceleration b = motion_.at(t, gcursor_);
   if (rocking_acceleration(1, 0.0, 0.0, b) > 0.0)
     uplift(1, t, x);
   else if (rocking_acceleration(2, 0.0, 0.0, b) < 0.0)
@@ -607,11 +750,14 @@ bool RestrainedSim::fire(int slot, double t, State& x) {
         ev.edge = edge();
         ev.theta = x(0);
         res_.result.events.push_back(ev);
+        // the located peak: theta_dot is zero there (a rounding residue of the sign the guard
+        // had before would read as a second peak at once)
+        x(1) = 0.0;
         // the elongations' rates e' theta_dot change sign with theta_dot: yielding ties unload
         for (std::size_t i = 0; i < ties_.size(); ++i)
           if (ties_[i].state == TieState::kYielding) unload(static_cast<int>(i), t, x);
+        // past the peak sigma theta_dot turns negative: no zero start for it
         std::fill(zero_start_.begin(), zero_start_.end(), false);
-        zero_start_[kUplift2OrPeak] = true;
         return true;
       }
       case kOverturn: {
@@ -678,7 +824,71 @@ bool RestrainedSim::fire(int slot, double t, State& x) {
   return true;
 }
 
+// full contact under a sampled record: the body is still and every guard is linear in the base
+// acceleration, itself linear between samples, so each sample interval is one step whose guards
+// are known at its ends (the still path; no integration)
+bool RestrainedSim::advance_still(double& t, State& x) {
+  const double t_stop = std::min(motion_.next_breakpoint(t, break_cursor_), t_end_);
+  if (++steps_ > opt_.max_steps)
+    return stop(t, "more than max_steps = " + std::to_string(opt_.max_steps) + " steps");
+  ++res_.result.steps;
+  still_ = true;
+  still_x_ = x;
+  // the interval's start is the last one's end unless an event came between
+  if (!(still_valid_ && still_t_ == t)) {
+    sample(t, x, smp_[0]);
+    smp_f_[0] = last_reaction_;
+  } else {
+    smp_[0].swap(smp_[1]);
+    smp_f_[0] = smp_f_[1];
+  }
+  sample(t_stop, x, smp_[1]);
+  smp_f_[1] = last_reaction_;
+  still_valid_ = true;
+  still_t_ = t_stop;
+  double t_hit = kInf;
+  for (int slot = 0; slot < slots_; ++slot) {
+    const auto j = static_cast<std::size_t>(slot);
+    const double g0 = smp_[0][j], g1 = smp_[1][j];
+    double th = kInf;
+    if (g0 > 0.0 && g1 <= 0.0) th = detail::locate_crossing(slot, t, t_stop, g0, g1, *this);
+    crossing_[j] = th;
+    t_hit = std::min(t_hit, th);
+  }
+  // the extremes of a still body: the base shear at the interval's ends (linear between)
+  Extremes& ex = res_.result.extremes;
+  for (int k = 0; k < 2; ++k) {
+    const Eigen::Vector2d& f = smp_f_[static_cast<std::size_t>(k)];
+    ex.max_base_shear = std::max(ex.max_base_shear, std::abs(f(0)));
+    if (f(1) > 0.0)
+      ex.max_friction_demand = std::max(ex.max_friction_demand, std::abs(f(0)) / f(1));
+  }
+  if (!std::isfinite(t_hit)) {
+    emit_rows_until(t_stop);
+    t = t_stop;
+    still_ = false;
+    if (opt_.progress) opt_.progress->store(t, std::memory_order_relaxed);
+    return true;
+  }
+  still_valid_ = false;
+  emit_rows_until(t_hit);
+  still_ = false;
+  t = t_hit;
+  observe(t, x);
+  auto sys = [this](double tt, const State& z, State& dz) { rhs(tt, z, dz); };
+  for (int slot = 0; slot < slots_; ++slot) {
+    const double c = crossing_[static_cast<std::size_t>(slot)];
+    if (!(std::isfinite(c) && c - detail::crossing_resolution(c) <= t_hit)) continue;
+    if (!fire(slot, t, x)) return false;
+    if (rocking()) break;
+  }
+  retaut(x);
+  integ_.start(sys, ctl_, t, x);
+  return true;
+}
+
 bool RestrainedSim::advance(double& t, State& x) {
+  if (!rocking() && motion_.is_sampled()) return advance_still(t, x);
   auto sys = [this](double tt, const State& z, State& dz) { rhs(tt, z, dz); };
   const double t_stop = std::min(motion_.next_breakpoint(t, break_cursor_), t_end_);
   if (integ_.step(sys, t_stop) != Dopri5<State>::Status::kAccepted)
@@ -698,6 +908,12 @@ bool RestrainedSim::advance(double& t, State& x) {
       integ_.dense(smp_t_[kk], smp_x_[kk]);
     }
     sample(smp_t_[kk], smp_x_[kk], smp_[kk]);
+    smp_f_[kk] = last_reaction_;
+    for (std::size_t i = 0; i < ties_.size(); ++i) {
+      double* w = &smp_tie_[(kk * ties_.size() + i) * 2];
+      w[0] = ties_[i].state == TieState::kFractured ? 0.0 : force(ties_[i], geo_[i].e);
+      w[1] = geo_[i].e;
+    }
   }
   double t_hit = kInf;
   int slot_hit = -1;
@@ -712,7 +928,7 @@ bool RestrainedSim::advance(double& t, State& x) {
   for (int k = 0; k <= samples_; ++k) {
     const auto kk = static_cast<std::size_t>(k);
     if (smp_t_[kk] >= t_hit) break;
-    observe(smp_t_[kk], smp_x_[kk]);
+    observe_sample(kk);
   }
   if (slot_hit < 0) {
     emit_rows_until(t1);
@@ -744,9 +960,17 @@ bool RestrainedSim::advance(double& t, State& x) {
   }
   if (fired_tie && mode_slot >= 0) std::fill(zero_start_.begin(), zero_start_.end(), false);
   if (mode_slot >= 0 && !fire(mode_slot, t, x)) return false;
+  if (mode_slot >= 0) retaut(x);
+  // a tie event located a hair before the impact it coincides with (a corner's anchor goes slack
+  // as the corner lands) leaves theta at zero and falling: the impact is now
+  if (mode_slot < 0 && rocking() && !zero_start_[kUpliftOrImpact] && sigma() * x(0) <= 0.0 &&
+      sigma() * x(1) < 0.0) {
+    if (!fire(kUpliftOrImpact, t, x)) return false;
+    retaut(x);
+  }
   (void)slot_hit;
   observe(t, x);
-  integ_.start(sys, ctl_, t, x, integ_.suggested_step());
+  integ_.start(sys, ctl_, t, x);
   if (opt_.progress) opt_.progress->store(t, std::memory_order_relaxed);
   return true;
 }
@@ -778,6 +1002,7 @@ RestrainedResult RestrainedSim::run(const InitialState& init) {
   double t = 0.0;
   auto sys = [this](double tt, const State& z, State& dz) { rhs(tt, z, dz); };
   if (!rocking()) enter_full_contact(t, x);
+  retaut(x);
   integ_.start(sys, ctl_, t, x);
   if (opt_.output_dt > 0.0) emit_row(t, x);
   next_output_ = 1;
@@ -956,6 +1181,7 @@ double restrained_rocking_acceleration(const Body& body, const std::vector<Restr
   const GroundMotion none = GroundMotion::none(1.0);
   const SimulationOptions opt;
   RestrainedSim sim(body, restraints, none, opt);
+  sim.settle_at(edge, theta);
   return sim.rocking_acceleration(edge, theta, 0.0, base);
 }
 
