@@ -91,4 +91,24 @@ TOML
 run "$FLEXROCK" run -q -o "$WORK/flex" "$WORK/flex.toml"
 expect_rc 2 "sliding with restraints"
 expect_in "$WORK/err" "sliding is not modelled with restraints"
+# a sweep over a body with restraints refuses it rather than drop them
+cat >"$WORK/sweep.toml" <<TOML
+name = "tied"
+[[body]]
+name = "pier"
+file = "$WORK/pier.toml"
+[[record]]
+name = "elcentro"
+file = "$SRC/../shared/data/elcentro_1940_ns.dat"
+format = "single_column"
+dt = 0.02
+units = "g"
+[scales]
+target_pga = { start = 0.1, stop = 0.2, step = 0.1 }
+units = "g"
+TOML
+run "$FLEXROCK" sweep "$WORK/sweep.toml" -o "$WORK/sweep.csv"
+expect_rc 2 "a sweep over restraints"
+expect_in "$WORK/err" "[[restraint]] tables are not modelled in a sweep yet"
+[ ! -e "$WORK/sweep.csv" ] || fail "a sweep table of a refused study"
 echo "ok"
