@@ -42,3 +42,15 @@ def test_bad_restraints_are_a_value_error():
     with pytest.raises(ValueError, match="restraint 1: a slack and a prestress"):
         fr.simulate_restrained(block(), [fr.Restraint(body_y=1.0, floor_y=-1.0, prestress=10.0,
                                                       slack=1e-3)], fr.GroundMotion.none(1.0))
+
+
+def test_a_case_file_carries_its_restraints(source_dir):
+    c = fr.load_case(str(source_dir / "examples" / "cases" / "post_tensioned_pier.toml"))
+    assert [t.kind for t in c.restraints] == [fr.RestraintKind.tendon, fr.RestraintKind.anchor,
+                                              fr.RestraintKind.anchor]
+    assert c.restraints[1].body_x == pytest.approx(-0.6)  # corner = 1: the left tipping point
+    assert c.restraints[0].body_y == pytest.approx(6.0)   # a tendon's default: the top, 2 h
+    body = fr.Body(c.body)
+    r = fr.simulate_restrained(body, c.restraints, c.motion, c.initial, c.options)
+    assert r.result.status == fr.Status.completed
+    assert [s.yielded for s in r.restraints] == [False, True, True]
