@@ -240,6 +240,49 @@ TEST(RestrainedRun, MatchesAnIndependentIntegrationUpToTheFirstImpact) {
   EXPECT_DOUBLE_EQ(r.result.extremes.max_theta_edge1, init.theta);
 }
 
+// anchors of a given capacity: under a slow ramp the engine's anchor yields at the base
+// acceleration of the exact pushover at its yield rotation, and as the anchors stiffen that
+// acceleration tends to the rigid-plastic capacity (M g b1 + F_y (b1 + b2)) / (M h) of
+// tools/derive/restraints.py. The ramp's own dynamics (the undamped body on its anchors) limit
+// the agreement to about 1e-5 here (measured: 3.7e-6 against the pushover at k = 1e9, 1.7e-4 at
+// 1e7), not the locator: the closed forms' statics are checked to 1e-9 above
+TEST(RestrainedRun, StiffAnchorsYieldAtTheirCapacity) {
+  const Body body(BodyParameters::rectangular_block(400.0, 0.3, 1.0));
+  const double fy = 2000.0, b = 0.3;
+  const double capacity = (400.0 * body.g() * b + fy * 2.0 * b) / (400.0 * 1.0);
+  double previous = 1.0;
+  for (double k : {1e7, 1e8, 1e9}) {
+    std::vector<Restraint> v(2);
+    for (int i = 0; i < 2; ++i) {
+      v[i].kind = RestraintKind::kAnchor;
+      v[i].body_x = v[i].floor_x = i ? b : -b;
+      v[i].floor_y = -0.3;
+      v[i].stiffness = k;
+      v[i].yield_force = fy;
+    }
+    const double rate = 0.1, t_max = 2.0 * capacity / rate;
+    SimulationOptions opt;
+    opt.t_end = 1.5 * capacity / rate;
+    const RestrainedResult r = simulate_restrained(
+        body, v, GroundMotion::sampled({0.0, t_max}, {0.0, rate * t_max}), {}, opt);
+    double t_yield = -1.0;
+    for (const RestraintEvent& ev : r.events)
+      if (ev.kind == RestraintEventKind::kYield && t_yield < 0.0) t_yield = ev.time;
+    ASSERT_GT(t_yield, 0.0);
+    // the yield rotation, by bisection on the elastic force of the corner-2 anchor
+    double lo = 0.0, hi = 0.1;
+    for (int i = 0; i < 200; ++i) {
+      const double mid = 0.5 * (lo + hi);
+      (tie_force(v[1], tie_geometry(body, v[1], 1, mid).e) < fy ? lo : hi) = mid;
+    }
+    EXPECT_LT(rel(rate * t_yield, pushover_acceleration(body, v, 1, lo)), 2e-4) << k;
+    const double off = rel(rate * t_yield, capacity);
+    EXPECT_LT(off, previous) << k;  // tends to the capacity as k grows
+    previous = off;
+  }
+  EXPECT_LT(previous, 1e-5);
+}
+
 // anchors at both corners ever stiffer: the uplift shrinks as 1/k (the body cannot uplift in
 // the limit), and without them the same pulse rocks the body
 TEST(RestrainedRun, StiffStrongAnchorsPreventUplift) {
