@@ -66,3 +66,6 @@ target_include_directories(flexrock_series_guards_tests PRIVATE ${PROJECT_SOURCE
 flexrock_add_test(flexrock_automaton_transitions_tests SOURCES unit/automaton_transitions_test.cpp
                   LABEL unit)
 target_include_directories(flexrock_automaton_transitions_tests PRIVATE ${PROJECT_SOURCE_DIR}/src)
+# restraints (tendons, anchors) against tools/derive/restraints.py's closed forms
+flexrock_add_test(flexrock_restraints_tests SOURCES unit/restraints_test.cpp LABEL unit)
+target_link_libraries(flexrock_restraints_tests PRIVATE nlohmann_json::nlohmann_json)

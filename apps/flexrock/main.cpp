@@ -18,6 +18,7 @@
 #include <future>
 #include <new>
 #include <numbers>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -27,7 +28,9 @@
 #include "flexrock/io/outputs.hpp"
 #include "flexrock/io/qualify.hpp"
 #include "flexrock/io/records.hpp"
+#include "flexrock/io/restraint_io.hpp"
 #include "flexrock/io/study_files.hpp"
+#include "flexrock/sim/restraints.hpp"
 #include "flexrock/sim/simulate.hpp"
 #include "flexrock/sim/step_cost.hpp"
 #include "flexrock/study/azimuths.hpp"
@@ -62,15 +65,21 @@ int error(const std::string& message, int code) {
   return code;
 }
 
-SimulationResult run_with_progress(const Body& body, const io::Case& c, bool show_progress) {
+// a case with [[restraint]] tables runs on the restrained engine (docs/theory.md §26); `tied`
+// receives its restraints' results
+SimulationResult run_with_progress(const Body& body, const io::Case& c, bool show_progress,
+                                   std::optional<RestrainedResult>* tied = nullptr) {
   const double end = c.options.t_end >= 0.0 ? c.options.t_end : c.motion.duration();
   cli::Progress progress(show_progress, end);
   std::atomic<double> reached{0.0};
   SimulationOptions options = c.options;
   options.progress = &reached;
   const auto start = std::chrono::steady_clock::now();
-  auto future =
-      std::async(std::launch::async, [&] { return simulate(body, c.motion, c.initial, options); });
+  auto future = std::async(std::launch::async, [&] {
+    if (c.restraints.empty() || !tied) return simulate(body, c.motion, c.initial, options);
+    *tied = simulate_restrained(body, c.restraints, c.motion, c.initial, options);
+    return (*tied)->result;
+  });
   while (future.wait_for(std::chrono::milliseconds(100)) != std::future_status::ready) {
     progress.draw_time(
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
@@ -85,8 +94,30 @@ SimulationResult run_with_progress(const Body& body, const io::Case& c, bool sho
 
 std::string g_units(double a, double g) { return fmt::format("{:.4g} m/s^2 ({:.4g} g)", a, a / g); }
 
+// each restraint's peak force and state, its yield and fracture, the plastic and fracture work
+void print_restraints(const io::Case& c, const RestrainedResult& t) {
+  for (std::size_t i = 0; i < t.restraints.size(); ++i) {
+    const RestraintSummary& s = t.restraints[i];
+    const RestraintKindInfo& k = restraint_kind_info(c.restraints[i].kind);
+    std::string state = "intact";
+    if (s.fractured) {
+      state = fmt::format("{} at t = {:.4f} s", k.fractured, s.fracture_time);
+    } else if (s.yielded) {
+      state = fmt::format("{} at t = {:.4f} s, plastic elongation {:.4g} mm", k.yielded,
+                          s.yield_time, 1e3 * s.plastic_elongation);
+    }
+    fmt::print("restraint {} ({}): peak force {:.6g} N, max elongation {:.4g} mm; {}\n", i + 1,
+               k.name, s.max_force, 1e3 * s.max_elongation, state);
+  }
+  if (t.plastic_work > 0.0 || t.fracture_work > 0.0)
+    fmt::print(
+        "restraints: plastic work {:.6g} J, fracture work {:.6g} J (in the energy balance)\n",
+        t.plastic_work, t.fracture_work);
+}
+
 void print_summary(const io::Case& c, const Body& body, const SimulationResult& r,
-                   const io::OutputPaths& paths, bool quiet) {
+                   const io::OutputPaths& paths, bool quiet,
+                   const RestrainedResult* tied = nullptr) {
   const BodyParameters& p = body.params();
   const Extremes& x = r.extremes;
   const EnergyBalance& e = r.energy;
@@ -116,9 +147,15 @@ void print_summary(const io::Case& c, const Body& body, const SimulationResult& 
     fmt::print("uplift: first at t = {:.4f} s onto edge {}\n", x.first_uplift_time,
                x.first_uplift_edge);
   } else {
-    fmt::print("uplift: none (static uplift at {} onto edge 1, {} onto edge 2)\n",
-               g_units(p.gravity * body.alpha1(), p.gravity),
-               g_units(p.gravity * body.alpha2(), p.gravity));
+    // with restraints, their thresholds (docs/theory.md §26)
+    const bool tied_down = !c.restraints.empty();
+    fmt::print(
+        "uplift: none (static uplift at {} onto edge 1, {} onto edge 2{})\n",
+        g_units(tied_down ? uplift_acceleration(body, c.restraints, 1) : p.gravity * body.alpha1(),
+                p.gravity),
+        g_units(tied_down ? uplift_acceleration(body, c.restraints, 2) : p.gravity * body.alpha2(),
+                p.gravity),
+        tied_down ? ", restrained" : "");
   }
   if (x.overturn_time >= 0.0) {
     fmt::print("overturning: at t = {:.4f} s about edge {}\n", x.overturn_time, x.overturn_edge);
@@ -207,6 +244,7 @@ void print_summary(const io::Case& c, const Body& body, const SimulationResult& 
             ? "the elastic ratio sqrt(S_pre/S_post) of each"
             : "the paper's law (the modes moved fast against the tilt rate)");
   }
+  if (tied) print_restraints(c, *tied);
   if (r.energy_unbalanced) {
     fmt::print(
         "warning: the energy balance does not close: |residual| {:.3g} J is above its bound "
@@ -308,9 +346,12 @@ int cmd_run_one(const std::string& file, const std::string& output_dir, bool qui
   print_notes(c);
   const Body body(c.body);
   print_step_cost_warning(c, body);
+  for (const std::string& line : io::restraint_statics_lines(body, c.restraints))
+    if (!quiet) fmt::print("{}\n", line);
   SimulationResult r;
+  std::optional<RestrainedResult> tied;
   try {
-    r = run_with_progress(body, c, !quiet && !no_progress && ::isatty(STDERR_FILENO));
+    r = run_with_progress(body, c, !quiet && !no_progress && ::isatty(STDERR_FILENO), &tied);
   } catch (const InputError& e) {
     return error(file + ": " + e.what(), kExitBadInput);
   } catch (const std::bad_alloc&) {
@@ -326,16 +367,17 @@ int cmd_run_one(const std::string& file, const std::string& output_dir, bool qui
   }
   io::OutputPaths paths;
   try {
-    paths = io::write_outputs(c, body, r, output_dir);
+    paths = tied ? io::write_restrained_outputs(c, body, *tied, output_dir)
+                 : io::write_outputs(c, body, r, output_dir);
   } catch (const std::bad_alloc&) {
-    print_summary(c, body, r, {}, quiet);
+    print_summary(c, body, r, {}, quiet, tied ? &*tied : nullptr);
     return error("could not write the outputs: out of memory while formatting the summary",
                  kExitRunFailed);
   } catch (const std::exception& e) {
-    print_summary(c, body, r, {}, quiet);
+    print_summary(c, body, r, {}, quiet, tied ? &*tied : nullptr);
     return error(std::string("could not write the outputs: ") + e.what(), kExitRunFailed);
   }
-  print_summary(c, body, r, paths, quiet);
+  print_summary(c, body, r, paths, quiet, tied ? &*tied : nullptr);
   if (r.status == Status::kStopped) {
     return error("the run could not complete: " + r.message, kExitRunFailed);
   }
@@ -349,6 +391,7 @@ int cmd_azimuths(const std::string& file, const std::string& output_dir, bool qu
   io::AzimuthPaths paths;
   try {
     c = io::load_case(file);
+    if (!c.restraints.empty()) io::refuse_restraints(file, "'flexrock azimuths'");
     if (!c.pair) {
       throw InputError(file +
                        ": expected a record pair: [excitation.horizontal2] (a second "
@@ -487,8 +530,10 @@ int cmd_check(const std::vector<std::string>& args, bool quiet) {
         print_inputs(c);
         print_records(c);
         if (!std::isfinite(c.options.friction_coefficient) &&
-            c.options.contact_model != ContactModel::kCompliant)
+            c.options.contact_model != ContactModel::kCompliant && c.restraints.empty())
           fmt::print("  {}\n", kNoFrictionNote);
+        for (const std::string& line : io::restraint_statics_lines(body, c.restraints))
+          fmt::print("  {}\n", line);
       }
       print_notes(c);
     } catch (const InputError& e) {
@@ -651,6 +696,8 @@ int cmd_params(const std::string& file) {
       print_records(c);
       print_notes(c);
       print_step_cost_warning(c, body);
+      for (const std::string& line : io::restraint_statics_lines(body, c.restraints))
+        fmt::print("{}\n", line);
     } catch (const InputError& e) {
       return error(e.what(), kExitBadInput);
     }
@@ -746,12 +793,12 @@ int main(int argc, char** argv) {
     if (*check) return cmd_check(check_files, quiet);
     if (*params) return cmd_params(params_file);
     if (*keys) {
-      fmt::print("{}{}{}{}{}{}{}{}{}{}{}", io::body_key_reference(), io::pair_key_reference(),
+      fmt::print("{}{}{}{}{}{}{}{}{}{}{}{}", io::body_key_reference(), io::pair_key_reference(),
                  io::record_format_reference(), io::pulse_key_reference(),
-                 io::solver_key_reference(), io::time_history_column_reference(),
-                 io::event_column_reference(), io::azimuth_column_reference(),
-                 io::study_column_reference(), cli::fragility_curve_column_reference(),
-                 io::qualify_key_reference());
+                 io::solver_key_reference(), io::restraint_key_reference(),
+                 io::time_history_column_reference(), io::event_column_reference(),
+                 io::azimuth_column_reference(), io::study_column_reference(),
+                 cli::fragility_curve_column_reference(), io::qualify_key_reference());
       return 0;
     }
     if (studies.selected()) return studies.run();

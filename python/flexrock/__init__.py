@@ -25,6 +25,18 @@ from . import _csv, _flexrock, _pickling, _reprs
 
 _reprs.install(_flexrock)
 from ._flexrock import (  # noqa: F401  (re-exported API)
+    RestrainedResult,
+    Restraint,
+    RestraintEvent,
+    RestraintEventKind,
+    RestraintKind,
+    RestraintSummary,
+    critical_stiffness,
+    pushover_acceleration,
+    restoring_moment,
+    self_centring_stiffness,
+    simulate_restrained,
+    uplift_acceleration,
     AccelUnit,
     Body,
     BodyKeyValue,

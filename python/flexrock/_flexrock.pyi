@@ -167,6 +167,7 @@ class Case:
     name: str
     options: SimulationOptions
     output: OutputSettings
+    restraints: list[Restraint]
     rigid: bool
     source: str
     stem: str
@@ -976,6 +977,110 @@ class Regime:
     @property
     def value(self) -> int: ...
 
+class RestrainedResult:
+    """A restrained run: the body's result and the restraints'."""
+    @property
+    def elongation(self) -> numpy.typing.NDArray[numpy.float64]: ...
+    @property
+    def energy(self) -> numpy.typing.NDArray[numpy.float64]: ...
+    @property
+    def events(self) -> list[RestraintEvent]: ...
+    @property
+    def force(self) -> numpy.typing.NDArray[numpy.float64]: ...
+    @property
+    def fracture_work(self) -> float: ...
+    @property
+    def plastic_work(self) -> float: ...
+    @property
+    def restraints(self) -> list[RestraintSummary]: ...
+    @property
+    def result(self) -> SimulationResult: ...
+    @property
+    def stored_energy_change(self) -> float: ...
+
+class Restraint:
+    """A tie from the floor point (floor_x, floor_y) to the body point (body_x, body_y) [m]: stiffness [N/m], prestress [N], slack [m], yield_force [N], fracture_elongation [m] (docs/theory.md §26)."""
+    def __init__(self, *, kind: RestraintKind = ..., body_x: float = ..., body_y: float = ..., floor_x: float = ..., floor_y: float = ..., stiffness: float = ..., prestress: float = ..., slack: float = ..., yield_force: float = ..., fracture_elongation: float = ...) -> None: ...
+    body_x: float
+    body_y: float
+    floor_x: float
+    floor_y: float
+    fracture_elongation: float
+    kind: RestraintKind
+    prestress: float
+    slack: float
+    stiffness: float
+    yield_force: float
+
+class RestraintEvent:
+    """A restraint's yield, unloading or fracture."""
+    @property
+    def elongation(self) -> float: ...
+    @property
+    def energy(self) -> float: ...
+    @property
+    def force(self) -> float: ...
+    @property
+    def kind(self) -> RestraintEventKind: ...
+    @property
+    def plastic_elongation(self) -> float: ...
+    @property
+    def restraint(self) -> int: ...
+    @property
+    def time(self) -> float: ...
+
+class RestraintEventKind:
+    yield_: ClassVar[RestraintEventKind]
+    unload: ClassVar[RestraintEventKind]
+    fracture: ClassVar[RestraintEventKind]
+    __members__: ClassVar[dict[str, RestraintEventKind]]
+    def __init__(self, value: int) -> None: ...
+    def __eq__(self, other: object) -> bool: ...
+    def __hash__(self) -> int: ...
+    def __index__(self) -> int: ...
+    def __int__(self) -> int: ...
+    @property
+    def name(self) -> str: ...
+    @property
+    def value(self) -> int: ...
+
+class RestraintKind:
+    tendon: ClassVar[RestraintKind]
+    anchor: ClassVar[RestraintKind]
+    __members__: ClassVar[dict[str, RestraintKind]]
+    def __init__(self, value: int) -> None: ...
+    def __eq__(self, other: object) -> bool: ...
+    def __hash__(self) -> int: ...
+    def __index__(self) -> int: ...
+    def __int__(self) -> int: ...
+    @property
+    def name(self) -> str: ...
+    @property
+    def value(self) -> int: ...
+
+class RestraintSummary:
+    """What one restraint did over a run."""
+    @property
+    def final_force(self) -> float: ...
+    @property
+    def fracture_time(self) -> float: ...
+    @property
+    def fracture_work(self) -> float: ...
+    @property
+    def fractured(self) -> bool: ...
+    @property
+    def max_elongation(self) -> float: ...
+    @property
+    def max_force(self) -> float: ...
+    @property
+    def plastic_elongation(self) -> float: ...
+    @property
+    def plastic_work(self) -> float: ...
+    @property
+    def yield_time(self) -> float: ...
+    @property
+    def yielded(self) -> bool: ...
+
 class RunSummary:
     """What a study keeps of one simulation."""
     @property
@@ -1613,6 +1718,9 @@ def compute_spectrum(body: Body, spec: SpectrumSpec, threads: int = ..., *, prog
     SpectrumResult
     """
 
+def critical_stiffness(body: Body, restraints: list[Restraint], which: int, edge: int) -> float:
+    """The stiffness [N/m] of restraint `which` at which the post-uplift branch stops softening."""
+
 def crossing_intensity(a: FragilityFit, b: FragilityFit) -> float:
     """The IM at which two fitted fragility curves cross (nan for equal betas).
 
@@ -2213,6 +2321,9 @@ def pulse_motion(type: str, a_p: float, omega_p: float, duration: float) -> Grou
     GroundMotion
     """
 
+def pushover_acceleration(body: Body, restraints: list[Restraint], edge: int, theta: float) -> float:
+    """The base acceleration [m/s^2] that holds the body at theta (quasi-static pushover)."""
+
 def qualify_key_reference() -> str:
     """The key reference of qualification files (docs/qualify.md), as Markdown."""
 
@@ -2370,6 +2481,9 @@ def require_spectral_period(period: float, key: str) -> None:
     (below it the oscillator follows the ground and Sa is the PGA).
     """
 
+def restoring_moment(body: Body, restraints: list[Restraint], edge: int, theta: float) -> float:
+    """The restoring moment [N m] about the pivot of `edge` at theta, gravity and ties."""
+
 def ricker_wavelet(a_p: float, omega_p: float, t_c: float, duration: float, component: Component = ...) -> GroundMotion:
     """A Ricker wavelet peaking at t_c.
 
@@ -2487,6 +2601,9 @@ def run_sweep(spec: SweepSpec, indices: list[int] = ..., threads: int = ..., *, 
         In index order.
     """
 
+def self_centring_stiffness(body: Body, restraints: list[Restraint], edge: int) -> float:
+    """The post-uplift rotational stiffness [N m/rad] (negative: softening)."""
+
 def sha256_hex(data: str) -> str:
     """SHA-256 of bytes as 64 hex digits."""
 
@@ -2509,6 +2626,9 @@ def simulate(body: Body, motion: GroundMotion, initial: InitialState = ..., opti
         Overturning, loss of contact and a stopped run are its ``status``, not exceptions. The
         GIL is released while it runs.
     """
+
+def simulate_restrained(body: Body, restraints: list[Restraint], motion: GroundMotion, initial: InitialState = ..., options: SimulationOptions = ...) -> RestrainedResult:
+    """Simulates a rigid body tied down by restraints (docs/theory.md §26)."""
 
 def spectrum_arrays(result: SpectrumResult, g: float = ...) -> dict:
     """The cells of a spectrum as numpy arrays, one per column of its CSV, typed by the column
@@ -2736,6 +2856,9 @@ def uncertain_parameters() -> list:
 
 def uncertain_quantile(parameter: UncertainParameter, u: float) -> float:
     """The value of a parameter at probability u in (0, 1) (its truncated inverse CDF)."""
+
+def uplift_acceleration(body: Body, restraints: list[Restraint], edge: int) -> float:
+    """The uplift threshold [m/s^2] onto `edge` with the restraints."""
 
 def write_outputs(case: Case, body: Body, result: SimulationResult, output_dir: str = ...) -> OutputPaths:
     """Writes the outputs the case's [output] table asks for, atomically, summary last.

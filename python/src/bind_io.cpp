@@ -235,7 +235,8 @@ GroundMotion
       .def_readwrite("excitation_scale", &io::Case::excitation_scale)
       .def_readwrite("initial", &io::Case::initial)
       .def_readwrite("options", &io::Case::options)
-      .def_readwrite("output", &io::Case::output);
+      .def_readwrite("output", &io::Case::output)
+      .def_readwrite("restraints", &io::Case::restraints);
   m.def("load_case", &io::load_case, py::arg("path"),
         R"doc(Reads and checks a case file (TOML, docs/case-file.md).
 

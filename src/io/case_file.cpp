@@ -24,6 +24,7 @@
 #include "flexrock/io/records.hpp"
 #include "flexrock/model/builders.hpp"
 #include "modal_tables.hpp"
+#include "restraint_reader.hpp"
 #include "table_reader.hpp"
 
 namespace flexrock::io {
@@ -834,8 +835,18 @@ Case load_case(const std::string& path) {
   c.options.output_dt = c.output.time_history.empty() ? 0.0 : c.output.dt;
   check_history_rows(top, c);
   if (auto ir = top.table_opt("initial")) read_initial(*ir, c, body);
+  c.restraints = detail::read_restraints(top, c.body, c.options);
   top.finish("at the top level");
   return c;
+}
+
+void refuse_restraints(const std::string& path, const std::string& what) {
+  const toml::table doc = parse(path);
+  if (const toml::node* n = doc.get("restraint")) {
+    throw InputError(path, n->source().begin.line, "restraint",
+                     "[[restraint]] tables are not modelled in " + what +
+                         " yet (they would be dropped); run the case with `flexrock run`");
+  }
 }
 
 bool has_excitation(const std::string& path) { return parse(path).contains("excitation"); }

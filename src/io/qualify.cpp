@@ -350,6 +350,7 @@ QualifyFile load_qualify_file(const std::string& path) {
   }
   {
     std::vector<std::string> files;
+    refuse_restraints(f.body_source, "a qualification");
     f.body = load_body(f.body_source, &f.body_type, &files);
     for (const std::string& b : files) {
       if (b == path) continue;

@@ -12,7 +12,8 @@ flexrock_apply_sanitizers(flexrock_io)
 
 
 # case files (toml++) and outputs (CSV, summary JSON): flexrock::io
-target_sources(flexrock_io PRIVATE io/case_file.cpp io/modal_tables.cpp io/outputs.cpp)
+target_sources(flexrock_io PRIVATE io/case_file.cpp io/modal_tables.cpp io/outputs.cpp
+                                   io/restraint_io.cpp)
 # record pairs at every azimuth: needs flexrock::study (linked below)
 target_sources(flexrock_io PRIVATE io/azimuth_outputs.cpp)
 find_package(tomlplusplus CONFIG QUIET)

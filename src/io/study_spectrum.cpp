@@ -57,6 +57,7 @@ SpectrumFile load_spectrum_file(const std::string& path) {
     f.body_source = detail::resolve_path(path, b);
   }
   f.input_files.push_back(path);
+  refuse_restraints(f.body_source, "a spectrum study");
   f.body = load_body(f.body_source, nullptr, &f.input_files);
   f.hash = fnv1a(file_bytes(path));
   if (!inline_body) f.hash = fnv1a(file_bytes(f.body_source), f.hash);

@@ -80,6 +80,7 @@ SweepManifest load_sweep_manifest(const std::string& path) {
     }
     b.finish("for a [[body]] (see docs/studies.md)");
     try {
+      refuse_restraints(full, "a sweep");
       sb.body = load_body(full, nullptr, &m.input_files);
     } catch (const InputError& e) {
       throw InputError(std::string(e.what()) + " (body named by [[body]] at " + path + ":" +

@@ -3399,6 +3399,8 @@ def main():
     print('  free rocking in closed form: %s' % sres['free_rocking_arc'], file=sys.stderr)
     sres['compliant_potential'], compliant_refs = compliant_potential()
     print('  compliant contact potential: %s' % sres['compliant_potential'], file=sys.stderr)
+    sres['restraints'] = __import__('restraints').restraints()[0]
+    print('  restraints (tendons, anchors): %s' % sres['restraints'], file=sys.stderr)
     failed = [(n, k) for n, r in sres.items() for k, v in r.items()
               if (isinstance(v, bool) and not v) or (isinstance(v, list) and v)]
     print('symbolic checks (n=0..%d): %s  [%.1f s]' % (args.symbolic_n, 'ALL PASS' if not failed else

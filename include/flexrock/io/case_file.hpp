@@ -16,6 +16,7 @@
 #include "flexrock/excitation/ground_motion.hpp"
 #include "flexrock/io/records.hpp"
 #include "flexrock/model/body.hpp"
+#include "flexrock/sim/restraints.hpp"
 #include "flexrock/sim/simulate.hpp"
 
 namespace flexrock::io {
@@ -114,6 +115,7 @@ struct Case {
   std::string scaled_to;  // the target intensity excitation_scale was chosen for ("PGA 0.3 g")
   std::vector<std::string> input_files;  // the case file and its record files
   std::vector<BodyKeyRead> body_keys;    // the [body] keys read, in the table's order
+  std::vector<Restraint> restraints;     // [[restraint]] tables (docs/theory.md §26); empty: none
 };
 
 /// The ground motion of a case with a record pair at azimuth `beta_deg` [deg] (from H1 toward H2):
@@ -143,6 +145,10 @@ Case load_case(const std::string& path);
 /// file itself, nodes and shapes files). Throws InputError like load_case.
 BodyParameters load_body(const std::string& path, std::string* type = nullptr,
                          std::vector<std::string>* files = nullptr);
+
+/// Throws InputError when the case (or body) file at `path` has [[restraint]] tables: `what`
+/// (a study, a qualification) would run the body without them. Restraints run with `flexrock run`.
+void refuse_restraints(const std::string& path, const std::string& what);
 
 /// The key reference of the body types (body.type), as the Markdown tables of docs/case-file.md,
 /// written from the table of body types (model/builders.hpp) with its begin and end marker lines
