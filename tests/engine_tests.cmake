@@ -2,6 +2,7 @@
 flexrock_add_test(flexrock_model_tests SOURCES unit/body_test.cpp unit/impact_test.cpp unit/sin_cos_test.cpp
                   unit/flight_test.cpp unit/sliding_test.cpp unit/taken_rigid_test.cpp LABEL unit)
 flexrock_add_test(flexrock_friction_tie_tests SOURCES unit/friction_tie_test.cpp LABEL unit)
+flexrock_add_test(flexrock_support_tests SOURCES unit/support_test.cpp LABEL unit)
 flexrock_add_test(flexrock_integrate_tests SOURCES unit/dopri5_test.cpp unit/dop853_test.cpp
                   unit/rosenbrock4_test.cpp LABEL unit)
 flexrock_add_test(flexrock_rigid_validation_tests SOURCES validation/rigid_block_test.cpp LABEL validation)
