@@ -25,7 +25,7 @@ if(TARGET flexrock)
                      $<TARGET_FILE:flexrock> ${PROJECT_SOURCE_DIR} ${PROJECT_BINARY_DIR})
     set_tests_properties(cli_plot_without_module PROPERTIES LABELS cli)
   endif()
-  foreach(example museum_statue flexible_tank asymmetric_cabinet slender_column)
+  foreach(example museum_statue flexible_tank asymmetric_cabinet slender_column statue_on_platform)
     add_test(NAME cli_example_${example}
              COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/cli/examples.sh $<TARGET_FILE:flexrock>
                      ${PROJECT_SOURCE_DIR} ${example})

@@ -23,6 +23,13 @@ target_link_libraries(flexrock_sympy_tests PRIVATE flexrock::core nlohmann_json:
 target_compile_definitions(flexrock_sympy_tests PRIVATE FLEXROCK_BINARY_DIR="${PROJECT_BINARY_DIR}")
 flexrock_apply_sanitizers(flexrock_sympy_tests)
 gtest_discover_tests(flexrock_sympy_tests PROPERTIES LABELS unit FIXTURES_REQUIRED sympy_reference)
+# the support's impact map against the same derivation (tools/derive/support.py)
+add_executable(flexrock_support_reference_tests unit/support_reference_test.cpp)
+target_link_libraries(flexrock_support_reference_tests PRIVATE flexrock::core nlohmann_json::nlohmann_json
+                      GTest::gtest GTest::gtest_main flexrock_warnings)
+target_compile_definitions(flexrock_support_reference_tests PRIVATE FLEXROCK_BINARY_DIR="${PROJECT_BINARY_DIR}")
+flexrock_apply_sanitizers(flexrock_support_reference_tests)
+gtest_discover_tests(flexrock_support_reference_tests PROPERTIES LABELS unit FIXTURES_REQUIRED sympy_reference)
 # the reset maps of contact/ against the same derivation, and the laws' own properties
 add_executable(flexrock_contact_maps_tests unit/contact_maps_test.cpp)
 target_link_libraries(flexrock_contact_maps_tests PRIVATE flexrock::core nlohmann_json::nlohmann_json

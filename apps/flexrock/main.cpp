@@ -18,9 +18,11 @@
 #include <future>
 #include <new>
 #include <numbers>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "flexrock/contact/support_impact.hpp"
 #include "flexrock/core/error.hpp"
 #include "flexrock/io/azimuth_outputs.hpp"
 #include "flexrock/io/case_file.hpp"
@@ -30,6 +32,7 @@
 #include "flexrock/io/study_files.hpp"
 #include "flexrock/sim/simulate.hpp"
 #include "flexrock/sim/step_cost.hpp"
+#include "flexrock/sim/support.hpp"
 #include "flexrock/study/azimuths.hpp"
 #include "flexrock/version.hpp"
 #include "plot_command.hpp"
@@ -62,15 +65,22 @@ int error(const std::string& message, int code) {
   return code;
 }
 
-SimulationResult run_with_progress(const Body& body, const io::Case& c, bool show_progress) {
+// `support`: where a case on a [support] leaves the support's results (its own engine, §24)
+SimulationResult run_with_progress(const Body& body, const io::Case& c, bool show_progress,
+                                   SupportRunResult* support = nullptr) {
   const double end = c.options.t_end >= 0.0 ? c.options.t_end : c.motion.duration();
   cli::Progress progress(show_progress, end);
   std::atomic<double> reached{0.0};
   SimulationOptions options = c.options;
   options.progress = &reached;
   const auto start = std::chrono::steady_clock::now();
-  auto future =
-      std::async(std::launch::async, [&] { return simulate(body, c.motion, c.initial, options); });
+  auto future = std::async(std::launch::async, [&] {
+    if (c.support && support) {
+      *support = simulate(body, *c.support, c.motion, c.initial, options);
+      return support->body;
+    }
+    return simulate(body, c.motion, c.initial, options);
+  });
   while (future.wait_for(std::chrono::milliseconds(100)) != std::future_status::ready) {
     progress.draw_time(
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
@@ -282,6 +292,51 @@ void print_step_cost_warning(const io::Case& c, const Body& body) {
   if (!w.empty()) fmt::print(stderr, "flexrock: warning: {}: {}\n", c.source, w);
 }
 
+// the support's lines of a run on a [support] (docs/theory.md §24)
+void print_support_summary(const Body& body, const SupportParameters& s,
+                           const SupportRunResult& r) {
+  const SupportFrequencies f = support_frequencies(body, s);
+  fmt::print(
+      "support: m_s = {:.6g} kg, k = {:.6g} N/m, c = {:.6g} N s/m ({:.4g} Hz, damping "
+      "ratio {:.4g} with the body as a rigid mass)\n",
+      s.mass, s.stiffness, s.damping, f.frequency_hz, f.damping_ratio);
+  fmt::print(
+      "support peaks: |u| {:.6g} m, |u_dot| {:.6g} m/s, |k u + c u_dot| {:.6g} N; final u "
+      "{:.6g} m\n",
+      r.support.max_displacement, r.support.max_velocity, r.support.max_force,
+      r.support.final_displacement);
+}
+
+// what `params` says of a case's [support]: the coupled frequencies, the impact ratios and the
+// steady harmonic uplift thresholds from the transmissibility
+void print_support_params(const Body& body, const SupportParameters& s) {
+  const SupportFrequencies f = support_frequencies(body, s);
+  const BodyParameters& p = body.params();
+  fmt::print("support (docs/theory.md §24):\n");
+  fmt::print("  m_s, k, c                 {:.6g} kg, {:.6g} N/m, {:.6g} N s/m\n", s.mass,
+             s.stiffness, s.damping);
+  fmt::print("  with the body as a rigid mass: f_s = {:.6g} Hz, damping ratio {:.6g}\n",
+             f.frequency_hz, f.damping_ratio);
+  for (const int edge : {1, 2}) {
+    const double a_post = edge == 1 ? -body.alpha1() : body.alpha2();
+    const double a_pre = edge == 1 ? body.alpha2() : -body.alpha1();
+    const double on = support_impact(p.mass, s.mass, p.zeta2, a_pre, a_post).ratio;
+    const double floor = (1.0 + p.zeta2 + a_pre * a_post) / (1.0 + p.zeta2 + a_post * a_post);
+    fmt::print("  impact onto edge {}: theta_dot+/theta_dot- = {:.6g} (rigid floor {:.6g})\n", edge,
+               on, floor);
+  }
+  fmt::print(
+      "  steady harmonic uplift: amplitude of the ground acceleration = g min(b1, b2)/h / "
+      "|T(f/f_s)|\n");
+  fmt::print("  {:>10} {:>10} {:>12} {:>22}\n", "f/f_s", "f [Hz]", "|T|", "uplift amplitude");
+  for (const double r : {0.25, 0.5, 0.8, 1.0, 1.25, 1.5, 2.0, 4.0}) {
+    const double fin = r * f.frequency_hz;
+    fmt::print("  {:>10.4g} {:>10.4g} {:>12.6g} {:>22}\n", r, fin,
+               support_transmissibility(body, s, fin),
+               g_units(support_uplift_amplitude(body, s, fin), p.gravity));
+  }
+}
+
 // ---------------------------------------------------------------------------------------------
 // commands
 
@@ -309,8 +364,10 @@ int cmd_run_one(const std::string& file, const std::string& output_dir, bool qui
   const Body body(c.body);
   print_step_cost_warning(c, body);
   SimulationResult r;
+  SupportRunResult on_support;
+  const SupportRunResult* support = c.support ? &on_support : nullptr;
   try {
-    r = run_with_progress(body, c, !quiet && !no_progress && ::isatty(STDERR_FILENO));
+    r = run_with_progress(body, c, !quiet && !no_progress && ::isatty(STDERR_FILENO), &on_support);
   } catch (const InputError& e) {
     return error(file + ": " + e.what(), kExitBadInput);
   } catch (const std::bad_alloc&) {
@@ -326,7 +383,7 @@ int cmd_run_one(const std::string& file, const std::string& output_dir, bool qui
   }
   io::OutputPaths paths;
   try {
-    paths = io::write_outputs(c, body, r, output_dir);
+    paths = io::write_outputs(c, body, r, output_dir, support);
   } catch (const std::bad_alloc&) {
     print_summary(c, body, r, {}, quiet);
     return error("could not write the outputs: out of memory while formatting the summary",
@@ -336,6 +393,7 @@ int cmd_run_one(const std::string& file, const std::string& output_dir, bool qui
     return error(std::string("could not write the outputs: ") + e.what(), kExitRunFailed);
   }
   print_summary(c, body, r, paths, quiet);
+  if (support) print_support_summary(body, *c.support, *support);
   if (r.status == Status::kStopped) {
     return error("the run could not complete: " + r.message, kExitRunFailed);
   }
@@ -353,6 +411,11 @@ int cmd_azimuths(const std::string& file, const std::string& output_dir, bool qu
       throw InputError(file +
                        ": expected a record pair: [excitation.horizontal2] (a second "
                        "horizontal record) beside [excitation.horizontal]");
+    }
+    if (c.support) {
+      throw InputError(file +
+                       ": [support]: azimuths on a support are not built; run one azimuth "
+                       "(azimuth_deg) with 'flexrock run'");
     }
     if (c.azimuth) {
       throw InputError(file +
@@ -486,6 +549,13 @@ int cmd_check(const std::vector<std::string>& args, bool quiet) {
                    c.output.events.empty() ? "" : c.output.events + " ", c.output.summary);
         print_inputs(c);
         print_records(c);
+        if (c.support) {
+          const SupportFrequencies f = support_frequencies(body, *c.support);
+          fmt::print(
+              "  support: m_s = {:.6g} kg, {:.4g} Hz, damping ratio {:.4g} (with the body "
+              "as a rigid mass); rigid block: full contact, rocking, impacts, overturning\n",
+              c.support->mass, f.frequency_hz, f.damping_ratio);
+        }
         if (!std::isfinite(c.options.friction_coefficient) &&
             c.options.contact_model != ContactModel::kCompliant)
           fmt::print("  {}\n", kNoFrictionNote);
@@ -516,8 +586,10 @@ void print_vector(const char* name, const VectorX& v) {
 int cmd_params(const std::string& file) {
   std::string type;
   BodyParameters p;
+  std::optional<SupportParameters> support;
   try {
-    p = io::load_body(file, &type);
+    p = io::load_body(file, &type, nullptr, /*support_ok=*/true);
+    support = io::load_support(file, p);
   } catch (const InputError& e) {
     return error(e.what(), kExitBadInput);
   }
@@ -545,6 +617,7 @@ int cmd_params(const std::string& file) {
   fmt::print(
       "contact (impulsive floor; friction_coefficient is a [solver] key of the case):\n  {}\n",
       kNoFrictionNote);
+  if (support) print_support_params(body, *support);
   const int n = body.modes();
   fmt::print("deformation modes: {}\n", n);
   if (n > 0) {
@@ -746,12 +819,12 @@ int main(int argc, char** argv) {
     if (*check) return cmd_check(check_files, quiet);
     if (*params) return cmd_params(params_file);
     if (*keys) {
-      fmt::print("{}{}{}{}{}{}{}{}{}{}{}", io::body_key_reference(), io::pair_key_reference(),
+      fmt::print("{}{}{}{}{}{}{}{}{}{}{}{}", io::body_key_reference(), io::pair_key_reference(),
                  io::record_format_reference(), io::pulse_key_reference(),
-                 io::solver_key_reference(), io::time_history_column_reference(),
-                 io::event_column_reference(), io::azimuth_column_reference(),
-                 io::study_column_reference(), cli::fragility_curve_column_reference(),
-                 io::qualify_key_reference());
+                 io::solver_key_reference(), io::support_key_reference(),
+                 io::time_history_column_reference(), io::event_column_reference(),
+                 io::azimuth_column_reference(), io::study_column_reference(),
+                 cli::fragility_curve_column_reference(), io::qualify_key_reference());
       return 0;
     }
     if (studies.selected()) return studies.run();

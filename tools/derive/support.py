@@ -184,7 +184,7 @@ def support_checks():
             T0 = (msv + Mb) * udp0**2 / 2
             if T0 > Tm:
                 fails.append(('both-edges energy gain', trial, landing))
-            if trial < 4:
+            if trial < 4:  # 8 impacts (both landing edges) for the C++ test
                 refs.setdefault('impacts', []).append({
                     'M': float(Mb), 'm_s': float(msv), 'h': float(hh), 'b1': float(b1), 'b2': float(b2),
                     'zeta2': float(zeta2), 'landing_edge': landing, 'theta_dot_minus': float(thm),
