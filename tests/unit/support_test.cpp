@@ -12,6 +12,7 @@
 #include <cstdio>
 #include <numbers>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "flexrock/contact/support_impact.hpp"
@@ -247,6 +248,39 @@ TEST(Support, MirroredInputGivesTheMirroredResponse) {
   EXPECT_EQ(a.body.extremes.impacts, b.body.extremes.impacts);
   EXPECT_DOUBLE_EQ(a.body.extremes.max_theta_edge1, b.body.extremes.max_theta_edge2);
   EXPECT_DOUBLE_EQ(a.support.max_displacement, b.support.max_displacement);
+}
+
+// the answers do not depend on the numerical devices: the tolerance and the guards' samples
+TEST(Support, AnswersConvergeWithTheToleranceAndDoNotDependOnTheSamples) {
+  const Body body(BodyParameters::rectangular_block(1000.0, 0.2, 0.8));
+  const SupportParameters s = SupportParameters::from_frequency(400.0, 1000.0, 2.5, 0.05);
+  const GroundMotion m = one_sine(0.35 * 9.80665, 0.6, 6.0);
+  auto run = [&](double rtol, int samples) {
+    SimulationOptions o;
+    o.rtol = rtol;
+    o.atol = 1e-2 * rtol;
+    o.event_samples = samples;
+    return simulate(body, s, m, {}, o);
+  };
+  const SupportRunResult ref = run(1e-13, 8);
+  ASSERT_GT(ref.body.extremes.impacts, 10);
+  for (const auto& [rtol, samples, tol] :
+       {std::tuple{1e-9, 4, 1e-6}, std::tuple{1e-11, 4, 1e-8}, std::tuple{1e-11, 2, 1e-8},
+        std::tuple{1e-11, 16, 1e-8}}) {
+    const SupportRunResult r = run(rtol, samples);
+    EXPECT_EQ(r.body.status, ref.body.status);
+    EXPECT_EQ(r.body.extremes.impacts, ref.body.extremes.impacts) << rtol << " " << samples;
+    EXPECT_NEAR(r.body.extremes.max_theta_edge1, ref.body.extremes.max_theta_edge1,
+                tol * ref.body.extremes.max_theta_edge1);
+    EXPECT_NEAR(r.body.extremes.max_theta_edge2, ref.body.extremes.max_theta_edge2,
+                tol * ref.body.extremes.max_theta_edge2);
+    EXPECT_NEAR(r.support.max_displacement, ref.support.max_displacement,
+                tol * ref.support.max_displacement);
+    const Event* a = first_of(r.body, EventKind::kImpact);
+    const Event* b = first_of(ref.body, EventKind::kImpact);
+    ASSERT_TRUE(a && b);
+    EXPECT_NEAR(a->time, b->time, tol);
+  }
 }
 
 // what is not modelled is refused, naming it
