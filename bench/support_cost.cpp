@@ -45,7 +45,7 @@ int main(int argc, char** argv) {
         median_seconds(repeats, [&] { floor = simulate(c.body, c.motion, c.init, opt); });
     std::printf("rtol %g: rigid floor: %.3f ms (%s, %ld impacts, %ld steps)\n", opt.rtol,
                 1e3 * t_floor, to_string(floor.status), floor.extremes.impacts, floor.steps);
-    for (const double f : {1.0, 3.0, 10.0, 30.0}) {
+    for (const double f : {0.5, 1.0, 3.0, 10.0, 30.0}) {
       const SupportParameters s =
           SupportParameters::from_frequency(1000.0, c.body.params().mass, f, 0.05);
       SupportRunResult r;

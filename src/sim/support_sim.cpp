@@ -120,6 +120,71 @@ double potential(const Plant& p, int edge, const State& x) {
   return 0.5 * p.k * u * u + p.m * p.g * y;
 }
 
+// the exact full-contact update (docs/theory.md §24): block and support one mass m + m_s on the
+// spring and dashpot, u'' + 2 zeta w u' + w^2 u = -a(t), under a base acceleration linear in time
+// on the step, a(t0 + tau) = a0 + s tau (a sampled record between its samples). The particular
+// solution A + B tau plus the free motion exp(F tau) w0; the base's work from
+// -m_t [a u] + m_t s int u, the dashpot's as the work less the change of energy
+class ExactWalk {
+ public:
+  explicit ExactWalk(const Plant& p)
+      : mt_(p.mt()), k_(p.k), c_(p.c), w2_(p.k / p.mt()), zw2_(p.c / p.mt()) {}
+
+  double omega() const { return std::sqrt(w2_); }
+
+  void begin(double t0, const State& x0, double a0, double slope) {
+    t0_ = t1_ = t0;
+    x0_ = x1_ = x0;
+    a0_ = a0;
+    s_ = slope;
+  }
+  void end_at(double t1) {
+    t1_ = t1;
+    dense(t1, x1_);
+  }
+  double t0() const { return t0_; }
+  double t1() const { return t1_; }
+  const State& x0() const { return x0_; }
+  const State& x1() const { return x1_; }
+
+  void dense(double t, State& out) const {
+    const double tau = t - t0_;
+    const double mu = -0.5 * zw2_, d2 = mu * mu - w2_;
+    double cc = 1.0, ss = tau;  // cos or cosh of d tau, and sin(d tau)/d or sinh(d tau)/d
+    if (d2 < 0.0) {
+      const double d = std::sqrt(-d2);
+      cc = std::cos(d * tau);
+      ss = std::sin(d * tau) / d;
+    } else if (d2 > 0.0) {
+      const double d = std::sqrt(d2);
+      cc = std::cosh(d * tau);
+      ss = std::sinh(d * tau) / d;
+    }
+    const double e = std::exp(mu * tau);
+    const double p11 = e * (cc - mu * ss), p12 = e * ss, p21 = -e * w2_ * ss,
+                 p22 = e * (cc + mu * ss);
+    const double b = -s_ / w2_, a = (-a0_ - zw2_ * b) / w2_;
+    const double u0 = x0_(kU), v0 = x0_(kUDot);
+    const double wu0 = u0 - a, wv0 = v0 - b;
+    const double wu = p11 * wu0 + p12 * wv0, wv = p21 * wu0 + p22 * wv0;
+    const double u = a + b * tau + wu, v = b + wv;
+    // int_0^tau w = F^-1 (exp(F tau) - I) w0, F^-1 = [[-2 zeta w, -1], [w^2, 0]] / w^2
+    const double int_u = a * tau + 0.5 * b * tau * tau + (-zw2_ * (wu - wu0) - (wv - wv0)) / w2_;
+    const double work = -mt_ * ((a0_ + s_ * tau) * u - a0_ * u0) + mt_ * s_ * int_u;
+    const double de = 0.5 * mt_ * (v * v - v0 * v0) + 0.5 * k_ * (u * u - u0 * u0);
+    out = x0_;
+    out(kU) = u;
+    out(kUDot) = v;
+    out(kWorkIn) = x0_(kWorkIn) + work;
+    out(kWorkDamp) = x0_(kWorkDamp) + (c_ > 0.0 ? work - de : 0.0);
+  }
+
+ private:
+  double mt_, k_, c_, w2_, zw2_;  // w2 = w^2, zw2 = 2 zeta w
+  double t0_ = 0.0, t1_ = 0.0, a0_ = 0.0, s_ = 0.0;
+  State x0_ = State::Zero(), x1_ = State::Zero();
+};
+
 class SupportLoop final : public detail::GuardProbe {
  public:
   SupportLoop(const Body& body, const SupportParameters& sp, const GroundMotion& motion,
@@ -135,6 +200,7 @@ class SupportLoop final : public detail::GuardProbe {
     p_.c = sp.damping;
     p_.alpha1 = body.alpha1();
     p_.alpha2 = body.alpha2();
+    walk_ = ExactWalk(p_);
     x_.setZero();
     x_(kU) = sp.displacement;
     x_(kUDot) = sp.velocity;
@@ -151,6 +217,7 @@ class SupportLoop final : public detail::GuardProbe {
       p2 = std::max(p2, body.g_over_h() * std::sqrt(1.0 + a * a) / (1.0 + p_.zeta2 + a * a));
     chatter_dt_ = opt.chatter_ratio * 2.0 * std::numbers::pi / std::sqrt(p2);
     t_end_ = opt.t_end >= 0.0 ? opt.t_end : motion.duration();
+    walk_ok_ = opt.methods.full_contact_walk && (motion.is_sampled() || motion.is_none());
     ctl_.rtol = opt.rtol;
     ctl_.atol = opt.atol;
     ctl_.controlled = 4;
@@ -173,17 +240,36 @@ class SupportLoop final : public detail::GuardProbe {
     if (edge_ != 0 && !stopped_) first_uplift(0.0);
     bool restart = true;
     Stepper st;
+    stepper_ = &st;
     auto rhs = [this](double t, const State& x, State& dx) { derivative(t, x, dx); };
     while (!stopped_ && t_ < t_end_) {
-      if (restart) {
-        st.start(rhs, ctl_, t_, x_);
-        restart = false;
-      }
       const double t_stop = std::min(motion_.next_breakpoint(t_, cursor_), t_end_);
-      if (st.step(rhs, t_stop) != Stepper::Status::kAccepted) {
-        stop("the integrator's step collapsed at t = " + format_number(t_, 6) +
-             " s (a stiff support: lower its frequency or loosen rtol)");
-        break;
+      walking_ = edge_ == 0 && walk_ok_;
+      nsamp_ = samples_;
+      if (walking_) {
+        // full contact under a record: one exact update per sample interval (capped by
+        // max_step), its guards sampled at most 0.5 rad of the support's motion apart
+        const double tb = motion_.next_breakpoint(t_, cursor_);
+        const double a0 = motion_.at(t_, cursor_).x;
+        const double slope = std::isfinite(tb) ? (motion_.at(tb, cursor_).x - a0) / (tb - t_) : 0.0;
+        double h = std::min(t_stop - t_, opt_.max_step);
+        const double w = walk_.omega();
+        if (w * h > 0.5 * detail::kMaxSamples) h = 0.5 * detail::kMaxSamples / w;
+        nsamp_ =
+            std::clamp(static_cast<int>(std::ceil(w * h / 0.5)), samples_, detail::kMaxSamples);
+        walk_.begin(t_, x_, a0, slope);
+        walk_.end_at(t_ + h >= t_stop ? t_stop : t_ + h);
+        restart = true;  // the integrator starts afresh where the walk ends
+      } else {
+        if (restart) {
+          st.start(rhs, ctl_, t_, x_);
+          restart = false;
+        }
+        if (st.step(rhs, t_stop) != Stepper::Status::kAccepted) {
+          stop("the integrator's step collapsed at t = " + format_number(t_, 6) +
+               " s (a stiff support: lower its frequency or loosen rtol)");
+          break;
+        }
       }
       ++r.steps;
       if (r.steps > opt_.max_steps) {
@@ -191,24 +277,24 @@ class SupportLoop final : public detail::GuardProbe {
         break;
       }
       // the guards on the step's samples
-      const double t0 = st.t0(), t1 = st.t1();
-      smp_[0] = sample(t0, st.x0());
-      for (int i = 1; i <= samples_; ++i) {
-        const double ti = i == samples_ ? t1 : t0 + (t1 - t0) * i / samples_;
+      const double t0 = step_t0(), t1 = walking_ ? walk_.t1() : st.t1();
+      smp_[0] = sample(t0, walking_ ? walk_.x0() : st.x0());
+      for (int i = 1; i <= nsamp_; ++i) {
+        const double ti = i == nsamp_ ? t1 : t0 + (t1 - t0) * i / nsamp_;
         State xi;
-        if (i == samples_) {
-          xi = st.x1();
+        if (i == nsamp_) {
+          xi = walking_ ? walk_.x1() : st.x1();
         } else {
-          st.dense(ti, xi);
+          dense_at(ti, xi);
         }
-        smp_[i] = sample(ti, xi);
+        smp_[static_cast<std::size_t>(i)] = sample(ti, xi);
       }
-      stepper_ = &st;
+      have_step_ = true;
       double t_ev = kInf;
       int slot = -1;
       for (int j = 0; j < guard_count(); ++j) {
         const bool zero_start = j == kRockImpact && edge_ != 0 && zero_start_impact_;
-        const double tc = detail::first_crossing(j, smp_.data(), samples_, zero_start,
+        const double tc = detail::first_crossing(j, smp_.data(), nsamp_, zero_start,
                                                  /*fires_if_unresolved=*/false, *this);
         if (tc < t_ev) {
           t_ev = tc;
@@ -217,21 +303,27 @@ class SupportLoop final : public detail::GuardProbe {
       }
       zero_start_impact_ = false;
       if (slot >= 0) {
-        st.restep_to(rhs, t_ev);
+        if (walking_) {
+          walk_.end_at(t_ev);
+          x_ = walk_.x1();
+        } else {
+          st.restep_to(rhs, t_ev);
+          x_ = st.x1();
+        }
         t_ = t_ev;
-        x_ = st.x1();
         fold_samples(t_ev);
         record_until(t_, x_);
         observe(t_, x_);
-        restart = fire(slot);
+        const bool again = fire(slot);
+        restart = restart || again;
       } else {
         fold_samples(t1);
         t_ = t1;
-        x_ = st.x1();
+        x_ = walking_ ? walk_.x1() : st.x1();
         record_until(t_, x_);
         observe(t_, x_);
         // a breakpoint of the motion: the next step starts from the right-hand limit
-        if (t_ == t_stop && t_stop < t_end_) st.refresh_derivative(rhs, t_);
+        if (!walking_ && t_ == t_stop && t_stop < t_end_) st.refresh_derivative(rhs, t_);
       }
       if (opt_.progress) opt_.progress->store(t_, std::memory_order_relaxed);
     }
@@ -244,12 +336,22 @@ class SupportLoop final : public detail::GuardProbe {
   // GuardProbe: the guard at a time within the last step
   double guard_value(int slot, double t) override {
     State x;
-    stepper_->dense(t, x);
+    dense_at(t, x);
     return guard(slot, t, x);
   }
 
  private:
   int guard_count() const { return edge_ == 0 ? 4 : 5; }
+
+  // the last step's dense output and start, from the exact walk or the integrator
+  void dense_at(double t, State& x) const {
+    if (walking_) {
+      walk_.dense(t, x);
+    } else {
+      stepper_->dense(t, x);
+    }
+  }
+  double step_t0() const { return walking_ ? walk_.t0() : stepper_->t0(); }
   double side() const { return edge_ == 1 ? 1.0 : -1.0; }
 
   double limit(int edge) const {
@@ -311,10 +413,10 @@ class SupportLoop final : public detail::GuardProbe {
 
   // the extremes at the step's samples before `t_upto`
   void fold_samples(double t_upto) {
-    for (int i = 0; i <= samples_; ++i) {
+    for (int i = 0; i <= nsamp_; ++i) {
       if (smp_[static_cast<std::size_t>(i)].t >= t_upto) break;
       State x;
-      stepper_->dense(smp_[static_cast<std::size_t>(i)].t, x);
+      dense_at(smp_[static_cast<std::size_t>(i)].t, x);
       observe(smp_[static_cast<std::size_t>(i)].t, x);
     }
   }
@@ -357,7 +459,7 @@ class SupportLoop final : public detail::GuardProbe {
     while (next_output_ <= t * (1.0 + 1e-15) + 1e-300 && next_output_ <= t_end_) {
       const double tr = next_output_;
       State x = x_at_t;
-      if (tr < t && stepper_ && stepper_->t0() <= tr) stepper_->dense(tr, x);
+      if (tr < t && have_step_ && step_t0() <= tr) dense_at(tr, x);
       row(tr, x);
       ++rows_;
       next_output_ = static_cast<double>(rows_) * opt_.output_dt;
@@ -665,6 +767,11 @@ class SupportLoop final : public detail::GuardProbe {
   int zeno_count_ = 0;
   std::array<detail::GuardSample, detail::kMaxSamples + 1> smp_{};
   Stepper* stepper_ = nullptr;
+  ExactWalk walk_{p_};
+  bool walk_ok_ = false;    // full contact may be walked exactly (a sampled record, or none)
+  bool walking_ = false;    // the last step was the exact walk's
+  bool have_step_ = false;  // a step has been taken (its dense output exists)
+  int nsamp_ = 4;           // samples of the last step
   SupportRunResult out_;
 };
 
