@@ -170,6 +170,8 @@ class Case:
     rigid: bool
     source: str
     stem: str
+    @property
+    def support(self) -> Optional[SupportParameters]: ...
     vertical: ExcitationComponent
 
 class Component:
@@ -1289,6 +1291,33 @@ class Status:
     def name(self) -> str: ...
     @property
     def value(self) -> int: ...
+
+class SupportParameters:
+    """The support under a rigid block: a mass on a horizontal spring and dashpot to the ground (docs/theory.md §24)."""
+    def __init__(self) -> None: ...
+    damping: float
+    displacement: float
+    @staticmethod
+    def from_frequency(mass: float, body_mass: float, frequency_hz: float, damping_ratio: float) -> SupportParameters:
+        """From the frequency [Hz] and damping ratio of the support with the body as a rigid mass of `body_mass` [kg] on it."""
+    mass: float
+    stiffness: float
+    velocity: float
+
+class SupportRunResult:
+    """The block's result on the support and the support's own."""
+    @property
+    def body(self) -> SimulationResult: ...
+    @property
+    def max_support_displacement(self) -> float: ...
+    @property
+    def support_acceleration(self) -> numpy.typing.NDArray[numpy.float64]: ...
+    @property
+    def support_displacement(self) -> numpy.typing.NDArray[numpy.float64]: ...
+    @property
+    def support_force(self) -> numpy.typing.NDArray[numpy.float64]: ...
+    @property
+    def support_velocity(self) -> numpy.typing.NDArray[numpy.float64]: ...
 
 class SweepBody:
     def __init__(self, name: str, body: BodyParameters) -> None: ...
@@ -2488,6 +2517,9 @@ def simulate(body: Body, motion: GroundMotion, initial: InitialState = ..., opti
         Overturning, loss of contact and a stopped run are its ``status``, not exceptions. The
         GIL is released while it runs.
     """
+
+def simulate_on_support(body: Body, support: SupportParameters, motion: GroundMotion, initial: InitialState = ..., options: SimulationOptions = ...) -> SupportRunResult:
+    """Simulates a rigid block standing on a support that moves with it (docs/theory.md §24): full contact, rocking, impacts and overturning; sliding, flexible bodies and the compliant contact raise InputError, and a lift-off ends the run as stopped."""
 
 def spectrum_arrays(result: SpectrumResult, g: float = ...) -> dict:
     """The cells of a spectrum as numpy arrays, one per column of its CSV, typed by the column

@@ -872,7 +872,9 @@ Case load_case(const std::string& path) {
     try {
       validate_support(body, *c.support, c.initial, c.options);
     } catch (const InputError& e) {
-      top.fail_at(spr->line(), "support", std::string(e.what()));
+      std::string why = e.what();
+      if (why.rfind("support: ", 0) == 0) why.erase(0, 9);  // the key names the table
+      top.fail_at(spr->line(), "support", why);
     }
   }
   top.finish("at the top level");
