@@ -392,6 +392,48 @@ TEST(Support, RefusesWhatItDoesNotModel) {
   EXPECT_NE(r.body.message.find("F_J = "), std::string::npos);
 }
 
+// a squat block (alpha = 1.2) whose coupled impact would turn it into the support: both edges
+// stay down (theta_dot+ = 0, the block moving with the support), rocking ends
+TEST(Support, SquatBlockEndsRockingAtItsImpacts) {
+  const Body body(BodyParameters::rectangular_block(1000.0, 0.96, 0.8));
+  const SupportParameters s = SupportParameters::from_frequency(400.0, 1000.0, 2.5, 0.05);
+  // the coupled ratio is negative: 1 + zeta^2 - alpha^2 - chi < 0
+  ASSERT_LT(support_impact(1000.0, 400.0, body.params().zeta2, body.alpha2(), -body.alpha1()).ratio,
+            0.0);
+  SimulationOptions o;
+  o.output_dt = 0.001;
+  const SupportRunResult r = simulate(body, s, one_sine(1.5 * 9.80665, 0.6, 3.0), {}, o);
+  ASSERT_EQ(r.body.status, Status::kCompleted);
+  int impacts = 0, ended = 0;
+  for (const Event& e : r.body.events) {
+    if (e.kind == EventKind::kImpact) {
+      ++impacts;
+      EXPECT_EQ(e.theta_dot_after, 0.0);
+      EXPECT_GT(e.energy_loss, 0.0);
+    }
+    ended += e.kind == EventKind::kRockingEnded ? 1 : 0;
+  }
+  EXPECT_GE(impacts, 1);
+  EXPECT_EQ(ended, impacts);
+  EXPECT_EQ(r.body.final_phase, ContactMode::kFullContact);
+  EXPECT_LT(std::abs(r.body.energy.residual), 1e-7 * r.body.energy.scale);
+}
+
+// a block toppling after the pulse: where the support's vertical force would vanish with the
+// lift-off inconsistent (the corner would accelerate into the support) the pivot is held, the
+// support pulling, said with its magnitude (as on the rigid floor, §15)
+TEST(Support, TopplingBlockReportsThePivotTensionItNeeds) {
+  const Body body(BodyParameters::rectangular_block(1000.0, 0.2, 0.8));
+  const SupportParameters s = SupportParameters::from_frequency(400.0, 1000.0, 2.5, 0.0);
+  const SupportRunResult r = simulate(body, s, one_sine(0.4 * 9.80665, 0.6, 6.0));
+  ASSERT_EQ(r.body.status, Status::kOverturned) << r.body.message;
+  EXPECT_TRUE(r.body.pivot_tension);
+  EXPECT_GE(r.body.extremes.tension_episodes, 1);
+  EXPECT_GT(r.body.extremes.max_pivot_pull, 0.0);
+  EXPECT_GT(r.body.extremes.tension_time, 0.0);
+  EXPECT_NE(first_of(r.body, EventKind::kPivotTension), nullptr);
+}
+
 // overturning on a soft support, as an outcome
 TEST(Support, OverturnsAsAnOutcome) {
   const Body body(BodyParameters::rectangular_block(1000.0, 0.15, 0.9));
