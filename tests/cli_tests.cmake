@@ -12,7 +12,8 @@ flexrock_add_test(flexrock_case_file_tests
 # the `flexrock` command: exit codes, messages, columns, no partial outputs, the four examples
 if(TARGET flexrock)
   foreach(script usage bad_input run_outcomes real_inputs io_safety keys_reference record_formats
-                 assumption_breaks compliant_step_cost friction_tie azimuths verb_help restraints)
+                 assumption_breaks compliant_step_cost friction_tie azimuths verb_help restraints
+                 support_input)
     add_test(NAME cli_${script}
              COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/cli/${script}.sh $<TARGET_FILE:flexrock>
                      ${PROJECT_SOURCE_DIR})
@@ -25,7 +26,7 @@ if(TARGET flexrock)
                      $<TARGET_FILE:flexrock> ${PROJECT_SOURCE_DIR} ${PROJECT_BINARY_DIR})
     set_tests_properties(cli_plot_without_module PROPERTIES LABELS cli)
   endif()
-  foreach(example museum_statue flexible_tank asymmetric_cabinet slender_column)
+  foreach(example museum_statue flexible_tank asymmetric_cabinet slender_column statue_on_platform)
     add_test(NAME cli_example_${example}
              COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/cli/examples.sh $<TARGET_FILE:flexrock>
                      ${PROJECT_SOURCE_DIR} ${example})

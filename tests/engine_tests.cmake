@@ -2,6 +2,7 @@
 flexrock_add_test(flexrock_model_tests SOURCES unit/body_test.cpp unit/impact_test.cpp unit/sin_cos_test.cpp
                   unit/flight_test.cpp unit/sliding_test.cpp unit/taken_rigid_test.cpp LABEL unit)
 flexrock_add_test(flexrock_friction_tie_tests SOURCES unit/friction_tie_test.cpp LABEL unit)
+flexrock_add_test(flexrock_support_tests SOURCES unit/support_test.cpp LABEL unit)
 flexrock_add_test(flexrock_integrate_tests SOURCES unit/dopri5_test.cpp unit/dop853_test.cpp
                   unit/rosenbrock4_test.cpp LABEL unit)
 flexrock_add_test(flexrock_rigid_validation_tests SOURCES validation/rigid_block_test.cpp LABEL validation)
@@ -22,6 +23,13 @@ target_link_libraries(flexrock_sympy_tests PRIVATE flexrock::core nlohmann_json:
 target_compile_definitions(flexrock_sympy_tests PRIVATE FLEXROCK_BINARY_DIR="${PROJECT_BINARY_DIR}")
 flexrock_apply_sanitizers(flexrock_sympy_tests)
 gtest_discover_tests(flexrock_sympy_tests PROPERTIES LABELS unit FIXTURES_REQUIRED sympy_reference)
+# the support's impact map against the same derivation (tools/derive/support.py)
+add_executable(flexrock_support_reference_tests unit/support_reference_test.cpp)
+target_link_libraries(flexrock_support_reference_tests PRIVATE flexrock::core nlohmann_json::nlohmann_json
+                      GTest::gtest GTest::gtest_main flexrock_warnings)
+target_compile_definitions(flexrock_support_reference_tests PRIVATE FLEXROCK_BINARY_DIR="${PROJECT_BINARY_DIR}")
+flexrock_apply_sanitizers(flexrock_support_reference_tests)
+gtest_discover_tests(flexrock_support_reference_tests PROPERTIES LABELS unit FIXTURES_REQUIRED sympy_reference)
 # the reset maps of contact/ against the same derivation, and the laws' own properties
 add_executable(flexrock_contact_maps_tests unit/contact_maps_test.cpp)
 target_link_libraries(flexrock_contact_maps_tests PRIVATE flexrock::core nlohmann_json::nlohmann_json

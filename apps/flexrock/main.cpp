@@ -22,6 +22,7 @@
 #include <string>
 #include <vector>
 
+#include "flexrock/contact/support_impact.hpp"
 #include "flexrock/core/error.hpp"
 #include "flexrock/io/azimuth_outputs.hpp"
 #include "flexrock/io/case_file.hpp"
@@ -33,6 +34,7 @@
 #include "flexrock/sim/restraints.hpp"
 #include "flexrock/sim/simulate.hpp"
 #include "flexrock/sim/step_cost.hpp"
+#include "flexrock/sim/support.hpp"
 #include "flexrock/study/azimuths.hpp"
 #include "flexrock/version.hpp"
 #include "plot_command.hpp"
@@ -65,10 +67,11 @@ int error(const std::string& message, int code) {
   return code;
 }
 
-// a case with [[restraint]] tables runs on the restrained engine (docs/theory.md §26); `tied`
-// receives its restraints' results
+// a case with [[restraint]] tables runs on the restrained engine (docs/theory.md §26), one on a
+// [support] on the support's (§24); `tied` and `support` receive their results
 SimulationResult run_with_progress(const Body& body, const io::Case& c, bool show_progress,
-                                   std::optional<RestrainedResult>* tied = nullptr) {
+                                   std::optional<RestrainedResult>* tied = nullptr,
+                                   SupportRunResult* support = nullptr) {
   const double end = c.options.t_end >= 0.0 ? c.options.t_end : c.motion.duration();
   cli::Progress progress(show_progress, end);
   std::atomic<double> reached{0.0};
@@ -76,6 +79,10 @@ SimulationResult run_with_progress(const Body& body, const io::Case& c, bool sho
   options.progress = &reached;
   const auto start = std::chrono::steady_clock::now();
   auto future = std::async(std::launch::async, [&] {
+    if (c.support && support) {
+      *support = simulate(body, *c.support, c.motion, c.initial, options);
+      return support->body;
+    }
     if (c.restraints.empty() || !tied) return simulate(body, c.motion, c.initial, options);
     *tied = simulate_restrained(body, c.restraints, c.motion, c.initial, options);
     return (*tied)->result;
@@ -320,6 +327,51 @@ void print_step_cost_warning(const io::Case& c, const Body& body) {
   if (!w.empty()) fmt::print(stderr, "flexrock: warning: {}: {}\n", c.source, w);
 }
 
+// the support's lines of a run on a [support] (docs/theory.md §24)
+void print_support_summary(const Body& body, const SupportParameters& s,
+                           const SupportRunResult& r) {
+  const SupportFrequencies f = support_frequencies(body, s);
+  fmt::print(
+      "support: m_s = {:.6g} kg, k = {:.6g} N/m, c = {:.6g} N s/m ({:.4g} Hz, damping "
+      "ratio {:.4g} with the body as a rigid mass)\n",
+      s.mass, s.stiffness, s.damping, f.frequency_hz, f.damping_ratio);
+  fmt::print(
+      "support peaks: |u| {:.6g} m, |u_dot| {:.6g} m/s, |k u + c u_dot| {:.6g} N; final u "
+      "{:.6g} m\n",
+      r.support.max_displacement, r.support.max_velocity, r.support.max_force,
+      r.support.final_displacement);
+}
+
+// what `params` says of a case's [support]: the coupled frequencies, the impact ratios and the
+// steady harmonic uplift thresholds from the transmissibility
+void print_support_params(const Body& body, const SupportParameters& s) {
+  const SupportFrequencies f = support_frequencies(body, s);
+  const BodyParameters& p = body.params();
+  fmt::print("support (docs/theory.md §24):\n");
+  fmt::print("  m_s, k, c                 {:.6g} kg, {:.6g} N/m, {:.6g} N s/m\n", s.mass,
+             s.stiffness, s.damping);
+  fmt::print("  with the body as a rigid mass: f_s = {:.6g} Hz, damping ratio {:.6g}\n",
+             f.frequency_hz, f.damping_ratio);
+  for (const int edge : {1, 2}) {
+    const double a_post = edge == 1 ? -body.alpha1() : body.alpha2();
+    const double a_pre = edge == 1 ? body.alpha2() : -body.alpha1();
+    const double on = support_impact(p.mass, s.mass, p.zeta2, a_pre, a_post).ratio;
+    const double floor = (1.0 + p.zeta2 + a_pre * a_post) / (1.0 + p.zeta2 + a_post * a_post);
+    fmt::print("  impact onto edge {}: theta_dot+/theta_dot- = {:.6g} (rigid floor {:.6g})\n", edge,
+               on, floor);
+  }
+  fmt::print(
+      "  steady harmonic uplift: amplitude of the ground acceleration = g min(b1, b2)/h / "
+      "|T(f/f_s)|\n");
+  fmt::print("  {:>10} {:>10} {:>12} {:>22}\n", "f/f_s", "f [Hz]", "|T|", "uplift amplitude");
+  for (const double r : {0.25, 0.5, 0.8, 1.0, 1.25, 1.5, 2.0, 4.0}) {
+    const double fin = r * f.frequency_hz;
+    fmt::print("  {:>10.4g} {:>10.4g} {:>12.6g} {:>22}\n", r, fin,
+               support_transmissibility(body, s, fin),
+               g_units(support_uplift_amplitude(body, s, fin), p.gravity));
+  }
+}
+
 // ---------------------------------------------------------------------------------------------
 // commands
 
@@ -350,8 +402,11 @@ int cmd_run_one(const std::string& file, const std::string& output_dir, bool qui
     if (!quiet) fmt::print("{}\n", line);
   SimulationResult r;
   std::optional<RestrainedResult> tied;
+  SupportRunResult on_support;
+  const SupportRunResult* support = c.support ? &on_support : nullptr;
   try {
-    r = run_with_progress(body, c, !quiet && !no_progress && ::isatty(STDERR_FILENO), &tied);
+    r = run_with_progress(body, c, !quiet && !no_progress && ::isatty(STDERR_FILENO), &tied,
+                          &on_support);
   } catch (const InputError& e) {
     return error(file + ": " + e.what(), kExitBadInput);
   } catch (const std::bad_alloc&) {
@@ -368,7 +423,7 @@ int cmd_run_one(const std::string& file, const std::string& output_dir, bool qui
   io::OutputPaths paths;
   try {
     paths = tied ? io::write_restrained_outputs(c, body, *tied, output_dir)
-                 : io::write_outputs(c, body, r, output_dir);
+                 : io::write_outputs(c, body, r, output_dir, support);
   } catch (const std::bad_alloc&) {
     print_summary(c, body, r, {}, quiet, tied ? &*tied : nullptr);
     return error("could not write the outputs: out of memory while formatting the summary",
@@ -378,6 +433,7 @@ int cmd_run_one(const std::string& file, const std::string& output_dir, bool qui
     return error(std::string("could not write the outputs: ") + e.what(), kExitRunFailed);
   }
   print_summary(c, body, r, paths, quiet, tied ? &*tied : nullptr);
+  if (support) print_support_summary(body, *c.support, *support);
   if (r.status == Status::kStopped) {
     return error("the run could not complete: " + r.message, kExitRunFailed);
   }
@@ -396,6 +452,11 @@ int cmd_azimuths(const std::string& file, const std::string& output_dir, bool qu
       throw InputError(file +
                        ": expected a record pair: [excitation.horizontal2] (a second "
                        "horizontal record) beside [excitation.horizontal]");
+    }
+    if (c.support) {
+      throw InputError(file +
+                       ": [support]: azimuths on a support are not built; run one azimuth "
+                       "(azimuth_deg) with 'flexrock run'");
     }
     if (c.azimuth) {
       throw InputError(file +
@@ -529,6 +590,13 @@ int cmd_check(const std::vector<std::string>& args, bool quiet) {
                    c.output.events.empty() ? "" : c.output.events + " ", c.output.summary);
         print_inputs(c);
         print_records(c);
+        if (c.support) {
+          const SupportFrequencies f = support_frequencies(body, *c.support);
+          fmt::print(
+              "  support: m_s = {:.6g} kg, {:.4g} Hz, damping ratio {:.4g} (with the body "
+              "as a rigid mass); rigid block: full contact, rocking, impacts, overturning\n",
+              c.support->mass, f.frequency_hz, f.damping_ratio);
+        }
         if (!std::isfinite(c.options.friction_coefficient) &&
             c.options.contact_model != ContactModel::kCompliant && c.restraints.empty())
           fmt::print("  {}\n", kNoFrictionNote);
@@ -561,8 +629,10 @@ void print_vector(const char* name, const VectorX& v) {
 int cmd_params(const std::string& file) {
   std::string type;
   BodyParameters p;
+  std::optional<SupportParameters> support;
   try {
-    p = io::load_body(file, &type);
+    p = io::load_body(file, &type, nullptr, /*support_ok=*/true);
+    support = io::load_support(file, p);
   } catch (const InputError& e) {
     return error(e.what(), kExitBadInput);
   }
@@ -590,6 +660,7 @@ int cmd_params(const std::string& file) {
   fmt::print(
       "contact (impulsive floor; friction_coefficient is a [solver] key of the case):\n  {}\n",
       kNoFrictionNote);
+  if (support) print_support_params(body, *support);
   const int n = body.modes();
   fmt::print("deformation modes: {}\n", n);
   if (n > 0) {
@@ -793,9 +864,10 @@ int main(int argc, char** argv) {
     if (*check) return cmd_check(check_files, quiet);
     if (*params) return cmd_params(params_file);
     if (*keys) {
-      fmt::print("{}{}{}{}{}{}{}{}{}{}{}{}", io::body_key_reference(), io::pair_key_reference(),
+      fmt::print("{}{}{}{}{}{}{}{}{}{}{}{}{}", io::body_key_reference(), io::pair_key_reference(),
                  io::record_format_reference(), io::pulse_key_reference(),
                  io::solver_key_reference(), io::restraint_key_reference(),
+                 io::support_key_reference(),
                  io::time_history_column_reference(), io::event_column_reference(),
                  io::azimuth_column_reference(), io::study_column_reference(),
                  cli::fragility_curve_column_reference(), io::qualify_key_reference());

@@ -70,6 +70,9 @@ from ._flexrock import (  # noqa: F401  (re-exported API)
     SimulationOptions,
     SimulationResult,
     Status,
+    SupportParameters,
+    SupportRunResult,
+    simulate_on_support,
     azimuth_motion,
     combine,
     cycloidal_c_phase,
@@ -743,6 +746,11 @@ def simulate_case(case: Case) -> Result:
         :meth:`Result.write` writes what the case's [output] table asks for.
     """
     body = Body(case.body)
+    if case.support is not None:
+        # the support's engine returns the support's results too, which Result does not carry
+        raise InputError(f"{case.source}: [support]: run it with flexrock.simulate_on_support("
+                         "Body(case.body), case.support, case.motion, case.initial, case.options) "
+                         "or 'flexrock run'")
     try:
         raw = _flexrock.simulate(body, case.motion, case.initial, case.options)
     except InputError as e:

@@ -225,6 +225,8 @@ GroundMotion
       .def_readwrite("body_type", &io::Case::body_type)
       .def_readwrite("rigid", &io::Case::rigid)
       .def_readwrite("body", &io::Case::body)
+      .def_readonly("support", &io::Case::support,
+                    "SupportParameters of [support], or None: the rigid floor")
       .def_readwrite("motion", &io::Case::motion)
       .def_readwrite("horizontal", &io::Case::horizontal)
       .def_readwrite("vertical", &io::Case::vertical)
@@ -470,9 +472,13 @@ result : SimulationResult
 Returns
 -------
 str)doc");
-  m.def("summary_json", &io::summary_json, py::arg("case"), py::arg("body"), py::arg("result"),
-        py::arg("paths") = io::OutputPaths{},
-        R"doc(The summary JSON text ``flexrock run`` writes (SI units, docs/case-file.md).
+  m.def(
+      "summary_json",
+      [](const io::Case& c, const Body& b, const SimulationResult& r, const io::OutputPaths& p) {
+        return io::summary_json(c, b, r, p);
+      },
+      py::arg("case"), py::arg("body"), py::arg("result"), py::arg("paths") = io::OutputPaths{},
+      R"doc(The summary JSON text ``flexrock run`` writes (SI units, docs/case-file.md).
 
 Parameters
 ----------
@@ -485,9 +491,13 @@ paths : OutputPaths
 Returns
 -------
 str)doc");
-  m.def("write_outputs", &io::write_outputs, py::arg("case"), py::arg("body"), py::arg("result"),
-        py::arg("output_dir") = std::string(),
-        R"doc(Writes the outputs the case's [output] table asks for, atomically, summary last.
+  m.def(
+      "write_outputs",
+      [](const io::Case& c, const Body& b, const SimulationResult& r, const std::string& dir) {
+        return io::write_outputs(c, b, r, dir);
+      },
+      py::arg("case"), py::arg("body"), py::arg("result"), py::arg("output_dir") = std::string(),
+      R"doc(Writes the outputs the case's [output] table asks for, atomically, summary last.
 
 Parameters
 ----------

@@ -29,6 +29,7 @@ PYBIND11_MODULE(_flexrock, m) {
   flexrock::python::bind_excitation(m);
   flexrock::python::bind_sim(m);
   flexrock::python::bind_restraints(m);
+  flexrock::python::bind_support(m);
   flexrock::python::bind_io(m);
 #ifdef FLEXROCK_PYTHON_STUDY
   flexrock::python::bind_uncertain(m);

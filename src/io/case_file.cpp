@@ -743,6 +743,38 @@ void read_initial(Reader& r, Case& c, const Body& body) {
   }
 }
 
+// [support]: the mass, the spring as a stiffness or a frequency, the dashpot as a coefficient or
+// a damping ratio (both with the body as a rigid mass on the support), the start
+SupportParameters read_support(Reader& r, const BodyParameters& body) {
+  SupportParameters s;
+  s.mass = r.nonnegative_or("mass", -1.0, "[kg]");
+  if (s.mass < 0.0) r.fail_at(r.line(), "mass", "missing; expected a number >= 0 [kg]");
+  const double mt = s.mass + body.mass;
+  const bool by_f = r.has("frequency_hz"), by_k = r.has("stiffness");
+  if (by_f == by_k) {
+    r.fail_at(r.line(), by_f ? "stiffness" : "frequency_hz",
+              by_f ? "give either frequency_hz or stiffness, not both"
+                   : "missing; expected frequency_hz [Hz] or stiffness [N/m], > 0");
+  }
+  if (by_f) {
+    const double w = 2.0 * std::numbers::pi * r.positive("frequency_hz", "[Hz]");
+    s.stiffness = mt * w * w;
+  } else {
+    s.stiffness = r.positive("stiffness", "[N/m]");
+  }
+  if (r.has("damping_ratio") && r.has("damping"))
+    r.fail("damping", "give either damping_ratio or damping, not both");
+  if (r.has("damping")) {
+    s.damping = r.nonnegative_or("damping", 0.0, "[N s/m]");
+  } else {
+    s.damping = 2.0 * r.nonnegative_or("damping_ratio", 0.0, "[-]") * std::sqrt(s.stiffness * mt);
+  }
+  s.displacement = r.number_or("displacement", 0.0, "a number [m]");
+  s.velocity = r.number_or("velocity", 0.0, "a number [m/s]");
+  r.finish();
+  return s;
+}
+
 void read_solver(Reader& r, SimulationOptions& o) {
   detail::read_solver_keys(r, o, /*case_file=*/true);
   r.finish();
@@ -836,6 +868,23 @@ Case load_case(const std::string& path) {
   check_history_rows(top, c);
   if (auto ir = top.table_opt("initial")) read_initial(*ir, c, body);
   c.restraints = detail::read_restraints(top, c.body, c.options);
+  if (auto spr = top.table_opt("support")) {
+    c.support = read_support(*spr, c.body);
+    // what the support's engine does not model is refused here, naming the table
+    try {
+      validate_support(body, *c.support, c.initial, c.options);
+    } catch (const InputError& e) {
+      std::string why = e.what();
+      if (why.rfind("support: ", 0) == 0) why.erase(0, 9);  // the key names the table
+      top.fail_at(spr->line(), "support", why);
+    }
+    // each has its own engine: the two together are not built
+    if (!c.restraints.empty()) {
+      top.fail_at(spr->line(), "support",
+                  "a body on a support with [[restraint]] tables is not modelled yet (each runs "
+                  "on its own engine); give one or the other");
+    }
+  }
   top.finish("at the top level");
   return c;
 }
@@ -849,13 +898,26 @@ void refuse_restraints(const std::string& path, const std::string& what) {
   }
 }
 
+std::optional<SupportParameters> load_support(const std::string& path, const BodyParameters& body) {
+  const toml::table doc = parse(path);
+  Reader top(path, doc, "", 1);
+  auto spr = top.table_opt("support");
+  if (!spr) return std::nullopt;
+  return read_support(*spr, body);
+}
+
 bool has_excitation(const std::string& path) { return parse(path).contains("excitation"); }
 
 BodyParameters load_body(const std::string& path, std::string* type,
-                         std::vector<std::string>* files) {
+                         std::vector<std::string>* files, bool support_ok) {
   const toml::table doc = parse(path);
   std::vector<std::string> read{path};
   Reader top(path, doc, "", 1);
+  if (!support_ok && doc.contains("support")) {
+    top.fail_at(line_of(*doc.get("support")), "support",
+                "a body on a support runs with `flexrock run` only: spectra, sweeps, fragility and "
+                "qualification on a support are not built; give the body without [support]");
+  }
   Reader br = top.table("body");
   std::string t;
   bool rigid = false;
@@ -928,6 +990,20 @@ std::string pulse_key_reference() {
   s += "| `none` | no | (no amplitude, units, frequency) | no | no motion: free rocking; "
        "horizontal only |\n"
        "<!-- end: written by `flexrock keys --markdown` -->\n";
+  return s;
+}
+
+std::string support_key_reference() {
+  std::string s =
+      "<!-- begin: written by `flexrock keys --markdown` from the table of support keys "
+      "(include/flexrock/io/case_file.hpp); edit the table, not these lines -->\n"
+      "| key | unit | default | meaning |\n"
+      "|---|---|---|---|\n";
+  for (const SupportKey& k : kSupportKeys) {
+    s.append("| `").append(k.name).append("` | ").append(k.unit).append(" | ");
+    s.append(k.default_text).append(" | ").append(k.doc).append(" |\n");
+  }
+  s += "<!-- end: written by `flexrock keys --markdown` -->\n";
   return s;
 }
 

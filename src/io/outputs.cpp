@@ -432,6 +432,27 @@ const HistoryColumn kHistoryColumns[] = {
      member<&History::lift>},
 };
 
+// the support's columns (a run on a [support] only), after the body's
+struct SupportColumn {
+  const char* name;
+  const char* unit;
+  const char* doc;
+  std::vector<double> SupportHistory::*values;
+};
+
+const SupportColumn kSupportColumns[] = {
+    {"support_u_m", "m", "with `[support]` only: the support's displacement from the ground",
+     &SupportHistory::displacement},
+    {"support_u_dot_m_per_s", "m/s", "with `[support]` only: its velocity relative to the ground",
+     &SupportHistory::velocity},
+    {"support_acc_m_per_s2", "m/s^2",
+     "with `[support]` only: its absolute acceleration (the body's base)",
+     &SupportHistory::acceleration},
+    {"support_force_N", "N",
+     "with `[support]` only: the force of its spring and dashpot, k u + c u_dot",
+     &SupportHistory::force},
+};
+
 // a modal column's name for mode `i` (1-based); appended, not concatenated: GCC 12 warns
 // (-Wrestrict) on "q" + std::to_string(i)
 std::string column_name(const HistoryColumn& c, const std::string& i) {
@@ -482,13 +503,24 @@ std::string time_history_column_reference() {
     name.append("`");
     s += "| " + name + " | " + c.unit + " | " + c.doc + " |\n";
   }
+  for (const SupportColumn& c : kSupportColumns)
+    s += std::string("| `") + c.name + "` | " + c.unit + " | " + c.doc + " |\n";
   s += "<!-- end: written by `flexrock keys --markdown` -->\n";
   return s;
 }
 
-void write_time_history(std::ostream& out, const SimulationResult& r, const Body& body) {
-  put_header(out, time_history_columns(r.history.modes));
-  const std::vector<std::vector<double>> cols = time_history_values(r, body);
+void write_time_history(std::ostream& out, const SimulationResult& r, const Body& body,
+                        const SupportRunResult* support) {
+  std::vector<std::string> names = time_history_columns(r.history.modes);
+  std::vector<std::vector<double>> cols = time_history_values(r, body);
+  if (support) {
+    for (const SupportColumn& c : kSupportColumns) {
+      names.emplace_back(c.name);
+      cols.push_back(support->history.*c.values);
+      cols.back().resize(r.history.size(), std::nan(""));
+    }
+  }
+  put_header(out, names);
   std::vector<double> row(cols.size());
   for (std::size_t k = 0; k < r.history.size(); ++k) {
     for (std::size_t j = 0; j < cols.size(); ++j) row[j] = cols[j][k];
@@ -602,7 +634,7 @@ void write_events(std::ostream& out, const SimulationResult& r) {
 }
 
 std::string summary_json(const Case& c, const Body& body, const SimulationResult& r,
-                         const OutputPaths& paths) {
+                         const OutputPaths& paths, const SupportRunResult* support) {
   using json = Json;
   const BodyParameters& p = body.params();
   const Extremes& x = r.extremes;
@@ -746,6 +778,22 @@ std::string summary_json(const Case& c, const Body& body, const SimulationResult
          o.contact_tangential_stiffness > 0.0 ? json(o.contact_tangential_stiffness) : json()},
         {"max_contact_force_N", x.max_contact_force}};
   }
+  if (support && c.support) {
+    // only on a support, so that a run on the floor writes what it always did
+    const SupportParameters& sp = *c.support;
+    const SupportFrequencies f = support_frequencies(body, sp);
+    const SupportExtremes& se = support->support;
+    j["support"] = {{"mass_kg", sp.mass},
+                    {"stiffness_N_per_m", sp.stiffness},
+                    {"damping_N_s_per_m", sp.damping},
+                    {"frequency_hz", f.frequency_hz},
+                    {"damping_ratio", f.damping_ratio},
+                    {"max_displacement_m", se.max_displacement},
+                    {"max_velocity_m_per_s", se.max_velocity},
+                    {"max_force_N", se.max_force},
+                    {"final_displacement_m", se.final_displacement},
+                    {"final_velocity_m_per_s", se.final_velocity}};
+  }
   auto jpath = [](const std::string& s) { return s.empty() ? json() : json(s); };
   j["outputs"] = {{"time_history", jpath(paths.time_history)},
                   {"summary", jpath(paths.summary)},
@@ -768,7 +816,7 @@ void check_output_paths(const Case& c, const OutputPaths& paths) {
 }
 
 OutputPaths write_outputs(const Case& c, const Body& body, const SimulationResult& r,
-                          const std::string& output_dir) {
+                          const std::string& output_dir, const SupportRunResult* support) {
   const OutputPaths paths = output_paths(c, output_dir);
   check_output_paths(c, paths);
   // results that are not finite are no results: no file of them, not even a partial set
@@ -794,13 +842,13 @@ OutputPaths write_outputs(const Case& c, const Body& body, const SimulationResul
   }
   if (!paths.time_history.empty()) {
     write_atomically(paths.time_history,
-                     [&](std::ostream& out) { write_time_history(out, r, body); });
+                     [&](std::ostream& out) { write_time_history(out, r, body, support); });
   }
   if (!paths.events.empty()) {
     write_atomically(paths.events, [&](std::ostream& out) { write_events(out, r); });
   }
   if (!paths.summary.empty()) {
-    const std::string text = summary_json(c, body, r, paths);
+    const std::string text = summary_json(c, body, r, paths, support);
     write_atomically(paths.summary, [&](std::ostream& out) { out << text; });
   }
   return paths;

@@ -63,6 +63,27 @@ PY
     [ "$status" = '"overturned"' ] || fail "column: $status"
     expect_in "$WORK/out" "OVERTURNED"
     ;;
+  statue_on_platform)
+    # the isolation platform at 0.5 Hz keeps the statue down; tuned to 1 Hz it resonates with the
+    # record and the statue overturns (on the floor it rocks and stays: museum_statue)
+    [ "$status" = '"completed"' ] || fail "statue on platform: $status"
+    [ "$uplifted" = false ] || fail "the isolated statue uplifts"
+    head -1 "$WORK/res/$NAME.csv" | grep -q ',support_u_m,support_u_dot_m_per_s,support_acc_m_per_s2,support_force_N$' ||
+      fail "no support columns: $(head -1 "$WORK/res/$NAME.csv")"
+    expect_in "$WORK/out" "support peaks:"
+    python3 - "$S" <<'PY' || fail "support summary"
+import json, sys
+s = json.load(open(sys.argv[1]))["support"]
+assert abs(s["frequency_hz"] - 0.5) < 1e-12 and abs(s["damping_ratio"] - 0.1) < 1e-12, s
+assert 0.05 < s["max_displacement_m"] < 0.5, s
+PY
+    sed -e 's/^frequency_hz = 0.5 /frequency_hz = 1.0 /' \
+        -e "s|^file = \"\\.\\./|file = \"$SRC/examples/cases/../|" "$CASE" >"$WORK/tuned_platform.toml"
+    grep -q '^frequency_hz = 1.0 ' "$WORK/tuned_platform.toml" || fail "could not tune the platform"
+    run "$FLEXROCK" run -q -o "$WORK/res" "$WORK/tuned_platform.toml"
+    [ "$(json_get "$WORK/res/tuned_platform.summary.json" outcome.status)" = '"overturned"' ] ||
+      fail "the statue on a 1 Hz platform does not overturn"
+    ;;
   *) fail "unknown example $NAME" ;;
 esac
 echo "example $NAME: ok"

@@ -44,6 +44,8 @@ import mpmath as mp
 import numpy as np
 import sympy as sp
 
+import support
+
 G_STD = 9.80665
 mp.mp.dps = 30
 
@@ -3401,6 +3403,8 @@ def main():
     print('  compliant contact potential: %s' % sres['compliant_potential'], file=sys.stderr)
     sres['restraints'] = __import__('restraints').restraints()[0]
     print('  restraints (tendons, anchors): %s' % sres['restraints'], file=sys.stderr)
+    sres['support'], support_refs = support.support_checks()
+    print('  block on a moving support: %s' % sres['support'], file=sys.stderr)
     failed = [(n, k) for n, r in sres.items() for k, v in r.items()
               if (isinstance(v, bool) and not v) or (isinstance(v, list) and v)]
     print('symbolic checks (n=0..%d): %s  [%.1f s]' % (args.symbolic_n, 'ALL PASS' if not failed else
@@ -3541,8 +3545,9 @@ def main():
         fh.write('{"g": 9.80665, "seed": %d, "cases": [\n' % args.seed)
         fh.write(',\n'.join(fmt(c) for c in cases))
         fh.write('\n], "rigid_block_friction": %s, "sliding_pulses": %s, "compliant_potential": %s, '
-                 '"friction_theta0": %s}\n' %
-                 (fmt(rigid_friction), fmt(pulses), fmt(compliant_refs), fmt(theta0_friction)))
+                 '"friction_theta0": %s, "support": %s}\n' %
+                 (fmt(rigid_friction), fmt(pulses), fmt(compliant_refs), fmt(theta0_friction),
+                  json.dumps(support_refs)))
     json.load(open(args.out))
     print('numeric cases: %d, max relative (a)-vs-(b) difference %.2e (%s)' %
           (len(cases), float(chk.maxerr), chk.where), file=sys.stderr)

@@ -18,6 +18,7 @@
 #include "flexrock/model/body.hpp"
 #include "flexrock/sim/restraints.hpp"
 #include "flexrock/sim/simulate.hpp"
+#include "flexrock/sim/support.hpp"
 
 namespace flexrock::io {
 
@@ -91,6 +92,37 @@ inline constexpr PairKey kPairKeys[] = {
 /// kPairKeys with its begin and end marker lines (`flexrock keys --markdown`).
 std::string pair_key_reference();
 
+/// One key of [support] (docs/theory.md §24), from the table that the reader, `flexrock keys`
+/// and docs/case-file.md share.
+struct SupportKey {
+  const char* name;
+  const char* unit;
+  const char* default_text;
+  const char* doc;
+};
+
+/// The keys of [support], in the order of the docs.
+inline constexpr SupportKey kSupportKeys[] = {
+    {"mass", "kg", "required",
+     "m_s: the support's mass, >= 0 (0: a massless spring and dashpot under the body)"},
+    {"frequency_hz", "Hz", "required (or `stiffness`)",
+     "the frequency of the support with the body as a rigid mass on it, sqrt(k / (m_s + M)) / 2 "
+     "pi, > 0"},
+    {"stiffness", "N/m", "required (or `frequency_hz`)",
+     "k: the horizontal spring from the ground to the support, > 0"},
+    {"damping_ratio", "-", "0",
+     "the damping ratio of the support with the body as a rigid mass on it, c / (2 sqrt(k (m_s + "
+     "M))), >= 0 (or `damping`)"},
+    {"damping", "N s/m", "0", "c: the horizontal dashpot from the ground to the support, >= 0"},
+    {"displacement", "m", "0", "u(0): the support's displacement from the ground at the start"},
+    {"velocity", "m/s", "0",
+     "u_dot(0): the support's velocity relative to the ground at the start"},
+};
+
+/// The key reference of [support], as the Markdown table of docs/case-file.md, written from
+/// kSupportKeys with its begin and end marker lines (`flexrock keys --markdown`).
+std::string support_key_reference();
+
 /// A case, loaded and checked: everything a run needs.
 struct Case {
   std::string source;       // path of the case file as given
@@ -116,6 +148,9 @@ struct Case {
   std::vector<std::string> input_files;  // the case file and its record files
   std::vector<BodyKeyRead> body_keys;    // the [body] keys read, in the table's order
   std::vector<Restraint> restraints;     // [[restraint]] tables (docs/theory.md §26); empty: none
+  // [support]: the body stands on a support that moves with it (docs/theory.md §24); none: the
+  // rigid floor
+  std::optional<SupportParameters> support;
 };
 
 /// The ground motion of a case with a record pair at azimuth `beta_deg` [deg] (from H1 toward H2):
@@ -143,8 +178,14 @@ Case load_case(const std::string& path);
 /// Reads only the [body] table of a case (or body) file: for `flexrock params`. Other tables are
 /// ignored. `type` receives body.type; `files`, when given, gets every file read appended (the
 /// file itself, nodes and shapes files). Throws InputError like load_case.
+/// A file with a [support] table is refused unless `support_ok` (the studies run bodies on the
+/// rigid floor only; `flexrock params` reads the support with load_support).
 BodyParameters load_body(const std::string& path, std::string* type = nullptr,
-                         std::vector<std::string>* files = nullptr);
+                         std::vector<std::string>* files = nullptr, bool support_ok = false);
+
+/// The [support] of a case file with `body` standing on it, or none (for `flexrock params`).
+/// Throws InputError like load_case.
+std::optional<SupportParameters> load_support(const std::string& path, const BodyParameters& body);
 
 /// Throws InputError when the case (or body) file at `path` has [[restraint]] tables: `what`
 /// (a study, a qualification) would run the body without them. Restraints run with `flexrock run`.

@@ -47,7 +47,9 @@ std::vector<std::vector<double>> time_history_values(const SimulationResult& res
 std::string time_history_column_reference();
 
 /// The time history as CSV text (a header row, then one row per output time).
-void write_time_history(std::ostream& out, const SimulationResult& result, const Body& body);
+/// With `support` (a run on a [support]), the support's columns follow the body's.
+void write_time_history(std::ostream& out, const SimulationResult& result, const Body& body,
+                        const SupportRunResult* support = nullptr);
 
 /// Column names of the event log, from its table of columns (src/io/outputs.cpp): time_s,
 /// event, edge, theta_rad, theta_dot_before_rad_per_s, theta_dot_after_rad_per_s, energy_loss_J,
@@ -76,8 +78,9 @@ struct OutputPaths {
 };
 
 /// The summary JSON document (pretty-printed, keys as documented).
+/// With `support` (a run on a [support]), a "support" object holds its parameters and peaks.
 std::string summary_json(const Case& c, const Body& body, const SimulationResult& result,
-                         const OutputPaths& paths);
+                         const OutputPaths& paths, const SupportRunResult* support = nullptr);
 
 /// The output paths of a case: `c.output` with relative paths taken relative to `output_dir`.
 OutputPaths output_paths(const Case& c, const std::string& output_dir);
@@ -93,6 +96,6 @@ void check_output_paths(const Case& c, const OutputPaths& paths);
 /// old event log, but never a summary beside files of another run. Relative paths are taken
 /// relative to `output_dir` (created if missing). Returns the paths written.
 OutputPaths write_outputs(const Case& c, const Body& body, const SimulationResult& result,
-                          const std::string& output_dir);
+                          const std::string& output_dir, const SupportRunResult* support = nullptr);
 
 }  // namespace flexrock::io
