@@ -15,6 +15,7 @@
 
 #include "flexrock/excitation/ground_motion.hpp"
 #include "flexrock/io/records.hpp"
+#include "flexrock/model/assemblies.hpp"
 #include "flexrock/model/body.hpp"
 #include "flexrock/sim/simulate.hpp"
 
@@ -114,6 +115,8 @@ struct Case {
   std::string scaled_to;  // the target intensity excitation_scale was chosen for ("PGA 0.3 g")
   std::vector<std::string> input_files;  // the case file and its record files
   std::vector<BodyKeyRead> body_keys;    // the [body] keys read, in the table's order
+  std::optional<RockingFrame> frame;     // body.type = "rocking_frame": the frame (`body` is its
+                                         // equivalent rigid body; run it with simulate_frame)
 };
 
 /// The ground motion of a case with a record pair at azimuth `beta_deg` [deg] (from H1 toward H2):
@@ -140,9 +143,11 @@ Case load_case(const std::string& path);
 
 /// Reads only the [body] table of a case (or body) file: for `flexrock params`. Other tables are
 /// ignored. `type` receives body.type; `files`, when given, gets every file read appended (the
-/// file itself, nodes and shapes files). Throws InputError like load_case.
+/// file itself, nodes and shapes files); `frame`, when given, the frame of a rocking_frame
+/// (else empty). Throws InputError like load_case.
 BodyParameters load_body(const std::string& path, std::string* type = nullptr,
-                         std::vector<std::string>* files = nullptr);
+                         std::vector<std::string>* files = nullptr,
+                         std::optional<RockingFrame>* frame = nullptr);
 
 /// The key reference of the body types (body.type), as the Markdown tables of docs/case-file.md,
 /// written from the table of body types (model/builders.hpp) with its begin and end marker lines
