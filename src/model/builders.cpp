@@ -620,7 +620,8 @@ std::vector<BodyKind> make_body_kinds() {
        {positive("column_width", "m", "full width of a column's footprint"),
         positive("column_height", "m", "full height of a column"),
         positive("column_mass", "kg", "mass of one column"),
-        count_or("count", 2.0, "number of equal columns, >= 2"),
+        {"count", "-", BodyKeyValue::kInteger, BodyKeyRule::kPositive, false, 2.0,
+         "2, integer >= 2", "number of equal columns"},
         nonnegative_or("beam_mass", "kg", 0.0, "the freely supported rigid cap beam")},
        [](const BodyArgs& a) {
          RockingFrame f;
