@@ -78,3 +78,18 @@ def test_a_frame_case_refuses_friction(tmp_path):
     path.write_text(CASE + "[solver]\nfriction_coefficient = 0.6\n")
     with pytest.raises(fr.InputError, match="sliding of a rocking frame"):
         fr.load_case(str(path))
+
+
+def test_studies_refuse_a_frame(cli, tmp_path):
+    import subprocess
+
+    (tmp_path / "bent.toml").write_text(CASE)
+    spectrum = tmp_path / "spectrum.toml"
+    spectrum.write_text('body = "bent.toml"\n[spectrum]\npulse = "one_sine"\naxes = "normalized"\n'
+                        'amplitudes = { start = 1.0, stop = 2.0, count = 2 }\n'
+                        'frequencies = { start = 1.0, stop = 2.0, count = 2 }\n')
+    p = subprocess.run([str(cli), "spectrum", str(spectrum), "-o", str(tmp_path / "s.csv")],
+                       capture_output=True, text=True)
+    assert p.returncode == 2, p.stderr
+    assert "do not run rocking frames yet" in p.stderr
+    assert not (tmp_path / "s.csv").exists()
