@@ -76,6 +76,7 @@ from ._flexrock import (  # noqa: F401  (re-exported API)
     record_formats,
     rotd,
     run_azimuths,
+    stack_uplift_bands,
     time_history_columns,
 )
 

@@ -93,3 +93,16 @@ def test_studies_refuse_a_frame(cli, tmp_path):
     assert p.returncode == 2, p.stderr
     assert "do not run rocking frames yet" in p.stderr
     assert not (tmp_path / "s.csv").exists()
+
+
+def test_stack_uplift_bands():
+    # identical blocks start as one at b/(2h), the single block of twice the height
+    bands = {p: (lo, hi) for p, lo, hi in fr.stack_uplift_bands(0.5, 2.0, 300.0, 0.5, 2.0, 300.0)}
+    assert bands["rest"] == (0.0, pytest.approx(0.125, rel=1e-15))
+    assert bands["as_one"][0] == pytest.approx(0.125, rel=1e-15)
+    assert bands["top_alone"] == (math.inf, math.inf)
+    # a slender top on a squat bottom: the top alone at its own b/h
+    bands = {p: (lo, hi) for p, lo, hi in fr.stack_uplift_bands(2.0, 1.0, 1000.0, 0.2, 2.0, 50.0)}
+    assert bands["top_alone"][0] == pytest.approx(0.1, rel=1e-15)
+    with pytest.raises(fr.InputError, match="top width"):
+        fr.stack_uplift_bands(0.5, 1.0, 1.0, 0.6, 1.0, 1.0)
