@@ -77,3 +77,13 @@ target_include_directories(flexrock_automaton_transitions_tests PRIVATE ${PROJEC
 # restraints (tendons, anchors) against tools/derive/restraints.py's closed forms
 flexrock_add_test(flexrock_restraints_tests SOURCES unit/restraints_test.cpp LABEL unit)
 target_link_libraries(flexrock_restraints_tests PRIVATE nlohmann_json::nlohmann_json)
+# rocking frames and stacked blocks (theory §25): against the derivation's numbers and brute force
+add_executable(flexrock_assemblies_tests unit/assemblies_test.cpp)
+target_link_libraries(flexrock_assemblies_tests PRIVATE flexrock::core flexrock::io
+                      nlohmann_json::nlohmann_json GTest::gtest GTest::gtest_main flexrock_warnings)
+target_compile_definitions(flexrock_assemblies_tests PRIVATE
+                           FLEXROCK_SOURCE_DIR="${PROJECT_SOURCE_DIR}"
+                           FLEXROCK_BINARY_DIR="${PROJECT_BINARY_DIR}")
+flexrock_apply_sanitizers(flexrock_assemblies_tests)
+gtest_discover_tests(flexrock_assemblies_tests PROPERTIES LABELS unit
+                     FIXTURES_REQUIRED sympy_reference DISCOVERY_TIMEOUT 60)

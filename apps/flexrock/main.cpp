@@ -32,6 +32,7 @@
 #include "flexrock/io/restraint_io.hpp"
 #include "flexrock/io/study_files.hpp"
 #include "flexrock/sim/restraints.hpp"
+#include "flexrock/sim/rocking_frame.hpp"
 #include "flexrock/sim/simulate.hpp"
 #include "flexrock/sim/step_cost.hpp"
 #include "flexrock/sim/support.hpp"
@@ -83,6 +84,7 @@ SimulationResult run_with_progress(const Body& body, const io::Case& c, bool sho
       *support = simulate(body, *c.support, c.motion, c.initial, options);
       return support->body;
     }
+    if (c.frame) return simulate_frame(*c.frame, c.motion, c.initial, options);
     if (c.restraints.empty() || !tied) return simulate(body, c.motion, c.initial, options);
     *tied = simulate_restrained(body, c.restraints, c.motion, c.initial, options);
     return (*tied)->result;
@@ -312,6 +314,34 @@ void print_inputs(const io::Case& c) {
         c.excitation_scale == 1.0 ? std::string()
                                   : fmt::format(", run scaled by {:.6g}", c.excitation_scale));
   }
+}
+
+// a rocking frame's constants and its equivalent rigid body (docs/theory.md §25)
+void print_frame(const RockingFrame& f, const char* indent) {
+  const FrameConstants k = frame_constants(f);
+  fmt::print(
+      "{}rocking frame: {} columns {:.6g} m wide, {:.6g} m high, {:.6g} kg each; beam {:.6g} "
+      "kg (gamma = m_b/(N m) = {:.6g})\n",
+      indent, f.count, f.column_width, f.column_height, f.column_mass, f.beam_mass, k.gamma);
+  fmt::print(
+      "{}  alpha = {:.6g} rad ({:.4g} deg), the columns'; static uplift at g tan(alpha) = "
+      "{:.6g} m/s^2\n",
+      indent, k.alpha, k.alpha * 180.0 / std::numbers::pi, f.gravity * std::tan(k.alpha));
+  fmt::print(
+      "{}  p = {:.6g} rad/s (one column {:.6g}); impact ratio r = {:.6g} (one column {:.6g})\n",
+      indent, k.p, k.column_p, k.r, k.column_r);
+  fmt::print(
+      "{}  equivalent rigid body: M = {:.6g} kg, h = {:.6g} m, b1 = b2 = {:.6g} m, zeta^2 = "
+      "{:.6g}\n",
+      indent, k.mass_eq, k.height_eq, k.height_eq * std::tan(k.alpha), k.zeta2_eq);
+  fmt::print(
+      "{}  reactions: the frame's = the equivalent body's + {:.6g} kg x (base acceleration + "
+      "g); the frame's mass {:.6g} kg\n",
+      indent, k.reaction_mass, k.mass_total);
+  fmt::print(
+      "{}  not modelled: sliding (friction_coefficient is refused) and flight (a run stops "
+      "where the equivalent body's floor reaction reaches zero)\n",
+      indent);
 }
 
 // what reading changed in the data, on stderr
@@ -589,6 +619,7 @@ int cmd_check(const std::vector<std::string>& args, bool quiet) {
                    c.output.time_history.empty() ? "" : c.output.time_history + " ",
                    c.output.events.empty() ? "" : c.output.events + " ", c.output.summary);
         print_inputs(c);
+        if (c.frame) print_frame(*c.frame, "  ");
         print_records(c);
         if (c.support) {
           const SupportFrequencies f = support_frequencies(body, *c.support);
@@ -630,8 +661,9 @@ int cmd_params(const std::string& file) {
   std::string type;
   BodyParameters p;
   std::optional<SupportParameters> support;
+  std::optional<RockingFrame> frame;
   try {
-    p = io::load_body(file, &type, nullptr, /*support_ok=*/true);
+    p = io::load_body(file, &type, nullptr, &frame, /*support_ok=*/true);
     support = io::load_support(file, p);
   } catch (const InputError& e) {
     return error(e.what(), kExitBadInput);
@@ -639,6 +671,8 @@ int cmd_params(const std::string& file) {
   const Body body(p);
   const double g = p.gravity;
   fmt::print("body: {} from {}\n", type, file);
+  if (frame) print_frame(*frame, "");
+  if (frame) fmt::print("its equivalent rigid body:\n");
   fmt::print("  mass M                    {:.6g} kg\n", p.mass);
   fmt::print("  c.g. height h             {:.6g} m\n", p.height);
   fmt::print("  b1, b2                    {:.6g} m, {:.6g} m (c.g. to tipping points 1, 2)\n", p.b1,

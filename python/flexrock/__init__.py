@@ -91,6 +91,7 @@ from ._flexrock import (  # noqa: F401  (re-exported API)
     record_formats,
     rotd,
     run_azimuths,
+    stack_uplift_bands,
     time_history_columns,
 )
 
@@ -752,7 +753,8 @@ def simulate_case(case: Case) -> Result:
                          "Body(case.body), case.support, case.motion, case.initial, case.options) "
                          "or 'flexrock run'")
     try:
-        raw = _flexrock.simulate(body, case.motion, case.initial, case.options)
+        # a rocking frame runs as its equivalent body within the frame's model (docs/theory.md §25)
+        raw = _flexrock._simulate_case(case)
     except InputError as e:
         raise InputError(f"{case.source}: {e}") from None
     return Result(raw, body, case)

@@ -2574,6 +2574,29 @@ def spectrum_pulse_names() -> list[str]:
     list of str
     """
 
+def stack_uplift_bands(bottom_width: float, bottom_height: float, bottom_mass: float, top_width: float, top_height: float, top_mass: float) -> list[tuple[str, float, float]]:
+    """How a uniform block standing centred on another starts to move from rest under a
+    constant horizontal floor acceleration lambda g (docs/theory.md §25): the band [lo, hi) of
+    lambda over which each pattern is the consistent one.
+
+    Parameters
+    ----------
+    bottom_width, bottom_height : float
+        [m] full width and height of the bottom block.
+    bottom_mass : float
+        [kg]
+    top_width, top_height : float
+        [m] of the top block, top_width <= bottom_width.
+    top_mass : float
+        [kg]
+
+    Returns
+    -------
+    list of (str, float, float)
+        (pattern, lo, hi) for "rest", "top_alone", "as_one", "separately" and
+        "separately_opposite"; a pattern that never occurs has lo = hi = inf.
+    """
+
 def summarize(body: Body, result: SimulationResult) -> RunSummary:
     """The study outcome class and peaks of a finished simulation.
 

@@ -18,6 +18,7 @@
 #include "flexrock/io/case_file.hpp"
 #include "flexrock/io/outputs.hpp"
 #include "flexrock/io/records.hpp"
+#include "flexrock/sim/rocking_frame.hpp"
 #include "flexrock/study/azimuths.hpp"
 
 namespace py = pybind11;
@@ -176,6 +177,15 @@ Record
 Returns
 -------
 list of RecordFormat)doc");
+  // a loaded case's run: a rocking frame's through simulate_frame (its model's stops), any other
+  // body's through simulate
+  m.def(
+      "_simulate_case",
+      [](const io::Case& c) {
+        return c.frame ? simulate_frame(*c.frame, c.motion, c.initial, c.options)
+                       : simulate(Body(c.body), c.motion, c.initial, c.options);
+      },
+      py::arg("case"), py::call_guard<py::gil_scoped_release>());
   m.def("_read_record", &io::read_record, py::arg("path"), py::arg("format"), py::arg("dt"),
         py::arg("units"));
   m.def(

@@ -10,8 +10,11 @@
 #include <optional>
 #include <sstream>
 #include <string>
+#include <tuple>
+#include <vector>
 
 #include "bindings.hpp"
+#include "flexrock/model/assemblies.hpp"
 #include "flexrock/model/body.hpp"
 #include "flexrock/model/builders.hpp"
 
@@ -174,6 +177,40 @@ keys : dict of str to float
 Returns
 -------
 BodyParameters)doc");
+
+  m.def(
+      "stack_uplift_bands",
+      [](double bottom_width, double bottom_height, double bottom_mass, double top_width,
+         double top_height, double top_mass) {
+        const BlockStack s{bottom_width, bottom_height, bottom_mass,
+                           top_width,    top_height,    top_mass};
+        std::vector<std::tuple<std::string, double, double>> out;
+        for (const StackBand& b : stack_uplift_bands(s))
+          out.emplace_back(to_string(b.pattern), b.lo, b.hi);
+        return out;
+      },
+      py::arg("bottom_width"), py::arg("bottom_height"), py::arg("bottom_mass"),
+      py::arg("top_width"), py::arg("top_height"), py::arg("top_mass"),
+      R"doc(How a uniform block standing centred on another starts to move from rest under a
+constant horizontal floor acceleration lambda g (docs/theory.md §25): the band [lo, hi) of
+lambda over which each pattern is the consistent one.
+
+Parameters
+----------
+bottom_width, bottom_height : float
+    [m] full width and height of the bottom block.
+bottom_mass : float
+    [kg]
+top_width, top_height : float
+    [m] of the top block, top_width <= bottom_width.
+top_mass : float
+    [kg]
+
+Returns
+-------
+list of (str, float, float)
+    (pattern, lo, hi) for "rest", "top_alone", "as_one", "separately" and
+    "separately_opposite"; a pattern that never occurs has lo = hi = inf.)doc");
 
   py::class_<LumpedNode>(m, "LumpedNode")
       .def(py::init([](double x, double y, double mass, double rotary_inertia) {

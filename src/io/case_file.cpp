@@ -23,6 +23,7 @@
 #include "flexrock/io/files.hpp"
 #include "flexrock/io/records.hpp"
 #include "flexrock/model/builders.hpp"
+#include "flexrock/sim/rocking_frame.hpp"
 #include "modal_tables.hpp"
 #include "restraint_reader.hpp"
 #include "table_reader.hpp"
@@ -806,6 +807,47 @@ void check_history_rows(Reader& top, const Case& c) {
                   (c.options.t_end >= 0.0 ? "solver.t_end" : "excitation (or solver.t_end)"));
 }
 
+// a rocking frame: the frame's numbers from [body] (read again: the table's builder gave its
+// equivalent body), and the options its model does not cover refused where they are written
+RockingFrame frame_of(Reader& top) {
+  Reader br = top.table("body");
+  const BodyKind& kind = body_kind("rocking_frame");
+  BodyArgs args;
+  for (const BodyKey& k : kind.keys) args.keys.emplace(k.name, read_body_number(br, k));
+  RockingFrame f;
+  f.column_width = args.at("column_width");
+  f.column_height = args.at("column_height");
+  f.column_mass = args.at("column_mass");
+  f.count = static_cast<int>(args.at("count"));
+  f.beam_mass = args.at("beam_mass");
+  return f;
+}
+
+void read_frame(Reader& top, Case& c) {
+  const RockingFrame f = frame_of(top);
+  c.frame = f;
+  try {
+    validate_frame_options(c.options);
+  } catch (const InputError& e) {
+    const toml::node* sv = top.node("solver");
+    const char* key =
+        std::isfinite(c.options.friction_coefficient) ? "friction_coefficient" : "contact_model";
+    const toml::node* n = sv && sv->is_table() ? sv->as_table()->get(key) : nullptr;
+    top.fail_at(n ? line_of(*n) : 1, std::string("solver.") + key, e.what());
+  }
+  const FrameConstants fc = frame_constants(f);
+  c.notes.push_back(
+      "rocking_frame: run as its equivalent rigid body (docs/theory.md §25): p = " + num(fc.p) +
+      " rad/s, alpha = " + num(fc.alpha) + " rad, impact ratio r = " + num(fc.r) +
+      (fc.reaction_mass > 0.0
+           ? "; the floor reactions, base shear and friction demand reported are the equivalent "
+             "body's: the frame's are larger by " +
+                 num(fc.reaction_mass) + " kg x (base acceleration + g), " +
+                 num(100.0 * fc.reaction_mass / fc.mass_total) + " % of the frame's weight at rest"
+           : "; without a beam mass the equivalent body is the columns side by side, its "
+             "reactions the frame's"));
+}
+
 toml::table parse(const std::string& path) { return detail::parse_toml(path, "case"); }
 
 }  // namespace
@@ -886,6 +928,20 @@ Case load_case(const std::string& path) {
     }
   }
   top.finish("at the top level");
+  if (c.body_type == "rocking_frame") {
+    // the frame runs on its own engine: a support or restraints under it are not built
+    if (c.support) {
+      top.fail_at(line_of(*doc.get("support")), "support",
+                  "a rocking_frame on a support is not modelled yet; give the frame without "
+                  "[support]");
+    }
+    if (!c.restraints.empty()) {
+      top.fail_at(line_of(*doc.get("restraint")), "restraint",
+                  "a rocking_frame with [[restraint]] tables is not modelled yet; give the frame "
+                  "without them");
+    }
+    read_frame(top, c);
+  }
   return c;
 }
 
@@ -909,7 +965,8 @@ std::optional<SupportParameters> load_support(const std::string& path, const Bod
 bool has_excitation(const std::string& path) { return parse(path).contains("excitation"); }
 
 BodyParameters load_body(const std::string& path, std::string* type,
-                         std::vector<std::string>* files, bool support_ok) {
+                         std::vector<std::string>* files, std::optional<RockingFrame>* frame,
+                         bool support_ok) {
   const toml::table doc = parse(path);
   std::vector<std::string> read{path};
   Reader top(path, doc, "", 1);
@@ -924,6 +981,10 @@ BodyParameters load_body(const std::string& path, std::string* type,
   std::vector<std::string> notes;
   BodyParameters p = read_body(br, t, rigid, notes);
   if (type) *type = t;
+  if (frame) {
+    frame->reset();
+    if (t == "rocking_frame") *frame = frame_of(top);
+  }
   if (files) files->insert(files->end(), read.begin(), read.end());
   return p;
 }

@@ -352,6 +352,11 @@ QualifyFile load_qualify_file(const std::string& path) {
     std::vector<std::string> files;
     refuse_restraints(f.body_source, "a qualification");
     f.body = load_body(f.body_source, &f.body_type, &files);
+    FLEXROCK_THROW_UNLESS(f.body_type != "rocking_frame",
+                          f.body_source +
+                              ": [body] type 'rocking_frame': qualify does not run rocking frames "
+                              "yet; run it as a case (flexrock run), which checks the frame's "
+                              "contacts");
     for (const std::string& b : files) {
       if (b == path) continue;
       f.input_files.push_back(b);

@@ -13,6 +13,7 @@
 #include <string_view>
 #include <vector>
 
+#include "flexrock/core/error.hpp"
 #include "flexrock/io/study_files.hpp"
 #include "table_reader.hpp"
 
@@ -33,6 +34,16 @@ std::string field(double v);
 std::string join(const std::vector<std::string>& v, const char* sep = ", ");
 // a regular file's bytes (read_input_file refuses FIFOs and devices)
 std::string file_bytes(const std::string& path);
+
+// a body file of a study: refuses a rocking_frame, whose runs the studies do not yet make within
+// the frame's model (docs/theory.md §25: its contact checks and stops); `type` from load_body
+inline void refuse_frame(const std::string& type, const std::string& path) {
+  FLEXROCK_THROW_UNLESS(type != "rocking_frame",
+                        path +
+                            ": [body] type 'rocking_frame': studies (spectra, sweeps, "
+                            "fragility, qualify) do not run rocking frames yet; run it as a "
+                            "case (flexrock run), which checks the frame's contacts");
+}
 
 long long integer(const Value& v);
 double real(const Value& v);

@@ -58,7 +58,9 @@ SpectrumFile load_spectrum_file(const std::string& path) {
   }
   f.input_files.push_back(path);
   refuse_restraints(f.body_source, "a spectrum study");
-  f.body = load_body(f.body_source, nullptr, &f.input_files);
+  std::string body_type;
+  f.body = load_body(f.body_source, &body_type, &f.input_files);
+  refuse_frame(body_type, f.body_source);
   f.hash = fnv1a(file_bytes(path));
   if (!inline_body) f.hash = fnv1a(file_bytes(f.body_source), f.hash);
   SimulationOptions solver = study::study_solver_defaults();

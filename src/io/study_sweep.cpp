@@ -81,7 +81,9 @@ SweepManifest load_sweep_manifest(const std::string& path) {
     b.finish("for a [[body]] (see docs/studies.md)");
     try {
       refuse_restraints(full, "a sweep");
-      sb.body = load_body(full, nullptr, &m.input_files);
+      std::string body_type;
+      sb.body = load_body(full, &body_type, &m.input_files);
+      refuse_frame(body_type, full);
     } catch (const InputError& e) {
       throw InputError(std::string(e.what()) + " (body named by [[body]] at " + path + ":" +
                        std::to_string(b.line()) + ")");

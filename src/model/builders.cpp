@@ -18,6 +18,7 @@
 
 #include "flexrock/core/error.hpp"
 #include "flexrock/core/format.hpp"
+#include "flexrock/model/assemblies.hpp"
 
 namespace flexrock {
 
@@ -613,6 +614,26 @@ std::vector<BodyKind> make_body_kinds() {
        },
        "a uniform flexible cantilever (tank, stack, column) clamped to a rigid base plate "
        "standing on its two edges"});
+  kinds.push_back(
+      {"rocking_frame",
+       "rocking_frame",
+       {positive("column_width", "m", "full width of a column's footprint"),
+        positive("column_height", "m", "full height of a column"),
+        positive("column_mass", "kg", "mass of one column"),
+        {"count", "-", BodyKeyValue::kInteger, BodyKeyRule::kPositive, false, 2.0,
+         "2, integer >= 2", "number of equal columns"},
+        nonnegative_or("beam_mass", "kg", 0.0, "the freely supported rigid cap beam")},
+       [](const BodyArgs& a) {
+         RockingFrame f;
+         f.column_width = a.at("column_width");
+         f.column_height = a.at("column_height");
+         f.column_mass = a.at("column_mass");
+         f.count = static_cast<int>(a.at("count"));
+         f.beam_mass = a.at("beam_mass");
+         return frame_equivalent_body(f);
+       },
+       "equal free-standing rigid columns capped by a freely supported rigid beam, run as its "
+       "equivalent rigid body (docs/theory.md §25)"});
   return kinds;
 }
 

@@ -37,6 +37,7 @@ Usage:  derive.py --out FILE.json [--seed 12345] [--print]
 """
 import argparse
 import json
+import os
 import sys
 import time
 
@@ -45,6 +46,7 @@ import numpy as np
 import sympy as sp
 
 import support
+import assemblies
 
 G_STD = 9.80665
 mp.mp.dps = 30
@@ -3405,6 +3407,8 @@ def main():
     print('  restraints (tendons, anchors): %s' % sres['restraints'], file=sys.stderr)
     sres['support'], support_refs = support.support_checks()
     print('  block on a moving support: %s' % sres['support'], file=sys.stderr)
+    sres['assemblies'], assembly_refs = assemblies.checks()  # theory §25: frames and stacks
+    print('  rocking frames and stacked bodies: %s' % sres['assemblies'], file=sys.stderr)
     failed = [(n, k) for n, r in sres.items() for k, v in r.items()
               if (isinstance(v, bool) and not v) or (isinstance(v, list) and v)]
     print('symbolic checks (n=0..%d): %s  [%.1f s]' % (args.symbolic_n, 'ALL PASS' if not failed else
@@ -3549,6 +3553,8 @@ def main():
                  (fmt(rigid_friction), fmt(pulses), fmt(compliant_refs), fmt(theta0_friction),
                   json.dumps(support_refs)))
     json.load(open(args.out))
+    with open(os.path.join(os.path.dirname(os.path.abspath(args.out)), 'assemblies_reference.json'), 'w') as fh:
+        json.dump(assembly_refs, fh, indent=1)
     print('numeric cases: %d, max relative (a)-vs-(b) difference %.2e (%s)' %
           (len(cases), float(chk.maxerr), chk.where), file=sys.stderr)
     print('impacts: %d, both-edges rule applies in %d, negative edge impulse in: %s; min thd+/thd- = %.4f' %

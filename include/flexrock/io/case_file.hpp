@@ -15,6 +15,7 @@
 
 #include "flexrock/excitation/ground_motion.hpp"
 #include "flexrock/io/records.hpp"
+#include "flexrock/model/assemblies.hpp"
 #include "flexrock/model/body.hpp"
 #include "flexrock/sim/restraints.hpp"
 #include "flexrock/sim/simulate.hpp"
@@ -151,6 +152,8 @@ struct Case {
   // [support]: the body stands on a support that moves with it (docs/theory.md §24); none: the
   // rigid floor
   std::optional<SupportParameters> support;
+  std::optional<RockingFrame> frame;     // body.type = "rocking_frame": the frame (`body` is its
+                                         // equivalent rigid body; run it with simulate_frame)
 };
 
 /// The ground motion of a case with a record pair at azimuth `beta_deg` [deg] (from H1 toward H2):
@@ -177,11 +180,13 @@ Case load_case(const std::string& path);
 
 /// Reads only the [body] table of a case (or body) file: for `flexrock params`. Other tables are
 /// ignored. `type` receives body.type; `files`, when given, gets every file read appended (the
-/// file itself, nodes and shapes files). Throws InputError like load_case.
+/// file itself, nodes and shapes files); `frame`, when given, the frame of a rocking_frame
+/// (else empty). Throws InputError like load_case.
 /// A file with a [support] table is refused unless `support_ok` (the studies run bodies on the
 /// rigid floor only; `flexrock params` reads the support with load_support).
 BodyParameters load_body(const std::string& path, std::string* type = nullptr,
-                         std::vector<std::string>* files = nullptr, bool support_ok = false);
+                         std::vector<std::string>* files = nullptr,
+                         std::optional<RockingFrame>* frame = nullptr, bool support_ok = false);
 
 /// The [support] of a case file with `body` standing on it, or none (for `flexrock params`).
 /// Throws InputError like load_case.
