@@ -44,6 +44,10 @@ import mpmath as mp
 import numpy as np
 import sympy as sp
 
+import os as _os
+sys.path.insert(0, _os.path.dirname(_os.path.abspath(__file__)))
+import axisymmetric3d  # noqa: E402  (the 3D body of revolution, docs/theory.md §27)
+
 G_STD = 9.80665
 mp.mp.dps = 30
 
@@ -3398,6 +3402,7 @@ def main():
     sres['free_rocking_arc'] = derive_free_rocking_arc()
     print('  free rocking in closed form: %s' % sres['free_rocking_arc'], file=sys.stderr)
     sres['compliant_potential'], compliant_refs = compliant_potential()
+    sres['axisymmetric3d'], axisymmetric_refs = axisymmetric3d.derive()
     print('  compliant contact potential: %s' % sres['compliant_potential'], file=sys.stderr)
     failed = [(n, k) for n, r in sres.items() for k, v in r.items()
               if (isinstance(v, bool) and not v) or (isinstance(v, list) and v)]
@@ -3542,6 +3547,10 @@ def main():
                  '"friction_theta0": %s}\n' %
                  (fmt(rigid_friction), fmt(pulses), fmt(compliant_refs), fmt(theta0_friction)))
     json.load(open(args.out))
+    # the 3D body of revolution's references, next to the main file
+    axi_out = (args.out[:-5] if args.out.endswith('.json') else args.out) + '_axisymmetric3d.json'
+    with open(axi_out, 'w') as fh:
+        json.dump(axisymmetric_refs, fh, indent=1)
     print('numeric cases: %d, max relative (a)-vs-(b) difference %.2e (%s)' %
           (len(cases), float(chk.maxerr), chk.where), file=sys.stderr)
     print('impacts: %d, both-edges rule applies in %d, negative edge impulse in: %s; min thd+/thd- = %.4f' %
