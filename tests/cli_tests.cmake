@@ -12,7 +12,8 @@ flexrock_add_test(flexrock_case_file_tests
 # the `flexrock` command: exit codes, messages, columns, no partial outputs, the four examples
 if(TARGET flexrock)
   foreach(script usage bad_input run_outcomes real_inputs io_safety keys_reference record_formats
-                 assumption_breaks compliant_step_cost friction_tie azimuths verb_help)
+                 assumption_breaks compliant_step_cost friction_tie azimuths verb_help
+                 body_of_revolution)
     add_test(NAME cli_${script}
              COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/cli/${script}.sh $<TARGET_FILE:flexrock>
                      ${PROJECT_SOURCE_DIR})
