@@ -115,15 +115,19 @@ constexpr std::array<RimGuardSpec, 9> kRimGuards = {{
 struct RimModeSpec {
   RimMode mode;
   int count;
-  std::array<RimGuard, 4> guards;  // slot order
+  std::array<RimGuard, 5> guards;  // slot order
 };
 
 constexpr std::array<RimModeSpec, 3> kRimModes = {{
     // ties go to the earlier slot: leaving the floor before tipping on it
     {RimMode::kFullContact, 3, {RimGuard::kFloorLoad, RimGuard::kBaseFriction, RimGuard::kUplift}},
+    // rolling also watches the tilt vector crossing the line through upright normal to the step's
+    // contact direction: a pass through the zone between two samples (the V of |k_h| there is
+    // not seen by the zone's guard) lands; a crossing outside the zone only renews the direction
     {RimMode::kRolling,
-     4,
-     {RimGuard::kNearUpright, RimGuard::kOverturn, RimGuard::kNormalForce, RimGuard::kRimFriction}},
+     5,
+     {RimGuard::kNearUpright, RimGuard::kUpright, RimGuard::kOverturn, RimGuard::kNormalForce,
+      RimGuard::kRimFriction}},
     {RimMode::kPivoting,
      4,
      {RimGuard::kUpright, RimGuard::kLeaveUpright, RimGuard::kNormalForce, RimGuard::kRimFriction}},
@@ -205,12 +209,12 @@ class Loop final : public detail::GuardProbe {
     switch (g) {
       case RimGuard::kUpright: {
         const Vector3 k = r.axis;
-        return (k.x() * c_step_.x() + k.y() * c_step_.y()) / kPivotZone;
+        return (k.x() * c_step_.x() + k.y() * c_step_.y()) / o_.pivot_zone;
       }
       case RimGuard::kNearUpright:
-        return (r.sin_tilt - kPivotZone) / kPivotZone;
+        return (r.sin_tilt - o_.pivot_zone) / o_.pivot_zone;
       case RimGuard::kLeaveUpright:
-        return (kPivotZone - r.sin_tilt) / kPivotZone;
+        return (o_.pivot_zone - r.sin_tilt) / o_.pivot_zone;
       case RimGuard::kOverturn:
         return theta_c_ - r.tilt;
       case RimGuard::kNormalForce:
@@ -356,7 +360,7 @@ RimResult Loop::run(const RimInitialState& init) {
                           "initial tilt: expected 0 <= theta < the overturning angle " +
                               format_number(theta_c_) + " rad, got " + format_number(init.tilt));
     mode_ = RimMode::kRolling;
-    if (std::sin(init.tilt) < kPivotZone) {
+    if (std::sin(init.tilt) < o_.pivot_zone) {
       mode_ = RimMode::kPivoting;
       pivot_body_ = q.conjugate() *
                     Vector3(k.z() * c_step_.x(), k.z() * c_step_.y(), -std::hypot(k.x(), k.y()));
@@ -547,6 +551,12 @@ bool Loop::run_rolling() {
     x_ = stepper_.x1();
     const RimRates r = rates(t_, x_);
     tilt_ = r.tilt;
+    if (slot_ev < 0 && mode_ == RimMode::kRolling && r.sin_tilt <= o_.pivot_zone) {
+      // a step that ends within the zone (no guard saw it: the step ended on the V of |k_h|)
+      // enters it now, or lands if the tilt vector has passed through upright
+      const bool passed = r.axis.x() * c_step_.x() + r.axis.y() * c_step_.y() <= 0.0;
+      slot_ev = passed ? 1 : 0;  // kUpright, kNearUpright (the rolling mode's slots)
+    }
     if (slot_ev < 0) {
       if (mode_ == RimMode::kRolling && r.sin_tilt > 0.0) c_step_ = r.contact_dir;
       continue;
@@ -577,6 +587,13 @@ bool Loop::run_rolling() {
         stepper_.start(sys, ctl_, t_, x_, stepper_.suggested_step());
         continue;
       case RimReset::kLanding: {
+        if (r.sin_tilt > o_.pivot_zone) {
+          // rolling: the tilt vector went round upright, outside the zone; a new direction
+          res_.closest_pass = std::min(res_.closest_pass, r.tilt);
+          c_step_ = r.contact_dir;
+          stepper_.start(sys, ctl_, t_, x_, stepper_.suggested_step());
+          continue;
+        }
         const RimState s = rim_state(x_);
         const RimLanding land = rim_landing(b_, r.axis, c_step_, s.omega);
         double kin = 0.0, pot = 0.0;
@@ -641,6 +658,9 @@ RimResult simulate_axisymmetric(const AxisymmetricBody& body, const FloorMotion&
   FLEXROCK_THROW_UNLESS(motion.h1 != nullptr, "3D run: the floor motion needs its H1 component");
   FLEXROCK_THROW_UNLESS(options.rtol > 0.0 && options.atol > 0.0 && options.max_step > 0.0,
                         "3D run: rtol, atol and max_step must be > 0");
+  FLEXROCK_THROW_UNLESS(
+      options.pivot_zone > 0.0 && options.pivot_zone < 1e-2,
+      "3D run: pivot_zone must be in (0, 0.01) rad, got " + format_number(options.pivot_zone));
   FLEXROCK_THROW_UNLESS(options.friction_coefficient > 0.0,
                         "3D run: the friction coefficient must be > 0, got " +
                             format_number(options.friction_coefficient));

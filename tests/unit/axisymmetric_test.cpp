@@ -301,6 +301,45 @@ TEST(AxisymmetricSymmetry, RotatingTheInputPairRotatesTheResponse) {
   EXPECT_LT(worst_xy, 1e-8);
 }
 
+TEST(AxisymmetricPivotZone, AnswersConvergeAsItShrinks) {
+  // a 3D response under a pair, with the zone round upright 10 and 100 times smaller: the
+  // differences shrink about 2.5 times a decade (docs/theory.md §27); at the default they are
+  // below 1e-4 of the largest tilt
+  const AxisymmetricBody b = uniform_cylinder(0.3, 2.4, 800.0);
+  const double dt = 0.005;
+  const int n = 800;
+  std::vector<double> h1(n), h2(n);
+  for (int i = 0; i < n; ++i) {
+    const double t = i * dt;
+    const double env = std::sin(std::numbers::pi * t / (n * dt));
+    h1[static_cast<std::size_t>(i)] = 3.5 * env * std::sin(2.0 * std::numbers::pi * 1.1 * t);
+    h2[static_cast<std::size_t>(i)] = 2.5 * env * std::sin(2.0 * std::numbers::pi * 0.8 * t + 1.0);
+  }
+  const GroundMotion m1 = GroundMotion::uniform(dt, h1), m2 = GroundMotion::uniform(dt, h2);
+  RimOptions o;
+  o.rtol = 1e-12;
+  o.atol = 1e-14;
+  o.output_dt = 0.01;
+  const RimResult r0 = simulate_axisymmetric(b, {&m1, &m2}, {}, o);
+  ASSERT_GT(r0.max_tilt, 0.02);
+  double last = 0.0;
+  for (double zone : {1e-13, 1e-14}) {
+    o.pivot_zone = zone;
+    const RimResult r = simulate_axisymmetric(b, {&m1, &m2}, {}, o);
+    ASSERT_EQ(r.status, r0.status);
+    ASSERT_EQ(r.history.size(), r0.history.size());
+    EXPECT_EQ(r.landings, r0.landings);
+    double worst = 0.0;
+    for (std::size_t i = 0; i < r.history.size(); ++i)
+      worst = std::max(worst, std::abs(r.history.tilt[i] - r0.history.tilt[i]));
+    EXPECT_LT(worst, 1e-4 * r0.max_tilt) << zone;
+    // and the difference from the default does not grow as the zone shrinks further
+    EXPECT_GE(worst, last);
+    EXPECT_LT(worst, 1.5e-4 * r0.max_tilt);
+    last = worst;
+  }
+}
+
 TEST(AxisymmetricModes, UnmodelledModesEndTheRunWithTheirMagnitude) {
   const AxisymmetricBody b = uniform_cylinder(0.4, 2.4, 800.0);
   const GroundMotion m = one_sine_pulse(0.6 * 9.80665, 2.0 * std::numbers::pi * 2.0, 2.0);
