@@ -40,6 +40,15 @@ flexrock_apply_sanitizers(flexrock_contact_maps_tests)
 gtest_discover_tests(flexrock_contact_maps_tests PROPERTIES LABELS unit
                      FIXTURES_REQUIRED sympy_reference)
 flexrock_add_test(flexrock_sim_tests SOURCES unit/simulate_test.cpp LABEL unit)
+# the 3D engine of a body of revolution against the derivation, the planar engine, conservation
+add_executable(flexrock_axisymmetric_tests unit/axisymmetric_test.cpp)
+target_link_libraries(flexrock_axisymmetric_tests PRIVATE flexrock::core nlohmann_json::nlohmann_json
+                      GTest::gtest GTest::gtest_main flexrock_warnings)
+target_compile_definitions(flexrock_axisymmetric_tests PRIVATE
+                           FLEXROCK_BINARY_DIR="${PROJECT_BINARY_DIR}")
+flexrock_apply_sanitizers(flexrock_axisymmetric_tests)
+gtest_discover_tests(flexrock_axisymmetric_tests PROPERTIES LABELS unit
+                     FIXTURES_REQUIRED sympy_reference)
 # the run says where the sticking contact breaks (pivot_tension, tensile_landing), with magnitudes
 flexrock_add_test(flexrock_assumption_breaks_tests SOURCES unit/assumption_breaks_test.cpp LABEL unit)
 flexrock_add_test(flexrock_impact_law_tests SOURCES unit/impact_law_test.cpp LABEL unit)

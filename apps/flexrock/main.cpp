@@ -41,6 +41,7 @@
 #include "plot_command.hpp"
 #include "progress.hpp"
 #include "qualify_command.hpp"
+#include "rim_command.hpp"
 #include "study_commands.hpp"
 #include "verb_examples.hpp"
 
@@ -416,6 +417,14 @@ int cmd_run_one(const std::string& file, const std::string& output_dir, bool qui
     return error(e.what(), kExitBadInput);
   } catch (const std::bad_alloc&) {
     return error(file + ": out of memory while reading the case and its records", kExitRunFailed);
+  }
+  // a body of revolution under a pair: the 3D engine (docs/theory.md §27)
+  if (c.body3d && c.pair) {
+    try {
+      return cli::run_body_of_revolution(c, output_dir, quiet);
+    } catch (const InputError& e) {
+      return error(file + ": " + e.what(), kExitBadInput);
+    }
   }
   if (c.pair && !c.azimuth) {
     return error(file +

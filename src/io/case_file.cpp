@@ -299,9 +299,10 @@ double read_body_number(Reader& r, const BodyKey& k) {
 }
 
 // a body type whose keys are all numbers: each key by the table's rule, then its builder
-BodyParameters read_table_body(Reader& r, const BodyKind& kind) {
+BodyParameters read_table_body(Reader& r, const BodyKind& kind, BodyArgs* read = nullptr) {
   BodyArgs args;
   for (const BodyKey& k : kind.keys) args.keys.emplace(k.name, read_body_number(r, k));
+  if (read) *read = args;
   return make_body(kind, std::move(args));
 }
 
@@ -318,8 +319,9 @@ const BodyReader kBodyReaders[] = {
     {"lumped", read_lumped_body},
 };
 
-BodyParameters read_body_of_kind(Reader& r, const BodyKind& kind, std::vector<std::string>& notes) {
-  if (kind.make) return read_table_body(r, kind);
+BodyParameters read_body_of_kind(Reader& r, const BodyKind& kind, std::vector<std::string>& notes,
+                                 BodyArgs* args = nullptr) {
+  if (kind.make) return read_table_body(r, kind, args);
   for (const BodyReader& b : kBodyReaders) {
     if (std::string_view(kind.name) == b.name) return b.read(r, notes);
   }
@@ -358,13 +360,17 @@ std::vector<BodyKeyRead> body_keys_read(Reader& r, const BodyKind& kind) {
 // [body] of any type; `rigid` receives body.rigid, `notes` what a builder changed in the data,
 // `read` (when given) what was read key by key
 BodyParameters read_body(Reader& r, std::string& type, bool& rigid, std::vector<std::string>& notes,
-                         std::vector<BodyKeyRead>* read = nullptr) {
+                         std::vector<BodyKeyRead>* read = nullptr,
+                         std::optional<AxisymmetricBody>* body3d = nullptr) {
   type = r.choice("type", body_kind_names());
   const BodyKind& kind = body_kind(type);
   rigid = r.boolean_or("rigid", false);
   BodyParameters p;
   try {
-    p = read_body_of_kind(r, kind, notes);
+    BodyArgs args;
+    p = read_body_of_kind(r, kind, notes, &args);
+    // a body of revolution also as itself, for the 3D engine
+    if (body3d && kind.make) *body3d = axisymmetric_body(type, args);
   } catch (const InputError& e) {
     // errors placed in this file pass through; builder errors get the table's place
     if (e.file() == r.file()) throw;
@@ -900,7 +906,7 @@ Case load_case(const std::string& path) {
 
   Reader br = top.table("body");
   c.input_files.push_back(path);
-  c.body = read_body(br, c.body_type, c.rigid, c.notes, &c.body_keys);
+  c.body = read_body(br, c.body_type, c.rigid, c.notes, &c.body_keys, &c.body3d);
   const Body body(c.body);
   Reader er = top.table("excitation");
   read_excitation(er, c);

@@ -16,6 +16,8 @@ target_sources(flexrock_io PRIVATE io/case_file.cpp io/modal_tables.cpp io/outpu
                                    io/restraint_io.cpp)
 # record pairs at every azimuth: needs flexrock::study (linked below)
 target_sources(flexrock_io PRIVATE io/azimuth_outputs.cpp)
+# a body of revolution in 3D (docs/theory.md §27)
+target_sources(flexrock_io PRIVATE io/rim_outputs.cpp)
 find_package(tomlplusplus CONFIG QUIET)
 find_package(nlohmann_json 3.9 REQUIRED)
 if(TARGET tomlplusplus::tomlplusplus)

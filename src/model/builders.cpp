@@ -521,6 +521,17 @@ void add_damping(std::vector<BodyKey>& keys) {
 
 const char* const kGravityDoc = "g";
 
+AxisymmetricBody body_of_revolution(const BodyArgs& a) {
+  AxisymmetricBody b;
+  b.mass = a.at("mass");
+  b.height = a.at("cg_height");
+  b.radius = a.at("base_radius");
+  b.inertia_diameter = a.at("inertia_diameter");
+  b.inertia_axis = a.at("inertia_axis");
+  validate(b);
+  return b;
+}
+
 std::vector<BodyKind> make_body_kinds() {
   std::vector<BodyKind> kinds;
   kinds.push_back(
@@ -634,6 +645,29 @@ std::vector<BodyKind> make_body_kinds() {
        },
        "equal free-standing rigid columns capped by a freely supported rigid beam, run as its "
        "equivalent rigid body (docs/theory.md §25)"});
+  // bodies of revolution: in the plane their section through the axis (planar_equivalent); with a
+  // record pair `flexrock run` runs them in 3D (docs/theory.md §27, axisymmetric_body())
+  kinds.push_back(
+      {"cylinder",
+       "cylinder",
+       {positive("radius", "m", "outer radius of the base"), positive("height", "m", "full height"),
+        positive("mass", "kg", "mass"),
+        nonnegative_or("inner_radius", "m", 0.0, "bore of a hollow cylinder, < radius")},
+       [](const BodyArgs& a) {
+         return planar_equivalent(
+             uniform_cylinder(a.at("radius"), a.at("height"), a.at("mass"), a.at("inner_radius")));
+       },
+       "uniform solid or hollow circular cylinder (a body of revolution: 3D with a "
+       "record pair)"});
+  kinds.push_back(
+      {"body_of_revolution",
+       "body_of_revolution",
+       {positive("mass", "kg", "M"), positive("cg_height", "m", "h, c.g. above the base centre"),
+        positive("base_radius", "m", "R, radius of the base rim"),
+        positive("inertia_diameter", "kg m^2", "A, about a diameter through the c.g."),
+        positive("inertia_axis", "kg m^2", "C, about the axis (C <= 2 A)")},
+       [](const BodyArgs& a) { return planar_equivalent(body_of_revolution(a)); },
+       "any rigid body of revolution on a flat circular base (3D with a record pair)"});
   return kinds;
 }
 
@@ -649,6 +683,15 @@ double BodyArgs::at(std::string_view name) const {
   const auto it = keys.find(name);
   FLEXROCK_DEMAND(it != keys.end());
   return it->second;
+}
+
+std::optional<AxisymmetricBody> axisymmetric_body(std::string_view type, const BodyArgs& args) {
+  if (type == "cylinder") {
+    return uniform_cylinder(args.at("radius"), args.at("height"), args.at("mass"),
+                            args.at("inner_radius"));
+  }
+  if (type == "body_of_revolution") return body_of_revolution(args);
+  return std::nullopt;
 }
 
 const std::vector<BodyKind>& body_kinds() {

@@ -47,6 +47,9 @@ import sympy as sp
 
 import support
 import assemblies
+import os as _os
+sys.path.insert(0, _os.path.dirname(_os.path.abspath(__file__)))
+import axisymmetric3d  # noqa: E402  (the 3D body of revolution, docs/theory.md §27)
 
 G_STD = 9.80665
 mp.mp.dps = 30
@@ -3402,6 +3405,7 @@ def main():
     sres['free_rocking_arc'] = derive_free_rocking_arc()
     print('  free rocking in closed form: %s' % sres['free_rocking_arc'], file=sys.stderr)
     sres['compliant_potential'], compliant_refs = compliant_potential()
+    sres['axisymmetric3d'], axisymmetric_refs = axisymmetric3d.derive()
     print('  compliant contact potential: %s' % sres['compliant_potential'], file=sys.stderr)
     sres['restraints'] = __import__('restraints').restraints()[0]
     print('  restraints (tendons, anchors): %s' % sres['restraints'], file=sys.stderr)
@@ -3555,6 +3559,10 @@ def main():
     json.load(open(args.out))
     with open(os.path.join(os.path.dirname(os.path.abspath(args.out)), 'assemblies_reference.json'), 'w') as fh:
         json.dump(assembly_refs, fh, indent=1)
+    # the 3D body of revolution's references, next to the main file
+    axi_out = (args.out[:-5] if args.out.endswith('.json') else args.out) + '_axisymmetric3d.json'
+    with open(axi_out, 'w') as fh:
+        json.dump(axisymmetric_refs, fh, indent=1)
     print('numeric cases: %d, max relative (a)-vs-(b) difference %.2e (%s)' %
           (len(cases), float(chk.maxerr), chk.where), file=sys.stderr)
     print('impacts: %d, both-edges rule applies in %d, negative edge impulse in: %s; min thd+/thd- = %.4f' %

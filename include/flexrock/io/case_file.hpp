@@ -16,6 +16,7 @@
 #include "flexrock/excitation/ground_motion.hpp"
 #include "flexrock/io/records.hpp"
 #include "flexrock/model/assemblies.hpp"
+#include "flexrock/model/axisymmetric_body.hpp"
 #include "flexrock/model/body.hpp"
 #include "flexrock/sim/restraints.hpp"
 #include "flexrock/sim/simulate.hpp"
@@ -133,7 +134,10 @@ struct Case {
   std::string body_type;    // body.type
   bool rigid = false;       // body.rigid: the modes were dropped
   BodyParameters body;      // the paper's parameters (already validated by Body)
-  GroundMotion motion;      // [m/s^2] both components, scaled
+  // a body of revolution ("cylinder", "body_of_revolution") as itself: with a record pair
+  // `flexrock run` runs it in 3D (docs/theory.md §27); body is then its planar section
+  std::optional<AxisymmetricBody> body3d;
+  GroundMotion motion;  // [m/s^2] both components, scaled
   ExcitationComponent horizontal;
   ExcitationComponent vertical;            // type empty: no vertical component
   ExcitationComponent horizontal2;         // type empty: one horizontal component, not a pair

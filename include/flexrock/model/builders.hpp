@@ -10,6 +10,7 @@
 #include <string_view>
 #include <vector>
 
+#include "flexrock/model/axisymmetric_body.hpp"
 #include "flexrock/model/body.hpp"
 
 namespace flexrock {
@@ -144,6 +145,11 @@ const BodyKind& body_kind(std::string_view name);
 /// missing required keys, keys the type does not have and integer keys that are not whole
 /// numbers >= 1; the builder checks the values. Throws InputError naming the key.
 BodyParameters make_body(const BodyKind& kind, BodyArgs args);
+
+/// The 3D body of a body type that is a body of revolution ("cylinder", "body_of_revolution"),
+/// from the same keys its planar section is made from (`args` with its defaults filled, as
+/// make_body fills them); nullopt for the other types. Throws InputError for bad values.
+std::optional<AxisymmetricBody> axisymmetric_body(std::string_view type, const BodyArgs& args);
 
 /// The default of a key as the docs state it ("required, > 0", "0", "none").
 std::string default_text(const BodyKey& key);
