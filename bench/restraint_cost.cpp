@@ -9,6 +9,8 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <fstream>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
@@ -102,6 +104,49 @@ int main(int argc, char** argv) {
     const io::Record* r;
   };
   const Rec recs[] = {{"El Centro", &elcentro}, {"Kobe", &kobe}};
+
+  // the closed forms of tools/derive/restraints.py (tests/data/restraints_reference.json) against
+  // the engine: the uplift under a slow ramp, the equation's residual on the pushover
+  {
+    std::ifstream in(FLEXROCK_SOURCE_DIR "/tests/data/restraints_reference.json");
+    const nlohmann::json ref = nlohmann::json::parse(in);
+    std::printf(
+        "closed forms against the engine\n| case | uplift, closed form [m/s^2] | engine, "
+        "slow ramp | rel. diff | max engine theta_ddot on the pushover / (g/h) | "
+        "restoring moment, max rel. diff |\n|---|---|---|---|---|---|\n");
+    for (const nlohmann::json& c : ref["cases"]) {
+      const double h = c["h"], b1 = c["b1"], b2 = c["b2"];
+      const Body body(BodyParameters::rigid(c["M"], h, b1, b2, (b1 * b1 + h * h) / (3.0 * h * h)));
+      Restraint r;
+      r.body_x = c["xb"];
+      r.body_y = c["yb"];
+      r.floor_x = c["xf"];
+      r.floor_y = c["yf"];
+      r.stiffness = c["k"];
+      r.prestress = c["P0"];
+      r.slack = c["s"];
+      const double a_up = c["uplift_acceleration"], rate = 0.5, t_max = 3.0 * a_up / rate;
+      SimulationOptions o;
+      o.t_end = 1.2 * a_up / rate;
+      const RestrainedResult res = simulate_restrained(
+          body, {r}, GroundMotion::sampled({0.0, t_max}, {0.0, rate * t_max}), {}, o);
+      double worst = 0.0, worst_m = 0.0;
+      for (const nlohmann::json& pt : c["points"]) {
+        const double th = pt["theta"], a = pt["pushover_acceleration"];
+        worst =
+            std::max(worst, std::abs(restrained_rocking_acceleration(body, {r}, 1, th, {a, 0.0})) /
+                                body.g_over_h());
+        worst_m = std::max(worst_m, std::abs(restoring_moment(body, {r}, 1, th) /
+                                                 pt["restoring_moment"].get<double>() -
+                                             1.0));
+      }
+      const double engine = rate * res.result.extremes.first_uplift_time;
+      std::printf("| %s | %.12g | %.12g | %.1e | %.1e | %.1e |\n",
+                  c["name"].get<std::string>().c_str(), a_up, engine, std::abs(engine / a_up - 1.0),
+                  worst, worst_m);
+    }
+    std::printf("\n");
+  }
 
   // cost: the bench's slender block (b = 0.2 m, h = 1 m, 1 t) at PGA 0.5 g
   const Body block(BodyParameters::rectangular_block(1000.0, 0.2, 1.0));
