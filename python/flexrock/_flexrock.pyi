@@ -167,6 +167,7 @@ class Case:
     name: str
     options: SimulationOptions
     output: OutputSettings
+    restraints: list[Restraint]
     rigid: bool
     source: str
     stem: str
@@ -570,12 +571,13 @@ class FragilityQuery:
     im: str
     level: float
     outcome: str
+    worst_azimuth: bool
 
 class FragilitySession:
     """The fits of every damage state and body of a sweep CSV,
     as ``flexrock fragility`` makes them (the same checks, observations, fits and fit CSV).
     """
-    def __init__(self, path: str, im: str = ..., im_given: bool = ..., states: list[DamageState] = ..., outcome: FragilityOutcome = ..., level: float = ..., analysis: FragilityAnalysis = ..., body: str = ..., confidence: float = ...) -> None: ...
+    def __init__(self, path: str, im: str = ..., im_given: bool = ..., states: list[DamageState] = ..., outcome: FragilityOutcome = ..., level: float = ..., analysis: FragilityAnalysis = ..., body: str = ..., confidence: float = ..., worst_azimuth: bool = ...) -> None: ...
     @property
     def bodies(self) -> int: ...
     def data(self, state: int, body: int) -> FragilityData: ...
@@ -598,6 +600,18 @@ class FragilitySession:
         """The stripes of a body's observations: (IM, runs, failures) per level."""
     @property
     def unit(self) -> str: ...
+
+class GridUnits:
+    """The units a physical spectrum grid is given in: its cells and boundary keep them and get columns in them (a_p_g, f_p_hz)."""
+    @overload
+    def __init__(self) -> None: ...
+    @overload
+    def __init__(self, amplitude: str, amplitude_si: float, frequency: str, frequency_si: float) -> None: ...
+    def __repr__(self) -> str: ...
+    amplitude: str
+    amplitude_si: float
+    frequency: str
+    frequency_si: float
 
 class GroundMotion:
     """Base accelerations [m/s^2]: sampled (linear between samples) or analytic."""
@@ -965,6 +979,110 @@ class Regime:
     @property
     def value(self) -> int: ...
 
+class RestrainedResult:
+    """A restrained run: the body's result and the restraints'."""
+    @property
+    def elongation(self) -> numpy.typing.NDArray[numpy.float64]: ...
+    @property
+    def energy(self) -> numpy.typing.NDArray[numpy.float64]: ...
+    @property
+    def events(self) -> list[RestraintEvent]: ...
+    @property
+    def force(self) -> numpy.typing.NDArray[numpy.float64]: ...
+    @property
+    def fracture_work(self) -> float: ...
+    @property
+    def plastic_work(self) -> float: ...
+    @property
+    def restraints(self) -> list[RestraintSummary]: ...
+    @property
+    def result(self) -> SimulationResult: ...
+    @property
+    def stored_energy_change(self) -> float: ...
+
+class Restraint:
+    """A tie from the floor point (floor_x, floor_y) to the body point (body_x, body_y) [m]: stiffness [N/m], prestress [N], slack [m], yield_force [N], fracture_elongation [m] (docs/theory.md §26)."""
+    def __init__(self, *, kind: RestraintKind = ..., body_x: float = ..., body_y: float = ..., floor_x: float = ..., floor_y: float = ..., stiffness: float = ..., prestress: float = ..., slack: float = ..., yield_force: float = ..., fracture_elongation: float = ...) -> None: ...
+    body_x: float
+    body_y: float
+    floor_x: float
+    floor_y: float
+    fracture_elongation: float
+    kind: RestraintKind
+    prestress: float
+    slack: float
+    stiffness: float
+    yield_force: float
+
+class RestraintEvent:
+    """A restraint's yield, unloading or fracture."""
+    @property
+    def elongation(self) -> float: ...
+    @property
+    def energy(self) -> float: ...
+    @property
+    def force(self) -> float: ...
+    @property
+    def kind(self) -> RestraintEventKind: ...
+    @property
+    def plastic_elongation(self) -> float: ...
+    @property
+    def restraint(self) -> int: ...
+    @property
+    def time(self) -> float: ...
+
+class RestraintEventKind:
+    yield_: ClassVar[RestraintEventKind]
+    unload: ClassVar[RestraintEventKind]
+    fracture: ClassVar[RestraintEventKind]
+    __members__: ClassVar[dict[str, RestraintEventKind]]
+    def __init__(self, value: int) -> None: ...
+    def __eq__(self, other: object) -> bool: ...
+    def __hash__(self) -> int: ...
+    def __index__(self) -> int: ...
+    def __int__(self) -> int: ...
+    @property
+    def name(self) -> str: ...
+    @property
+    def value(self) -> int: ...
+
+class RestraintKind:
+    tendon: ClassVar[RestraintKind]
+    anchor: ClassVar[RestraintKind]
+    __members__: ClassVar[dict[str, RestraintKind]]
+    def __init__(self, value: int) -> None: ...
+    def __eq__(self, other: object) -> bool: ...
+    def __hash__(self) -> int: ...
+    def __index__(self) -> int: ...
+    def __int__(self) -> int: ...
+    @property
+    def name(self) -> str: ...
+    @property
+    def value(self) -> int: ...
+
+class RestraintSummary:
+    """What one restraint did over a run."""
+    @property
+    def final_force(self) -> float: ...
+    @property
+    def fracture_time(self) -> float: ...
+    @property
+    def fracture_work(self) -> float: ...
+    @property
+    def fractured(self) -> bool: ...
+    @property
+    def max_elongation(self) -> float: ...
+    @property
+    def max_force(self) -> float: ...
+    @property
+    def plastic_elongation(self) -> float: ...
+    @property
+    def plastic_work(self) -> float: ...
+    @property
+    def yield_time(self) -> float: ...
+    @property
+    def yielded(self) -> bool: ...
+
 class RunSummary:
     """What a study keeps of one simulation."""
     @property
@@ -1215,6 +1333,8 @@ class SpectrumResult:
     def sliding(self) -> bool: ...
     @property
     def tan_alpha(self) -> float: ...
+    @property
+    def units(self) -> GridUnits: ...
 
 class SpectrumSession:
     """A spectrum from its spec file to its CSVs.
@@ -1276,6 +1396,7 @@ class SpectrumSpec:
     normalized: bool
     pulse: str
     solver: SimulationOptions
+    units: GridUnits
 
 class Status:
     completed: ClassVar[Status]
@@ -1520,8 +1641,13 @@ def boundary_arrays(result: SpectrumResult, normalized: bool = ..., g: float = .
     dict of str to numpy.ndarray
     """
 
-def boundary_columns() -> list[str]:
+def boundary_columns(units: GridUnits = ...) -> list[str]:
     """Columns of the minimum-overturning CSV.
+
+    Parameters
+    ----------
+    units : GridUnits
+        As for :func:`spectrum_columns` (``min_overturning_g``, ``f_p_hz``).
 
     Returns
     -------
@@ -1620,6 +1746,9 @@ def compute_spectrum(body: Body, spec: SpectrumSpec, threads: int = ..., *, prog
     -------
     SpectrumResult
     """
+
+def critical_stiffness(body: Body, restraints: list[Restraint], which: int, edge: int) -> float:
+    """The stiffness [N/m] of restraint `which` at which the post-uplift branch stops softening."""
 
 def crossing_intensity(a: FragilityFit, b: FragilityFit) -> float:
     """The IM at which two fitted fragility curves cross (nan for equal betas).
@@ -2053,7 +2182,7 @@ def load_spectrum_file(path: str) -> SpectrumFile:
     Returns
     -------
     SpectrumFile
-        Grids converted to SI (m/s^2, rad/s) unless normalised.
+        Grids as given: normalised, or in the units of ``pulse.units``.
     """
 
 def load_sweep_manifest(path: str) -> SweepManifest:
@@ -2221,6 +2350,9 @@ def pulse_motion(type: str, a_p: float, omega_p: float, duration: float) -> Grou
     GroundMotion
     """
 
+def pushover_acceleration(body: Body, restraints: list[Restraint], edge: int, theta: float) -> float:
+    """The base acceleration [m/s^2] that holds the body at theta (quasi-static pushover)."""
+
 def qualify_key_reference() -> str:
     """The key reference of qualification files (docs/qualify.md), as Markdown."""
 
@@ -2378,6 +2510,9 @@ def require_spectral_period(period: float, key: str) -> None:
     (below it the oscillator follows the ground and Sa is the PGA).
     """
 
+def restoring_moment(body: Body, restraints: list[Restraint], edge: int, theta: float) -> float:
+    """The restoring moment [N m] about the pivot of `edge` at theta, gravity and ties."""
+
 def ricker_wavelet(a_p: float, omega_p: float, t_c: float, duration: float, component: Component = ...) -> GroundMotion:
     """A Ricker wavelet peaking at t_c.
 
@@ -2495,6 +2630,9 @@ def run_sweep(spec: SweepSpec, indices: list[int] = ..., threads: int = ..., *, 
         In index order.
     """
 
+def self_centring_stiffness(body: Body, restraints: list[Restraint], edge: int) -> float:
+    """The post-uplift rotational stiffness [N m/rad] (negative: softening)."""
+
 def sha256_hex(data: str) -> str:
     """SHA-256 of bytes as 64 hex digits."""
 
@@ -2521,6 +2659,9 @@ def simulate(body: Body, motion: GroundMotion, initial: InitialState = ..., opti
 def simulate_on_support(body: Body, support: SupportParameters, motion: GroundMotion, initial: InitialState = ..., options: SimulationOptions = ...) -> SupportRunResult:
     """Simulates a rigid block standing on a support that moves with it (docs/theory.md §24): full contact, rocking, impacts and overturning; sliding, flexible bodies and the compliant contact raise InputError, and a lift-off ends the run as stopped."""
 
+def simulate_restrained(body: Body, restraints: list[Restraint], motion: GroundMotion, initial: InitialState = ..., options: SimulationOptions = ...) -> RestrainedResult:
+    """Simulates a rigid body tied down by restraints (docs/theory.md §26)."""
+
 def spectrum_arrays(result: SpectrumResult, g: float = ...) -> dict:
     """The cells of a spectrum as numpy arrays, one per column of its CSV, typed by the column
     table (the columns of ``spectrum_columns(result.sliding)``).
@@ -2538,7 +2679,7 @@ def spectrum_arrays(result: SpectrumResult, g: float = ...) -> dict:
         object (str) for classes.
     """
 
-def spectrum_columns(sliding: bool = ...) -> list[str]:
+def spectrum_columns(sliding: bool = ..., units: GridUnits = ...) -> list[str]:
     """Columns of the spectrum CSV (unit-suffixed).
 
     Parameters
@@ -2546,6 +2687,9 @@ def spectrum_columns(sliding: bool = ...) -> list[str]:
     sliding : bool
         With the sliding columns (regime, offsets, time sliding, slips) that a spectrum with a
         finite friction coefficient adds (``SpectrumResult.sliding``).
+    units : GridUnits
+        A physical grid's units (``SpectrumResult.units``): units other than SI add columns in them
+        (``a_p_g``, ``f_p_hz``).
 
     Returns
     -------
@@ -2767,6 +2911,9 @@ def uncertain_parameters() -> list:
 
 def uncertain_quantile(parameter: UncertainParameter, u: float) -> float:
     """The value of a parameter at probability u in (0, 1) (its truncated inverse CDF)."""
+
+def uplift_acceleration(body: Body, restraints: list[Restraint], edge: int) -> float:
+    """The uplift threshold [m/s^2] onto `edge` with the restraints."""
 
 def write_outputs(case: Case, body: Body, result: SimulationResult, output_dir: str = ...) -> OutputPaths:
     """Writes the outputs the case's [output] table asks for, atomically, summary last.
