@@ -214,6 +214,20 @@ TEST(RockingFrame, WithoutBeamMassItIsOneColumn) {
   EXPECT_EQ(k.reaction_mass, 0.0);
 }
 
+TEST(RockingFrame, MirroredInputGivesTheMirroredResponse) {
+  // a symmetric frame under the record and under its negative: theta -> -theta, edges swapped
+  const RockingFrame f = bent(3, 9000.0);
+  const SimulationResult a = simulate_frame(f, elcentro(1.0), {}, history_options());
+  const SimulationResult b = simulate_frame(f, elcentro(-1.0), {}, history_options());
+  ASSERT_EQ(a.history.size(), b.history.size());
+  EXPECT_GT(a.extremes.impacts, 0);
+  for (std::size_t i = 0; i < a.history.size(); ++i) {
+    EXPECT_NEAR(a.history.theta[i], -b.history.theta[i], 1e-12);
+  }
+  EXPECT_DOUBLE_EQ(a.extremes.max_theta_edge1, b.extremes.max_theta_edge2);
+  EXPECT_EQ(a.status, b.status);
+}
+
 TEST(RockingFrame, NoImpactGainsEnergyAndAHeavierBeamSteadiesTheFrame) {
   // over slenderness and beam mass: 0 < ... r <= 1 with (1 - r^2) the loss of the kinetic energy;
   // the uplift acceleration g tan(alpha) does not depend on the beam, p falls as the beam grows
