@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "flexrock/sim/rocking_frame.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -75,20 +76,45 @@ SimulationResult simulate_frame(const RockingFrame& frame, const GroundMotion& m
       break;
     }
   }
-  // the beam on the columns and the frame on the floor, at the time-history samples while rocking
+  // the beam on the columns and the frame on the floor, at the time-history samples while rocking;
+  // a negative one is then located between its sample and the one before by bisection on runs
+  // that end there (their final state is the motion's at that instant)
+  auto negative_at = [&](double t, FrameForces& ff) {
+    SimulationOptions o = options;
+    o.t_end = t;
+    o.output_dt = 0.0;
+    const SimulationResult e = simulate(body, motion, initial, o);
+    if (e.final_phase != ContactMode::kRockingEdge1 && e.final_phase != ContactMode::kRockingEdge2)
+      return false;
+    const BaseAcceleration a = motion.at(t);
+    ff = frame_forces(frame, fc, e.final_theta, e.final_theta_dot, a.x, a.y);
+    return ff.beam < 0.0 || ff.floor < 0.0;
+  };
   const History& h = r.history;
   for (std::size_t i = 0; i < h.size() && h.time[i] < t_off; ++i) {
     if (h.phase[i] != 1 && h.phase[i] != 2) continue;
-    const FrameForces ff =
+    FrameForces ff =
         frame_forces(frame, fc, h.theta[i], h.theta_dot[i], h.base_acc_x[i], h.base_acc_y[i]);
     if (ff.beam < 0.0 || ff.floor < 0.0) {
-      t_off = h.time[i];
-      why = ff.beam < 0.0 ? "the beam's contact force on the columns is negative, " +
+      // [lo, hi]: holds at lo (the sample before), fails at hi; 40 halvings of a sample interval
+      double lo = i > 0 ? h.time[i - 1] : 0.0, hi = h.time[i];
+      for (int it = 0; it < 40 && hi - lo > 1e-12 * std::max(1.0, hi); ++it) {
+        const double mid = 0.5 * (lo + hi);
+        FrameForces fm;
+        if (negative_at(mid, fm)) {
+          hi = mid;
+          ff = fm;
+        } else {
+          lo = mid;
+        }
+      }
+      t_off = hi;
+      why = ff.beam < 0.0 ? "the beam's contact force on the columns turns negative, " +
                                 format_number(ff.beam, 6) + " N (the beam would lift off)"
-                          : "the frame's floor reaction is negative, " +
+                          : "the frame's floor reaction turns negative, " +
                                 format_number(ff.floor, 6) + " N (the columns would lift off)";
-      why += " at this time-history sample (checked every " + format_number(run.output_dt, 6) +
-             " s while rocking)";
+      why += ", located between time-history samples " + format_number(run.output_dt, 6) +
+             " s apart (a dip shorter than that between two samples that hold is not seen)";
       break;
     }
   }

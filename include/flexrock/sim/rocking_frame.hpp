@@ -21,8 +21,9 @@ void validate_frame_options(const SimulationOptions& options);
 /// Simulates `frame` as its equivalent rigid body (frame_equivalent_body): the tilt, the impacts
 /// and the energies are the frame's. Flight is not modelled: the run ends, stopped, with the time
 /// and the force in its message, where the equivalent body lifts off or lands pulling, or where
-/// at a time-history sample while rocking (output_dt, else kFrameCheckDt) the frame's own floor
-/// reaction or the beam's contact force on the columns is negative. The reactions reported
+/// the frame's own floor reaction or the beam's contact force on the columns turns negative while
+/// rocking: seen at the time-history samples (output_dt, else kFrameCheckDt) and located between
+/// them by bisection. The reactions reported
 /// (reaction_x/y, base shear, friction demand, pivot tension) are the equivalent body's; the
 /// frame's are larger by reaction_mass (a_base + g), FrameConstants::reaction_mass.
 SimulationResult simulate_frame(const RockingFrame& frame, const GroundMotion& motion,
