@@ -61,6 +61,12 @@ int run_body_of_revolution(const io::Case& c, const std::string& output_dir, boo
                r.max_friction_demand);
     fmt::print("  energy: input {:.6g} J, impact loss {:.6g} J, residual {:.3g} J\n",
                r.energy.input_work, r.energy.impact_loss, r.energy.residual);
+    if (std::isfinite(r.closest_pass)) {
+      fmt::print(
+          "  closest pass by upright without landing: {:.3g} rad (the response near "
+          "upright is sensitive: docs/theory.md §27)\n",
+          r.closest_pass);
+    }
     fmt::print("  {} steps, {:.3f} s\n", r.steps, wall);
     for (const std::string* p : {&paths.time_history, &paths.events, &paths.summary})
       if (!p->empty() && write_error.empty()) fmt::print("  wrote {}\n", *p);

@@ -115,6 +115,9 @@ std::string rim_summary_json(const Case& c, const AxisymmetricBody& b, const Rim
   j["min_normal_force_N"] = std::isfinite(r.min_normal_force) ? Json(r.min_normal_force) : Json();
   j["uplifts"] = r.uplifts;
   j["landings"] = r.landings;
+  // the closest the tilt came to upright without landing (rolled round it): where the 3D
+  // response is sensitive (docs/theory.md §27); null: never
+  j["closest_pass_rad"] = std::isfinite(r.closest_pass) ? Json(r.closest_pass) : Json();
   Json e;
   e["input_work_J"] = r.energy.input_work;
   e["kinetic_change_J"] = r.energy.kinetic_change;
@@ -122,6 +125,10 @@ std::string rim_summary_json(const Case& c, const AxisymmetricBody& b, const Rim
   e["impact_loss_J"] = r.energy.impact_loss;
   e["residual_J"] = r.energy.residual;
   j["energy"] = e;
+  // the planar runs' bound on the residual (kEnergyResidualRelative, kEnergyResidualFloor)
+  j["energy_unbalanced"] =
+      !(std::abs(r.energy.residual) <= kEnergyResidualRelative * r.energy.scale +
+                                           kEnergyResidualFloor * b.mass * b.gravity * b.height);
   j["steps"] = r.steps;
   j["rhs_evaluations"] = r.rhs_evaluations;
   Json files;

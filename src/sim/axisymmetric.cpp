@@ -290,6 +290,8 @@ class Loop final : public detail::GuardProbe {
   RimResult res_;
   double kin0_ = 0.0, pot0_ = 0.0, impact_loss_ = 0.0, last_landing_ = -1e300;
   double next_out_ = 0.0;
+  // the last two sampled tilts (for the closest pass by upright)
+  double tilt_prev_ = 0.0, tilt_prev2_ = 0.0;
   double contact_angle_ = 0.0, azimuth_ = 0.0;  // unwrapped
   bool have_angles_ = false;
   std::array<double, 4> slot_scale_{};
@@ -526,6 +528,15 @@ bool Loop::run_rolling() {
       for (int s = 0; s < ms.count; ++s)
         g.v[static_cast<std::size_t>(s)] =
             rolling_guard(ms.guards[static_cast<std::size_t>(s)], xi, r);
+      // a local minimum of the tilt on the samples: a pass by upright (rolled round it); the
+      // departure from upright (uplift, landing) starts afresh
+      if (i == 0 && upright_start) tilt_prev_ = tilt_prev2_ = 0.0;
+      if (i > 0 || !upright_start) {
+        if (tilt_prev_ < tilt_prev2_ && r.tilt >= tilt_prev_)
+          res_.closest_pass = std::min(res_.closest_pass, tilt_prev_);
+        tilt_prev2_ = tilt_prev_;
+        tilt_prev_ = r.tilt;
+      }
       if (r.tilt > res_.max_tilt) {
         res_.max_tilt = r.tilt;
         res_.max_tilt_azimuth = std::atan2(r.contact_dir.y(), r.contact_dir.x());

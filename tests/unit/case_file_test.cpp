@@ -535,10 +535,10 @@ TEST_F(CaseFile, EveryBodyTypeOfTheTableLoads) {
   }
   EXPECT_GE(built, 4);
   // an unknown type names the file, the line, the key and every type of the table
-  std::vector<std::string> want = {"case.toml:3:", "key 'body.type'", "cylinder"};
+  std::vector<std::string> want = {"case.toml:3:", "key 'body.type'", "sphere"};
   for (const std::string& n : body_kind_names()) want.push_back(n);
   const std::string bad =
-      write("case.toml", "[body]\nrigid = false\ntype = \"cylinder\"\nwidth = 1\n" + kPulse);
+      write("case.toml", "[body]\nrigid = false\ntype = \"sphere\"\nwidth = 1\n" + kPulse);
   try {
     load_case(bad);
     ADD_FAILURE() << "an unknown body type loaded";
@@ -549,7 +549,7 @@ TEST_F(CaseFile, EveryBodyTypeOfTheTableLoads) {
   // and so does an unknown key of a type (with the closest one)
   expect_error("[body]\ntype = \"rigid_block\"\nwidth = 0.4\nheight = 2\nmas = 1\n" + kPulse,
                {"case.toml:5:", "mas", "mass"});
-  test::expect_input_error([] { body_kind("cylinder"); }, {"rigid_block", "lumped", "cylinder"});
+  test::expect_input_error([] { body_kind("sphere"); }, {"rigid_block", "lumped", "sphere"});
   test::expect_input_error(
       [] {
         make_body(body_kind("rigid_block"), {{{"width", 1.0}}});

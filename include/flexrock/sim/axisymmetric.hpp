@@ -126,9 +126,9 @@ struct RimResult {
   double max_offset = 0.0;           // [m] largest horizontal offset of the base centre
   double max_friction_demand = 0.0;  // [-] while in contact
   double min_normal_force = std::numeric_limits<double>::infinity();  // [N] while rolling
-  double closest_pass = std::numeric_limits<double>::infinity();      // [rad] smallest tilt of a
-                                                                  // pass by upright that was not a
-                                                                  // landing (rolled through)
+  // [rad] the smallest local minimum of the sampled tilt: a pass by upright that rolled round it
+  // instead of landing (inf: none); where the response is sensitive (docs/theory.md §27)
+  double closest_pass = std::numeric_limits<double>::infinity();
   long landings = 0;
   long uplifts = 0;
   EnergyBalance energy;
