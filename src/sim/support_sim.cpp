@@ -278,10 +278,11 @@ class SupportLoop final : public detail::GuardProbe {
       }
       // the guards on the step's samples
       const double t0 = step_t0(), t1 = walking_ ? walk_.t1() : st.t1();
-      smp_[0] = sample(t0, walking_ ? walk_.x0() : st.x0());
+      xs_[0] = walking_ ? walk_.x0() : st.x0();
+      smp_[0] = sample(t0, xs_[0]);
       for (int i = 1; i <= nsamp_; ++i) {
         const double ti = i == nsamp_ ? t1 : t0 + (t1 - t0) * i / nsamp_;
-        State xi;
+        State& xi = xs_[static_cast<std::size_t>(i)];
         if (i == nsamp_) {
           xi = walking_ ? walk_.x1() : st.x1();
         } else {
@@ -411,13 +412,12 @@ class SupportLoop final : public detail::GuardProbe {
     return s;
   }
 
-  // the extremes at the step's samples before `t_upto`
+  // the extremes at the step's samples before `t_upto` (the states the guards were sampled at)
   void fold_samples(double t_upto) {
     for (int i = 0; i <= nsamp_; ++i) {
-      if (smp_[static_cast<std::size_t>(i)].t >= t_upto) break;
-      State x;
-      dense_at(smp_[static_cast<std::size_t>(i)].t, x);
-      observe(smp_[static_cast<std::size_t>(i)].t, x);
+      const auto k = static_cast<std::size_t>(i);
+      if (smp_[k].t >= t_upto) break;
+      observe(smp_[k].t, xs_[k]);
     }
   }
 
@@ -766,6 +766,7 @@ class SupportLoop final : public detail::GuardProbe {
   double zeno_t0_ = -kInf;
   int zeno_count_ = 0;
   std::array<detail::GuardSample, detail::kMaxSamples + 1> smp_{};
+  std::array<State, detail::kMaxSamples + 1> xs_{};  // the states of the samples
   Stepper* stepper_ = nullptr;
   ExactWalk walk_{p_};
   bool walk_ok_ = false;    // full contact may be walked exactly (a sampled record, or none)
