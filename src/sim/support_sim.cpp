@@ -237,7 +237,10 @@ class SupportLoop final : public detail::GuardProbe {
     if (edge_ == 0) enter_full_contact(0.0, /*at_start=*/true);
     if (!stopped_) record_until(0.0, x_);
     observe(0.0, x_);
-    if (edge_ != 0 && !stopped_) first_uplift(0.0);
+    if (edge_ != 0 && !stopped_) {
+      first_uplift(0.0);
+      check_entry_reaction();
+    }
     bool restart = true;
     Stepper st;
     stepper_ = &st;
@@ -561,6 +564,13 @@ class SupportLoop final : public detail::GuardProbe {
     r.events.push_back(event_at(t_, EventKind::kPivotTension));
   }
 
+  // a rocking state entered (the start, an impact) whose support would already have to pull: its
+  // lift-off guard starts below zero, where no crossing is seen, so it is decided here
+  void check_entry_reaction() {
+    const BaseAcceleration a = motion_.at(t_, cursor_);
+    if (evaluate(p_, edge_, x_, a).fy < 0.0) rocking_lift_off();
+  }
+
   void end_tension(double t) {
     if (!tension_) return;
     out_.body.extremes.tension_time += t - tension_since_;
@@ -670,6 +680,7 @@ class SupportLoop final : public detail::GuardProbe {
       enter_full_contact(t, false);
     } else {
       zero_start_impact_ = true;
+      check_entry_reaction();
     }
   }
 
