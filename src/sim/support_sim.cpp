@@ -237,7 +237,10 @@ class SupportLoop final : public detail::GuardProbe {
     if (edge_ == 0) enter_full_contact(0.0, /*at_start=*/true);
     if (!stopped_) record_until(0.0, x_);
     observe(0.0, x_);
-    if (edge_ != 0 && !stopped_) first_uplift(0.0);
+    if (edge_ != 0 && !stopped_) {
+      first_uplift(0.0);
+      check_entry_reaction();
+    }
     bool restart = true;
     Stepper st;
     stepper_ = &st;
@@ -278,10 +281,11 @@ class SupportLoop final : public detail::GuardProbe {
       }
       // the guards on the step's samples
       const double t0 = step_t0(), t1 = walking_ ? walk_.t1() : st.t1();
-      smp_[0] = sample(t0, walking_ ? walk_.x0() : st.x0());
+      xs_[0] = walking_ ? walk_.x0() : st.x0();
+      smp_[0] = sample(t0, xs_[0]);
       for (int i = 1; i <= nsamp_; ++i) {
         const double ti = i == nsamp_ ? t1 : t0 + (t1 - t0) * i / nsamp_;
-        State xi;
+        State& xi = xs_[static_cast<std::size_t>(i)];
         if (i == nsamp_) {
           xi = walking_ ? walk_.x1() : st.x1();
         } else {
@@ -411,13 +415,12 @@ class SupportLoop final : public detail::GuardProbe {
     return s;
   }
 
-  // the extremes at the step's samples before `t_upto`
+  // the extremes at the step's samples before `t_upto` (the states the guards were sampled at)
   void fold_samples(double t_upto) {
     for (int i = 0; i <= nsamp_; ++i) {
-      if (smp_[static_cast<std::size_t>(i)].t >= t_upto) break;
-      State x;
-      dense_at(smp_[static_cast<std::size_t>(i)].t, x);
-      observe(smp_[static_cast<std::size_t>(i)].t, x);
+      const auto k = static_cast<std::size_t>(i);
+      if (smp_[k].t >= t_upto) break;
+      observe(smp_[k].t, xs_[k]);
     }
   }
 
@@ -561,6 +564,13 @@ class SupportLoop final : public detail::GuardProbe {
     r.events.push_back(event_at(t_, EventKind::kPivotTension));
   }
 
+  // a rocking state entered (the start, an impact) whose support would already have to pull: its
+  // lift-off guard starts below zero, where no crossing is seen, so it is decided here
+  void check_entry_reaction() {
+    const BaseAcceleration a = motion_.at(t_, cursor_);
+    if (evaluate(p_, edge_, x_, a).fy < 0.0) rocking_lift_off();
+  }
+
   void end_tension(double t) {
     if (!tension_) return;
     out_.body.extremes.tension_time += t - tension_since_;
@@ -670,6 +680,7 @@ class SupportLoop final : public detail::GuardProbe {
       enter_full_contact(t, false);
     } else {
       zero_start_impact_ = true;
+      check_entry_reaction();
     }
   }
 
@@ -766,6 +777,7 @@ class SupportLoop final : public detail::GuardProbe {
   double zeno_t0_ = -kInf;
   int zeno_count_ = 0;
   std::array<detail::GuardSample, detail::kMaxSamples + 1> smp_{};
+  std::array<State, detail::kMaxSamples + 1> xs_{};  // the states of the samples
   Stepper* stepper_ = nullptr;
   ExactWalk walk_{p_};
   bool walk_ok_ = false;    // full contact may be walked exactly (a sampled record, or none)

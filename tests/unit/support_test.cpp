@@ -434,6 +434,22 @@ TEST(Support, TopplingBlockReportsThePivotTensionItNeeds) {
   EXPECT_NE(first_of(r.body, EventKind::kPivotTension), nullptr);
 }
 
+// a block set rocking so fast that the support would have to pull on its pivot at once, with the
+// lift-off consistent: it would fly, which ends the run saying so (as the floor's engine lifts off)
+TEST(Support, FastRockingFromTheStartWouldFly) {
+  const Body body(BodyParameters::rectangular_block(1000.0, 0.2, 0.8));
+  InitialState init;
+  init.theta_dot = 6.0;  // h theta_dot^2 = 29 m/s^2 > g
+  const SimulationResult floor = simulate(body, GroundMotion::none(1.0), init);
+  EXPECT_GE(floor.extremes.lift_offs, 1);
+  const SupportParameters s = SupportParameters::from_frequency(400.0, 1000.0, 2.5, 0.05);
+  const SupportRunResult r = simulate(body, s, GroundMotion::none(1.0), init);
+  EXPECT_EQ(r.body.status, Status::kStopped);
+  EXPECT_EQ(r.body.t_end, 0.0);
+  EXPECT_NE(r.body.message.find("flight on a support is not modelled"), std::string::npos)
+      << r.body.message;
+}
+
 // overturning on a soft support, as an outcome
 TEST(Support, OverturnsAsAnOutcome) {
   const Body body(BodyParameters::rectangular_block(1000.0, 0.15, 0.9));
