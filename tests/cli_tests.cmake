@@ -13,7 +13,7 @@ flexrock_add_test(flexrock_case_file_tests
 if(TARGET flexrock)
   foreach(script usage bad_input run_outcomes real_inputs io_safety keys_reference record_formats
                  assumption_breaks compliant_step_cost friction_tie azimuths verb_help restraints
-                 support_input body_of_revolution)
+                 support_input body_of_revolution configurations)
     add_test(NAME cli_${script}
              COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/cli/${script}.sh $<TARGET_FILE:flexrock>
                      ${PROJECT_SOURCE_DIR})

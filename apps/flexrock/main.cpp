@@ -910,10 +910,10 @@ int main(int argc, char** argv) {
       fmt::print("{}{}{}{}{}{}{}{}{}{}{}{}{}", io::body_key_reference(), io::pair_key_reference(),
                  io::record_format_reference(), io::pulse_key_reference(),
                  io::solver_key_reference(), io::support_key_reference(),
-                 io::restraint_key_reference(),
-                 io::time_history_column_reference(), io::event_column_reference(),
-                 io::azimuth_column_reference(), io::study_column_reference(),
-                 cli::fragility_curve_column_reference(), io::qualify_key_reference());
+                 io::restraint_key_reference(), io::time_history_column_reference(),
+                 io::event_column_reference(), io::azimuth_column_reference(),
+                 io::study_column_reference(), cli::fragility_curve_column_reference(),
+                 io::qualify_key_reference());
       return 0;
     }
     if (studies.selected()) return studies.run();

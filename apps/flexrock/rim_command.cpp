@@ -72,6 +72,15 @@ int run_body_of_revolution(const io::Case& c, const std::string& output_dir, boo
       if (!p->empty() && write_error.empty()) fmt::print("  wrote {}\n", *p);
   }
   std::fflush(stdout);
+  if (std::isfinite(r.closest_pass)) {
+    // a roll through upright is resolved by the pivot zone: what follows is one sample, not a
+    // converged answer (§27 measures how the peak tilt moves with the zone)
+    fmt::print(stderr,
+               "warning: the body rolled through upright within {:.3g} rad without landing; the "
+               "response after that pass depends on how it is resolved and is not converged: take "
+               "this run as one sample (docs/theory.md §27)\n",
+               r.closest_pass);
+  }
   if (!write_error.empty()) {
     fmt::print(stderr, "flexrock: error: could not write the outputs: {}\n", write_error);
     return 1;

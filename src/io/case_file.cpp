@@ -934,6 +934,16 @@ Case load_case(const std::string& path) {
     }
   }
   top.finish("at the top level");
+  // a body of revolution under a pair runs on the 3D engine: a support or restraints under it
+  // are not built there
+  if (c.body3d && c.pair && (c.support || !c.restraints.empty())) {
+    const char* key = c.support ? "support" : "restraint";
+    top.fail_at(line_of(*doc.get(key)), key,
+                std::string("a body of revolution under a record pair runs in 3D, where ") +
+                    (c.support ? "a [support] is" : "[[restraint]] tables are") +
+                    " not modelled yet; give one horizontal component (the planar engine, on the "
+                    "body's section) or leave it out");
+  }
   if (c.body_type == "rocking_frame") {
     // the frame runs on its own engine: a support or restraints under it are not built
     if (c.support) {
