@@ -156,8 +156,8 @@ struct Case {
   // [support]: the body stands on a support that moves with it (docs/theory.md §24); none: the
   // rigid floor
   std::optional<SupportParameters> support;
-  std::optional<RockingFrame> frame;     // body.type = "rocking_frame": the frame (`body` is its
-                                         // equivalent rigid body; run it with simulate_frame)
+  std::optional<RockingFrame> frame;  // body.type = "rocking_frame": the frame (`body` is its
+                                      // equivalent rigid body; run it with simulate_frame)
 };
 
 /// The ground motion of a case with a record pair at azimuth `beta_deg` [deg] (from H1 toward H2):
