@@ -531,7 +531,7 @@ bool Loop::run_rolling() {
       // a local minimum of the tilt on the samples: a pass by upright (rolled round it); the
       // departure from upright (uplift, landing) starts afresh
       if (i == 0 && upright_start) tilt_prev_ = tilt_prev2_ = 0.0;
-      if (i > 0 || !upright_start) {
+      if (i > 0) {  // sample 0 is the last step's last
         if (tilt_prev_ < tilt_prev2_ && r.tilt >= tilt_prev_)
           res_.closest_pass = std::min(res_.closest_pass, tilt_prev_);
         tilt_prev2_ = tilt_prev_;
