@@ -780,7 +780,8 @@ StudyCommands::StudyCommands(CLI::App& app) : impl_(std::make_unique<Impl>()) {
       "--worst-azimuth", s.worst_azimuth,
       "a sweep of record pairs ([[suite]] horizontal2): the azimuths of one pair at one level "
       "are one observation, failed if any azimuth failed, its measure their median (RotD50 of "
-      "--im on the azimuth grid; needs [scales] factors). Without it every azimuth is one "
+      "--im on the azimuth grid; with --im requested_level on a sweep to targets, the pair's "
+      "RotD50 level). Without it every azimuth is one "
       "observation: the random-azimuth fragility");
   s.fragility->add_option("--confidence", s.confidence, "level of the bounds (default 0.95)");
   s.fragility->add_option("-o,--output", s.output, "fit CSV (default: none)");

@@ -752,6 +752,12 @@ def simulate_case(case: Case) -> Result:
         raise InputError(f"{case.source}: [support]: run it with flexrock.simulate_on_support("
                          "Body(case.body), case.support, case.motion, case.initial, case.options) "
                          "or 'flexrock run'")
+    if len(case.restraints):
+        # the restrained engine returns the ties' results too, which Result does not carry: a
+        # run without them would be the free body's
+        raise InputError(f"{case.source}: [[restraint]]: run it with flexrock.simulate_restrained("
+                         "Body(case.body), case.restraints, case.motion, case.initial, "
+                         "case.options) or 'flexrock run'")
     try:
         # a rocking frame runs as its equivalent body within the frame's model (docs/theory.md §25)
         raw = _flexrock._simulate_case(case)

@@ -608,7 +608,7 @@ Intensity
                      "its kinetic one (None or inf: equal to the static one)");
   py::class_<SweepRecord>(m, "SweepRecord")
       .def(py::init([](std::string name, GroundMotion motion) {
-             return SweepRecord{std::move(name), std::move(motion)};
+             return SweepRecord{std::move(name), std::move(motion), nullptr};
            }),
            py::arg("name"), py::arg("motion"))
       .def_readwrite("name", &SweepRecord::name)

@@ -54,3 +54,13 @@ def test_a_case_file_carries_its_restraints(source_dir):
     r = fr.simulate_restrained(body, c.restraints, c.motion, c.initial, c.options)
     assert r.result.status == fr.Status.completed
     assert [s.yielded for s in r.restraints] == [False, True, True]
+
+
+def test_run_case_refuses_restraints_rather_than_drop_them(source_dir, tmp_path):
+    # the free body's run under the restrained case's name would be a wrong answer
+    case = str(source_dir / "examples" / "cases" / "post_tensioned_pier.toml")
+    with pytest.raises(fr.InputError, match=r"\[\[restraint\]\]: run it with flexrock.simulate_restrained"):
+        fr.run_case(case, output_dir=str(tmp_path))
+    with pytest.raises(fr.InputError, match="simulate_restrained"):
+        fr.simulate_case(fr.load_case(case))
+    assert not any(tmp_path.iterdir())

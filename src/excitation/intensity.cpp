@@ -340,6 +340,27 @@ double spectral_acceleration(const std::vector<double>& t, const std::vector<dou
   return omega * (omega * peak);
 }
 
+RotD rotd_peak_acceleration(const std::vector<double>& a1, const std::vector<double>& a2) {
+  FLEXROCK_THROW_UNLESS(a1.size() == a2.size() && !a1.empty(),
+                        "RotD: the two components must have the same samples, got " +
+                            std::to_string(a1.size()) + " and " + std::to_string(a2.size()));
+  RotD r;
+  r.by_angle.resize(180);
+  for (int k = 0; k < 180; ++k) {
+    double c = 0.0, s = 0.0;
+    direction_cosines(k, c, s);
+    double peak = 0.0;
+    for (std::size_t i = 0; i < a1.size(); ++i)
+      peak = std::max(peak, std::abs(c * a1[i] + s * a2[i]));
+    r.by_angle[static_cast<std::size_t>(k)] = peak;
+  }
+  std::vector<double> sorted = r.by_angle;
+  std::sort(sorted.begin(), sorted.end());
+  r.rotd50 = 0.5 * (sorted[89] + sorted[90]);
+  r.rotd100 = sorted.back();
+  return r;
+}
+
 RotD rotd_spectral_acceleration(const std::vector<double>& t, const std::vector<double>& a1,
                                 const std::vector<double>& a2, double period, double zeta) {
   require_spectral_period(period, "RotD: period");

@@ -640,7 +640,7 @@ QualifyFile load_qualify_file(const std::string& path) {
 namespace {
 
 double design_scale(const study::SweepSpec& spec, std::size_t record) {
-  const study::Intensity im = study::record_intensity(spec, spec.records[record].motion);
+  const study::Intensity im = study::record_intensity(spec, spec.records[record]);
   return spec.scale_kind == study::ScaleKind::kTargetPga ? spec.scales[0] / im.pga : spec.scales[0];
 }
 
@@ -830,7 +830,7 @@ QualifyReport QualifySession::finish() {
   // records at the design level
   Json recs = Json::array();
   for (std::size_t r = 0; r < nr; ++r) {
-    const study::Intensity im = study::record_intensity(spec, spec.records[r].motion);
+    const study::Intensity im = study::record_intensity(spec, spec.records[r]);
     const double s = rows[r].scale;  // case 0's row of this record
     recs.push_back({{"name", spec.records[r].name},
                     {"pga_m_per_s2", im.pga},

@@ -159,9 +159,7 @@ JournalCheck sweep_journal_check(const study::SweepSpec& spec) {
   // the bodies and record intensities, once: every run's input fields follow from them
   auto bodies = std::make_shared<std::vector<Body>>();
   for (const study::SweepBody& b : spec.bodies) bodies->emplace_back(b.body);
-  auto im = std::make_shared<std::vector<study::Intensity>>();
-  for (const study::SweepRecord& r : spec.records)
-    im->push_back(study::record_intensity(spec, r.motion));
+  auto im = std::make_shared<std::vector<study::Intensity>>(study::record_intensities(spec));
   auto runs = std::make_shared<std::vector<study::SweepRun>>(study::sweep_runs(spec));
   auto design = std::make_shared<study::SampleDesign>(study::sample_design(spec));
   // where the fields are, by column name

@@ -308,7 +308,7 @@ std::vector<study::SweepRecord> read_suite(Keys& r, std::uint64_t& hash,
     std::string name = fs::path(h.paths[i]).stem().string();
     if (!has_v && !has_h2) {
       check_name(r, "horizontal", name);
-      out.push_back({name, hr.to_motion()});
+      out.push_back({name, hr.to_motion(), nullptr});
       continue;
     }
     std::optional<Record> h2r, vr;
@@ -330,19 +330,22 @@ std::vector<study::SweepRecord> read_suite(Keys& r, std::uint64_t& hash,
     }
     if (!has_h2) {
       check_name(r, "horizontal", name);
-      out.push_back({name, combine(hr, &*vr)});
+      out.push_back({name, combine(hr, &*vr), nullptr});
       continue;
     }
     // a pair: one record per azimuth, the plane's component a = H1 cos(beta) + H2 sin(beta)
     // in m/s^2 (azimuth_motion's projection), named "<pair>@<beta>"
-    const std::vector<double> h1si = hr.to_si(), h2si = h2r->to_si();
+    auto components = std::make_shared<study::RecordPairComponents>();
+    components->t = hr.time;
+    components->h1 = hr.to_si();
+    components->h2 = h2r->to_si();
     for (const double beta : azimuths) {
       Record a = hr;
       a.units = AccelUnit::kMetersPerSecond2;
-      a.values = project_horizontal(h1si, h2si, beta);
+      a.values = project_horizontal(components->h1, components->h2, beta);
       const std::string at = name + "@" + num(beta);
       check_name(r, "horizontal", at);
-      out.push_back({at, has_v ? combine(a, &*vr) : a.to_motion()});
+      out.push_back({at, has_v ? combine(a, &*vr) : a.to_motion(), components});
     }
   }
   return out;

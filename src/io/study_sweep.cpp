@@ -141,7 +141,7 @@ SweepManifest load_sweep_manifest(const std::string& path) {
   } else if (ti) {
     // stripes at levels of any measure that grows with the factor: sa:T[:zeta], pgv, pgd, ...
     const std::string what =
-        "a measure that grows with the scale factor: pgv, pgd, arias, cav, "
+        "a measure that grows with the scale factor: pgd, arias, cav, "
         "sa:T or sa:T:zeta (T [s], zeta 0.05 by default)";
     const std::string name = *sk->string_opt("target_im", "a string, " + what);
     study::MeasureRequest r;

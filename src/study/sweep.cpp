@@ -167,6 +167,44 @@ Intensity record_intensity(const SweepSpec& spec, const GroundMotion& motion) {
   return im;
 }
 
+namespace {
+
+// the pair's RotD50 of the measure the spec's target scales (target_pga: the PGA; target_im:
+// Sa, the only other measure with a RotD) [SI]
+double pair_target(const SweepSpec& spec, const SweepRecord& r) {
+  const RecordPairComponents& p = *r.pair;
+  if (spec.scale_kind == ScaleKind::kTargetPga) return rotd_peak_acceleration(p.h1, p.h2).rotd50;
+  if (spec.target.name == "sa") {
+    return rotd_spectral_acceleration(p.t, p.h1, p.h2, spec.target.period, spec.target.zeta).rotd50;
+  }
+  throw InputError("sweep: record '" + r.name +
+                   "': the azimuths of a record pair are scaled alike, by the pair's RotD50 of "
+                   "the target measure: target_im takes sa for pairs, got '" +
+                   spec.target.name + "'");
+}
+
+}  // namespace
+
+Intensity record_intensity(const SweepSpec& spec, const SweepRecord& record) {
+  Intensity im = record_intensity(spec, record.motion);
+  if (record.pair && spec.scale_kind != ScaleKind::kFactor) im.target = pair_target(spec, record);
+  return im;
+}
+
+std::vector<Intensity> record_intensities(const SweepSpec& spec) {
+  std::vector<Intensity> out;
+  out.reserve(spec.records.size());
+  std::map<const RecordPairComponents*, double> done;  // a pair's target, once for its azimuths
+  for (const SweepRecord& r : spec.records) {
+    out.push_back(record_intensity(spec, r.motion));
+    if (!r.pair || spec.scale_kind == ScaleKind::kFactor) continue;
+    const auto it = done.find(r.pair.get());
+    out.back().target = it != done.end() ? it->second : pair_target(spec, r);
+    done.emplace(r.pair.get(), out.back().target);
+  }
+  return out;
+}
+
 bool has_friction(const SweepSpec& spec) {
   if (std::isfinite(spec.solver.friction_coefficient)) return true;
   for (const UncertainParameter& p : spec.uncertainty.parameters) {
@@ -280,18 +318,21 @@ void validate(const SweepSpec& spec) {
   for (const SweepRecord& r : spec.records) {
     FLEXROCK_THROW_UNLESS(r.motion.duration() > 0.0,
                           "sweep: record '" + r.name + "': expected a record lasting > 0 s");
-    im.push_back(record_intensity(spec, r.motion));
+  }
+  im = record_intensities(spec);
+  for (std::size_t k = 0; k < spec.records.size(); ++k) {
+    const SweepRecord& r = spec.records[k];
     const BaseAcceleration p = peak_acceleration(r.motion);
     peak.push_back(std::max(p.x, p.y));
     if (spec.scale_kind == ScaleKind::kTargetPga) {
       FLEXROCK_THROW_UNLESS(
-          im.back().pga > 0.0,
+          (r.pair ? im[k].target : im[k].pga) > 0.0,
           "sweep: record '" + r.name + "': PGA is zero, it cannot be scaled to a target PGA");
     }
     if (spec.scale_kind == ScaleKind::kTargetMeasure) {
-      FLEXROCK_THROW_UNLESS(im.back().target > 0.0,
-                            "sweep: record '" + r.name + "': its " + measure_column(spec.target) +
-                                " is zero, it cannot be scaled to a target");
+      FLEXROCK_THROW_UNLESS(im[k].target > 0.0, "sweep: record '" + r.name + "': its " +
+                                                    measure_column(spec.target) +
+                                                    " is zero, it cannot be scaled to a target");
     }
   }
   // every run as it will be made, before any is: a bad one found after others ran would leave
@@ -353,7 +394,9 @@ SweepRow sweep_inputs(const SweepSpec& spec, const SweepRun& run, const Body& bo
   row.record = run.record;
   row.scale_index = run.scale_index;
   const double s = spec.scales.at(run.scale_index);
-  row.scale = spec.scale_kind == ScaleKind::kTargetPga ? s / im.pga : s;
+  // a pair's azimuth under target_pga: the pair's RotD50 PGA (record_intensity), else its own
+  row.scale =
+      spec.scale_kind == ScaleKind::kTargetPga ? s / (im.target > 0.0 ? im.target : im.pga) : s;
   if (spec.scale_kind == ScaleKind::kTargetMeasure) {
     // Arias intensity grows with the square of the factor
     const int power = find_intensity_measure(spec.target.name)->scale_power;
@@ -414,7 +457,7 @@ SweepRow run_one(const SweepSpec& spec, const SweepRun& run, const Body& spec_bo
 
 SweepRow run_sweep_one(const SweepSpec& spec, const SweepRun& run) {
   const Body body(spec.bodies.at(run.body).body);
-  return run_one(spec, run, body, record_intensity(spec, spec.records.at(run.record).motion),
+  return run_one(spec, run, body, record_intensity(spec, spec.records.at(run.record)),
                  sample_design(spec));
 }
 
@@ -445,9 +488,7 @@ std::vector<SweepRow> run_sweep(const SweepSpec& spec, const std::vector<std::si
   std::vector<Body> bodies;
   bodies.reserve(spec.bodies.size());
   for (const SweepBody& b : spec.bodies) bodies.emplace_back(b.body);
-  std::vector<Intensity> im;
-  im.reserve(spec.records.size());
-  for (const SweepRecord& r : spec.records) im.push_back(record_intensity(spec, r.motion));
+  const std::vector<Intensity> im = record_intensities(spec);
   const SampleDesign design = sample_design(spec);
 
   std::vector<SweepRow> rows(todo.size());

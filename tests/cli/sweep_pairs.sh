@@ -186,14 +186,42 @@ assert a["im_name"] == "rotd50:pga_g" and b["im_name"] == "pga_g", (a["im_name"]
 for k in ("samples", "failures", "theta", "beta", "theta_lower", "theta_upper"):
     assert a[k] == b[k], (k, a[k], b[k])
 PY
-# refused: a sweep of single records, and azimuths scaled apart (target_pga)
+# refused: a sweep of single records
 run "$FLEXROCK" fragility alone.csv --worst-azimuth
 expect_rc 2 "worst azimuth without pairs"
 expect_in "$WORK/err" "is not one azimuth of a record pair"
-sed -e 's/^factors = .*/target_pga = [0.2, 0.4]/' wa.toml >wt.toml
+# a target scales a pair, every azimuth alike, to the pair's RotD50 (computed here from the files)
+sed -e 's/^factors = .*/target_pga = [0.5, 0.6, 0.7, 0.8, 0.9, 1.0, 1.1]\nunits = "g"/' wa.toml >wt.toml
 run "$FLEXROCK" sweep wt.toml -o wt.csv -q
 expect_rc 0 "a sweep of pairs to target PGAs"
-run "$FLEXROCK" fragility wt.csv --worst-azimuth
-expect_rc 2 "worst azimuth over azimuths scaled apart"
-expect_in "$WORK/err" "needs every azimuth of a station scaled alike"
+python3 - <<'PY' || fail "a pair scaled to its RotD50 PGA"
+import csv, math
+g = 9.80665
+def values(name):
+    lines = open(name).read().split("\n")[4:]
+    return [g * float(x) for l in lines for x in l.split()]
+rows = list(csv.DictReader(open("wt.csv")))
+for stem in ("RSN8883_14383980_1384", "RSN8884_14383980_1387"):
+    a1, a2 = values(stem + "9090.AT2" if "8883" in stem else stem + "3090.AT2"), \
+             values(stem + "9360.AT2" if "8883" in stem else stem + "3360.AT2")
+    peaks = sorted(max(abs(math.cos(math.radians(k)) * x + math.sin(math.radians(k)) * y)
+                       for x, y in zip(a1, a2)) for k in range(180))
+    rotd50 = 0.5 * (peaks[89] + peaks[90])
+    mine = [r for r in rows if r["record"].startswith(stem[:7])]
+    assert len(mine) == 56, len(mine)
+    for level in ("0.5", "0.6", "0.7", "0.8", "0.9", "1", "1.1"):
+        at = [r for r in mine if r["requested_level"] == level]
+        assert len({r["scale"] for r in at}) == 1, [r["scale"] for r in at]  # every azimuth alike
+        s = float(at[0]["scale"])
+        assert math.isclose(s * rotd50, float(level) * g, rel_tol=1e-12), (s * rotd50, level)
+        # each azimuth's own PGA is its component's, not the target
+        assert len({r["pga_m_per_s2"] for r in at}) > 1
+PY
+run "$FLEXROCK" fragility wt.csv --worst-azimuth --im requested_level -q
+expect_rc 0 "worst azimuth over a pair sweep to targets"
+sed -e 's/^factors = .*/target_im = "arias"\ntargets = [0.1]/' wa.toml >wv.toml
+run "$FLEXROCK" sweep wv.toml -o wv.csv -q
+expect_rc 2 "a pair to a target without a RotD"
+expect_in "$WORK/err" "target_im takes sa for pairs, got 'arias'"
+[ ! -e wv.csv ] || fail "output written for a refused sweep"
 echo OK

@@ -100,6 +100,11 @@ struct RotD {
   std::vector<double> by_angle;  // Sa at theta = 0, 1, ..., 179 degrees [units of a]
 };
 
+/// RotD50 and RotD100 of the peak acceleration of the pair (a1, a2) [units of a]: for each angle
+/// theta = 0, 1, ..., 179 degrees the largest |a1 cos(theta) + a2 sin(theta)| over the samples
+/// (exact on the samples, no oscillator). Throws InputError when the two differ in length.
+RotD rotd_peak_acceleration(const std::vector<double>& a1, const std::vector<double>& a2);
+
 /// RotD50 and RotD100 of the pair (a1, a2) sampled at the same times `t` [s], at natural
 /// `period` [s] and damping ratio `zeta`. Throws InputError when the two differ in length.
 RotD rotd_spectral_acceleration(const std::vector<double>& t, const std::vector<double>& a1,

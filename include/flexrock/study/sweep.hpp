@@ -5,6 +5,8 @@
 
 #include <cstddef>
 #include <functional>
+#include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -68,9 +70,19 @@ struct SweepBody {
   std::optional<double> kinetic_friction_coefficient = std::nullopt;
 };
 
+/// The two horizontal components of a record pair [m/s^2] at their common sample times [s], shared
+/// by the pair's azimuth records.
+struct RecordPairComponents {
+  std::vector<double> t, h1, h2;
+};
+
 struct SweepRecord {
   std::string name;     // as the CSV shows it
   GroundMotion motion;  // [m/s^2] at scale 1
+  // one azimuth of a record pair (a [[suite]] with horizontal2), else null. A target (target_pga,
+  // target_im of sa) scales every azimuth of the pair alike, by the pair's RotD50 of the
+  // target measure, so that the pair meets the target whatever the body's orientation
+  std::shared_ptr<const RecordPairComponents> pair = nullptr;
 };
 
 /// How the scale factors are given.
@@ -107,6 +119,12 @@ struct SweepSpec {
 /// The intensity of a spec's record: intensity(motion, spec.measures), with the target measure
 /// of a kTargetMeasure spec.
 Intensity record_intensity(const SweepSpec& spec, const GroundMotion& motion);
+/// The same for a record of the spec; an azimuth of a pair (SweepRecord::pair) under a target
+/// gets the pair's RotD50 of the target measure as its `target` (what its factor divides). Throws
+/// InputError for a pair under a target measure without a RotD (other than sa).
+Intensity record_intensity(const SweepSpec& spec, const SweepRecord& record);
+/// record_intensity of every record of the spec, a pair's RotD50 computed once.
+std::vector<Intensity> record_intensities(const SweepSpec& spec);
 
 /// One run of a sweep. Run indices are body-major: index = (body * records + record) * scales
 /// + scale_index.
