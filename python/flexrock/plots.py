@@ -255,6 +255,15 @@ def response_figure(
     first row after each rise of the impact loss or change of pivot, so within one output
     interval of the impact (legend "impact (from the history)").
 
+    A history with a support's columns (a case with ``[support]``) gains a panel after the
+    reactions, "support displacement / force": ``support_u_m`` [m] on the left axis,
+    ``support_force_N`` [N] on a twin axis (the last of ``fig.axes``). One with restraints'
+    columns (``[[restraint]]``) gains "restraint forces": one line per ``restraint_force_N_i``,
+    each tie's yields (triangles) and fracture (a cross) at their times and forces, from
+    ``<events stem>.restraints.csv`` next to the event log (else the summary's copy); the energy
+    residual then holds the ties' plastic and fracture work, which no column gives. A 3D body of
+    revolution's history is drawn by :func:`rim_figure`.
+
     Parameters
     ----------
     source : flexrock.Result, str or dict
@@ -270,12 +279,16 @@ def response_figure(
         [in], for a new figure.
     fig : matplotlib.figure.Figure, optional
         An empty figure to draw into; default a new pyplot figure.
+    restraint_events : dict, optional
+        The restraints' event log's columns (``time_s``, ``restraint``, ``event``, ``force_N``),
+        overriding the file next to ``source``.
 
     Returns
     -------
     matplotlib.figure.Figure
         The figure; its Axes are ``fig.axes``: accelerations, theta, q (a flexible body only),
-        reactions, friction demand, energies.
+        reactions, support (with ``[support]``), restraint forces (with restraints), friction
+        demand, energies, then the support force's twin axis.
     """
     cols, events, summary = _run_data(source, events, summary)
     t = np.asarray(cols["time_s"], dtype=float)

@@ -120,6 +120,12 @@ def test_restraints_get_a_line_each_with_their_yields_marked(pier):
     shutil.copy(pier, alone / "pier.csv")
     ax = _panel(plots.response_figure(str(alone / "pier.csv"), fig=Figure()), "restraint forces")
     assert len(ax.lines) == 3 and not [ln for ln in ax.lines if ln.get_gid().endswith("_yield")]
+    # the summary without the ties' event log: the summary's copy of the events marks them
+    shutil.copy(pier.parent / "post_tensioned_pier.summary.json", alone / "pier.summary.json")
+    ax = _panel(plots.response_figure(str(alone / "pier.csv"), fig=Figure()), "restraint forces")
+    (marks,) = _gid(ax.lines, "restraint_3_yield")
+    np.testing.assert_array_equal(
+        marks.get_xdata(), [float(e["time_s"]) for e in events if e["restraint"] == "3" and e["event"] == "yield"])
     # without the restraints' columns: the planar figure
     bare = {k: v for k, v in cols.items() if not k.startswith("restraint_")}
     assert [a.get_ylabel() for a in plots.response_figure(bare, fig=Figure()).axes] == PLANAR_PANELS
