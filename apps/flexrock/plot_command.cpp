@@ -37,9 +37,10 @@ CLI::App* add_plot_command(CLI::App& app, PlotOptions& options) {
   plot->add_option("-o,--output", options.output,
                    "figure file, .png, .svg or .pdf (default: the CSV's name with .png)");
   plot->add_option("--kind", options.kind,
-                   "auto (by the CSV header), response, loop, spectrum, fragility, ida (a "
+                   "auto (by the CSV header), response, loop, rim (a body of revolution run in "
+                   "3D: the tilt's orbit and the contact's path), spectrum, fragility, ida (a "
                    "sweep's response against its intensity measure, a curve per record)")
-      ->check(CLI::IsMember({"auto", "response", "loop", "spectrum", "fragility", "ida"}));
+      ->check(CLI::IsMember({"auto", "response", "loop", "rim", "spectrum", "fragility", "ida"}));
   plot->add_option("--tlim,--xlim", options.tlim, "T0 T1: a time history's window [s]")
       ->expected(2);
   plot->add_option("--measure", options.measure,

@@ -1,7 +1,8 @@
 # SPDX-License-Identifier: BSD-3-Clause
 """``python3 -m flexrock.plot FILE [-o OUT.png|.svg|.pdf] [--kind ...]``: what ``flexrock plot`` runs.
 
-FILE is a run's time-history CSV (its summary JSON and event log are read when next to it), a
+FILE is a run's time-history CSV (its summary JSON and event log are read when next to it; a body
+of revolution run in 3D gets its own figure, the tilt's orbit and the contact's path), a
 spectrum CSV, a sweep CSV (its fragility: fit, band and observed fractions; with ``--kind ida``
 its IDA curves) or an output of ``flexrock fragility`` (the fit CSV or the curve CSV); the kind is
 told by the header. Exit codes
@@ -29,6 +30,8 @@ def _kind_of(path: str) -> str:
         header = f.readline().strip().split(",")
     if "time_s" in header and "theta_rad" in header:
         return "response"
+    if {"time_s", "mode", "tilt_rad", "tilt_azimuth_deg", "contact_angle_deg"} <= set(header):
+        return "rim"  # a body of revolution run in 3D
     if "overturned" in header and "pga_m_per_s2" in header:
         return "fragility"  # a sweep CSV
     if {"theta", "beta", "samples"} <= set(header) or {"probability", "lower", "upper"} <= set(header):
@@ -40,6 +43,7 @@ def _kind_of(path: str) -> str:
 _NEEDED = {
     "response": ("time_s", "theta_rad"),
     "loop": ("theta_rad", "reaction_y_N", "resultant_m"),
+    "rim": ("time_s", "tilt_rad", "tilt_azimuth_deg", "contact_angle_deg"),
     "spectrum": ("a_p_over_g_tan_alpha", "omega_p_over_p"),
 }
 
@@ -60,9 +64,10 @@ def main(argv=None) -> int:
     )
     parser.add_argument(
         "--kind",
-        choices=["auto", "response", "loop", "spectrum", "fragility", "ida"],
+        choices=["auto", "response", "loop", "rim", "spectrum", "fragility", "ida"],
         default="auto",
-        help="figure: auto (by the header), response, loop (moment vs theta), spectrum, fragility, "
+        help="figure: auto (by the header), response, loop (moment vs theta), rim (a body of "
+        "revolution run in 3D: tilt orbit and contact path), spectrum, fragility, "
         "ida (a sweep's response against its intensity measure, one curve per record)",
     )
     parser.add_argument(
@@ -72,7 +77,7 @@ def main(argv=None) -> int:
         type=float,
         metavar=("T0", "T1"),
         default=None,
-        help="a time history's window [s] (response and loop figures)",
+        help="a time history's window [s] (response, loop and rim figures)",
     )
     parser.add_argument(
         "--measure",
@@ -124,8 +129,8 @@ def main(argv=None) -> int:
     except (OSError, UnicodeDecodeError) as e:
         return _error(f"{args.file}: cannot read: {e}", 2)
     if args.tlim is not None:
-        if kind not in ("response", "loop"):
-            return _error(f"--tlim applies to a time history (response or loop figure), not a {kind} figure", 2)
+        if kind not in ("response", "loop", "rim"):
+            return _error(f"--tlim applies to a time history (response, loop or rim figure), not a {kind} figure", 2)
         if not args.tlim[0] < args.tlim[1]:
             return _error(f"--tlim {args.tlim[0]:g} {args.tlim[1]:g}: expected T0 < T1", 2)
     stem = args.file[:-4] if args.file.endswith(".csv") else args.file
@@ -139,8 +144,15 @@ def main(argv=None) -> int:
         warnings.simplefilter("always", FragilityWarning)
         try:
             if kind == "response":
-                fig.set_size_inches(9, 11)
+                # a support's and the restraints' panels, when the history has them, make it taller
+                with open(args.file, newline="") as f:
+                    header = f.readline().strip().split(",")
+                extra = ("support_u_m" in header) + any(h.startswith("restraint_force_N_") for h in header)
+                fig.set_size_inches(9, 11 + 1.8 * extra)
                 plots.response_figure(args.file, xlim=args.tlim, fig=fig)
+            elif kind == "rim":
+                fig.set_size_inches(11, 8)
+                plots.rim_figure(args.file, xlim=args.tlim, fig=fig)
             elif kind == "loop":
                 fig.set_size_inches(6, 5)
                 plots.moment_rotation_loop(args.file, tlim=args.tlim, fig=fig)

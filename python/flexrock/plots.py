@@ -33,6 +33,9 @@ __all__ = [
     "load_run",
     "response_figure",
     "moment_rotation_loop",
+    "rim_figure",
+    "load_rim",
+    "is_rim_history",
     "spectrum_map",
     "read_spectrum",
     "fragility_curve",
@@ -154,6 +157,79 @@ def _event_times(events, kind: str) -> np.ndarray:
     return np.asarray(events["time_s"], dtype=float)[mask]
 
 
+# --- a support's and restraints' panels --------------------------------------------------------
+
+
+def _restraint_numbers(cols) -> list:
+    # the ties of a case with [[restraint]] tables, by their 1-based number in the history's
+    # restraint_force_N_<i> columns
+    prefix = "restraint_force_N_"
+    return sorted(int(k[len(prefix):]) for k in cols if k.startswith(prefix) and k[len(prefix):].isdigit())
+
+
+def _restraint_events(source, summary):
+    # the ties' events: "<events stem>.restraints.csv" beside a CSV's event log, else the summary's
+    # copy of them; None when neither is there
+    if isinstance(source, (str, os.PathLike)):
+        path = os.fspath(source)
+        folder = os.path.dirname(path)
+        stem = os.path.basename(path)
+        stem = stem[:-4] if stem.endswith(".csv") else stem
+        logs = []
+        if summary and summary.get("outputs", {}).get("events"):
+            logs.append(os.path.basename(summary["outputs"]["events"]))
+        logs.append(stem + ".events.csv")
+        for log in logs:
+            candidate = os.path.join(folder, (log[:-4] if log.endswith(".csv") else log) + ".restraints.csv")
+            if os.path.exists(candidate):
+                return _read_columns(candidate)
+    rows = ((summary or {}).get("restraints") or {}).get("events")
+    if rows:
+        names = ("time_s", "restraint", "event", "force_N")
+        return {n: [r.get(n) for r in rows] for n in names}
+    return None
+
+
+def _support_panel(ax, t, cols):
+    # the support's displacement from the ground (left axis) and its spring and dashpot force
+    # k u + c u_dot (right axis, a twin: the last of fig.axes)
+    line_u = ax.plot(t, cols["support_u_m"], lw=0.8, color="tab:blue", label="displacement u", gid="support_u")
+    ax.set_ylabel("support u [m]")
+    ax_force = ax.twinx()
+    line_f = ax_force.plot(
+        t, cols["support_force_N"], lw=0.8, color="tab:brown", label="force k u + c u̇", gid="support_force"
+    )
+    ax_force.set_ylabel("support force [N]")
+    ax.set_title("support displacement / force", fontsize="small", loc="left")
+    ax.legend(line_u + line_f, [ln.get_label() for ln in line_u + line_f], loc="upper right", fontsize="small")
+
+
+def _restraint_panel(ax, t, cols, ties, events):
+    # one line per tie; its yields (triangles) and fracture (a cross) where its event log says
+    for i in ties:
+        (line,) = ax.plot(t, cols[f"restraint_force_N_{i}"], lw=0.8, label=f"restraint {i}", gid=f"restraint_{i}")
+        if events is None or "event" not in events:
+            continue
+        who = np.asarray(events["restraint"], dtype=float)
+        when = np.asarray(events["time_s"], dtype=float)
+        force = np.asarray(events["force_N"], dtype=float)
+        for kind, style, size in (("yield", "^", 5), ("fracture", "X", 8)):
+            mask = (who == i) & np.array([e == kind for e in events["event"]], dtype=bool)
+            if mask.any():
+                ax.plot(
+                    when[mask], force[mask], style, color=line.get_color(), mfc="none", ms=size,
+                    gid=f"restraint_{i}_{kind}",
+                )
+    handles, labels = ax.get_legend_handles_labels()
+    for kind, style, size, label in (("yield", "^", 5, "yield"), ("fracture", "X", 8, "fracture")):
+        if any(ln.get_gid() and ln.get_gid().endswith("_" + kind) for ln in ax.lines):
+            handles.append(Line2D([], [], ls="none", marker=style, color="0.3", mfc="none", ms=size))
+            labels.append(label)
+    ax.set_ylabel("restraint force [N]")
+    ax.set_title("restraint forces", fontsize="small", loc="left")
+    ax.legend(handles, labels, loc="upper right", fontsize="small", ncol=2)
+
+
 # --- the response figure -----------------------------------------------------------------------
 
 
@@ -166,6 +242,7 @@ def response_figure(
     xlim=None,
     figsize=(9, 11),
     fig: Optional[Figure] = None,
+    restraint_events=None,
 ) -> Figure:
     """The response of one run against time, in six panels (five for a rigid body).
 
@@ -177,6 +254,15 @@ def response_figure(
     + dissipated + residual). Without an event log the impacts are read from the history: at the
     first row after each rise of the impact loss or change of pivot, so within one output
     interval of the impact (legend "impact (from the history)").
+
+    A history with a support's columns (a case with ``[support]``) gains a panel after the
+    reactions, "support displacement / force": ``support_u_m`` [m] on the left axis,
+    ``support_force_N`` [N] on a twin axis (the last of ``fig.axes``). One with restraints'
+    columns (``[[restraint]]``) gains "restraint forces": one line per ``restraint_force_N_i``,
+    each tie's yields (triangles) and fracture (a cross) at their times and forces, from
+    ``<events stem>.restraints.csv`` next to the event log (else the summary's copy); the energy
+    residual then holds the ties' plastic and fracture work, which no column gives. A 3D body of
+    revolution's history is drawn by :func:`rim_figure`.
 
     Parameters
     ----------
@@ -193,12 +279,16 @@ def response_figure(
         [in], for a new figure.
     fig : matplotlib.figure.Figure, optional
         An empty figure to draw into; default a new pyplot figure.
+    restraint_events : dict, optional
+        The restraints' event log's columns (``time_s``, ``restraint``, ``event``, ``force_N``),
+        overriding the file next to ``source``.
 
     Returns
     -------
     matplotlib.figure.Figure
         The figure; its Axes are ``fig.axes``: accelerations, theta, q (a flexible body only),
-        reactions, friction demand, energies.
+        reactions, support (with ``[support]``), restraint forces (with restraints), friction
+        demand, energies, then the support force's twin axis.
     """
     cols, events, summary = _run_data(source, events, summary)
     t = np.asarray(cols["time_s"], dtype=float)
@@ -207,10 +297,15 @@ def response_figure(
 
         fig = plt.figure(figsize=figsize, layout="constrained")
     qs = sorted((k for k in cols if k.startswith("q") and k[1:].isdigit()), key=lambda k: int(k[1:]))
-    if qs:
-        ax_acc, ax_th, ax_q, ax_r, ax_f, ax_e = fig.subplots(6, 1, sharex=True)
-    else:  # a rigid body has no deformation to show: no empty panel
-        ax_acc, ax_th, ax_r, ax_f, ax_e = fig.subplots(5, 1, sharex=True)
+    ties = _restraint_numbers(cols)
+    has_support = "support_u_m" in cols
+    # a panel each for what the history has: a rigid body has no deformation to show, a body on
+    # the floor no support, a free one no restraints
+    names = ["acc", "theta"] + ["q"] * bool(qs) + ["reaction"]
+    names += ["support"] * has_support + ["restraints"] * bool(ties) + ["friction", "energy"]
+    panels = dict(zip(names, fig.subplots(len(names), 1, sharex=True)))
+    ax_acc, ax_th, ax_r, ax_f, ax_e = (panels[k] for k in ("acc", "theta", "reaction", "friction", "energy"))
+    ax_q = panels.get("q")
 
     # base accelerations
     ax_acc.plot(t, cols["base_acc_x_m_per_s2"], lw=0.8, label="horizontal $\\ddot X$")
@@ -272,6 +367,12 @@ def response_figure(
     ax_r.plot(t, cols["reaction_y_N"], lw=0.8, label="$F_J$ (normal)")
     ax_r.set_ylabel("reaction [N]")
     ax_r.legend(loc="upper right", fontsize="small")
+    if has_support:
+        _support_panel(panels["support"], t, cols)
+    if ties:
+        if restraint_events is None:
+            restraint_events = _restraint_events(source, summary)
+        _restraint_panel(panels["restraints"], t, cols, ties, restraint_events)
     fd = np.asarray(cols["friction_demand"], dtype=float)
     ax_f.plot(t, np.where(np.isfinite(fd), fd, np.nan), lw=0.8, color="tab:green", label="|F_I|/F_J")
     mu = (summary or {}).get("solver", {}).get("friction_coefficient")
@@ -289,7 +390,10 @@ def response_figure(
     ax_e.plot(t, cols["potential_J"] - cols["potential_J"][0], lw=0.8, label="potential change")
     ax_e.plot(t, cols["damping_loss_J"], lw=0.8, label="damping loss")
     ax_e.plot(t, cols["impact_loss_J"], lw=0.8, label="impact loss")
-    ax_e.plot(t, w - stored - lost, lw=0.8, color="0.5", ls=":", label="residual")
+    # a tie's plastic and fracture work is not a column of the history (the summary's restraints
+    # give its total): the residual drawn holds it
+    residual_label = "residual (incl. ties' plastic work)" if ties else "residual"
+    ax_e.plot(t, w - stored - lost, lw=0.8, color="0.5", ls=":", label=residual_label)
     ax_e.set_ylabel("energy [J]")
     ax_e.set_xlabel("time [s]")
     ax_e.legend(loc="center right", fontsize="small", ncol=2)
@@ -300,6 +404,197 @@ def response_figure(
         case = summary.get("case", {})
         outcome = summary.get("outcome", {}).get("status", "")
         title = f"{case.get('name') or 'flexrock'}: {outcome}"
+    if title:
+        fig.suptitle(title)
+    return fig
+
+
+# --- a body of revolution in 3D ----------------------------------------------------------------
+
+# the columns that tell a 3D body of revolution's time history (docs/case-file.md)
+RIM_COLUMNS = ("time_s", "mode", "tilt_rad", "tilt_azimuth_deg", "contact_angle_deg")
+
+# rolling on the rim / pivoting near upright: the shading of the tilt panel
+_RIM_MODES = {1: ("tab:orange", "rolling on the rim"), 2: ("tab:purple", "pivoting near upright")}
+
+
+def is_rim_history(cols_or_header) -> bool:
+    """Whether a time history (its columns or its header) is a 3D body of revolution's."""
+    return set(RIM_COLUMNS) <= set(cols_or_header)
+
+
+def load_rim(path: str):
+    """A 3D body of revolution's outputs from its time-history CSV (``flexrock run`` of a
+    ``cylinder`` or ``body_of_revolution`` under a record pair).
+
+    Returns
+    -------
+    (dict, dict or None, dict or None)
+        Its columns, the event log's columns (``time_s, kind, tilt_rad, azimuth_deg, value,
+        energy_loss_J``) and the summary, as :func:`load_run`: the summary "<stem>.summary.json"
+        and the event log it names (``files.events``) when they lie next to the CSV, else None.
+    """
+    cols = _read_columns(path, require_rows=True)
+    if not is_rim_history(cols):
+        raise ValueError(
+            f"{path}: not the time history of a body of revolution in 3D: expected the columns "
+            + ", ".join(RIM_COLUMNS)
+        )
+    folder = os.path.dirname(path)
+    stem = os.path.basename(path)
+    stem = stem[:-4] if stem.endswith(".csv") else stem
+    summary = None
+    summary_path = os.path.join(folder, stem + ".summary.json")
+    if os.path.exists(summary_path):
+        with open(summary_path) as f:
+            summary = json.load(f)
+    events = None
+    named = ((summary or {}).get("files") or {}).get("events")
+    if named:
+        candidate = os.path.join(folder, os.path.basename(named))
+        if os.path.exists(candidate):
+            events = _read_columns(candidate)
+    return cols, events, summary
+
+
+def rim_figure(
+    source,
+    events=None,
+    summary=None,
+    *,
+    title: Optional[str] = None,
+    xlim=None,
+    figsize=(11, 8),
+    fig: Optional[Figure] = None,
+) -> Figure:
+    """A 3D body of revolution's response (docs/theory.md §27): where it leans and where it stands.
+
+    Left, against time: the tilt [rad] with the modes shaded (rolling on the rim orange, pivoting
+    near upright purple) and the events marked (uplift, landing, rest, overturn, and a mode not
+    modelled: lift_off, rim_slip, full_sliding), the tilt azimuth [deg] (toward which the axis
+    leans, from H1 toward H2) and the contact angle [deg] (the contact's angle on the base circle
+    in the body, unwrapped: how far it rolled). Right: the tilt's orbit (polar: tilt magnitude
+    against tilt azimuth, with the overturning angle dashed when the tilt comes within 4 times of
+    it) and the contact point's path on the base circle (radius R from the summary, else 1): a
+    dot a row coloured by time (the rows in full contact, which have no contact point, left
+    out; a colour bar beside it).
+
+    Parameters
+    ----------
+    source : str or dict
+        The time-history CSV of ``flexrock run`` (its summary and event log are read from next
+        to it) or a dict of its columns.
+    events, summary : dict, optional
+        The event log's columns and the summary, overriding what ``source`` brings.
+    title : str, optional
+        Default: the case name and status.
+    xlim : (float, float), optional
+        A time window [s] of the time panels (the orbit and the path show every row).
+    fig : matplotlib.figure.Figure, optional
+        An empty figure to draw into; default a new pyplot figure.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        Its Axes, in ``fig.axes`` order and by their labels (``Axes.get_label()``): "tilt", "tilt
+        azimuth", "contact angle", "tilt orbit" (polar), "contact path", and the colour bar of
+        the path's time when the body left full contact.
+    """
+    if isinstance(source, (str, os.PathLike)):
+        cols, ev, su = load_rim(os.fspath(source))
+        events = events if events is not None else ev
+        summary = summary if summary is not None else su
+    elif isinstance(source, dict):
+        cols = source
+        if not is_rim_history(cols):
+            raise ValueError("not the time history of a body of revolution in 3D: expected the columns " + ", ".join(RIM_COLUMNS))
+    else:
+        raise TypeError(f"expected a time-history CSV path or a dict, got {type(source)}")
+    if fig is None:
+        import matplotlib.pyplot as plt
+
+        fig = plt.figure(figsize=figsize, layout="constrained")
+    t = np.asarray(cols["time_s"], dtype=float)
+    mode = np.asarray(cols["mode"], dtype=float)
+    tilt = np.asarray(cols["tilt_rad"], dtype=float)
+    azimuth = np.asarray(cols["tilt_azimuth_deg"], dtype=float)
+    contact = np.asarray(cols["contact_angle_deg"], dtype=float)
+    body = (summary or {}).get("body", {})
+
+    grid = fig.add_gridspec(2, 2, width_ratios=(1.6, 1))
+    left = grid[:, 0].subgridspec(3, 1)
+    ax_tilt = fig.add_subplot(left[0], label="tilt")
+    ax_az = fig.add_subplot(left[1], sharex=ax_tilt, label="tilt azimuth")
+    ax_c = fig.add_subplot(left[2], sharex=ax_tilt, label="contact angle")
+    ax_orbit = fig.add_subplot(grid[0, 1], projection="polar", label="tilt orbit")
+    ax_path = fig.add_subplot(grid[1, 1], label="contact path")
+
+    # tilt against time, the modes shaded, the events marked
+    for value, (colour, _) in _RIM_MODES.items():
+        for a, b in _spans(t, mode, value):
+            ax_tilt.axvspan(a, b, color=colour, alpha=0.18, lw=0, gid=f"mode{value}")
+    ax_tilt.plot(t, tilt, color="k", lw=0.9, label="tilt θ", gid="tilt")
+    if events is not None and "kind" in events and len(events["kind"]):
+        when = np.asarray(events["time_s"], dtype=float)
+        at = np.asarray(events["tilt_rad"], dtype=float)
+        kinds = np.asarray(events["kind"], dtype=object)
+        styles = {"uplift": ("^", "tab:green"), "landing": ("x", "tab:red"), "rest": ("o", "tab:blue"),
+                  "overturn": ("*", "tab:red")}
+        for kind in dict.fromkeys(kinds):
+            marker, colour = styles.get(kind, ("D", "tab:red"))  # a mode not modelled
+            mask = kinds == kind
+            ax_tilt.plot(when[mask], at[mask], marker, color=colour, mfc="none", ms=6, ls="none",
+                         label=kind.replace("_", " "), gid=f"event_{kind}")
+    ax_tilt.set_ylabel("tilt [rad]")
+    handles, labels = ax_tilt.get_legend_handles_labels()
+    for value, (colour, label) in _RIM_MODES.items():
+        handles.append(Patch(color=colour, alpha=0.3))
+        labels.append(label)
+    ax_tilt.legend(handles, labels, loc="upper right", fontsize="small", ncol=2)
+    ax_tilt.tick_params(labelbottom=False)
+
+    ax_az.plot(t, azimuth, lw=0.8, color="tab:blue", gid="tilt_azimuth")
+    ax_az.set_ylabel("tilt azimuth [deg]")
+    ax_az.tick_params(labelbottom=False)
+    ax_c.plot(t, contact, lw=0.8, color="tab:brown", gid="contact_angle")
+    ax_c.set_ylabel("contact angle [deg]")
+    ax_c.set_xlabel("time [s]")
+    if xlim is not None:
+        ax_c.set_xlim(*xlim)
+
+    # the tilt's orbit: where the axis leans, how far
+    ax_orbit.plot(np.radians(azimuth), tilt, lw=0.7, color="k", gid="orbit")
+    alpha = body.get("alpha_rad")
+    if alpha and np.nanmax(tilt, initial=0.0) > 0.25 * alpha:
+        ring = np.linspace(0.0, 2.0 * np.pi, 361)
+        ax_orbit.plot(ring, np.full_like(ring, alpha), "--", color="tab:red", lw=0.7, gid="alpha")
+    ax_orbit.set_rlabel_position(112.5)
+    ax_orbit.set_title("tilt orbit: θ [rad] against its azimuth (H1 at 0°, H2 at 90°)", fontsize="small")
+
+    # the contact point on the base circle, in the body; none in full contact
+    radius = body.get("base_radius_m") or 1.0
+    ring = np.linspace(0.0, 2.0 * np.pi, 361)
+    ax_path.plot(radius * np.cos(ring), radius * np.sin(ring), color="0.7", lw=0.8, gid="base_circle")
+    # one dot a row, coloured by time: between rows the contact may travel far round the rim, so
+    # joining the rows by chords would draw a path it never took
+    on_rim = mode != 0
+    c = np.radians(contact[on_rim])
+    dots = ax_path.scatter(radius * np.cos(c), radius * np.sin(c), c=t[on_rim], s=4, cmap="viridis",
+                           gid="contact_path")
+    if on_rim.any():
+        dots.set_clim(t[on_rim][0], t[on_rim][-1])
+        fig.colorbar(dots, ax=ax_path, label="time [s]", shrink=0.8)
+        ax_path.plot(radius * np.cos(c[0]), radius * np.sin(c[0]), "^", color="tab:red", mfc="none", ms=8,
+                     label="first contact on the rim", gid="contact_first")
+        ax_path.legend(loc="upper right", fontsize="small")
+    ax_path.set_aspect("equal")
+    unit = "m" if body.get("base_radius_m") else "R"
+    ax_path.set_xlabel(f"base x [{unit}]")
+    ax_path.set_ylabel(f"base y [{unit}]")
+    ax_path.set_title("contact point's path on the base circle (in the body)", fontsize="small")
+
+    if title is None and summary:
+        title = f"{summary.get('case') or 'flexrock'}: {summary.get('status', '')}"
     if title:
         fig.suptitle(title)
     return fig
