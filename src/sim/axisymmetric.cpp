@@ -663,6 +663,21 @@ RimResult Loop::finish(RimStatus s, std::string msg) {
 
 }  // namespace
 
+RimOptions rim_options(const SimulationOptions& options) {
+  RimOptions o;
+  o.t_end = options.t_end;
+  o.rtol = options.rtol;
+  o.atol = options.atol;
+  o.max_step = options.max_step;
+  o.event_samples = options.event_samples;
+  o.output_dt = options.output_dt;
+  o.overturn = options.overturn;
+  o.chatter_ratio = options.chatter_ratio;
+  o.friction_coefficient = options.friction_coefficient;
+  o.max_steps = options.max_steps;
+  return o;
+}
+
 RimResult simulate_axisymmetric(const AxisymmetricBody& body, const FloorMotion& motion,
                                 const RimInitialState& initial, const RimOptions& options) {
   validate(body);
