@@ -492,6 +492,12 @@ void Loop::refine_peaks(const detail::GuardSample* smp, const double* tl, int ns
     const bool peak = (k == 0 || tl[k] > tl[k - 1]) && (k == ns || tl[k] >= tl[k + 1]);
     double a = smp[std::max(k - 1, 0)].t, b = std::min(smp[std::min(k + 1, ns)].t, t_hi);
     if (!peak || a >= b) continue;
+    // a smooth peak exceeds its largest sample by at most a quarter of the tilt's fall to the
+    // samples two either side (a parabola through them): skip those that cannot reach max_tilt
+    double fall = 0.0;
+    for (int j = std::max(k - 2, 0); j <= std::min(k + 2, ns); ++j)
+      fall = std::max(fall, tl[k] - tl[j]);
+    if (tl[k] + fall < res_.max_tilt) continue;
     State x;
     auto tilt_at = [&](double t) {
       stepper_.dense(t, x);
