@@ -17,17 +17,7 @@ namespace flexrock::cli {
 int run_body_of_revolution(const io::Case& c, const std::string& output_dir, bool quiet) {
   const AxisymmetricBody& b = *c.body3d;
   const io::PairMotions m = io::pair_motions(c);
-  RimOptions o;
-  o.t_end = c.options.t_end;
-  o.rtol = c.options.rtol;
-  o.atol = c.options.atol;
-  o.max_step = c.options.max_step;
-  o.event_samples = c.options.event_samples;
-  o.output_dt = c.options.output_dt;
-  o.overturn = c.options.overturn;
-  o.chatter_ratio = c.options.chatter_ratio;
-  o.friction_coefficient = c.options.friction_coefficient;
-  o.max_steps = c.options.max_steps;
+  const RimOptions o = rim_options(c.options);
   if (!quiet && c.azimuth) {
     fmt::print(
         "note: a body of revolution has no plane: azimuth_deg = {:g} is not used; the "

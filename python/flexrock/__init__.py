@@ -25,6 +25,15 @@ from . import _csv, _flexrock, _pickling, _reprs
 
 _reprs.install(_flexrock)
 from ._flexrock import (  # noqa: F401  (re-exported API)
+    AxisymmetricBody,
+    RimEvent,
+    RimEventKind,
+    RimHistory,
+    RimInitialState,
+    RimMode,
+    RimResult,
+    RimStatus,
+    uniform_cylinder,
     RestrainedResult,
     Restraint,
     RestraintEvent,
@@ -106,6 +115,9 @@ __all__ = [name for name in dir() if not name.startswith("_") and name not in ("
     "simulate",
     "run_case",
     "simulate_case",
+    "BodyOfRevolutionResult",
+    "axisymmetric_body",
+    "simulate_body_of_revolution",
 ]
 
 STANDARD_GRAVITY = 9.80665  # [m/s^2], as in the engine
@@ -733,8 +745,8 @@ def simulate(
     return r
 
 
-def simulate_case(case: Case) -> Result:
-    """Runs a loaded case without writing anything.
+def simulate_case(case: Case) -> Union[Result, "BodyOfRevolutionResult"]:
+    """Runs a loaded case without writing anything, with the engine ``flexrock run`` uses.
 
     Parameters
     ----------
@@ -743,9 +755,19 @@ def simulate_case(case: Case) -> Result:
 
     Returns
     -------
-    Result
-        :meth:`Result.write` writes what the case's [output] table asks for.
+    Result or BodyOfRevolutionResult
+        A body of revolution (``cylinder``, ``body_of_revolution``) under a record pair
+        (``[excitation.horizontal2]``) runs in 3D (docs/theory.md §27) and returns a
+        :class:`BodyOfRevolutionResult`; with one horizontal component it is its planar section.
+        ``write`` writes what the case's [output] table asks for.
     """
+    if case.body3d is not None and case.has_pair:
+        # the 3D engine, as `flexrock run`: never the planar section of a 3D case
+        try:
+            raw = _flexrock._simulate_case_3d(case)
+        except InputError as e:
+            raise InputError(f"{case.source}: {e}") from None
+        return BodyOfRevolutionResult(raw, case.body3d, case)
     body = Body(case.body)
     if case.support is not None:
         # the support's engine returns the support's results too, which Result does not carry
@@ -766,7 +788,7 @@ def simulate_case(case: Case) -> Result:
     return Result(raw, body, case)
 
 
-def run_case(path: str, output_dir: Optional[str] = "") -> Result:
+def run_case(path: str, output_dir: Optional[str] = "") -> Union[Result, "BodyOfRevolutionResult"]:
     """``flexrock run PATH -o OUTPUT_DIR`` from Python.
 
     Parameters
@@ -779,13 +801,150 @@ def run_case(path: str, output_dir: Optional[str] = "") -> Result:
 
     Returns
     -------
-    Result
-        Errors raise InputError or RuntimeError with the command line's messages.
+    Result or BodyOfRevolutionResult
+        As :func:`simulate_case`. Errors raise InputError or RuntimeError with the command line's
+        messages.
     """
     r = simulate_case(load_case(str(path)))
     if output_dir is not None:
         r.write(str(output_dir))
     return r
+
+
+class BodyOfRevolutionResult:
+    """A 3D run of a rigid body of revolution (docs/theory.md §27): the engine's
+    :class:`RimResult` (``raw``), the body and, for a loaded case, the case.
+
+    Attributes are the engine's: ``status`` (:class:`RimStatus`), ``message`` (why it ended early,
+    with the magnitude), ``max_tilt`` [rad], ``max_tilt_azimuth`` [rad] (of the contact at the
+    largest tilt, from H1 toward H2), ``uplifts``, ``landings``, ``closest_pass`` [rad] (None:
+    never rolled round upright without landing), ``max_offset`` [m], ``max_friction_demand``,
+    ``min_normal_force`` [N], ``energy`` (:class:`EnergyBalance`, J), ``events`` and ``history``
+    (:class:`RimHistory`: numpy arrays at the output times)."""
+
+    def __init__(self, raw: RimResult, body: AxisymmetricBody, case: Optional[Case] = None):
+        self.raw = raw
+        self.body = body
+        self.case = case
+
+    def __getattr__(self, name):
+        if name == "raw":  # not yet set (copy): no recursion
+            raise AttributeError(name)
+        return getattr(self.raw, name)
+
+    def __repr__(self):
+        return repr(self.raw)
+
+    @property
+    def alpha(self) -> float:
+        """[rad] the body's slenderness atan(R / h)."""
+        return self.body.alpha
+
+    def time_history(self) -> dict:
+        """The time-history CSV's columns (name with unit to numpy array)."""
+        return self.raw.history.columns()
+
+    def _need_case(self, what: str) -> Case:
+        if self.case is None:
+            raise InputError(f"{what}: this run has no case (simulate_body_of_revolution); load one "
+                             "with load_case and run it with simulate_case")
+        return self.case
+
+    def summary(self, output_dir: str = "") -> dict:
+        """The summary JSON ``flexrock run`` writes for the case, as a dict."""
+        c = self._need_case("summary")
+        return json.loads(_flexrock._rim_summary_json(c, self.raw, str(output_dir)))
+
+    def write(self, output_dir: str = "") -> None:
+        """Writes what the case's [output] table asks for, the same files byte for byte as
+        ``flexrock run`` (atomically, summary last; nothing when a value is not finite)."""
+        c = self._need_case("write")
+        try:
+            _flexrock._write_rim_outputs(c, self.raw, str(output_dir))
+        except InputError:
+            raise
+        except RuntimeError as e:
+            raise RuntimeError(f"could not write the outputs: {e}") from None
+
+
+def axisymmetric_body(type: str, **keys: float) -> AxisymmetricBody:
+    """A body of revolution in 3D from a body type of the table, with the keys and defaults a case
+    file's [body] takes (docs/case-file.md). ``flexrock.cylinder(...)`` and
+    ``flexrock.body_of_revolution(...)`` give the same bodies' planar sections.
+
+    Parameters
+    ----------
+    type : str
+        ``"cylinder"`` (keys radius [m], height [m], mass [kg], inner_radius [m], default 0) or
+        ``"body_of_revolution"`` (mass [kg], cg_height [m], base_radius [m], inertia_diameter
+        [kg m^2], inertia_axis [kg m^2]).
+    **keys : float
+        The type's keys, in SI units.
+
+    Returns
+    -------
+    AxisymmetricBody
+
+    Raises
+    ------
+    InputError
+        Another type, an unknown or missing key, or a body no rigid body can be.
+    """
+    return _flexrock._axisymmetric_body(type, {k: float(v) for k, v in keys.items()})
+
+
+def simulate_body_of_revolution(
+    body: AxisymmetricBody,
+    h1: GroundMotion,
+    h2: Optional[GroundMotion] = None,
+    initial: Optional[RimInitialState] = None,
+    options: Optional[SimulationOptions] = None,
+    **option_values,
+) -> BodyOfRevolutionResult:
+    """Simulates a rigid body of revolution on a floor shaken in three components
+    (docs/theory.md §27): full contact, rocking-rolling on the rim without slip, landing,
+    overturning. Flight, rim slip and full sliding are not modelled: they end the run, named in
+    ``status`` and ``message`` with their magnitude.
+
+    Parameters
+    ----------
+    body : AxisymmetricBody
+        From :class:`AxisymmetricBody`, :func:`uniform_cylinder` or :func:`axisymmetric_body`.
+    h1 : GroundMotion
+        [m/s^2] H1, along x, and the vertical (its vertical component).
+    h2 : GroundMotion, optional
+        [m/s^2] H2, along y (90 degrees from H1 toward which azimuths are measured); its
+        horizontal only (a vertical component is refused). None: no H2.
+    initial : RimInitialState, optional
+        Upright at rest by default.
+    options : SimulationOptions, optional
+        The planar run's options (t_end [s], rtol, atol, max_step [s], event_samples, output_dt
+        [s], overturn, chatter_ratio, friction_coefficient, max_steps) as a case's [options]
+        gives them; default output_dt 0.01 s.
+    **option_values
+        Any of those options by name.
+
+    Returns
+    -------
+    BodyOfRevolutionResult
+        Overturning, an unmodelled mode and a stopped run are its ``status``. The GIL is released
+        while the engine runs.
+
+    Raises
+    ------
+    InputError
+        A bad body, option or motion.
+    """
+    if not isinstance(body, AxisymmetricBody):
+        raise InputError(f"simulate_body_of_revolution: body: expected an AxisymmetricBody "
+                         f"(axisymmetric_body, uniform_cylinder), got {type(body).__name__}")
+    if h2 is not None and h2.has_vertical:
+        raise InputError("simulate_body_of_revolution: h2 has a vertical component, which would be "
+                         "ignored: give the vertical with h1")
+    initial = initial if initial is not None else RimInitialState()
+    options = _options(options, option_values)
+    raw = _flexrock._simulate_axisymmetric(body, h1, h2, initial, options)
+    return BodyOfRevolutionResult(raw, body)
 
 
 from .response_spectra import response_spectrum  # noqa: E402

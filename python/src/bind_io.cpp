@@ -241,6 +241,9 @@ GroundMotion
       .def_readwrite("horizontal", &io::Case::horizontal)
       .def_readwrite("vertical", &io::Case::vertical)
       .def_readwrite("horizontal2", &io::Case::horizontal2)
+      .def_readonly("body3d", &io::Case::body3d,
+                    "AxisymmetricBody of a cylinder or body_of_revolution (None: another type); "
+                    "with a record pair the case runs in 3D")
       .def_property_readonly("has_pair", [](const io::Case& c) { return c.pair != nullptr; })
       .def_readwrite("azimuth_deg", &io::Case::azimuth)
       .def_readwrite("azimuth_step_deg", &io::Case::azimuth_step)

@@ -28,6 +28,7 @@ PYBIND11_MODULE(_flexrock, m) {
   flexrock::python::bind_model(m);
   flexrock::python::bind_excitation(m);
   flexrock::python::bind_sim(m);
+  flexrock::python::bind_axisymmetric(m);
   flexrock::python::bind_restraints(m);
   flexrock::python::bind_support(m);
   flexrock::python::bind_io(m);

@@ -135,6 +135,10 @@ struct RimResult {
   long steps = 0, rhs_evaluations = 0;
 };
 
+/// The 3D engine's options from a planar run's (the [options] keys a case file gives both; the
+/// pivot zone keeps its default): what `flexrock run` and the Python module run a case with.
+RimOptions rim_options(const SimulationOptions& options);
+
 /// Simulates `body` on a floor moving with `motion`. Bad options or bodies throw InputError.
 RimResult simulate_axisymmetric(const AxisymmetricBody& body, const FloorMotion& motion,
                                 const RimInitialState& initial = {},
